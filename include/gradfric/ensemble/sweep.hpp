@@ -1,0 +1,55 @@
+#pragma once
+// The sweep of a scene: the Cartesian product of the swept lists, one point per combination,
+// and the tasks (point, realisation) of a run. Pure functions, no MPI.
+#include "gradfric/physics/grading.hpp"
+
+#include <string>
+#include <vector>
+
+namespace gradfric::ensemble {
+
+struct SweepPoint {
+  double delta = 0.0;
+  double theta = 0.0;         // sliding angle [degree]
+  double sigma = 0.0;         // relative dispersion of mu_s,i
+  double sigmaKinetic = 0.0;  // relative dispersion of mu_k,i
+  std::string property = "E";
+  std::string profile = "none";
+  bool graded() const { return profile != "none" && delta != 0.0; }
+};
+
+// The lists of a scene; an empty list is not swept (the base value is used).
+struct SweepLists {
+  std::vector<std::string> property;
+  std::vector<std::string> profile;
+  std::vector<double> theta;
+  std::vector<double> sigma;  // sets both relative dispersions
+  std::vector<double> delta;
+};
+
+struct Sweep {
+  std::vector<std::string> axes;  // swept quantities, outermost first
+  std::vector<SweepPoint> points;
+  std::vector<int> reference;  // per point: the non-graded point it is compared with, or -1
+};
+
+// Loop order, outermost first: property, profile, theta, sigma, delta.
+Sweep buildSweep(const SweepLists& lists, const SweepPoint& base);
+
+// The grading of one point (bands from the scene's -grading_bands).
+Grading gradingOf(const SweepPoint& point, int bands);
+
+struct Task {
+  int point = 0;
+  int realisation = 0;
+};
+
+// The tasks still to run, in the order they are handed out: most expensive first (large |Delta|
+// takes longer to detach), so that the last tasks to start are short ones. `finished` is P x R
+// (row-major), 1 for a finished task; empty means none finished.
+std::vector<Task> pendingTasks(const Sweep& sweep, int realisations, const std::vector<unsigned char>& finished);
+
+// Relative cost estimate of one task of this point (1 for the non-graded plate).
+double estimatedCost(const SweepPoint& point);
+
+}  // namespace gradfric::ensemble

@@ -1,0 +1,135 @@
+#pragma once
+// The results file of an ensemble run: one parallel HDF5 file (MPI-IO driver) per run.
+//
+// Every dataset is created, allocated and filled once, collectively, when the file is created;
+// after that a finished task is written by the rank that ran it alone (independent MPI-IO
+// writes into storage that already exists, so no HDF5 metadata changes and nothing is gathered
+// on one rank). A task writes its data first and its `done` flag last: a run killed at any
+// moment leaves a readable file in which every task flagged done is complete. The statistics
+// are written, and the `complete` attribute set, collectively at the end.
+// The layout is documented field by field in docs/ensemble.md.
+#include "gradfric/io/hdf5_handle.hpp"
+
+#include <mpi.h>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace gradfric::io {
+
+inline constexpr int kFormatVersion = 1;
+inline constexpr const char* kFormatName = "gradfric-sbm-ensemble";
+
+struct EnsembleLayout {
+  int points = 0;        // P sweep points
+  int realisations = 0;  // R realisations per point
+  int historyCapacity = 0;  // C: mu(t) samples kept per task (0: no histories)
+  int mapSide = 0;          // N_b: side of the first-slip and stress maps
+  bool firstSlipMap = false;
+  std::vector<double> snapshotTimes;  // requested sigma_x/p snapshot times [s] (S of them)
+  // Names of the per-point statistics columns (/statistics/<name>), real and integer.
+  std::vector<std::string> statisticsReal;
+  std::vector<std::string> statisticsInteger;
+};
+
+// One row per sweep point.
+struct SweepTable {
+  std::vector<std::string> axes;  // the swept quantities, in loop order (outermost first)
+  std::vector<double> delta;
+  std::vector<double> theta;  // sliding angle [degree]
+  std::vector<double> sigma;  // relative dispersion of mu_s,i (and mu_k,i unless set apart)
+  std::vector<double> sigmaKinetic;
+  std::vector<std::string> property;  // E, friction, both
+  std::vector<std::string> profile;   // none, linear, triangular
+  std::vector<int> referencePoint;    // the non-graded point of the same (theta, sigma, ...) or -1
+};
+
+struct Attribute {
+  std::string name;  // without the leading dash: "sbm_E"
+  std::string value;
+  std::string unit;
+  std::string origin;  // default, set, derived
+};
+
+struct TaskOutput {
+  int point = 0;
+  int realisation = 0;
+  double muStatic = 0.0;
+  double muKinetic = 0.0;
+  double peakTime = 0.0;
+  double endTime = 0.0;
+  bool peakConfirmed = false;
+  std::int64_t steps = 0;
+  int redrawnBlocks = 0;
+  std::vector<double> time;           // mu(t) history (at most historyCapacity samples)
+  std::vector<double> mu;
+  std::vector<double> firstSlipTime;  // N_b x N_b or empty
+  std::vector<double> snapshotTime;   // actual time of each snapshot taken (<= S)
+  std::vector<std::vector<double>> snapshots;  // sigma_x/p maps, N_b x N_b each
+  double wallSeconds = 0.0;
+  int rank = 0;
+};
+
+class ResultsFile {
+public:
+  // Collective: creates (truncates) path and every dataset of the layout.
+  static ResultsFile create(MPI_Comm comm, const std::string& path, const EnsembleLayout& layout,
+                            const SweepTable& sweep, const std::vector<Attribute>& scene);
+  // Collective: opens an existing results file for reading and writing (resume).
+  static ResultsFile open(MPI_Comm comm, const std::string& path);
+  // Collective: opens read-only (inspection, tests).
+  static ResultsFile openReadOnly(MPI_Comm comm, const std::string& path);
+
+  ResultsFile(ResultsFile&&) = default;
+  ResultsFile& operator=(ResultsFile&&) = default;
+  ~ResultsFile();
+
+  const EnsembleLayout& layout() const { return layout_; }
+  const SweepTable& sweep() const { return sweep_; }
+  std::vector<Attribute> sceneAttributes() const;
+  bool complete() const;
+
+  // Independent: only the rank that ran the task calls it. Data first, then the done flag.
+  void writeTask(const TaskOutput& task);
+  // Collective: pushes everything written so far to the file (MPI_File_sync).
+  void flush();
+
+  // Every rank reads the whole P x R table (small scalars only).
+  std::vector<std::uint8_t> finishedTasks() const;
+  std::vector<double> readRealisationReal(const std::string& name) const;  // mu_s, mu_k, peak_time, ...
+  std::vector<std::int8_t> readPeakConfirmed() const;
+  std::vector<double> readStatistic(const std::string& name) const;
+
+  // Collective; the values must be the same on every rank (rank 0 writes them).
+  void writeStatistics(const std::vector<std::pair<std::string, std::vector<double>>>& real,
+                       const std::vector<std::pair<std::string, std::vector<int>>>& integer);
+  // Collective: attributes of /run (ranks, sessions, the run-control options): not part of the
+  // results, they differ between runs of the same scene.
+  void setRunAttributes(const std::vector<Attribute>& attributes);
+  // Collective: sets the root attribute complete = 1.
+  void markComplete();
+  // Collective.
+  void close();
+
+private:
+  ResultsFile() = default;
+  void openDatasets();
+  void readLayout();
+
+  MPI_Comm comm_ = MPI_COMM_NULL;
+  int rank_ = 0;
+  H5File file_;
+  EnsembleLayout layout_;
+  SweepTable sweep_;
+  H5Dataset muStatic_, muKinetic_, peakTime_, endTime_, peakConfirmed_, steps_, redrawn_, done_;
+  H5Dataset wallSeconds_, taskRank_;
+  H5Dataset historyTime_, historyMu_, historyLength_;
+  H5Dataset firstSlip_, snapshotTime_, snapshots_;
+  H5PropertyList independent_;
+};
+
+// True if the file at path can be opened as HDF5 (any rank count; serial open on the caller).
+bool isHdf5File(const std::string& path);
+
+}  // namespace gradfric::io

@@ -1,0 +1,557 @@
+#include "gradfric/io/results_file.hpp"
+
+#include <H5FDmpio.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <limits>
+
+namespace gradfric::io {
+
+void throwHdf5Error(const char* expression, const char* file, int line) {
+  throw Hdf5Error(std::string("HDF5 call failed: ") + expression + " (" + file + ":" + std::to_string(line) + ")");
+}
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+H5PropertyList accessList(MPI_Comm comm) {
+  H5PropertyList fapl(GF_H5(H5Pcreate(H5P_FILE_ACCESS)));
+  GF_H5(H5Pset_fapl_mpio(fapl, comm, MPI_INFO_NULL));
+  return fapl;
+}
+
+// Groups and datasets without access/modification times: the file depends on the results only.
+H5PropertyList groupCreation() {
+  H5PropertyList gcpl(GF_H5(H5Pcreate(H5P_GROUP_CREATE)));
+  GF_H5(H5Pset_obj_track_times(gcpl, false));
+  return gcpl;
+}
+
+H5Group createGroup(hid_t parent, const char* name) {
+  H5PropertyList gcpl = groupCreation();
+  return H5Group(GF_H5(H5Gcreate2(parent, name, H5P_DEFAULT, gcpl, H5P_DEFAULT)));
+}
+
+// Contiguous, allocated and filled at creation (collective), so that later raw writes by one
+// rank touch no metadata.
+template <typename T>
+H5Dataset createDataset(hid_t parent, const char* name, hid_t fileType, hid_t memType, const std::vector<hsize_t>& dims,
+                        T fill) {
+  std::vector<hsize_t> safe(dims);
+  for (auto& d : safe) d = std::max<hsize_t>(d, 0);
+  H5Space space(GF_H5(H5Screate_simple(static_cast<int>(safe.size()), safe.data(), nullptr)));
+  H5PropertyList dcpl(GF_H5(H5Pcreate(H5P_DATASET_CREATE)));
+  GF_H5(H5Pset_obj_track_times(dcpl, false));
+  GF_H5(H5Pset_layout(dcpl, H5D_CONTIGUOUS));
+  GF_H5(H5Pset_alloc_time(dcpl, H5D_ALLOC_TIME_EARLY));
+  GF_H5(H5Pset_fill_time(dcpl, H5D_FILL_TIME_ALLOC));
+  GF_H5(H5Pset_fill_value(dcpl, memType, &fill));
+  return H5Dataset(GF_H5(H5Dcreate2(parent, name, fileType, space, H5P_DEFAULT, dcpl, H5P_DEFAULT)));
+}
+
+H5Dataset createStringDataset(hid_t parent, const char* name, hsize_t count, size_t width) {
+  H5Type type(GF_H5(H5Tcopy(H5T_C_S1)));
+  GF_H5(H5Tset_size(type, std::max<size_t>(width, 1)));
+  GF_H5(H5Tset_strpad(type, H5T_STR_NULLPAD));
+  H5Space space(GF_H5(H5Screate_simple(1, &count, nullptr)));
+  H5PropertyList dcpl(GF_H5(H5Pcreate(H5P_DATASET_CREATE)));
+  GF_H5(H5Pset_obj_track_times(dcpl, false));
+  GF_H5(H5Pset_alloc_time(dcpl, H5D_ALLOC_TIME_EARLY));
+  return H5Dataset(GF_H5(H5Dcreate2(parent, name, type, space, H5P_DEFAULT, dcpl, H5P_DEFAULT)));
+}
+
+void writeStrings(hid_t dataset, const std::vector<std::string>& values, hid_t dxpl) {
+  H5Type type(GF_H5(H5Dget_type(dataset)));
+  const size_t width = H5Tget_size(type);
+  std::vector<char> buffer(values.size() * width, '\0');
+  for (size_t i = 0; i < values.size(); ++i)
+    std::memcpy(buffer.data() + i * width, values[i].data(), std::min(width, values[i].size()));
+  if (!values.empty()) GF_H5(H5Dwrite(dataset, type, H5S_ALL, H5S_ALL, dxpl, buffer.data()));
+}
+
+std::vector<std::string> readStrings(hid_t dataset) {
+  H5Type type(GF_H5(H5Dget_type(dataset)));
+  const size_t width = H5Tget_size(type);
+  H5Space space(GF_H5(H5Dget_space(dataset)));
+  const hssize_t count = H5Sget_simple_extent_npoints(space);
+  std::vector<char> buffer(static_cast<size_t>(count) * width + 1, '\0');
+  if (count > 0) GF_H5(H5Dread(dataset, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, buffer.data()));
+  std::vector<std::string> out;
+  for (hssize_t i = 0; i < count; ++i) {
+    const char* start = buffer.data() + i * width;
+    out.emplace_back(start, strnlen(start, width));
+  }
+  return out;
+}
+
+// Writes a hyperslab [offset, offset + count) of a dataset from contiguous memory.
+void writeSlab(hid_t dataset, hid_t memType, const std::vector<hsize_t>& offset, const std::vector<hsize_t>& count,
+               const void* data, hid_t dxpl) {
+  hsize_t total = 1;
+  for (auto c : count) total *= c;
+  if (total == 0) return;
+  H5Space fileSpace(GF_H5(H5Dget_space(dataset)));
+  GF_H5(H5Sselect_hyperslab(fileSpace, H5S_SELECT_SET, offset.data(), nullptr, count.data(), nullptr));
+  H5Space memSpace(GF_H5(H5Screate_simple(1, &total, nullptr)));
+  GF_H5(H5Dwrite(dataset, memType, memSpace, fileSpace, dxpl, data));
+}
+
+template <typename T>
+std::vector<T> readAll(hid_t dataset, hid_t memType) {
+  H5Space space(GF_H5(H5Dget_space(dataset)));
+  const hssize_t count = H5Sget_simple_extent_npoints(space);
+  std::vector<T> out(static_cast<size_t>(std::max<hssize_t>(count, 0)));
+  if (!out.empty()) GF_H5(H5Dread(dataset, memType, H5S_ALL, H5S_ALL, H5P_DEFAULT, out.data()));
+  return out;
+}
+
+void writeStringAttribute(hid_t object, const std::string& name, const std::string& value) {
+  if (GF_H5(H5Aexists(object, name.c_str())) > 0) GF_H5(H5Adelete(object, name.c_str()));
+  H5Type type(GF_H5(H5Tcopy(H5T_C_S1)));
+  GF_H5(H5Tset_size(type, std::max<size_t>(value.size(), 1)));
+  GF_H5(H5Tset_strpad(type, H5T_STR_NULLPAD));
+  H5Space space(GF_H5(H5Screate(H5S_SCALAR)));
+  H5Attribute attribute(GF_H5(H5Acreate2(object, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT)));
+  std::string padded = value.empty() ? std::string(1, '\0') : value;
+  GF_H5(H5Awrite(attribute, type, padded.data()));
+}
+
+template <typename T>
+void writeScalarAttribute(hid_t object, const char* name, hid_t fileType, hid_t memType, T value) {
+  if (GF_H5(H5Aexists(object, name)) > 0) {
+    H5Attribute attribute(GF_H5(H5Aopen(object, name, H5P_DEFAULT)));
+    GF_H5(H5Awrite(attribute, memType, &value));
+    return;
+  }
+  H5Space space(GF_H5(H5Screate(H5S_SCALAR)));
+  H5Attribute attribute(GF_H5(H5Acreate2(object, name, fileType, space, H5P_DEFAULT, H5P_DEFAULT)));
+  GF_H5(H5Awrite(attribute, memType, &value));
+}
+
+template <typename T>
+T readScalarAttribute(hid_t object, const char* name, hid_t memType, T fallback) {
+  if (GF_H5(H5Aexists(object, name)) <= 0) return fallback;
+  H5Attribute attribute(GF_H5(H5Aopen(object, name, H5P_DEFAULT)));
+  T value{};
+  GF_H5(H5Aread(attribute, memType, &value));
+  return value;
+}
+
+std::string readStringAttribute(hid_t attribute) {
+  H5Type type(GF_H5(H5Aget_type(attribute)));
+  if (H5Tget_class(type) != H5T_STRING) return "";
+  if (H5Tis_variable_str(type) > 0) {
+    char* text = nullptr;
+    H5Type memType(GF_H5(H5Tcopy(H5T_C_S1)));
+    GF_H5(H5Tset_size(memType, H5T_VARIABLE));
+    GF_H5(H5Aread(attribute, memType, &text));
+    std::string out = text ? text : "";
+    H5free_memory(text);
+    return out;
+  }
+  const size_t width = H5Tget_size(type);
+  std::vector<char> buffer(width + 1, '\0');
+  GF_H5(H5Aread(attribute, type, buffer.data()));
+  return std::string(buffer.data(), strnlen(buffer.data(), width));
+}
+
+// All attributes of an object as (name, value) in creation order of the names (sorted by name).
+std::vector<std::pair<std::string, std::string>> readStringAttributes(hid_t object) {
+  std::vector<std::pair<std::string, std::string>> out;
+  H5O_info_t info;
+  GF_H5(H5Oget_info2(object, &info, H5O_INFO_NUM_ATTRS));
+  for (hsize_t i = 0; i < info.num_attrs; ++i) {
+    H5Attribute attribute(GF_H5(H5Aopen_by_idx(object, ".", H5_INDEX_NAME, H5_ITER_INC, i, H5P_DEFAULT, H5P_DEFAULT)));
+    const ssize_t length = GF_H5(H5Aget_name(attribute, 0, nullptr));
+    std::string name(static_cast<size_t>(length) + 1, '\0');
+    GF_H5(H5Aget_name(attribute, name.size(), name.data()));
+    name.resize(static_cast<size_t>(length));
+    out.emplace_back(name, readStringAttribute(attribute));
+  }
+  return out;
+}
+
+}  // namespace
+
+bool isHdf5File(const std::string& path) {
+  htri_t result = -1;
+  H5E_BEGIN_TRY { result = H5Fis_hdf5(path.c_str()); }
+  H5E_END_TRY;
+  return result > 0;
+}
+
+ResultsFile::~ResultsFile() {
+  // A file not closed explicitly (an exception unwinding) is closed here; every rank unwinds
+  // through the same path when the error is collective, which is the case for input errors.
+}
+
+ResultsFile ResultsFile::create(MPI_Comm comm, const std::string& path, const EnsembleLayout& layout,
+                                const SweepTable& sweep, const std::vector<Attribute>& scene) {
+  ResultsFile f;
+  f.comm_ = comm;
+  MPI_Comm_rank(comm, &f.rank_);
+  f.layout_ = layout;
+  f.sweep_ = sweep;
+  H5PropertyList fapl = accessList(comm);
+  H5PropertyList fcpl(GF_H5(H5Pcreate(H5P_FILE_CREATE)));
+  f.file_ = H5File(GF_H5(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, fcpl, fapl)));
+  f.independent_ = H5PropertyList(GF_H5(H5Pcreate(H5P_DATASET_XFER)));
+  GF_H5(H5Pset_dxpl_mpio(f.independent_, H5FD_MPIO_INDEPENDENT));
+
+  const hid_t root = f.file_.get();
+  writeStringAttribute(root, "format", kFormatName);
+  writeScalarAttribute<int>(root, "format_version", H5T_STD_I32LE, H5T_NATIVE_INT, kFormatVersion);
+  writeScalarAttribute<int>(root, "complete", H5T_STD_I32LE, H5T_NATIVE_INT, 0);
+  writeScalarAttribute<int>(root, "points", H5T_STD_I32LE, H5T_NATIVE_INT, layout.points);
+  writeScalarAttribute<int>(root, "realisations", H5T_STD_I32LE, H5T_NATIVE_INT, layout.realisations);
+  writeScalarAttribute<int>(root, "history_capacity", H5T_STD_I32LE, H5T_NATIVE_INT, layout.historyCapacity);
+  writeScalarAttribute<int>(root, "map_side", H5T_STD_I32LE, H5T_NATIVE_INT, layout.mapSide);
+  writeScalarAttribute<int>(root, "first_slip_map", H5T_STD_I32LE, H5T_NATIVE_INT, layout.firstSlipMap ? 1 : 0);
+
+  {  // The scene: every resolved option as attributes; units and origins in subgroups.
+    H5Group group = createGroup(root, "scene");
+    H5Group units = createGroup(group, "units");
+    H5Group origins = createGroup(group, "origin");
+    for (const auto& a : scene) {
+      writeStringAttribute(group, a.name, a.value);
+      writeStringAttribute(units, a.name, a.unit);
+      writeStringAttribute(origins, a.name, a.origin);
+    }
+  }
+
+  const hsize_t P = static_cast<hsize_t>(layout.points);
+  const hsize_t R = static_cast<hsize_t>(layout.realisations);
+  {  // The sweep table, one row per point.
+    H5Group group = createGroup(root, "sweep");
+    std::string axes;
+    for (const auto& a : sweep.axes) axes += (axes.empty() ? "" : ",") + a;
+    writeStringAttribute(group, "axes", axes);
+    auto real = [&](const char* name, const std::vector<double>& values) {
+      H5Dataset d = createDataset<double>(group, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, {P}, kNaN);
+      if (f.rank_ == 0) writeSlab(d, H5T_NATIVE_DOUBLE, {0}, {P}, values.data(), f.independent_);
+    };
+    real("delta", sweep.delta);
+    real("theta", sweep.theta);
+    real("sigma", sweep.sigma);
+    real("sigma_kinetic", sweep.sigmaKinetic);
+    auto strings = [&](const char* name, const std::vector<std::string>& values) {
+      size_t width = 1;
+      for (const auto& v : values) width = std::max(width, v.size());
+      H5Dataset d = createStringDataset(group, name, P, width);
+      if (f.rank_ == 0) writeStrings(d, values, f.independent_);
+    };
+    strings("property", sweep.property);
+    strings("profile", sweep.profile);
+    H5Dataset ref = createDataset<int>(group, "reference_point", H5T_STD_I32LE, H5T_NATIVE_INT, {P}, -1);
+    if (f.rank_ == 0) writeSlab(ref, H5T_NATIVE_INT, {0}, {P}, sweep.referencePoint.data(), f.independent_);
+  }
+  {
+    H5Group group = createGroup(root, "realisations");
+    createDataset<double>(group, "mu_s", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, {P, R}, kNaN);
+    createDataset<double>(group, "mu_k", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, {P, R}, kNaN);
+    createDataset<double>(group, "peak_time", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, {P, R}, kNaN);
+    createDataset<double>(group, "end_time", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, {P, R}, kNaN);
+    createDataset<std::int8_t>(group, "peak_confirmed", H5T_STD_I8LE, H5T_NATIVE_INT8, {P, R}, 0);
+    createDataset<std::int64_t>(group, "steps", H5T_STD_I64LE, H5T_NATIVE_INT64, {P, R}, 0);
+    createDataset<int>(group, "redrawn_blocks", H5T_STD_I32LE, H5T_NATIVE_INT, {P, R}, 0);
+    createDataset<std::int8_t>(group, "done", H5T_STD_I8LE, H5T_NATIVE_INT8, {P, R}, 0);
+  }
+  {
+    H5Group group = createGroup(root, "run");
+    createDataset<double>(group, "wall_seconds", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, {P, R}, kNaN);
+    createDataset<int>(group, "rank", H5T_STD_I32LE, H5T_NATIVE_INT, {P, R}, -1);
+  }
+  if (layout.historyCapacity > 0) {
+    H5Group group = createGroup(root, "history");
+    const hsize_t C = static_cast<hsize_t>(layout.historyCapacity);
+    createDataset<double>(group, "time", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, {P, R, C}, kNaN);
+    createDataset<double>(group, "mu", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, {P, R, C}, kNaN);
+    createDataset<int>(group, "length", H5T_STD_I32LE, H5T_NATIVE_INT, {P, R}, 0);
+  }
+  const hsize_t N = static_cast<hsize_t>(layout.mapSide);
+  const hsize_t S = layout.snapshotTimes.size();
+  if (layout.firstSlipMap || S > 0) {
+    H5Group group = createGroup(root, "maps");
+    if (layout.firstSlipMap)
+      createDataset<double>(group, "first_slip_time", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, {P, R, N, N}, kNaN);
+    if (S > 0) {
+      H5Dataset requested =
+          createDataset<double>(group, "snapshot_times", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, {S}, kNaN);
+      if (f.rank_ == 0) writeSlab(requested, H5T_NATIVE_DOUBLE, {0}, {S}, layout.snapshotTimes.data(), f.independent_);
+      createDataset<double>(group, "snapshot_time", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, {P, R, S}, kNaN);
+      createDataset<double>(group, "sigma_x_over_p", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, {P, R, S, N, N}, kNaN);
+    }
+  }
+  {
+    H5Group group = createGroup(root, "statistics");
+    for (const auto& name : layout.statisticsReal)
+      createDataset<double>(group, name.c_str(), H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, {P}, kNaN);
+    for (const auto& name : layout.statisticsInteger)
+      createDataset<int>(group, name.c_str(), H5T_STD_I32LE, H5T_NATIVE_INT, {P}, 0);
+  }
+  f.openDatasets();
+  f.flush();
+  return f;
+}
+
+ResultsFile ResultsFile::open(MPI_Comm comm, const std::string& path) {
+  ResultsFile f;
+  f.comm_ = comm;
+  MPI_Comm_rank(comm, &f.rank_);
+  H5PropertyList fapl = accessList(comm);
+  f.file_ = H5File(GF_H5(H5Fopen(path.c_str(), H5F_ACC_RDWR, fapl)));
+  f.independent_ = H5PropertyList(GF_H5(H5Pcreate(H5P_DATASET_XFER)));
+  GF_H5(H5Pset_dxpl_mpio(f.independent_, H5FD_MPIO_INDEPENDENT));
+  f.readLayout();
+  f.openDatasets();
+  return f;
+}
+
+ResultsFile ResultsFile::openReadOnly(MPI_Comm comm, const std::string& path) {
+  ResultsFile f;
+  f.comm_ = comm;
+  MPI_Comm_rank(comm, &f.rank_);
+  H5PropertyList fapl = accessList(comm);
+  f.file_ = H5File(GF_H5(H5Fopen(path.c_str(), H5F_ACC_RDONLY, fapl)));
+  f.independent_ = H5PropertyList(GF_H5(H5Pcreate(H5P_DATASET_XFER)));
+  GF_H5(H5Pset_dxpl_mpio(f.independent_, H5FD_MPIO_INDEPENDENT));
+  f.readLayout();
+  f.openDatasets();
+  return f;
+}
+
+void ResultsFile::readLayout() {
+  const hid_t root = file_.get();
+  H5Attribute format(GF_H5(H5Aopen(root, "format", H5P_DEFAULT)));
+  if (readStringAttribute(format) != kFormatName)
+    throw Hdf5Error("not a gradfric ensemble results file (attribute format is not " + std::string(kFormatName) + ")");
+  const int version = readScalarAttribute<int>(root, "format_version", H5T_NATIVE_INT, 0);
+  if (version != kFormatVersion)
+    throw Hdf5Error("results file format version " + std::to_string(version) + ", this build writes " +
+                    std::to_string(kFormatVersion));
+  layout_.points = readScalarAttribute<int>(root, "points", H5T_NATIVE_INT, 0);
+  layout_.realisations = readScalarAttribute<int>(root, "realisations", H5T_NATIVE_INT, 0);
+  layout_.historyCapacity = readScalarAttribute<int>(root, "history_capacity", H5T_NATIVE_INT, 0);
+  layout_.mapSide = readScalarAttribute<int>(root, "map_side", H5T_NATIVE_INT, 0);
+  layout_.firstSlipMap = readScalarAttribute<int>(root, "first_slip_map", H5T_NATIVE_INT, 0) != 0;
+  if (H5Lexists(root, "maps/snapshot_times", H5P_DEFAULT) > 0) {
+    H5Dataset d(GF_H5(H5Dopen2(root, "maps/snapshot_times", H5P_DEFAULT)));
+    layout_.snapshotTimes = readAll<double>(d, H5T_NATIVE_DOUBLE);
+  }
+  {
+    H5Group stats(GF_H5(H5Gopen2(root, "statistics", H5P_DEFAULT)));
+    H5G_info_t info;
+    GF_H5(H5Gget_info(stats, &info));
+    for (hsize_t i = 0; i < info.nlinks; ++i) {
+      const ssize_t length = GF_H5(H5Lget_name_by_idx(stats, ".", H5_INDEX_NAME, H5_ITER_INC, i, nullptr, 0, H5P_DEFAULT));
+      std::string name(static_cast<size_t>(length) + 1, '\0');
+      GF_H5(H5Lget_name_by_idx(stats, ".", H5_INDEX_NAME, H5_ITER_INC, i, name.data(), name.size(), H5P_DEFAULT));
+      name.resize(static_cast<size_t>(length));
+      H5Dataset d(GF_H5(H5Dopen2(stats, name.c_str(), H5P_DEFAULT)));
+      H5Type type(GF_H5(H5Dget_type(d)));
+      (H5Tget_class(type) == H5T_FLOAT ? layout_.statisticsReal : layout_.statisticsInteger).push_back(name);
+    }
+  }
+  {
+    H5Group group(GF_H5(H5Gopen2(root, "sweep", H5P_DEFAULT)));
+    H5Attribute axes(GF_H5(H5Aopen(group, "axes", H5P_DEFAULT)));
+    std::string text = readStringAttribute(axes);
+    size_t start = 0;
+    while (start < text.size()) {
+      size_t end = text.find(',', start);
+      if (end == std::string::npos) end = text.size();
+      sweep_.axes.push_back(text.substr(start, end - start));
+      start = end + 1;
+    }
+    auto real = [&](const char* name) {
+      H5Dataset d(GF_H5(H5Dopen2(group, name, H5P_DEFAULT)));
+      return readAll<double>(d, H5T_NATIVE_DOUBLE);
+    };
+    sweep_.delta = real("delta");
+    sweep_.theta = real("theta");
+    sweep_.sigma = real("sigma");
+    sweep_.sigmaKinetic = real("sigma_kinetic");
+    H5Dataset property(GF_H5(H5Dopen2(group, "property", H5P_DEFAULT)));
+    sweep_.property = readStrings(property);
+    H5Dataset profile(GF_H5(H5Dopen2(group, "profile", H5P_DEFAULT)));
+    sweep_.profile = readStrings(profile);
+    H5Dataset ref(GF_H5(H5Dopen2(group, "reference_point", H5P_DEFAULT)));
+    sweep_.referencePoint = readAll<int>(ref, H5T_NATIVE_INT);
+  }
+}
+
+void ResultsFile::openDatasets() {
+  const hid_t root = file_.get();
+  auto open = [&](const char* name) { return H5Dataset(GF_H5(H5Dopen2(root, name, H5P_DEFAULT))); };
+  muStatic_ = open("realisations/mu_s");
+  muKinetic_ = open("realisations/mu_k");
+  peakTime_ = open("realisations/peak_time");
+  endTime_ = open("realisations/end_time");
+  peakConfirmed_ = open("realisations/peak_confirmed");
+  steps_ = open("realisations/steps");
+  redrawn_ = open("realisations/redrawn_blocks");
+  done_ = open("realisations/done");
+  wallSeconds_ = open("run/wall_seconds");
+  taskRank_ = open("run/rank");
+  if (layout_.historyCapacity > 0) {
+    historyTime_ = open("history/time");
+    historyMu_ = open("history/mu");
+    historyLength_ = open("history/length");
+  }
+  if (layout_.firstSlipMap) firstSlip_ = open("maps/first_slip_time");
+  if (!layout_.snapshotTimes.empty()) {
+    snapshotTime_ = open("maps/snapshot_time");
+    snapshots_ = open("maps/sigma_x_over_p");
+  }
+}
+
+std::vector<Attribute> ResultsFile::sceneAttributes() const {
+  H5Group scene(GF_H5(H5Gopen2(file_, "scene", H5P_DEFAULT)));
+  H5Group units(GF_H5(H5Gopen2(scene, "units", H5P_DEFAULT)));
+  H5Group origins(GF_H5(H5Gopen2(scene, "origin", H5P_DEFAULT)));
+  auto values = readStringAttributes(scene);
+  auto unitValues = readStringAttributes(units);
+  auto originValues = readStringAttributes(origins);
+  std::vector<Attribute> out;
+  for (size_t i = 0; i < values.size(); ++i) {
+    Attribute a{values[i].first, values[i].second, "", ""};
+    if (i < unitValues.size() && unitValues[i].first == a.name) a.unit = unitValues[i].second;
+    if (i < originValues.size() && originValues[i].first == a.name) a.origin = originValues[i].second;
+    out.push_back(std::move(a));
+  }
+  return out;
+}
+
+bool ResultsFile::complete() const { return readScalarAttribute<int>(file_, "complete", H5T_NATIVE_INT, 0) != 0; }
+
+void ResultsFile::writeTask(const TaskOutput& t) {
+  if (t.point < 0 || t.point >= layout_.points || t.realisation < 0 || t.realisation >= layout_.realisations)
+    throw Hdf5Error("task (" + std::to_string(t.point) + ", " + std::to_string(t.realisation) + ") outside the file");
+  const hsize_t p = static_cast<hsize_t>(t.point), r = static_cast<hsize_t>(t.realisation);
+  const std::vector<hsize_t> at{p, r}, one{1, 1};
+  const hid_t x = independent_;
+  if (layout_.historyCapacity > 0) {
+    const size_t n = std::min(t.time.size(), t.mu.size());
+    if (n > static_cast<size_t>(layout_.historyCapacity))
+      throw Hdf5Error("mu(t) history of task (" + std::to_string(t.point) + ", " + std::to_string(t.realisation) +
+                      ") has " + std::to_string(n) + " samples, more than the file's capacity " +
+                      std::to_string(layout_.historyCapacity));
+    // The whole row, padding included, so that a task redone after an interruption overwrites
+    // whatever a torn earlier write left.
+    const hsize_t C = static_cast<hsize_t>(layout_.historyCapacity);
+    std::vector<double> row(C, kNaN);
+    std::copy(t.time.begin(), t.time.begin() + n, row.begin());
+    writeSlab(historyTime_, H5T_NATIVE_DOUBLE, {p, r, 0}, {1, 1, C}, row.data(), x);
+    std::fill(row.begin(), row.end(), kNaN);
+    std::copy(t.mu.begin(), t.mu.begin() + n, row.begin());
+    writeSlab(historyMu_, H5T_NATIVE_DOUBLE, {p, r, 0}, {1, 1, C}, row.data(), x);
+    const int length = static_cast<int>(n);
+    writeSlab(historyLength_, H5T_NATIVE_INT, at, one, &length, x);
+  }
+  const hsize_t N = static_cast<hsize_t>(layout_.mapSide);
+  if (layout_.firstSlipMap) {
+    std::vector<double> map(N * N, kNaN);
+    if (t.firstSlipTime.size() == map.size()) map = t.firstSlipTime;
+    writeSlab(firstSlip_, H5T_NATIVE_DOUBLE, {p, r, 0, 0}, {1, 1, N, N}, map.data(), x);
+  }
+  const hsize_t S = layout_.snapshotTimes.size();
+  if (S > 0) {
+    std::vector<double> times(S, kNaN);
+    std::vector<double> maps(S * N * N, kNaN);
+    for (size_t s = 0; s < S && s < t.snapshots.size(); ++s) {
+      if (s < t.snapshotTime.size()) times[s] = t.snapshotTime[s];
+      if (t.snapshots[s].size() == N * N) std::copy(t.snapshots[s].begin(), t.snapshots[s].end(), maps.begin() + s * N * N);
+    }
+    writeSlab(snapshotTime_, H5T_NATIVE_DOUBLE, {p, r, 0}, {1, 1, S}, times.data(), x);
+    writeSlab(snapshots_, H5T_NATIVE_DOUBLE, {p, r, 0, 0, 0}, {1, 1, S, N, N}, maps.data(), x);
+  }
+  writeSlab(muStatic_, H5T_NATIVE_DOUBLE, at, one, &t.muStatic, x);
+  writeSlab(muKinetic_, H5T_NATIVE_DOUBLE, at, one, &t.muKinetic, x);
+  writeSlab(peakTime_, H5T_NATIVE_DOUBLE, at, one, &t.peakTime, x);
+  writeSlab(endTime_, H5T_NATIVE_DOUBLE, at, one, &t.endTime, x);
+  const std::int8_t confirmed = t.peakConfirmed ? 1 : 0;
+  writeSlab(peakConfirmed_, H5T_NATIVE_INT8, at, one, &confirmed, x);
+  writeSlab(steps_, H5T_NATIVE_INT64, at, one, &t.steps, x);
+  writeSlab(redrawn_, H5T_NATIVE_INT, at, one, &t.redrawnBlocks, x);
+  writeSlab(wallSeconds_, H5T_NATIVE_DOUBLE, at, one, &t.wallSeconds, x);
+  writeSlab(taskRank_, H5T_NATIVE_INT, at, one, &t.rank, x);
+  // Last: the flag that says the task above is complete.
+  const std::int8_t done = 1;
+  writeSlab(done_, H5T_NATIVE_INT8, at, one, &done, x);
+}
+
+void ResultsFile::flush() { GF_H5(H5Fflush(file_, H5F_SCOPE_GLOBAL)); }
+
+std::vector<std::uint8_t> ResultsFile::finishedTasks() const {
+  auto flags = readAll<std::int8_t>(done_, H5T_NATIVE_INT8);
+  return std::vector<std::uint8_t>(flags.begin(), flags.end());
+}
+
+std::vector<double> ResultsFile::readRealisationReal(const std::string& name) const {
+  H5Dataset d(GF_H5(H5Dopen2(file_, ("realisations/" + name).c_str(), H5P_DEFAULT)));
+  return readAll<double>(d, H5T_NATIVE_DOUBLE);
+}
+
+std::vector<std::int8_t> ResultsFile::readPeakConfirmed() const {
+  return readAll<std::int8_t>(peakConfirmed_, H5T_NATIVE_INT8);
+}
+
+std::vector<double> ResultsFile::readStatistic(const std::string& name) const {
+  H5Dataset d(GF_H5(H5Dopen2(file_, ("statistics/" + name).c_str(), H5P_DEFAULT)));
+  return readAll<double>(d, H5T_NATIVE_DOUBLE);
+}
+
+void ResultsFile::writeStatistics(const std::vector<std::pair<std::string, std::vector<double>>>& real,
+                                  const std::vector<std::pair<std::string, std::vector<int>>>& integer) {
+  const hsize_t P = static_cast<hsize_t>(layout_.points);
+  if (rank_ == 0) {
+    for (const auto& [name, values] : real) {
+      if (values.size() != P) throw Hdf5Error("statistics column " + name + " has the wrong length");
+      H5Dataset d(GF_H5(H5Dopen2(file_, ("statistics/" + name).c_str(), H5P_DEFAULT)));
+      writeSlab(d, H5T_NATIVE_DOUBLE, {0}, {P}, values.data(), independent_);
+    }
+    for (const auto& [name, values] : integer) {
+      if (values.size() != P) throw Hdf5Error("statistics column " + name + " has the wrong length");
+      H5Dataset d(GF_H5(H5Dopen2(file_, ("statistics/" + name).c_str(), H5P_DEFAULT)));
+      writeSlab(d, H5T_NATIVE_INT, {0}, {P}, values.data(), independent_);
+    }
+  }
+  flush();
+}
+
+void ResultsFile::setRunAttributes(const std::vector<Attribute>& attributes) {
+  H5Group run(GF_H5(H5Gopen2(file_, "run", H5P_DEFAULT)));
+  for (const auto& a : attributes) writeStringAttribute(run, a.name, a.value);
+  flush();
+}
+
+void ResultsFile::markComplete() {
+  writeScalarAttribute<int>(file_, "complete", H5T_STD_I32LE, H5T_NATIVE_INT, 1);
+  flush();
+}
+
+void ResultsFile::close() {
+  muStatic_.reset();
+  muKinetic_.reset();
+  peakTime_.reset();
+  endTime_.reset();
+  peakConfirmed_.reset();
+  steps_.reset();
+  redrawn_.reset();
+  done_.reset();
+  wallSeconds_.reset();
+  taskRank_.reset();
+  historyTime_.reset();
+  historyMu_.reset();
+  historyLength_.reset();
+  firstSlip_.reset();
+  snapshotTime_.reset();
+  snapshots_.reset();
+  independent_.reset();
+  file_.reset();
+}
+
+}  // namespace gradfric::io
