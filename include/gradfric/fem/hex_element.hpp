@@ -1,0 +1,43 @@
+#pragma once
+// Pointwise physics of the FEM, pure arithmetic, no PETSc: the trilinear (Q1) hexahedron for a
+// rectangular box cell, small-strain isotropic elasticity.
+//
+// Node numbering inside the element: a = i + 2 j + 4 k with (i, j, k) in {0, 1}^3 the corner at
+// (i hx, j hy, k hz). Element dofs: 3 a + c, c = x, y, z.
+#include <array>
+
+namespace gradfric::fem {
+
+struct Lame {
+  double lambda;
+  double mu;
+};
+// lambda = E nu / ((1 + nu)(1 - 2 nu)), mu = G = E / (2 (1 + nu)).
+Lame lameFromYoung(double youngsModulus, double poissonRatio);
+
+// Element stiffness of one box cell for E = 1 (every cell of the plate is the same box, so the
+// cells differ only by their E factor). Integrated with 2x2x2 Gauss points: exact for a box.
+struct BoxElement {
+  double hx = 0, hy = 0, hz = 0;
+  double poissonRatio = 0;
+  std::array<double, 24 * 24> stiffness{};  // row-major, [3a+c][3b+d], for E = 1
+  double volume() const { return hx * hy * hz; }
+};
+BoxElement makeBoxElement(double hx, double hy, double hz, double poissonRatio);
+
+// Largest eigenvalue of the symmetric 24x24 matrix (cyclic Jacobi).
+double largestEigenvalue(const std::array<double, 24 * 24>& matrix);
+
+// Squared highest angular frequency of one element with lumped mass rho V / 8 per node:
+// lambda_max(M_e^-1 K_e). The global highest frequency is bounded by the largest element one.
+double elementMaxFrequencySquared(const BoxElement& element, double youngsModulus, double density);
+
+// Stable step of the central-difference (velocity Verlet) scheme for the highest angular
+// frequency omega and damping ratio xi at that frequency: (2 / omega)(sqrt(1 + xi^2) - xi).
+double centralDifferenceStableStep(double omegaSquared, double dampingRatio);
+
+// Cell-average stress (Voigt order xx, yy, zz, yz, xz, xy) of one box cell with element
+// displacements ue (24 values, element numbering), for E and nu.
+std::array<double, 6> cellAverageStress(const BoxElement& element, double youngsModulus, const double* ue);
+
+}  // namespace gradfric::fem

@@ -1,0 +1,110 @@
+#include "gradfric/fem/parameters.hpp"
+
+#include "gradfric/core/input_error.hpp"
+
+#include <cmath>
+
+namespace gradfric::fem {
+
+double FemParameters::shearWaveSpeed() const { return std::sqrt(shearModulus() / rho); }
+
+void FemParameters::resolveDerived() {
+  const double hz = H / nz;
+  if (kn <= 0) kn = E / hz;
+  if (kt <= 0) kt = kn;
+  const double cs = shearWaveSpeed();
+  if (settleDamping < 0) settleDamping = cs / H;
+  if (rampTime < 0) rampTime = 20 * H / cs;
+  if (settleTime < 0) settleTime = 10 * H / cs;
+  const double ts = eq2PeakTime();
+  if (slideTime < 0) slideTime = 2.5 * ts;
+  if (windowStart < 0) windowStart = 0.25 * ts;
+  if (windowLength < 0) windowLength = 0.5 * ts;
+}
+
+FemParameters readFemParameters(MPI_Comm comm, RunParameters* record) {
+  OptionReader o(comm, "fem_", "Finite-element plate model (3D, explicit)", record);
+  FemParameters q;
+  q.nx = static_cast<int>(o.integer("nx", q.nx, "1", "hexahedra along x (grading axis)"));
+  q.ny = static_cast<int>(o.integer("ny", q.ny, "1", "hexahedra along y"));
+  q.nz = static_cast<int>(o.integer("nz", q.nz, "1", "hexahedra through the thickness"));
+  q.L = o.real("L", q.L, "m", "plate side L");
+  q.H = o.real("H", q.H, "m", "plate thickness H");
+  q.E = o.real("E", q.E, "Pa", "reference Young's modulus E0");
+  q.nu = o.real("nu", q.nu, "1", "Poisson's ratio");
+  q.rho = o.real("rho", q.rho, "kg/m^3", "density");
+  q.p = o.real("p", q.p, "Pa", "top pressure p");
+  q.v = o.real("v", q.v, "m/s", "top sliding speed v");
+  q.thetaDeg = o.real("theta", q.thetaDeg, "deg", "sliding direction, angle to the grading axis x");
+  q.muS = o.real("mu_s", q.muS, "1", "local static friction coefficient (reference)");
+  q.muK = o.real("mu_k", q.muK, "1", "local kinetic friction coefficient (reference)");
+  q.vC = o.real("v_c", q.vC, "m/s", "critical velocity v_c of Eq. 1");
+  q.contact = o.flag("contact", true, "contact with the rigid plane (off: free bottom face, for tests)");
+  const double hzGuess = q.H / std::max(1, q.nz);
+  if (auto kn = o.realIfSet("kn", "Pa/m", "normal penalty stiffness k_n", "E0/hz")) q.kn = *kn;
+  if (auto kt = o.realIfSet("kt", "Pa/m", "tangential penalty stiffness k_t", "k_n")) q.kt = *kt;
+  if (auto g = o.realIfSet("settle_damping", "1/s", "mass-proportional damping during the pressure step", "c_s/H"))
+    q.settleDamping = *g;
+  q.slideDamping = o.real("slide_damping", 0.0, "1/s", "mass-proportional damping during sliding");
+  q.stiffnessDamping = o.real("stiffness_damping", 0.0, "s", "stiffness-proportional (Rayleigh beta) damping");
+  if (auto dt = o.realIfSet("dt", "s", "time step", "dt_safety * stable step")) q.dt = *dt;
+  q.dtSafety = o.real("dt_safety", q.dtSafety, "1", "time step as a fraction of the stable step");
+  if (auto t = o.realIfSet("ramp_time", "s", "pressure ramp duration", "20 H/c_s")) q.rampTime = *t;
+  if (auto t = o.realIfSet("settle_time", "s", "hold under pressure before sliding", "10 H/c_s")) q.settleTime = *t;
+  if (auto t = o.realIfSet("slide_time", "s", "longest sliding duration", "2.5 * Eq. 2 peak time")) q.slideTime = *t;
+  if (auto t = o.realIfSet("kinetic_window_start", "s", "kinetic window start after the peak", "0.25 * Eq. 2"))
+    q.windowStart = *t;
+  if (auto t = o.realIfSet("kinetic_window_length", "s", "kinetic window length", "0.5 * Eq. 2")) q.windowLength = *t;
+  q.stopWhenKnown = o.flag("stop_when_known", true, "stop once mu_s, the peak time and mu_k are known");
+  q.partitioner = o.choice("partitioner", "metis", {"metis", "ptscotch", "simple"}, "mesh partitioner");
+  q.output = o.text("output", "", "HDF5 results file (empty: none); snapshots go to <name>_fields.h5 + .xmf");
+  q.overwrite = o.flag("output_overwrite", false, "replace an existing results file");
+  q.snapshotTimes = o.realList("snapshot_times", {}, "s", "field snapshot times after the start of sliding");
+  q.historyEvery = static_cast<int>(o.integer("history_every", 1, "1", "record mu(t) every n steps"));
+  q.verbose = o.flag("verbose", true, "print progress");
+
+  o.requireAtLeast("nx", q.nx, 1);
+  o.requireAtLeast("ny", q.ny, 1);
+  o.requireAtLeast("nz", q.nz, 1);
+  o.requirePositive("L", q.L, "m");
+  o.requirePositive("H", q.H, "m");
+  o.requirePositive("E", q.E, "Pa");
+  o.requireRange("nu", q.nu, 0.0, 0.4999, "0 <= nu < 0.5");
+  o.requirePositive("rho", q.rho, "kg/m^3");
+  o.requirePositive("p", q.p, "Pa");
+  o.requirePositive("v", q.v, "m/s");
+  o.requirePositive("mu_s", q.muS, "1");
+  o.requirePositive("mu_k", q.muK, "1");
+  if (q.muK > q.muS) throw InputError(o.fullName("mu_k"), formatReal(q.muK), "<= mu_s = " + formatReal(q.muS));
+  o.requirePositive("v_c", q.vC, "m/s");
+  if (o.wasSet("kn")) o.requirePositive("kn", q.kn, "Pa/m");
+  if (o.wasSet("kt")) o.requirePositive("kt", q.kt, "Pa/m");
+  if (o.wasSet("settle_damping")) o.requireNonNegative("settle_damping", q.settleDamping, "1/s");
+  o.requireNonNegative("slide_damping", q.slideDamping, "1/s");
+  o.requireNonNegative("stiffness_damping", q.stiffnessDamping, "s");
+  if (o.wasSet("dt")) o.requirePositive("dt", q.dt, "s");
+  o.requireRange("dt_safety", q.dtSafety, 1e-6, 1.0, "0 < dt_safety <= 1");
+  for (const char* name : {"ramp_time", "settle_time", "kinetic_window_start"})
+    if (o.wasSet(name)) o.requireNonNegative(name, name[0] == 'r' ? q.rampTime : name[0] == 's' ? q.settleTime : q.windowStart, "s");
+  if (o.wasSet("slide_time")) o.requirePositive("slide_time", q.slideTime, "s");
+  if (o.wasSet("kinetic_window_length")) o.requirePositive("kinetic_window_length", q.windowLength, "s");
+  o.requireAtLeast("history_every", q.historyEvery, 1);
+  (void)hzGuess;
+
+  FemParameters derived = q;
+  derived.resolveDerived();
+  if (!o.wasSet("kn")) o.recordDerived("kn", derived.kn, "Pa/m", "normal penalty stiffness k_n");
+  if (!o.wasSet("kt")) o.recordDerived("kt", derived.kt, "Pa/m", "tangential penalty stiffness k_t");
+  if (!o.wasSet("settle_damping"))
+    o.recordDerived("settle_damping", derived.settleDamping, "1/s", "mass-proportional damping during the pressure step");
+  if (!o.wasSet("ramp_time")) o.recordDerived("ramp_time", derived.rampTime, "s", "pressure ramp duration");
+  if (!o.wasSet("settle_time")) o.recordDerived("settle_time", derived.settleTime, "s", "hold under pressure");
+  if (!o.wasSet("slide_time")) o.recordDerived("slide_time", derived.slideTime, "s", "longest sliding duration");
+  if (!o.wasSet("kinetic_window_start"))
+    o.recordDerived("kinetic_window_start", derived.windowStart, "s", "kinetic window start after the peak");
+  if (!o.wasSet("kinetic_window_length"))
+    o.recordDerived("kinetic_window_length", derived.windowLength, "s", "kinetic window length");
+  return derived;
+}
+
+}  // namespace gradfric::fem

@@ -1,0 +1,124 @@
+#include "gradfric/fem/verlet_ts.hpp"
+
+#include "gradfric/core/petsc_call.hpp"
+
+#include <petsc/private/tsimpl.h>
+
+#include <cstring>
+
+// PETSc callbacks live outside namespace gradfric: PETSc's error macros call a function named
+// PetscError, which gradfric::PetscError (the exception class) would hide.
+namespace {
+
+struct VerletData {
+  Vec rhs = nullptr;  // [v ; a] at the current solution
+  PetscBool haveRhs = PETSC_FALSE;
+};
+
+PetscErrorCode TSSetUp_GFVerlet(TS ts) {
+  auto* d = static_cast<VerletData*>(ts->data);
+  PetscFunctionBeginUser;
+  if (!d->rhs) PetscCall(VecDuplicate(ts->vec_sol, &d->rhs));
+  d->haveRhs = PETSC_FALSE;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode TSReset_GFVerlet(TS ts) {
+  auto* d = static_cast<VerletData*>(ts->data);
+  PetscFunctionBeginUser;
+  PetscCall(VecDestroy(&d->rhs));
+  d->haveRhs = PETSC_FALSE;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode TSDestroy_GFVerlet(TS ts) {
+  PetscFunctionBeginUser;
+  PetscCall(TSReset_GFVerlet(ts));
+  PetscCall(PetscFree(ts->data));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode halfKick(Vec X, Vec F, PetscReal h, PetscInt bs) {
+  PetscFunctionBeginUser;
+  PetscInt n = 0;
+  PetscCall(VecGetLocalSize(X, &n));
+  PetscScalar* x = nullptr;
+  const PetscScalar* f = nullptr;
+  PetscCall(VecGetArray(X, &x));
+  PetscCall(VecGetArrayRead(F, &f));
+  const PetscInt k = bs / 2;
+  for (PetscInt b = 0; b < n; b += bs)
+    for (PetscInt c = k; c < bs; ++c) x[b + c] += h * f[b + c];
+  PetscCall(VecRestoreArray(X, &x));
+  PetscCall(VecRestoreArrayRead(F, &f));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode drift(Vec X, PetscReal dt, PetscInt bs) {
+  PetscFunctionBeginUser;
+  PetscInt n = 0;
+  PetscCall(VecGetLocalSize(X, &n));
+  PetscScalar* x = nullptr;
+  PetscCall(VecGetArray(X, &x));
+  const PetscInt k = bs / 2;
+  for (PetscInt b = 0; b < n; b += bs)
+    for (PetscInt c = 0; c < k; ++c) x[b + c] += dt * x[b + k + c];
+  PetscCall(VecRestoreArray(X, &x));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode TSStep_GFVerlet(TS ts) {
+  auto* d = static_cast<VerletData*>(ts->data);
+  PetscFunctionBeginUser;
+  Vec X = ts->vec_sol;
+  const PetscReal t = ts->ptime, dt = ts->time_step;
+  PetscInt bs = 1;
+  PetscCall(VecGetBlockSize(X, &bs));
+  PetscCheck(bs >= 2 && bs % 2 == 0, PetscObjectComm((PetscObject)ts), PETSC_ERR_ARG_WRONG,
+             "gfverlet needs a state of block size 2k [positions, velocities], got %" PetscInt_FMT, bs);
+  if (!d->rhs) PetscCall(VecDuplicate(X, &d->rhs));
+  if (!d->haveRhs) {
+    PetscCall(TSComputeRHSFunction(ts, t, X, d->rhs));
+    d->haveRhs = PETSC_TRUE;
+  }
+  PetscCall(TSPreStage(ts, t));
+  PetscCall(halfKick(X, d->rhs, 0.5 * dt, bs));
+  PetscCall(drift(X, dt, bs));
+  PetscCall(TSComputeRHSFunction(ts, t + dt, X, d->rhs));
+  PetscCall(halfKick(X, d->rhs, 0.5 * dt, bs));
+  PetscCall(TSPostStage(ts, t + dt, 0, &X));
+  ts->ptime += dt;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode TSCreate_GFVerlet(TS ts) {
+  PetscFunctionBeginUser;
+  VerletData* d = nullptr;
+  PetscCall(PetscNew(&d));
+  ts->data = d;
+  ts->ops->setup = TSSetUp_GFVerlet;
+  ts->ops->step = TSStep_GFVerlet;
+  ts->ops->reset = TSReset_GFVerlet;
+  ts->ops->destroy = TSDestroy_GFVerlet;
+  ts->default_adapt_type = TSADAPTNONE;
+  PetscFunctionReturn(0);
+}
+
+}  // namespace
+
+namespace gradfric::fem {
+
+void registerVerletTS() {
+  static bool done = false;
+  if (done) return;
+  GF_CALL(TSRegister(TSGFVERLET, TSCreate_GFVerlet));
+  done = true;
+}
+
+void verletInvalidate(TS ts) {
+  PetscBool same = PETSC_FALSE;
+  GF_CALL(PetscObjectTypeCompare(reinterpret_cast<PetscObject>(ts), TSGFVERLET, &same));
+  if (same && ts->data) static_cast<VerletData*>(ts->data)->haveRhs = PETSC_FALSE;
+}
+
+}  // namespace gradfric::fem

@@ -1,0 +1,111 @@
+// The assembled model: specialised kernel vs PETSc's generic PetscFE residual, patch test, mass.
+#include <petscsection.h>  // petsc_handle.hpp names PetscSFDestroy/PetscSectionDestroy without
+#include <petscsf.h>       // including their headers
+#include "gradfric/core/petsc_handle.hpp"
+#include "gradfric/fem/plate_model.hpp"
+#include "fem_test_util.hpp"
+
+#include <gtest/gtest.h>
+#include <petscdmplex.h>
+
+#include <cmath>
+
+using namespace gradfric;
+using namespace gradfric::fem;
+
+TEST(FemModel, SpecialisedKernelEqualsGenericResidualOnARandomState) {
+  FemParameters q = test::coarse(8, 6, 3);
+  const Grading g = test::linear(GradedProperty::YoungsModulus, 0.4);
+  PlateModel model(PETSC_COMM_WORLD, q, g);
+  DM dmU = model.displacementDM();
+  OwnedVec u, fs, fg;
+  ASSERT_EQ(DMCreateGlobalVector(dmU, u.out()), 0);
+  ASSERT_EQ(VecDuplicate(u, fs.out()), 0);
+  ASSERT_EQ(VecDuplicate(u, fg.out()), 0);
+  PetscRandom rnd = nullptr;
+  PetscRandomCreate(PETSC_COMM_WORLD, &rnd);
+  PetscRandomSetSeed(rnd, 42);
+  PetscRandomSeed(rnd);
+  VecSetRandom(u, rnd);
+  PetscRandomDestroy(&rnd);
+  VecScale(u, 1e-7);
+  model.elasticForceSpecialised(u, fs);
+  model.elasticForceGeneric(u, fg);
+  PetscReal ng = 0, nd = 0;
+  VecNorm(fg, NORM_2, &ng);
+  ASSERT_GT(ng, 0.0) << "the generic residual is all zero (field not marked explicit?)";
+  VecAXPY(fs, -1.0, fg);
+  VecNorm(fs, NORM_2, &nd);
+  EXPECT_LT(nd / ng, 1e-12) << "relative difference " << nd / ng;
+}
+
+TEST(FemModel, PatchTestUniformStrainIsReproducedExactly) {
+  FemParameters q = test::coarse(5, 4, 4);
+  PlateModel model(PETSC_COMM_WORLD, q, test::noGrading());
+  DM dmU = model.displacementDM();
+  OwnedVec u, f;
+  ASSERT_EQ(DMCreateGlobalVector(dmU, u.out()), 0);
+  ASSERT_EQ(VecDuplicate(u, f.out()), 0);
+  // u = A x with a general A (uniform strain + rotation).
+  const double A[3][3] = {{1e-3, 2e-4, -3e-4}, {5e-4, -7e-4, 1e-4}, {-2e-4, 6e-4, 4e-4}};
+  Vec coords = nullptr;
+  DMGetCoordinates(dmU, &coords);  // global coordinates, same layout as u (3 per vertex)
+  const PetscScalar* x = nullptr;
+  PetscScalar* uu = nullptr;
+  PetscInt n = 0;
+  VecGetLocalSize(u, &n);
+  VecGetArrayRead(coords, &x);
+  VecGetArray(u, &uu);
+  for (PetscInt i = 0; i < n; i += 3)
+    for (int c = 0; c < 3; ++c) uu[i + c] = A[c][0] * x[i] + A[c][1] * x[i + 1] + A[c][2] * x[i + 2];
+  VecRestoreArray(u, &uu);
+  model.elasticForceSpecialised(u, f);
+  // Stress of the uniform strain.
+  const Lame l = lameFromYoung(q.E, q.nu);
+  double eps[3][3], sigma[3][3];
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) eps[i][j] = 0.5 * (A[i][j] + A[j][i]);
+  const double tr = eps[0][0] + eps[1][1] + eps[2][2];
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) sigma[i][j] = 2 * l.mu * eps[i][j] + (i == j ? l.lambda * tr : 0.0);
+  const double hx = q.L / q.nx, hy = q.L / q.ny, hz = q.H / q.nz;
+  // Round-off: each nodal force sums ~200 products about 100x larger than the face force.
+  const double tol = 1e-10;
+  const PetscScalar* ff = nullptr;
+  VecGetArrayRead(f, &ff);
+  int interior = 0, faceNodes = 0;
+  for (PetscInt i = 0; i < n; i += 3) {
+    const double px = x[i], py = x[i + 1], pz = x[i + 2];
+    auto on = [](double v, double lo, double hi) { return std::fabs(v - lo) < 1e-12 * hi || std::fabs(v - hi) < 1e-12 * hi; };
+    const bool bx = on(px, 0, q.L), by = on(py, 0, q.L), bz = on(pz, 0, q.H);
+    const double scale = std::fabs(sigma[0][0]) * hy * hz;
+    if (!bx && !by && !bz) {  // interior node: zero force
+      ++interior;
+      for (int c = 0; c < 3; ++c) EXPECT_NEAR(ff[i + c], 0.0, tol * scale);
+    } else if (bx && !by && !bz) {  // inside an x face: the traction sigma n times hy hz
+      ++faceNodes;
+      const double nx = px > 0.5 * q.L ? 1.0 : -1.0;
+      for (int c = 0; c < 3; ++c) EXPECT_NEAR(ff[i + c], -sigma[c][0] * nx * hy * hz, 1e-10 * scale);
+    } else if (bz && !bx && !by) {  // inside a z face
+      ++faceNodes;
+      const double nz = pz > 0.5 * q.H ? 1.0 : -1.0;
+      for (int c = 0; c < 3; ++c) EXPECT_NEAR(ff[i + c], -sigma[c][2] * nz * hx * hy, 1e-10 * scale);
+    }
+  }
+  VecRestoreArrayRead(f, &ff);
+  VecRestoreArrayRead(coords, &x);
+  int counts[2] = {interior, faceNodes}, total[2];
+  MPI_Allreduce(counts, total, 2, MPI_INT, MPI_SUM, PETSC_COMM_WORLD);
+  EXPECT_EQ(total[0], 4 * 3 * 3);
+  EXPECT_GT(total[1], 0);
+}
+
+TEST(FemModel, LumpedMassAndFaceAreas) {
+  FemParameters q = test::coarse(6, 5, 2);
+  PlateModel model(PETSC_COMM_WORLD, q, test::noGrading());
+  EXPECT_NEAR(model.totalMass(), q.rho * q.L * q.L * q.H, 1e-12 * q.rho * q.L * q.L * q.H);
+  EXPECT_NEAR(model.topArea(), q.L * q.L, 1e-12 * q.L * q.L);
+  EXPECT_EQ(model.globalCells(), 6 * 5 * 2);
+  EXPECT_GT(model.stableTimeStep(), 0.0);
+  EXPECT_NEAR(model.timeStep(), q.dtSafety * model.stableTimeStep(), 1e-20);
+}
