@@ -1,0 +1,92 @@
+// Nanoseconds per block per RK4 step of the spring-block kernels, fast and plain reference, in
+// one run (the machines are shared and noisy: compare the ratio, not the absolute figures).
+//
+//   build/bench/bench_sbm_kernel [--benchmark_min_time=2] [-- N]
+//
+// The lattice (N_b = 120 by default, paper parameters, sigma = 2.8 %) is first driven past its
+// static peak so that blocks stick and slip as in a real run; then whole RK4 steps are timed.
+#include "gradfric/sbm/integrator.hpp"
+#include "gradfric/sbm/lattice.hpp"
+
+#include <benchmark/benchmark.h>
+#include <petscsys.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <map>
+#include <string>
+
+using namespace gradfric;
+using namespace gradfric::sbm;
+
+namespace {
+
+int blocksPerSide = 120;
+
+struct Setup {
+  Parameters parameters;
+  LatticeStiffness stiffness;
+  FrictionField friction;
+  Motion motion;
+};
+
+Setup makeSetup() {
+  Setup s;
+  Grading grading;
+  s.parameters.blocksPerSide = blocksPerSide;
+  s.parameters.damping = 0.1 * std::sqrt(s.parameters.axialStiffness(s.parameters.youngsModulus) / s.parameters.blockMass());
+  s.parameters.timeStep = 0.25 * stableTimeStep(s.parameters, grading);
+  s.stiffness = buildStiffness(s.parameters, grading);
+  s.friction = buildFriction(s.parameters, grading, StreamKey{1, 0, 0});
+  s.motion = motionOf(s.parameters, s.parameters.timeStep, s.parameters.damping);
+  return s;
+}
+
+template <class Lattice>
+void benchmarkStep(benchmark::State& state) {
+  const Setup s = makeSetup();
+  Lattice lattice(s.stiffness, s.friction, s.motion);
+  // Warm up into the sliding phase: just past the loading time, most blocks slip.
+  while (lattice.time() < 1.05 * s.parameters.loadingTime()) lattice.step();
+  for (auto _ : state) benchmark::DoNotOptimize(lattice.step());
+  const double blocks = double(s.parameters.blocksPerSide) * s.parameters.blocksPerSide;
+  state.counters["ns_per_block_step"] =
+      benchmark::Counter(blocks * 1e-9, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  state.counters["slipped_blocks"] = lattice.slippedBlocks();
+}
+
+void BM_FastLattice(benchmark::State& state) { benchmarkStep<FastLattice>(state); }
+void BM_ReferenceLattice(benchmark::State& state) { benchmarkStep<ReferenceLattice>(state); }
+BENCHMARK(BM_FastLattice)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ReferenceLattice)->Unit(benchmark::kMillisecond);
+
+// Keeps each benchmark's ns per block-step to print the ratio at the end.
+class RatioReporter : public benchmark::ConsoleReporter {
+public:
+  std::map<std::string, double> nsPerBlockStep;
+  void ReportRuns(const std::vector<Run>& runs) override {
+    for (const auto& run : runs) {
+      auto it = run.counters.find("ns_per_block_step");
+      if (it != run.counters.end() && run.run_type == Run::RT_Iteration)
+        nsPerBlockStep[run.benchmark_name()] = it->second.value;
+    }
+    ConsoleReporter::ReportRuns(runs);
+  }
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  benchmark::Initialize(&argc, argv);
+  for (int i = 1; i < argc; ++i) blocksPerSide = std::atoi(argv[i]) > 1 ? std::atoi(argv[i]) : blocksPerSide;
+  PetscInitializeNoArguments();
+  RatioReporter reporter;
+  benchmark::RunSpecifiedBenchmarks(&reporter);
+  const double fast = reporter.nsPerBlockStep["BM_FastLattice"];
+  const double plain = reporter.nsPerBlockStep["BM_ReferenceLattice"];
+  if (fast > 0 && plain > 0)
+    std::printf("\nN_b = %d: fast %.1f ns, reference %.1f ns per block per RK4 step; speed-up %.2fx\n", blocksPerSide,
+                fast, plain, plain / fast);
+  PetscFinalize();
+  return 0;
+}

@@ -1,0 +1,93 @@
+#pragma once
+// Reading PETSc options with one record per option: its value, unit, help line and origin.
+// The same record serves -help, validation messages, the parameter printout at start and the
+// attributes of the results file. Built-in defaults never override what the user set.
+#include <mpi.h>
+#include <petscsys.h>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace gradfric {
+
+enum class OptionOrigin { Default, User, Derived };
+
+struct ResolvedOption {
+  std::string name;  // with its leading dash, e.g. "-sbm_E"
+  std::string value;
+  std::string unit;
+  std::string help;
+  OptionOrigin origin;
+};
+
+// Every option a run resolved, in the order read.
+class RunParameters {
+public:
+  void add(ResolvedOption option);
+  const std::vector<ResolvedOption>& all() const { return options_; }
+  const ResolvedOption* find(const std::string& name) const;
+  // Rank 0 prints a table "name = value [unit]  (default|set|derived)".
+  void print(MPI_Comm comm, const char* title) const;
+
+private:
+  std::vector<ResolvedOption> options_;
+};
+
+std::string formatReal(double value);
+
+// Reads the options of one component (one prefix). Library code passes its communicator.
+class OptionReader {
+public:
+  OptionReader(MPI_Comm comm, std::string prefix, std::string title, RunParameters* record);
+
+  double real(const std::string& name, double fallback, const std::string& unit, const std::string& help);
+  // For defaults derived from other parameters: returns the user's value if set, else nullopt;
+  // the component then computes the default and calls recordDerived().
+  std::optional<double> realIfSet(const std::string& name, const std::string& unit, const std::string& help,
+                                  const std::string& defaultText);
+  void recordDerived(const std::string& name, double value, const std::string& unit, const std::string& help);
+  PetscInt integer(const std::string& name, PetscInt fallback, const std::string& unit, const std::string& help);
+  bool flag(const std::string& name, bool fallback, const std::string& help);
+  // One of `allowed`; anything else is refused with the list.
+  std::string choice(const std::string& name, const std::string& fallback, const std::vector<std::string>& allowed,
+                     const std::string& help);
+  std::string text(const std::string& name, const std::string& fallback, const std::string& help);
+  // Comma-separated lists.
+  std::vector<double> realList(const std::string& name, const std::vector<double>& fallback, const std::string& unit,
+                               const std::string& help);
+  std::vector<std::string> choiceList(const std::string& name, const std::vector<std::string>& fallback,
+                                      const std::vector<std::string>& allowed, const std::string& help);
+
+  bool wasSet(const std::string& name) const;
+  std::string fullName(const std::string& name) const { return "-" + prefix_ + name; }
+  MPI_Comm comm() const { return comm_; }
+
+  // Validation: each throws InputError naming the option, its value and the allowed range.
+  void requirePositive(const std::string& name, double value, const std::string& unit) const;
+  void requireNonNegative(const std::string& name, double value, const std::string& unit) const;
+  void requireRange(const std::string& name, double value, double lo, double hi, const std::string& allowedText) const;
+  void requireAtLeast(const std::string& name, PetscInt value, PetscInt minimum) const;
+
+private:
+  void printHelp(const std::string& name, const std::string& current, const std::string& unit,
+                 const std::string& help);
+  void store(const std::string& name, const std::string& value, const std::string& unit, const std::string& help,
+             bool userSet);
+
+  MPI_Comm comm_;
+  std::string prefix_;
+  std::string title_;
+  RunParameters* record_;
+  bool help_ = false;
+  bool titlePrinted_ = false;
+};
+
+// True when -help was given: drivers print the option lists, then stop before any work.
+bool helpRequested();
+
+// Options the user set that nothing has read so far. Those under one of `strictPrefixes` (the
+// components this run uses) are refused as likely misspellings; the rest are reported as unused.
+void checkUnusedOptions(MPI_Comm comm, const std::vector<std::string>& strictPrefixes);
+
+}  // namespace gradfric

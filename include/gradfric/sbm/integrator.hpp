@@ -1,0 +1,121 @@
+#pragma once
+// Time integration of the spring-block lattice with classical RK4 at a fixed step, and
+// Amontons-Coulomb stick/slip. Two implementations with the same semantics:
+//   FastLattice      structure of arrays, each spring evaluated once, the four RK stages fused
+//                    with the force sweep row by row (the production kernel);
+//   ReferenceLattice a plain array of blocks, each block summing its 8 neighbours (every spring
+//                    evaluated twice): simple enough to check by eye, the tests' reference.
+//
+// Stick/slip and the RK stages (documented in README, "Spring-block model"):
+//  - the stick state is frozen during a step: a stuck block has zero velocity and acceleration
+//    in every stage; a slipping block feels the damping -m gamma v and a kinetic friction force
+//    mu_k,i F_n that is also frozen for the step: against the velocity at t_n, or against F_mot
+//    when the block starts from rest. (Re-evaluating its direction in every stage makes a
+//    velocity that crosses zero inside a step chatter around zero instead of re-sticking.)
+//  - at the start of each step, with F_mot of the new state: a stuck block with
+//    |F_mot| > mu_s,i F_n starts to slip; a slipping block whose velocity reversed during the
+//    last step (v_new . v_old <= 0) re-sticks (velocity set to zero) if |F_mot| <= mu_s,i F_n,
+//    and slides on otherwise.
+#include "gradfric/sbm/lattice.hpp"
+
+#include <cstdint>
+#include <vector>
+
+namespace gradfric::sbm {
+
+struct StepObservation {
+  double time;          // t_n, the time of the state observed
+  double sliderForceX;  // sum over blocks of the slider springs' forces at t_n [N]
+  double sliderForceY;
+};
+
+struct Motion {
+  double timeStep;          // dt [s]
+  double damping;           // gamma [1/s]
+  double mass;              // m [kg]
+  double sliderVelocityX;   // v cos(theta) [m/s]
+  double sliderVelocityY;   // v sin(theta)
+};
+
+Motion motionOf(const Parameters& parameters, double timeStep, double damping);
+
+enum BlockState : std::uint8_t { Stuck = 0, Slipping = 1, Reversed = 2 };
+
+class FastLattice {
+public:
+  FastLattice(const LatticeStiffness& stiffness, const FrictionField& friction, const Motion& motion);
+  // Observes the state at t_n (slider force, new slips), then advances it to t_{n+1}.
+  StepObservation step();
+  double time() const { return double(steps_) * motion_.timeStep; }
+  std::int64_t steps() const { return steps_; }
+  int slippedBlocks() const { return slipped_; }  // blocks that have slipped at least once
+  // Where to write each block's first-slip time (N_b^2, NaN-initialised by the caller), or nullptr.
+  void recordFirstSlips(double* times) { firstSlip_ = times; }
+  const double* displacementX() const { return ux_.data(); }
+  const double* displacementY() const { return uy_.data(); }
+  const double* velocityX() const { return vx_.data(); }
+  const double* velocityY() const { return vy_.data(); }
+  const std::uint8_t* blockStates() const { return state_.data(); }
+
+  // Internals for the kernel (public so that the fused stage templates can reach them).
+  struct Rows;
+  template <bool Graded, FrictionField::Layout L, int Stage>
+  void stage(double time, double& sumX, double& sumY);
+
+private:
+  void dispatch(double& sumX, double& sumY);
+  LatticeStiffness stiffness_;
+  FrictionField friction_;
+  Motion motion_;
+  int nb_;
+  std::int64_t steps_ = 0;
+  int slipped_ = 0;
+  double* firstSlip_ = nullptr;
+  // State at t_n, stage evaluation point, RK accumulators (sum of weighted stage velocities and
+  // accelerations); mobile_ is 1.0 for a slipping block, 0.0 for a stuck one.
+  std::vector<double> ux_, uy_, vx_, vy_;
+  std::vector<double> sx_, sy_, svx_, svy_;
+  std::vector<double> accUx_, accUy_, accVx_, accVy_;
+  std::vector<double> mobile_;
+  std::vector<double> frictionX_, frictionY_;  // kinetic friction force of the step [N]
+  std::vector<std::uint8_t> state_;
+  std::vector<std::uint8_t> everSlipped_;
+  // Row work space: forces on the current row, carried forces for the next row, spring forces.
+  std::vector<double> fx_, fy_, carryX_, carryY_, nextX_, nextY_, springX_, springY_, dot_;
+};
+
+class ReferenceLattice {
+public:
+  ReferenceLattice(const LatticeStiffness& stiffness, const FrictionField& friction, const Motion& motion);
+  StepObservation step();
+  double time() const { return double(steps_) * motion_.timeStep; }
+  std::int64_t steps() const { return steps_; }
+  int slippedBlocks() const { return slipped_; }
+  void recordFirstSlips(double* times) { firstSlip_ = times; }
+  std::vector<double> displacementX() const;
+  std::vector<double> displacementY() const;
+  std::vector<double> velocityX() const;
+  // Driving force F_mot (springs + slider) on every block at the current state (for tests).
+  void drivingForces(std::vector<double>& fx, std::vector<double>& fy) const;
+
+  struct Block {
+    double ux, uy, vx, vy;
+  };
+
+private:
+  void forces(const std::vector<Block>& y, double t, std::vector<double>& fx, std::vector<double>& fy) const;
+  void derivative(const std::vector<Block>& y, double t, std::vector<Block>& dy) const;
+  std::vector<double> frictionX_, frictionY_;  // kinetic friction force of the step [N]
+  LatticeStiffness stiffness_;
+  FrictionField friction_;
+  Motion motion_;
+  int nb_;
+  std::int64_t steps_ = 0;
+  int slipped_ = 0;
+  double* firstSlip_ = nullptr;
+  std::vector<Block> blocks_;
+  std::vector<std::uint8_t> state_;
+  std::vector<std::uint8_t> everSlipped_;
+};
+
+}  // namespace gradfric::sbm

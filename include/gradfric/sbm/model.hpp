@@ -1,0 +1,44 @@
+#pragma once
+// One realisation of the spring-block model: build the lattice for a grading and a random
+// stream, integrate, and return the observables asked for. No MPI inside: the ensemble layer
+// spreads realisations over ranks.
+#include "gradfric/core/random_stream.hpp"
+#include "gradfric/physics/grading.hpp"
+#include "gradfric/sbm/parameters.hpp"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace gradfric::sbm {
+
+struct StressSnapshot {
+  double time;
+  std::vector<double> sigmaXOverP;  // N_b x N_b, row-major: index = row * N_b + column (column along x)
+};
+
+struct Result {
+  double muStatic = 0.0;   // maximum of mu(t) at the static-to-dynamic transition
+  double muKinetic = 0.0;  // mean of mu(t) over the kinetic window (NaN if not requested)
+  double peakTime = 0.0;   // time of the maximum [s]
+  bool peakConfirmed = false;  // false: stopped at maxTime before the peak was confirmed
+  std::vector<double> time;  // mu(t) history, sampled every Request::historyInterval
+  std::vector<double> mu;
+  std::vector<double> firstSlipTime;  // N_b x N_b as above; NaN where a block never slipped; empty if not asked
+  std::vector<StressSnapshot> snapshots;
+  std::int64_t steps = 0;
+  double endTime = 0.0;      // simulated time reached [s]
+  double wallSeconds = 0.0;  // elapsed wall time of the integration
+  int redrawnBlocks = 0;     // local coefficients redrawn to keep 0 < mu_k,i <= mu_s,i
+};
+
+// Fast: the production kernel. Reference: the plain kernel the tests compare against.
+enum class Kernel { Fast, Reference };
+
+Result simulate(const Parameters& parameters, const Grading& grading, const Request& request, StreamKey key,
+                Kernel kernel = Kernel::Fast);
+
+// The effects a scene switches on, in words (printed at the start of a run).
+std::vector<std::string> activeEffects(const Parameters& parameters, const Grading& grading, const Request& request);
+
+}  // namespace gradfric::sbm

@@ -1,0 +1,28 @@
+#!/usr/bin/env bash
+# Installs what gradfric needs from Debian's packages (only what is missing) and builds it.
+# Usage: scripts/setup.sh [build-dir]   (default: build)
+# Environment: GRADFRIC_NATIVE=ON builds with -march=native (faster, not portable across nodes).
+set -euo pipefail
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+build=${1:-$here/build}
+
+packages=(build-essential cmake pkg-config petsc-dev openmpi-bin libopenmpi-dev libhdf5-openmpi-dev
+          libmetis-dev librandom123-dev googletest libgtest-dev libbenchmark-dev
+          python3 python3-h5py python3-matplotlib python3-numpy hdf5-tools)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "gradfric setup: installing ${missing[*]}"
+  if [ "$(id -u)" -ne 0 ]; then echo "gradfric setup: run as root (or install: ${missing[*]})" >&2; exit 1; fi
+  export DEBIAN_FRONTEND=noninteractive
+  apt-get update -qq
+  apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
+
+# Open MPI refuses to run as root without these; harmless otherwise.
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+
+cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=Release -DGRADFRIC_NATIVE="${GRADFRIC_NATIVE:-OFF}" >/dev/null
+cmake --build "$build" -j "$(nproc)"

@@ -1,0 +1,352 @@
+// The production kernel. Per RK stage, one sweep over the rows: the forces on row r are complete
+// once the springs to row r+1 are added, so the stage update of row r follows at once, while the
+// row is still in cache; the springs to row r+1 leave their reaction in a carry buffer. Every
+// spring is evaluated once per stage. Loops run along a row over structure-of-arrays data and
+// vectorise; the stick/slip transitions, which branch, sit in a short scalar loop of their own.
+#include "gradfric/sbm/integrator.hpp"
+#include "gradfric/sbm/spring.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+#define GF_KERNEL_CLONES __attribute__((target_clones("avx512f", "avx2", "default")))
+#else
+#define GF_KERNEL_CLONES
+#endif
+#define GF_ALWAYS_INLINE __attribute__((always_inline)) inline
+
+namespace gradfric::sbm {
+
+namespace {
+
+// cos and sin of an angle in degrees, exact at multiples of 90 degrees.
+void directionOf(double degrees, double& cx, double& cy) {
+  const double turns = degrees / 90.0;
+  if (turns == std::floor(turns)) {
+    static const double c[4] = {1, 0, -1, 0}, s[4] = {0, 1, 0, -1};
+    const int q = ((static_cast<long long>(turns) % 4) + 4) % 4;
+    cx = c[q];
+    cy = s[q];
+    return;
+  }
+  cx = std::cos(degrees * M_PI / 180.0);
+  cy = std::sin(degrees * M_PI / 180.0);
+}
+
+}  // namespace
+
+Motion motionOf(const Parameters& p, double timeStep, double damping) {
+  double cx, cy;
+  directionOf(p.slidingAngle, cx, cy);
+  return {timeStep, damping, p.blockMass(), p.velocity * cx, p.velocity * cy};
+}
+
+FastLattice::FastLattice(const LatticeStiffness& stiffness, const FrictionField& friction, const Motion& motion)
+    : stiffness_(stiffness), friction_(friction), motion_(motion), nb_(stiffness.blocksPerSide) {
+  const std::size_t n = std::size_t(nb_) * nb_;
+  for (auto* v : {&ux_, &uy_, &vx_, &vy_, &sx_, &sy_, &svx_, &svy_, &accUx_, &accUy_, &accVx_, &accVy_, &mobile_,
+                 &frictionX_, &frictionY_})
+    v->assign(n, 0.0);
+  state_.assign(n, Stuck);
+  everSlipped_.assign(n, 0);
+  for (auto* v : {&fx_, &fy_, &carryX_, &carryY_, &nextX_, &nextY_, &springX_, &springY_, &dot_})
+    v->assign(nb_, 0.0);
+}
+
+namespace {
+
+// The springs from row r (rx, ry) to row r+1 (qx, qy): vertical, diagonal (c -> c+1 above) and
+// anti-diagonal (c+1 -> c above). Adds their forces to row r (fx, fy) and writes the reactions on
+// row r+1 into (nextX, nextY). The arrays are distinct: __restrict lets the loops vectorise.
+template <bool Graded>
+GF_ALWAYS_INLINE void springsToRowAbove(int nb, double l, double diagonalLength, const double* __restrict kV,
+                                        const double* __restrict kD, const double* __restrict rx,
+                                        const double* __restrict ry, const double* __restrict qx,
+                                        const double* __restrict qy, double* __restrict fx, double* __restrict fy,
+                                        double* __restrict nextX, double* __restrict nextY) {
+  const double kV0 = kV[0], kD0 = kD[0];
+  for (int c = 0; c < nb; ++c) {
+    const auto [ax, ay] = springForce(Graded ? kV[c] : kV0, 0.0, l, l, qx[c] - rx[c], qy[c] - ry[c]);
+    fx[c] += ax;
+    fy[c] += ay;
+    nextX[c] = -ax;
+    nextY[c] = -ay;
+  }
+  for (int c = 0; c + 1 < nb; ++c) {
+    const auto [ax, ay] = springForce(Graded ? kD[c] : kD0, l, l, diagonalLength, qx[c + 1] - rx[c], qy[c + 1] - ry[c]);
+    fx[c] += ax;
+    fy[c] += ay;
+    nextX[c + 1] -= ax;
+    nextY[c + 1] -= ay;
+  }
+  for (int c = 0; c + 1 < nb; ++c) {
+    const auto [ax, ay] = springForce(Graded ? kD[c] : kD0, -l, l, diagonalLength, qx[c] - rx[c + 1], qy[c] - ry[c + 1]);
+    fx[c + 1] += ax;
+    fy[c + 1] += ay;
+    nextX[c] -= ax;
+    nextY[c] -= ay;
+  }
+}
+
+// The arrays one row's RK update touches; all distinct.
+struct RowArrays {
+  const double* __restrict fx;
+  const double* __restrict fy;
+  const double* __restrict kfx;  // kinetic friction of the step
+  const double* __restrict kfy;
+  const double* __restrict mobile;
+  double* __restrict ux;
+  double* __restrict uy;
+  double* __restrict vx;
+  double* __restrict vy;
+  double* __restrict sx;  // next stage point
+  double* __restrict sy;
+  double* __restrict svx;
+  double* __restrict svy;
+  double* __restrict aUx;  // RK accumulators
+  double* __restrict aUy;
+  double* __restrict aVx;
+  double* __restrict aVy;
+  double* __restrict dot;  // v_new . v_old (stage 4)
+};
+
+// RK4 stage update of one row: acceleration from the driving force, the frozen kinetic friction
+// and the damping; stages 1-3 set the next stage point, stage 4 the new state.
+template <int Stage>
+GF_ALWAYS_INLINE void updateRow(int nb, double toNext, double sixth, double invMass, double gamma, RowArrays a) {
+  const double* __restrict fx = a.fx;
+  const double* __restrict fy = a.fy;
+  const double* __restrict kfx = a.kfx;
+  const double* __restrict kfy = a.kfy;
+  const double* __restrict mobile = a.mobile;
+  double* __restrict ux = a.ux;
+  double* __restrict uy = a.uy;
+  double* __restrict vx = a.vx;
+  double* __restrict vy = a.vy;
+  double* __restrict sx = a.sx;
+  double* __restrict sy = a.sy;
+  double* __restrict svx = a.svx;
+  double* __restrict svy = a.svy;
+  double* __restrict aUx = a.aUx;
+  double* __restrict aUy = a.aUy;
+  double* __restrict aVx = a.aVx;
+  double* __restrict aVy = a.aVy;
+  double* __restrict dot = a.dot;
+  for (int c = 0; c < nb; ++c) {
+    const double wx = Stage == 1 ? vx[c] : svx[c];  // velocity at this stage
+    const double wy = Stage == 1 ? vy[c] : svy[c];
+    const double m = mobile[c];
+    const double ax = m * ((fx[c] - kfx[c]) * invMass - gamma * wx);
+    const double ay = m * ((fy[c] - kfy[c]) * invMass - gamma * wy);
+    if (Stage == 1) {
+      aUx[c] = wx;
+      aUy[c] = wy;
+      aVx[c] = ax;
+      aVy[c] = ay;
+    } else if (Stage < 4) {
+      aUx[c] += 2.0 * wx;
+      aUy[c] += 2.0 * wy;
+      aVx[c] += 2.0 * ax;
+      aVy[c] += 2.0 * ay;
+    }
+    if (Stage < 4) {
+      sx[c] = ux[c] + toNext * wx;
+      sy[c] = uy[c] + toNext * wy;
+      svx[c] = vx[c] + toNext * ax;
+      svy[c] = vy[c] + toNext * ay;
+    } else {
+      ux[c] += sixth * (aUx[c] + wx);
+      uy[c] += sixth * (aUy[c] + wy);
+      const double newX = vx[c] + sixth * (aVx[c] + ax);
+      const double newY = vy[c] + sixth * (aVy[c] + ay);
+      dot[c] = m * (newX * vx[c] + newY * vy[c]);
+      vx[c] = newX;
+      vy[c] = newY;
+    }
+  }
+}
+
+}  // namespace
+
+template <bool Graded, FrictionField::Layout L, int Stage>
+GF_ALWAYS_INLINE void FastLattice::stage(double t, double& sumX, double& sumY) {
+  const int nb = nb_;
+  const double l = stiffness_.spacing;
+  const double diagonalLength = std::sqrt(2.0) * l;
+  const double h = motion_.timeStep;
+  const double toNext = Stage == 3 ? h : 0.5 * h;  // from u_n to the next stage's point
+  const double sixth = h / 6.0;
+  const double invMass = 1.0 / motion_.mass;
+  const double gamma = motion_.damping;
+  const double drivenX = motion_.sliderVelocityX * t;
+  const double drivenY = motion_.sliderVelocityY * t;
+  const double* kH = stiffness_.horizontal.data();
+  const double* kV = stiffness_.vertical.data();
+  const double* kD = stiffness_.diagonal.data();
+  const double* kS = stiffness_.slider.data();
+  const double kH0 = kH[0], kS0 = kS[0];
+  // Positions where this stage evaluates the forces: u_n for stage 1, the stage point otherwise.
+  const double* px = Stage == 1 ? ux_.data() : sx_.data();
+  const double* py = Stage == 1 ? uy_.data() : sy_.data();
+  double* fx = fx_.data();
+  double* fy = fy_.data();
+  double* carryX = carryX_.data();
+  double* carryY = carryY_.data();
+  double* nextX = nextX_.data();
+  double* nextY = nextY_.data();
+  double* hx = springX_.data();
+  double* hy = springY_.data();
+  std::fill(carryX, carryX + nb, 0.0);
+  std::fill(carryY, carryY + nb, 0.0);
+
+  for (int r = 0; r < nb; ++r) {
+    const int base = r * nb;
+    const double* rx = px + base;
+    const double* ry = py + base;
+    // Slider springs and the reactions of the springs to the row below.
+    for (int c = 0; c < nb; ++c) {
+      const double k = Graded ? kS[c] : kS0;
+      fx[c] = k * (drivenX - rx[c]) + carryX[c];
+      fy[c] = k * (drivenY - ry[c]) + carryY[c];
+    }
+    if (Stage == 1) {  // the macroscopic friction force: sum of the slider forces at t_n
+      for (int c = 0; c < nb; ++c) {
+        const double k = Graded ? kS[c] : kS0;
+        sumX += k * (drivenX - rx[c]);
+        sumY += k * (drivenY - ry[c]);
+      }
+    }
+    // Horizontal springs of this row.
+    for (int c = 0; c + 1 < nb; ++c) {
+      const Force2 f = springForce(Graded ? kH[c] : kH0, l, 0.0, l, rx[c + 1] - rx[c], ry[c + 1] - ry[c]);
+      hx[c] = f.x;
+      hy[c] = f.y;
+    }
+    for (int c = 0; c + 1 < nb; ++c) {
+      fx[c] += hx[c];
+      fy[c] += hy[c];
+    }
+    for (int c = 0; c + 1 < nb; ++c) {
+      fx[c + 1] -= hx[c];
+      fy[c + 1] -= hy[c];
+    }
+    if (r + 1 < nb)
+      springsToRowAbove<Graded>(nb, l, diagonalLength, kV, kD, rx, ry, rx + nb, ry + nb, fx, fy, nextX, nextY);
+
+    // The forces on row r are complete: stick/slip transitions (stage 1 only), then the update.
+    const double* staticForce = friction_.staticForce.data() + (L == FrictionField::Layout::PerBlock ? base : 0);
+    const double* kineticForce = friction_.kineticForce.data() + (L == FrictionField::Layout::PerBlock ? base : 0);
+    double* vx = vx_.data() + base;
+    double* vy = vy_.data() + base;
+    double* mobile = mobile_.data() + base;
+    if (Stage == 1) {
+      std::uint8_t* state = state_.data() + base;
+      for (int c = 0; c < nb; ++c) {
+        if (state[c] == Slipping) continue;
+        const double threshold = L == FrictionField::Layout::Uniform ? staticForce[0] : staticForce[c];
+        const bool holds = fx[c] * fx[c] + fy[c] * fy[c] <= threshold * threshold;
+        if (state[c] == Stuck) {
+          if (holds) continue;
+          state[c] = Slipping;
+          mobile[c] = 1.0;
+          if (!everSlipped_[base + c]) {
+            everSlipped_[base + c] = 1;
+            ++slipped_;
+            if (firstSlip_) firstSlip_[base + c] = t;
+          }
+        } else if (holds) {  // reversed during the last step and held by static friction
+          state[c] = Stuck;
+          mobile[c] = 0.0;
+          vx[c] = 0.0;
+          vy[c] = 0.0;
+        } else {
+          state[c] = Slipping;
+        }
+      }
+    }
+    double* kfx = frictionX_.data() + base;
+    double* kfy = frictionY_.data() + base;
+    if (Stage == 1) {
+      // The kinetic friction vector of this step: -mu_k,i F_n along the velocity at t_n, or along
+      // F_mot for a block starting from rest; frozen for the four stages, like the stick state,
+      // so that a velocity crossing zero inside the step is seen as a reversal, not chattering.
+      for (int c = 0; c < nb; ++c) {
+        const double kinetic = L == FrictionField::Layout::Uniform ? kineticForce[0] : kineticForce[c];
+        const double speed2 = vx[c] * vx[c] + vy[c] * vy[c];
+        const double force2 = fx[c] * fx[c] + fy[c] * fy[c];
+        const bool moving = speed2 > 0.0;
+        const double dirX = moving ? vx[c] : fx[c];
+        const double dirY = moving ? vy[c] : fy[c];
+        const double norm2 = moving ? speed2 : force2;
+        const double frictionPerNorm = norm2 > 0.0 ? mobile[c] * kinetic / std::sqrt(norm2) : 0.0;
+        kfx[c] = frictionPerNorm * dirX;
+        kfy[c] = frictionPerNorm * dirY;
+      }
+    }
+    updateRow<Stage>(nb, toNext, sixth, invMass, gamma,
+                     RowArrays{fx, fy, kfx, kfy, mobile, ux_.data() + base, uy_.data() + base, vx, vy,
+                               sx_.data() + base, sy_.data() + base, svx_.data() + base, svy_.data() + base,
+                               accUx_.data() + base, accUy_.data() + base, accVx_.data() + base,
+                               accVy_.data() + base, dot_.data()});
+    if (Stage == 4) {  // a slipping block whose velocity reversed may re-stick at the next step
+      std::uint8_t* state = state_.data() + base;
+      for (int c = 0; c < nb; ++c)
+        if (dot_[c] < 0.0) state[c] = Reversed;
+    }
+    std::swap(carryX, nextX);
+    std::swap(carryY, nextY);
+  }
+}
+
+namespace {
+
+template <bool Graded, FrictionField::Layout L>
+GF_ALWAYS_INLINE void fullStep(FastLattice& lattice, double t, double h, double& sumX, double& sumY) {
+  lattice.stage<Graded, L, 1>(t, sumX, sumY);
+  lattice.stage<Graded, L, 2>(t + 0.5 * h, sumX, sumY);
+  lattice.stage<Graded, L, 3>(t + 0.5 * h, sumX, sumY);
+  lattice.stage<Graded, L, 4>(t + h, sumX, sumY);
+}
+
+// One compiled entry per (uniform|graded stiffness) x (friction layout), each cloned for
+// AVX-512, AVX2 and baseline x86-64 and chosen at load time: portable and fast.
+#define GF_STEP_VARIANT(name, graded, layout)                                                        \
+  GF_KERNEL_CLONES void name(FastLattice& lattice, double t, double h, double& sx, double& sy) { \
+    fullStep<graded, FrictionField::Layout::layout>(lattice, t, h, sx, sy);                       \
+  }
+GF_STEP_VARIANT(stepUniformUniform, false, Uniform)
+GF_STEP_VARIANT(stepUniformColumn, false, PerColumn)
+GF_STEP_VARIANT(stepUniformBlock, false, PerBlock)
+GF_STEP_VARIANT(stepGradedUniform, true, Uniform)
+GF_STEP_VARIANT(stepGradedColumn, true, PerColumn)
+GF_STEP_VARIANT(stepGradedBlock, true, PerBlock)
+#undef GF_STEP_VARIANT
+
+}  // namespace
+
+void FastLattice::dispatch(double& sumX, double& sumY) {
+  const double t = time();
+  const double h = motion_.timeStep;
+  using Layout = FrictionField::Layout;
+  const Layout layout = friction_.layout;
+  if (!stiffness_.graded) {
+    if (layout == Layout::Uniform) stepUniformUniform(*this, t, h, sumX, sumY);
+    else if (layout == Layout::PerColumn) stepUniformColumn(*this, t, h, sumX, sumY);
+    else stepUniformBlock(*this, t, h, sumX, sumY);
+  } else {
+    if (layout == Layout::Uniform) stepGradedUniform(*this, t, h, sumX, sumY);
+    else if (layout == Layout::PerColumn) stepGradedColumn(*this, t, h, sumX, sumY);
+    else stepGradedBlock(*this, t, h, sumX, sumY);
+  }
+}
+
+StepObservation FastLattice::step() {
+  StepObservation observation{time(), 0.0, 0.0};
+  dispatch(observation.sliderForceX, observation.sliderForceY);
+  ++steps_;
+  return observation;
+}
+
+}  // namespace gradfric::sbm

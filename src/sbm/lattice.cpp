@@ -1,0 +1,141 @@
+#include "gradfric/sbm/lattice.hpp"
+
+#include "gradfric/sbm/spring.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace gradfric::sbm {
+
+namespace {
+
+double seriesStiffness(double a, double b) { return 2.0 * a * b / (a + b); }
+
+double columnCentre(int column, int blocksPerSide) { return (column + 0.5) / blocksPerSide; }
+
+}  // namespace
+
+double LatticeStiffness::largestAxial() const {
+  double largest = 0.0;
+  for (double k : vertical) largest = std::max(largest, k);
+  return largest;
+}
+
+LatticeStiffness buildStiffness(const Parameters& p, const Grading& grading) {
+  const int nb = p.blocksPerSide;
+  LatticeStiffness s;
+  s.blocksPerSide = nb;
+  s.spacing = p.spacing();
+  s.graded = grading.gradesModulus();
+  std::vector<double> modulus(nb);
+  for (int c = 0; c < nb; ++c) modulus[c] = p.youngsModulus * grading.modulusFactor(columnCentre(c, nb));
+  s.vertical.resize(nb);
+  s.slider.resize(nb);
+  for (int c = 0; c < nb; ++c) {
+    s.vertical[c] = p.axialStiffness(modulus[c]);
+    s.slider[c] = p.sliderStiffness(modulus[c]);
+  }
+  s.horizontal.resize(std::max(nb - 1, 0));
+  s.diagonal.resize(std::max(nb - 1, 0));
+  for (int c = 0; c + 1 < nb; ++c) {
+    s.horizontal[c] = seriesStiffness(s.vertical[c], s.vertical[c + 1]);
+    s.diagonal[c] = seriesStiffness(0.5 * s.vertical[c], 0.5 * s.vertical[c + 1]);
+  }
+  return s;
+}
+
+FrictionField buildFriction(const Parameters& p, const Grading& grading, StreamKey key) {
+  const int nb = p.blocksPerSide;
+  const double normal = p.normalForcePerBlock();
+  FrictionField f;
+  f.blocksPerSide = nb;
+  const bool dispersed = p.sigmaStatic > 0.0 || p.sigmaKinetic > 0.0;
+  if (dispersed) {
+    f.layout = FrictionField::Layout::PerBlock;
+  } else if (grading.gradesFriction()) {
+    f.layout = FrictionField::Layout::PerColumn;
+  } else {
+    f.layout = FrictionField::Layout::Uniform;
+  }
+  const int columns = f.layout == FrictionField::Layout::Uniform ? 1 : nb;
+  std::vector<double> meanStatic(columns), meanKinetic(columns);
+  for (int c = 0; c < columns; ++c) {
+    const double factor = grading.frictionFactor(columnCentre(c, nb));
+    meanStatic[c] = p.muStatic * factor;
+    meanKinetic[c] = p.muKinetic * factor;
+  }
+  if (!dispersed) {
+    for (int c = 0; c < columns; ++c) {
+      f.staticForce.push_back(meanStatic[c] * normal);
+      f.kineticForce.push_back(meanKinetic[c] * normal);
+    }
+    return f;
+  }
+  const RandomStream stream(key);
+  f.staticForce.resize(std::size_t(nb) * nb);
+  f.kineticForce.resize(std::size_t(nb) * nb);
+  for (int r = 0; r < nb; ++r) {
+    for (int c = 0; c < nb; ++c) {
+      const int i = r * nb + c;
+      const int col = f.layout == FrictionField::Layout::PerBlock ? c : 0;
+      double muS = 0.0, muK = 0.0;
+      for (std::uint32_t attempt = 0;; ++attempt) {
+        const auto [zs, zk] = stream.normalPair(std::uint64_t(i), 0, attempt);
+        muS = meanStatic[col] * (1.0 + p.sigmaStatic * zs);
+        muK = meanKinetic[col] * (1.0 + p.sigmaKinetic * zk);
+        if (muK > 0.0 && muK <= muS) break;
+        if (attempt == 0) ++f.redrawnBlocks;
+      }
+      f.staticForce[i] = muS * normal;
+      f.kineticForce[i] = muK * normal;
+    }
+  }
+  return f;
+}
+
+void blockStress(const LatticeStiffness& s, double thickness, const double* ux, const double* uy, int r, int c,
+                 double stress[3]) {
+  const int nb = s.blocksPerSide;
+  const double l = s.spacing;
+  const double diagonalLength = std::sqrt(2.0) * l;
+  double sxx = 0.0, syy = 0.0, sxy = 0.0;
+  auto add = [&](int rr, int cc, double k, double restX, double restY, double restLength) {
+    if (rr < 0 || rr >= nb || cc < 0 || cc >= nb) return;
+    const int i = r * nb + c, j = rr * nb + cc;
+    const auto [fx, fy] = springForce(k, restX, restY, restLength, ux[j] - ux[i], uy[j] - uy[i]);
+    const double dx = restX + ux[j] - ux[i], dy = restY + uy[j] - uy[i];
+    sxx += dx * fx;
+    syy += dy * fy;
+    sxy += 0.5 * (dx * fy + dy * fx);
+  };
+  if (c + 1 < nb) add(r, c + 1, s.horizontal[c], l, 0, l);
+  if (c > 0) add(r, c - 1, s.horizontal[c - 1], -l, 0, l);
+  add(r + 1, c, s.vertical[c], 0, l, l);
+  add(r - 1, c, s.vertical[c], 0, -l, l);
+  if (c + 1 < nb) {
+    add(r + 1, c + 1, s.diagonal[c], l, l, diagonalLength);
+    add(r - 1, c + 1, s.diagonal[c], l, -l, diagonalLength);
+  }
+  if (c > 0) {
+    add(r + 1, c - 1, s.diagonal[c - 1], -l, l, diagonalLength);
+    add(r - 1, c - 1, s.diagonal[c - 1], -l, -l, diagonalLength);
+  }
+  // Each spring is shared by two blocks: half of its virial belongs to this block.
+  const double volume = l * l * thickness;
+  stress[0] = 0.5 * sxx / volume;
+  stress[1] = 0.5 * syy / volume;
+  stress[2] = 0.5 * sxy / volume;
+}
+
+void longitudinalStress(const LatticeStiffness& s, double thickness, double pressure, const double* ux,
+                        const double* uy, double* sigmaXOverP) {
+  const int nb = s.blocksPerSide;
+  for (int r = 0; r < nb; ++r)
+    for (int c = 0; c < nb; ++c) {
+      double stress[3];
+      blockStress(s, thickness, ux, uy, r, c, stress);
+      sigmaXOverP[r * nb + c] = stress[0] / pressure;
+    }
+}
+
+}  // namespace gradfric::sbm

@@ -1,0 +1,179 @@
+// One realisation: build the lattice, integrate, watch the observables, stop once they are known.
+#include "gradfric/sbm/model.hpp"
+
+#include "gradfric/core/petsc_call.hpp"
+#include "gradfric/sbm/integrator.hpp"
+#include "gradfric/sbm/lattice.hpp"
+
+#include <petsclog.h>
+
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+namespace gradfric::sbm {
+
+namespace {
+
+struct LogEvents {
+  PetscLogEvent setup = 0, step = 0, snapshot = 0;
+};
+
+const LogEvents& logEvents() {
+  static LogEvents events = [] {
+    LogEvents e;
+    PetscClassId id;
+    GF_CALL(PetscClassIdRegister("SpringBlock", &id));
+    GF_CALL(PetscLogEventRegister("SbmSetup", id, &e.setup));
+    GF_CALL(PetscLogEventRegister("SbmRK4Step", id, &e.step));
+    GF_CALL(PetscLogEventRegister("SbmSnapshot", id, &e.snapshot));
+    return e;
+  }();
+  return events;
+}
+
+// The peak of mu(t): the running maximum until it is confirmed, then frozen. Confirmed once
+// every block has slipped (the detachment front has crossed the plate) and mu(t) has fallen by
+// `drop` below the maximum or not exceeded it for `hold` seconds.
+struct PeakTracker {
+  double drop, hold;
+  double maximum = -1.0, time = 0.0;
+  bool confirmed = false;
+  void observe(double t, double mu, bool allSlipped) {
+    if (confirmed) return;
+    if (mu > maximum) {
+      maximum = mu;
+      time = t;
+    }
+    if (allSlipped && (mu < (1.0 - drop) * maximum || t - time >= hold)) confirmed = true;
+  }
+};
+
+std::vector<double> asVector(const double* data, std::size_t n) { return std::vector<double>(data, data + n); }
+std::vector<double> asVector(std::vector<double> data, std::size_t) { return data; }
+
+template <class Lattice>
+void integrate(Lattice& lattice, const LatticeStiffness& stiffness, const Parameters& p, const Request& q,
+               Result& result) {
+  const auto& events = logEvents();
+  const int nb = p.blocksPerSide;
+  const std::size_t n = std::size_t(nb) * nb;
+  const double dt = p.timeStep;
+  const double totalNormal = p.pressure * p.length * p.length;
+  if (q.firstSlipMap) {
+    result.firstSlipTime.assign(n, std::numeric_limits<double>::quiet_NaN());
+    lattice.recordFirstSlips(result.firstSlipTime.data());
+  }
+  PeakTracker peak{q.peakDrop, q.peakHold};
+  std::vector<double> muPerStep;  // every step, for the kinetic window
+  std::size_t nextSnapshot = 0;
+  double nextSample = 0.0;
+  const auto start = std::chrono::steady_clock::now();
+  for (;;) {
+    const double t = lattice.time();
+    while (nextSnapshot < q.snapshotTimes.size() && q.snapshotTimes[nextSnapshot] <= t + 0.5 * dt) {
+      GF_CALL(PetscLogEventBegin(events.snapshot, 0, 0, 0, 0));
+      StressSnapshot snapshot{t, std::vector<double>(n)};
+      const auto ux = asVector(lattice.displacementX(), n);
+      const auto uy = asVector(lattice.displacementY(), n);
+      longitudinalStress(stiffness, p.thickness, p.pressure, ux.data(), uy.data(), snapshot.sigmaXOverP.data());
+      result.snapshots.push_back(std::move(snapshot));
+      ++nextSnapshot;
+      GF_CALL(PetscLogEventEnd(events.snapshot, 0, 0, 0, 0));
+    }
+    GF_CALL(PetscLogEventBegin(events.step, 0, 0, 0, 0));
+    const StepObservation o = lattice.step();
+    GF_CALL(PetscLogEventEnd(events.step, 0, 0, 0, 0));
+    const double mu = std::hypot(o.sliderForceX, o.sliderForceY) / totalNormal;
+    muPerStep.push_back(mu);
+    if (t >= nextSample - 0.5 * dt) {
+      result.time.push_back(t);
+      result.mu.push_back(mu);
+      nextSample += q.historyInterval > 0 ? q.historyInterval : dt;
+    }
+    peak.observe(t, mu, lattice.slippedBlocks() == int(n));
+
+    bool done;
+    if (q.endTime > 0) {
+      done = t >= q.endTime;
+    } else {
+      done = peak.confirmed && nextSnapshot == q.snapshotTimes.size() &&
+             (!q.kineticFriction || t >= peak.time + q.kineticDelay + q.kineticWidth);
+    }
+    if (done || t >= q.maxTime) break;
+  }
+  result.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.steps = lattice.steps();
+  result.endTime = lattice.time();
+  result.muStatic = peak.maximum;
+  result.peakTime = peak.time;
+  result.peakConfirmed = peak.confirmed;
+  result.muKinetic = std::numeric_limits<double>::quiet_NaN();
+  if (q.kineticFriction && peak.confirmed) {
+    const double from = peak.time + q.kineticDelay, to = from + q.kineticWidth;
+    double sum = 0.0;
+    std::size_t count = 0;
+    for (std::size_t s = 0; s < muPerStep.size(); ++s) {
+      const double t = double(s) * dt;
+      if (t >= from && t <= to) {
+        sum += muPerStep[s];
+        ++count;
+      }
+    }
+    if (count > 0 && double(muPerStep.size() - 1) * dt >= to - dt) result.muKinetic = sum / double(count);
+  }
+}
+
+}  // namespace
+
+Result simulate(const Parameters& p, const Grading& grading, const Request& q, StreamKey key, Kernel kernel) {
+  const auto& events = logEvents();
+  GF_CALL(PetscLogEventBegin(events.setup, 0, 0, 0, 0));
+  const LatticeStiffness stiffness = buildStiffness(p, grading);
+  const FrictionField friction = buildFriction(p, grading, key);
+  const Motion motion = motionOf(p, p.timeStep, p.damping);
+  GF_CALL(PetscLogEventEnd(events.setup, 0, 0, 0, 0));
+  Result result;
+  result.redrawnBlocks = friction.redrawnBlocks;
+  if (kernel == Kernel::Fast) {
+    FastLattice lattice(stiffness, friction, motion);
+    integrate(lattice, stiffness, p, q, result);
+  } else {
+    ReferenceLattice lattice(stiffness, friction, motion);
+    integrate(lattice, stiffness, p, q, result);
+  }
+  return result;
+}
+
+std::vector<std::string> activeEffects(const Parameters& p, const Grading& g, const Request& q) {
+  std::vector<std::string> effects;
+  std::ostringstream s;
+  s << p.blocksPerSide << " x " << p.blocksPerSide << " blocks, axial + diagonal springs (nonlinear geometry)";
+  effects.push_back(s.str());
+  effects.push_back(g.gradesModulus() ? "graded Young's modulus (" + describe(g) + "), series spring stiffness"
+                                      : "uniform Young's modulus: uniform-stiffness kernel");
+  effects.push_back(g.gradesFriction() ? "graded friction coefficients (" + describe(g) + ")"
+                                       : "uniform mean friction coefficients");
+  if (p.sigmaStatic > 0 || p.sigmaKinetic > 0) {
+    std::ostringstream d;
+    d << "Gaussian dispersion of local friction: sigma_s = " << p.sigmaStatic << ", sigma_k = " << p.sigmaKinetic
+      << " (per-block coefficients)";
+    effects.push_back(d.str());
+  } else {
+    effects.push_back("no dispersion: no random draws, no per-block coefficients");
+  }
+  effects.push_back(p.damping > 0 ? "viscous damping gamma = " + formatReal(p.damping) + " 1/s" : "no damping");
+  effects.push_back("sliding angle theta = " + formatReal(p.slidingAngle) + " degree");
+  std::string observed = "observables: mu_s";
+  if (q.kineticFriction) observed += ", mu_k";
+  if (q.firstSlipMap) observed += ", first-slip map";
+  if (!q.snapshotTimes.empty()) observed += ", " + std::to_string(q.snapshotTimes.size()) + " sigma_x/p snapshots";
+  else observed += " (no stress field computed)";
+  effects.push_back(observed);
+  effects.push_back(q.endTime > 0 ? "fixed duration " + formatReal(q.endTime) + " s"
+                                  : "stops once the observables are determined");
+  return effects;
+}
+
+}  // namespace gradfric::sbm

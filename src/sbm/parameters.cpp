@@ -1,0 +1,117 @@
+#include "gradfric/sbm/parameters.hpp"
+
+#include "gradfric/core/input_error.hpp"
+#include "gradfric/sbm/lattice.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace gradfric::sbm {
+
+double stableTimeStep(const Parameters& p, const Grading& grading) {
+  // Highest lattice frequency: the zone-boundary mode q = (pi, 0) of the square lattice with
+  // axial k and diagonal k/2 has m omega^2 = 6k + K_s (stiffest band). Classical RK4 is stable
+  // on the imaginary axis up to |omega dt| = 2 sqrt(2).
+  const LatticeStiffness s = buildStiffness(p, grading);
+  double largest = 0.0;
+  for (int c = 0; c < p.blocksPerSide; ++c) largest = std::max(largest, 6.0 * s.vertical[c] + s.slider[c]);
+  return 2.0 * std::sqrt(2.0) / std::sqrt(largest / p.blockMass());
+}
+
+Parameters readParameters(MPI_Comm comm, RunParameters* record, const Grading& grading) {
+  OptionReader o(comm, "sbm_", "Spring-block model", record);
+  Parameters p;
+  p.length = o.real("L", p.length, "m", "side L of the square plate");
+  p.thickness = o.real("lz", p.thickness, "m", "layer thickness l_z (block mass rho l_z l^2)");
+  p.density = o.real("rho", p.density, "kg/m^3", "density rho");
+  p.youngsModulus = o.real("E", p.youngsModulus, "Pa", "reference Young's modulus E0 (Poisson ratio 1/3, fixed by the lattice)");
+  p.pressure = o.real("p", p.pressure, "Pa", "normal pressure p (F_n = p l^2 per block)");
+  p.velocity = o.real("v", p.velocity, "m/s", "slider speed v");
+  p.slidingAngle = o.real("theta", p.slidingAngle, "degree", "angle between the sliding direction and the grading axis x");
+  p.muStatic = o.real("mu_s", p.muStatic, "1", "mean local static friction coefficient mu_s");
+  p.muKinetic = o.real("mu_k", p.muKinetic, "1", "mean local kinetic friction coefficient mu_k");
+  p.sigmaStatic = o.real("sigma_s", p.sigmaStatic, "1", "relative standard deviation of the local mu_s (0: no dispersion)");
+  p.sigmaKinetic = o.real("sigma_k", p.sigmaKinetic, "1", "relative standard deviation of the local mu_k (0: no dispersion)");
+  p.blocksPerSide = static_cast<int>(o.integer("N", p.blocksPerSide, "1", "blocks per side N_b"));
+  o.choice("integrator", "rk4", {"rk4"}, "time integrator (fixed step)");
+
+  o.requirePositive("L", p.length, "m");
+  o.requirePositive("lz", p.thickness, "m");
+  o.requirePositive("rho", p.density, "kg/m^3");
+  o.requirePositive("E", p.youngsModulus, "Pa");
+  o.requirePositive("p", p.pressure, "Pa");
+  o.requirePositive("v", p.velocity, "m/s");
+  if (!std::isfinite(p.slidingAngle)) throw InputError(o.fullName("theta"), formatReal(p.slidingAngle), "a finite angle [degree]");
+  o.requirePositive("mu_s", p.muStatic, "");
+  o.requireRange("mu_k", p.muKinetic, 0.0, p.muStatic, "0 < mu_k <= mu_s = " + formatReal(p.muStatic));
+  o.requirePositive("mu_k", p.muKinetic, "");
+  o.requireRange("sigma_s", p.sigmaStatic, 0.0, 0.5, "0 <= sigma_s <= 0.5");
+  o.requireRange("sigma_k", p.sigmaKinetic, 0.0, 0.5, "0 <= sigma_k <= 0.5");
+  o.requireAtLeast("N", p.blocksPerSide, 2);
+  if (p.blocksPerSide > 4096) throw InputError(o.fullName("N"), std::to_string(p.blocksPerSide), "2 <= N <= 4096");
+
+  const double kInt = p.axialStiffness(p.youngsModulus);
+  const double omega = std::sqrt(kInt / p.blockMass());
+  if (auto gamma = o.realIfSet("gamma", "1/s", "damping coefficient gamma (underdamped: gamma < sqrt(K_int/m))",
+                               "0.1 sqrt(K_int/m)")) {
+    p.damping = *gamma;
+    o.requireNonNegative("gamma", p.damping, "1/s");
+  } else {
+    p.damping = 0.1 * omega;
+    o.recordDerived("gamma", p.damping, "1/s", "damping coefficient gamma = 0.1 sqrt(K_int/m)");
+  }
+
+  const double stable = stableTimeStep(p, grading);
+  const double safety = o.real("dt_safety", 0.25, "1", "default time step as a fraction of the RK4 stability limit");
+  o.requireRange("dt_safety", safety, 1e-6, 1.0, "0 < dt_safety <= 1");
+  if (auto dt = o.realIfSet("dt", "s", "time step (refused above the RK4 stability limit)", "dt_safety x stable step")) {
+    p.timeStep = *dt;
+    o.requirePositive("dt", p.timeStep, "s");
+    if (p.timeStep > stable)
+      throw InputError(o.fullName("dt"), formatReal(p.timeStep),
+                       "<= " + formatReal(stable) + " s, the RK4 stability limit of this lattice");
+  } else {
+    p.timeStep = safety * stable;
+    o.recordDerived("dt", p.timeStep, "s", "time step = dt_safety x RK4 stability limit " + formatReal(stable) + " s");
+  }
+  return p;
+}
+
+Request readRequest(MPI_Comm comm, RunParameters* record, const Parameters& p) {
+  OptionReader o(comm, "sbm_", "Spring-block model", record);
+  Request q;
+  const auto observables = o.choiceList("observables", {"mu_s", "mu_k", "first_slip"}, {"mu_s", "mu_k", "first_slip"},
+                                        "what the run must determine; it stops once these are known");
+  auto wants = [&](const char* name) { return std::find(observables.begin(), observables.end(), name) != observables.end(); };
+  q.staticFriction = true;  // the peak times everything else
+  q.kineticFriction = wants("mu_k");
+  q.firstSlipMap = wants("first_slip");
+  q.snapshotTimes = o.realList("snapshot_times", {}, "s", "times of the sigma_x/p snapshots (none: no stress computed)");
+  for (double t : q.snapshotTimes) o.requireNonNegative("snapshot_times", t, "s");
+  std::sort(q.snapshotTimes.begin(), q.snapshotTimes.end());
+
+  const double load = p.loadingTime();
+  auto derived = [&](const char* name, double factor, const char* unit, const char* help, const char* text) {
+    if (auto v = o.realIfSet(name, unit, help, text)) {
+      o.requireNonNegative(name, *v, unit);
+      return *v;
+    }
+    o.recordDerived(name, factor * load, unit, std::string(help) + " = " + text);
+    return factor * load;
+  };
+  q.historyInterval = derived("history_interval", 1e-3, "s", "sampling interval of the stored mu(t) history", "t_load / 1000");
+  q.kineticDelay = derived("muk_delay", 0.5, "s", "start of the mu_k window after the peak", "0.5 t_load");
+  q.kineticWidth = derived("muk_width", 1.0, "s", "width of the mu_k window", "t_load");
+  q.peakHold = derived("peak_hold", 0.25, "s", "peak confirmed once every block slid and no new maximum for this long", "0.25 t_load");
+  q.maxTime = derived("t_max", 20.0, "s", "give up if the peak is not confirmed by then", "20 t_load");
+  q.peakDrop = o.real("peak_drop", q.peakDrop, "1", "relative fall below the maximum that confirms the peak");
+  o.requireRange("peak_drop", q.peakDrop, 0.0, 1.0, "0 <= peak_drop <= 1");
+  q.endTime = o.real("t_end", 0.0, "s", "if > 0: run exactly this long, whatever the observables (0: stop when known)");
+  o.requireNonNegative("t_end", q.endTime, "s");
+  if (q.kineticWidth <= 0 && q.kineticFriction)
+    throw InputError(o.fullName("muk_width"), formatReal(q.kineticWidth), "> 0 [s] when mu_k is requested");
+  if (q.maxTime <= 0) throw InputError(o.fullName("t_max"), formatReal(q.maxTime), "> 0 [s]");
+  return q;
+}
+
+}  // namespace gradfric::sbm
