@@ -1,0 +1,53 @@
+#pragma once
+// Paper parameters with the derived defaults the driver would compute, for tests.
+#include "gradfric/sbm/model.hpp"
+#include "gradfric/sbm/parameters.hpp"
+
+#include <cmath>
+#include <vector>
+
+namespace gradfric::sbm::testing {
+
+inline double naturalFrequency(const Parameters& p) { return std::sqrt(p.axialStiffness(p.youngsModulus) / p.blockMass()); }
+
+inline Parameters paperParameters(int blocksPerSide, double sigma, const Grading& grading = {}, double dtSafety = 0.25,
+                                  double dampingFactor = 0.1) {
+  Parameters p;
+  p.blocksPerSide = blocksPerSide;
+  p.sigmaStatic = p.sigmaKinetic = sigma;
+  p.damping = dampingFactor * naturalFrequency(p);
+  p.timeStep = dtSafety * stableTimeStep(p, grading);
+  return p;
+}
+
+inline Request defaultRequest(const Parameters& p) {
+  Request q;
+  const double load = p.loadingTime();
+  q.historyInterval = 0.0;
+  q.kineticDelay = 0.5 * load;
+  q.kineticWidth = load;
+  q.peakHold = 0.25 * load;
+  q.maxTime = 20 * load;
+  return q;
+}
+
+struct Sample {
+  double mean = 0, standardError = 0;
+};
+
+inline Sample staticFrictionSample(const Parameters& p, const Grading& g, int realisations, std::uint32_t sweepIndex) {
+  Request q = defaultRequest(p);
+  q.kineticFriction = false;
+  q.firstSlipMap = false;
+  std::vector<double> values;
+  for (int r = 0; r < realisations; ++r)
+    values.push_back(simulate(p, g, q, StreamKey{42, sweepIndex, std::uint32_t(r)}).muStatic);
+  Sample s;
+  for (double v : values) s.mean += v / values.size();
+  double var = 0;
+  for (double v : values) var += (v - s.mean) * (v - s.mean) / (values.size() - 1);
+  s.standardError = std::sqrt(var / values.size());
+  return s;
+}
+
+}  // namespace gradfric::sbm::testing
