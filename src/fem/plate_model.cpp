@@ -316,7 +316,8 @@ void PlateModel::rhs(double t, Vec X, Vec F) {
     for (BottomNode& n : bottom_) {
       const PetscScalar* xb = x + 6 * n.block;
       const ExponentialVelocityWeakening law{n.muS, n.muK, params_.vC};
-      const ContactTraction r = penaltyContact(k, law, xb[2], xb[0], xb[1], n.anchorX, n.anchorY, xb[3], xb[4]);
+      const ContactTraction r = penaltyContact(k, law, xb[2], xb[0], xb[1], n.anchorX, n.anchorY, xb[3], xb[4],
+                                                  n.state == ContactState::Slip);
       n.pendingX = r.anchorX;
       n.pendingY = r.anchorY;
       n.pendingState = r.state;

@@ -24,9 +24,13 @@ struct ContactTraction {
 };
 
 // gap: z of the node (negative = penetration); ux, uy: tangential displacement; anchor: the
-// committed anchor; vx, vy: tangential velocity (the slip rate, the plane being at rest).
+// committed anchor; vx, vy: tangential velocity of the node (the plane is at rest).
+// The sliding velocity of Eq. 1 is the slip rate: zero for a node that was sticking (its velocity
+// is only elastic motion of the penalty spring, so the threshold to start slipping is mu_s p
+// exactly, Eq. 1 at v = 0), the node's tangential speed for a node that was slipping.
 inline ContactTraction penaltyContact(const PenaltyStiffness& k, const ExponentialVelocityWeakening& law, double gap,
-                                      double ux, double uy, double anchorX, double anchorY, double vx, double vy) {
+                                      double ux, double uy, double anchorX, double anchorY, double vx, double vy,
+                                      bool wasSlipping) {
   ContactTraction r;
   if (gap >= 0.0) {  // open: no traction, the elastic slip is released
     r.anchorX = ux;
@@ -37,7 +41,8 @@ inline ContactTraction penaltyContact(const PenaltyStiffness& k, const Exponenti
   const double trialX = -k.tangential * (ux - anchorX);
   const double trialY = -k.tangential * (uy - anchorY);
   const double trial = std::sqrt(trialX * trialX + trialY * trialY);
-  const double cap = law.coefficient(std::sqrt(vx * vx + vy * vy)) * r.pressure;
+  const double slipRate = wasSlipping ? std::sqrt(vx * vx + vy * vy) : 0.0;
+  const double cap = law.coefficient(slipRate) * r.pressure;
   if (trial <= cap) {
     r.tx = trialX;
     r.ty = trialY;

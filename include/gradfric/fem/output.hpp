@@ -1,0 +1,47 @@
+#pragma once
+// Output of the FEM driver.
+//  <output>              HDF5, rank 0: /history/{time,mu,normal_force} of step 2 and the run's scalars
+//                        (mu_s, mu_k, peak_time, eq2_peak_time, ...) and parameters as attributes.
+//  <stem>_fields.h5/.xmf field snapshots in PETSc's HDF5 VIZ layout (ParaView opens the .xmf):
+//                        vertex fields displacement, velocity, contact (pressure, t_x, t_y, state),
+//                        cell field stress (xx, yy, zz, yz, xz, xy).
+// Nothing is overwritten unless -fem_output_overwrite; files are written under a temporary name
+// and renamed at the end, so a failed run leaves no half-written result.
+#include "gradfric/core/options.hpp"
+#include "gradfric/fem/simulation.hpp"
+
+#include <string>
+
+namespace gradfric::fem {
+
+class OutputFiles {
+public:
+  // Collective. Throws InputError if a target exists and overwriting was not allowed.
+  OutputFiles(MPI_Comm comm, const FemParameters& params);
+  ~OutputFiles();
+  OutputFiles(const OutputFiles&) = delete;
+  OutputFiles& operator=(const OutputFiles&) = delete;
+
+  bool enabled() const { return !path_.empty(); }
+  const std::string& historyPath() const { return path_; }
+  const std::string& fieldsPath() const { return fieldsPath_; }
+  // An observer writing a snapshot at each requested time (empty if none were requested).
+  StepObserver snapshotObserver(PlateModel& model);
+  void writeSnapshot(PlateModel& model, Vec state, double tSliding);
+  void writeHistory(const PlateModel& model, const FemRunResult& result, const RunParameters& record);
+  // Collective: closes the fields file, writes the .xmf, renames temporaries into place.
+  void finish();
+
+private:
+  void createFieldDMs(PlateModel& model);
+  MPI_Comm comm_;
+  FemParameters params_;
+  std::string path_, fieldsPath_, xmfPath_;
+  std::vector<double> pending_;  // snapshot times not yet written
+  int snapshots_ = 0;
+  PetscViewer viewer_ = nullptr;
+  DM contactDM_ = nullptr, stressDM_ = nullptr;
+  bool historyWritten_ = false, finished_ = false;
+};
+
+}  // namespace gradfric::fem
