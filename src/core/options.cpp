@@ -106,7 +106,7 @@ void OptionReader::store(const std::string& name, const std::string& value, cons
 
 bool OptionReader::wasSet(const std::string& name) const {
   PetscBool set = PETSC_FALSE;
-  GF_CALL(PetscOptionsHasName(nullptr, prefix_.c_str(), name.c_str(), &set));
+  GF_CALL(PetscOptionsHasName(nullptr, prefix_.c_str(), ("-" + name).c_str(), &set));
   return set;
 }
 

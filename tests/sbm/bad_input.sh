@@ -1,0 +1,61 @@
+#!/usr/bin/env bash
+# Every kind of bad spring-block input is refused before any work: exit code 2, one message that
+# names the option, and no results file (not even a partial one) left behind.
+# Usage: bad_input.sh <gradfric driver> <scratch folder>
+set -u
+driver=$1
+scratch=$2
+mkdir -p "$scratch"
+out="$scratch/bad_input.h5"
+failures=0
+# expect <option named in the message> <arguments...>
+expect() {
+  local named=$1; shift
+  rm -f "$out" "$out.partial"
+  local message
+  message=$("$driver" -output "$out" "$@" 2>&1 >/dev/null)
+  local status=$?
+  if [ $status -ne 2 ]; then
+    echo "FAIL ($*): exit $status, expected 2"; failures=$((failures + 1))
+  elif ! grep -q -- "$named" <<<"$message"; then
+    echo "FAIL ($*): message does not name $named: $message"; failures=$((failures + 1))
+  elif [ -e "$out" ] || [ -e "$out.partial" ]; then
+    echo "FAIL ($*): left $out behind"; failures=$((failures + 1))
+  else
+    echo "ok   ($*): $message"
+  fi
+}
+expect -grading_delta -grading_profile linear -grading_delta 1
+expect -grading_delta -grading_profile linear -grading_delta -1.5
+expect -ensemble_delta -grading_profile linear -ensemble_delta 0,0.5,1.0
+expect -sbm_E -sbm_E 0
+expect -sbm_E -sbm_E -1e6
+expect -sbm_L -sbm_L 0
+expect -sbm_lz -sbm_lz -1
+expect -sbm_rho -sbm_rho 0
+expect -sbm_p -sbm_p 0
+expect -sbm_v -sbm_v -0.001
+expect -sbm_dt -sbm_dt 0
+expect -sbm_dt -sbm_dt 1e-3
+expect -sbm_N -sbm_N 1
+expect -sbm_mu_k -sbm_mu_s 0.5 -sbm_mu_k 0.6
+expect -sbm_sigma_s -sbm_sigma_s -0.01
+expect -sbm_sigma_k -sbm_sigma_k -0.2
+expect -grading_profile -grading_profile parabolic
+expect -grading_property -grading_property hardness
+expect -ensemble_property -grading_profile linear -ensemble_property E,stiffness
+expect -sbm_E -sbm_E ten
+expect -options_file -options_file "$scratch/no_such_scene.opts"
+expect -output -output /no/such/folder/results.h5
+expect -sbm_dealta -sbm_dealta 0.1
+# An existing result is never overwritten by accident.
+rm -f "$out"; echo "precious" > "$out"
+message=$("$driver" -output "$out" -sbm_N 4 2>&1 >/dev/null); status=$?
+if [ $status -ne 2 ] || [ "$(cat "$out")" != "precious" ]; then
+  echo "FAIL (existing file): exit $status, file changed"; failures=$((failures + 1))
+else
+  echo "ok   (existing file kept): $message"
+fi
+rm -f "$out"
+echo "bad input: $failures failure(s)"
+exit $((failures > 0))
