@@ -1,0 +1,77 @@
+// Two ranks: the same mu(t) history as one rank, and the METIS partition's balance and cut.
+#include <petscsection.h>
+#include <petscsf.h>
+#include "gradfric/core/petsc_handle.hpp"
+#include "gradfric/fem/partition.hpp"
+#include "gradfric/fem/simulation.hpp"
+#include "fem_test_util.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+using namespace gradfric;
+using namespace gradfric::fem;
+
+TEST(FemParallel, OneAndTwoRanksGiveTheSameFrictionHistory) {
+  int size = 1, rank = 0;
+  MPI_Comm_size(PETSC_COMM_WORLD, &size);
+  MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
+  ASSERT_EQ(size, 2) << "run with 2 ranks";
+  FemParameters q = test::coarse(12, 10, 2);
+  const Grading g = test::linear(GradedProperty::Both, 0.2);
+  // Two ranks.
+  FemRunResult two;
+  {
+    PlateModel model(PETSC_COMM_WORLD, q, g);
+    two = runPlateExperiment(model);
+  }
+  // One rank (each rank runs the serial model on its own).
+  FemRunResult one;
+  {
+    PlateModel model(PETSC_COMM_SELF, q, g);
+    one = runPlateExperiment(model);
+  }
+  ASSERT_EQ(one.mu.size(), two.mu.size());
+  double worst = 0;
+  for (std::size_t i = 0; i < one.mu.size(); ++i)
+    worst = std::max(worst, std::fabs(one.mu[i] - two.mu[i]) / std::max(1e-300, std::fabs(one.mu[i])));
+  PetscPrintf(PETSC_COMM_WORLD, "1 vs 2 ranks: %zu samples, largest relative difference of mu(t) %.3e; mu_s %.12f vs %.12f\n",
+              one.mu.size(), worst, one.muS, two.muS);
+  EXPECT_LT(worst, 1e-10);
+  EXPECT_NEAR(one.muS, two.muS, 1e-10 * one.muS);
+}
+
+TEST(FemParallel, MetisPartitionIsBalancedAndCutsNoMoreFacesThanSimple) {
+  int size = 1, rank = 0;
+  MPI_Comm_size(PETSC_COMM_WORLD, &size);
+  MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
+  ASSERT_EQ(size, 2);
+  const PetscInt faces[3] = {30, 30, 3};
+  const PetscReal lower[3] = {0, 0, 0}, upper[3] = {5e-3, 5e-3, 5e-5};
+  OwnedDM serial;
+  ASSERT_EQ(DMPlexCreateBoxMesh(PETSC_COMM_WORLD, 3, PETSC_FALSE, faces, lower, upper, nullptr, PETSC_TRUE,
+                                serial.out()),
+            0);
+  const std::vector<PetscInt> metis = partitionCells(serial, "metis");
+  const std::vector<PetscInt> simple = partitionCells(serial, "simple");
+  const PetscInt cutMetis = countCutFaces(serial, metis);
+  const PetscInt cutSimple = countCutFaces(serial, simple);
+  if (rank == 0) {
+    const PetscInt n = 30 * 30 * 3;
+    const auto inPart0 = std::count(metis.begin(), metis.end(), 0);
+    const double imbalance = std::fabs(double(inPart0) - 0.5 * n) / (0.5 * n);
+    std::printf("METIS: imbalance %.4f, cut faces %d; simple: cut faces %d\n", imbalance, int(cutMetis), int(cutSimple));
+    EXPECT_LT(imbalance, 0.05);
+    EXPECT_GT(cutMetis, 0);
+    EXPECT_LE(cutMetis, cutSimple);
+  }
+  // The distributed mesh really carries METIS's partition: cells per rank balanced.
+  FemParameters q = test::coarse(30, 30, 3);
+  PlateModel model(PETSC_COMM_WORLD, q, test::noGrading());
+  PetscInt local = model.localCells(), most = 0;
+  MPI_Allreduce(&local, &most, 1, MPIU_INT, MPI_MAX, PETSC_COMM_WORLD);
+  EXPECT_LT(double(most), 1.05 * 0.5 * model.globalCells());
+  EXPECT_EQ(model.globalCells(), 30 * 30 * 3);
+}
