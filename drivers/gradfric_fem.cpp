@@ -29,6 +29,7 @@ int main(int argc, char** argv) {
     const FemParameters params = readFemParameters(comm, &record);
     if (helpRequested()) return;
     checkUnusedOptions(comm, {"fem_", "grading_"});
+    chooseTimeStep(params, grading);    // refuses a dt above the stable step before any work
     OutputFiles output(comm, params);  // refuses an existing file before any work
     PlateModel model(comm, params, grading);
     record.add({"-fem_dt (used)", formatReal(model.timeStep()), "s", "time step", OptionOrigin::Derived});

@@ -158,7 +158,7 @@ void OutputFiles::writeSnapshot(PlateModel& model, Vec state, double t) {
   // Contact fields on the bottom nodes (owned blocks in the same order as the state's).
   Vec contact = nullptr, stress = nullptr;
   GF_CALL(DMGetGlobalVector(contactDM_, &contact));
-  GF_CALL(PetscObjectSetName(reinterpret_cast<PetscObject>(contact), "contact"));
+  GF_CALL(PetscObjectSetName(reinterpret_cast<PetscObject>(contact), "bottom"));  // -> bottom_contact
   GF_CALL(VecZeroEntries(contact));
   PetscScalar* c = nullptr;
   GF_CALL(VecGetArray(contact, &c));
@@ -174,7 +174,7 @@ void OutputFiles::writeSnapshot(PlateModel& model, Vec state, double t) {
   std::vector<std::array<double, 6>> cellStress;
   model.cellStresses(state, &cellStress);
   GF_CALL(DMGetGlobalVector(stressDM_, &stress));
-  GF_CALL(PetscObjectSetName(reinterpret_cast<PetscObject>(stress), "stress"));
+  GF_CALL(PetscObjectSetName(reinterpret_cast<PetscObject>(stress), "cell"));  // -> cell_stress
   PetscScalar* s = nullptr;
   PetscInt n = 0;
   GF_CALL(VecGetLocalSize(stress, &n));
@@ -255,7 +255,9 @@ void OutputFiles::finish() {
       const std::string script = std::string(PETSC_DIR) + "/" + PETSC_ARCH + "/lib/petsc/bin/petsc_gen_xdmf.py";
       const std::string alt = std::string(PETSC_DIR) + "/lib/petsc/bin/petsc_gen_xdmf.py";
       const std::string use = exists(script) ? script : alt;
-      const std::string command = "python3 '" + use + "' '" + fieldsPath_ + "' > /dev/null 2>&1";
+      // Debian's python3-h5py belongs to the system interpreter (a pyenv python3 may lack it).
+      const std::string python = exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
+      const std::string command = python + " '" + use + "' '" + fieldsPath_ + "' > /dev/null 2>&1";
       if (std::system(command.c_str()) != 0 || !exists(xmfPath_))
         std::fprintf(stderr, "gradfric-fem: warning: could not write %s with %s\n", xmfPath_.c_str(), use.c_str());
     }

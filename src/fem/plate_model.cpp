@@ -249,26 +249,36 @@ void PlateModel::buildNodes() {
   GF_CALL(VecRestoreArrayRead(coords, &x));
 }
 
-void PlateModel::computeStableStep() {
-  const double Emax = *std::max_element(cellModulus_.begin(), cellModulus_.end());
-  double EmaxGlobal = Emax;
-  GF_CALL_MPI(MPI_Allreduce(&Emax, &EmaxGlobal, 1, MPI_DOUBLE, MPI_MAX, comm_));
-  if (numCells_ == 0) EmaxGlobal = std::max(EmaxGlobal, params_.E);
-  double omega2 = elementMaxFrequencySquared(element_, EmaxGlobal, params_.rho);
+double stableTimeStep(const FemParameters& given, const Grading& grading) {
+  FemParameters q = given;
+  q.resolveDerived();
+  const BoxElement element = makeBoxElement(q.L / q.nx, q.L / q.ny, q.H / q.nz, q.nu);
+  double factor = 1.0;
+  for (int band = 0; band < grading.bands; ++band)
+    if (grading.gradesModulus()) factor = std::max(factor, grading.bandFactor(band));
+  double omega2 = elementMaxFrequencySquared(element, q.E * factor, q.rho);
   // Penalty springs: k * area / nodal mass = 2 k / (rho hz) at every bottom node.
-  if (params_.contact) omega2 += 2.0 * std::max(params_.kn, params_.kt) / (params_.rho * element_.hz);
+  if (q.contact) omega2 += 2.0 * std::max(q.kn, q.kt) / (q.rho * element.hz);
   const double omega = std::sqrt(omega2);
-  const double gamma = std::max(params_.settleDamping, params_.slideDamping);
-  const double xi = 0.5 * params_.stiffnessDamping * omega + gamma / (2.0 * omega);
-  stableDt_ = centralDifferenceStableStep(omega2, xi);
-  if (params_.dt > 0) {
-    if (params_.dt > stableDt_)
-      throw InputError("-fem_dt", formatReal(params_.dt),
-                       "<= the stable step " + formatReal(stableDt_) + " s (mesh, wave speed, penalty, damping)");
-    dt_ = params_.dt;
-  } else {
-    dt_ = params_.dtSafety * stableDt_;
+  const double gamma = std::max(q.settleDamping, q.slideDamping);
+  const double xi = 0.5 * q.stiffnessDamping * omega + gamma / (2.0 * omega);
+  return centralDifferenceStableStep(omega2, xi);
+}
+
+double chooseTimeStep(const FemParameters& q, const Grading& grading) {
+  const double stable = stableTimeStep(q, grading);
+  if (q.dt > 0) {
+    if (q.dt > stable)
+      throw InputError("-fem_dt", formatReal(q.dt),
+                       "<= the stable step " + formatReal(stable) + " s (from mesh, wave speed, penalty, damping)");
+    return q.dt;
   }
+  return q.dtSafety * stable;
+}
+
+void PlateModel::computeStableStep() {
+  stableDt_ = fem::stableTimeStep(params_, grading_);
+  dt_ = fem::chooseTimeStep(params_, grading_);
 }
 
 Vec PlateModel::createState() const {

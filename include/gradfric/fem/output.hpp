@@ -3,8 +3,9 @@
 //  <output>              HDF5, rank 0: /history/{time,mu,normal_force} of step 2 and the run's scalars
 //                        (mu_s, mu_k, peak_time, eq2_peak_time, ...) and parameters as attributes.
 //  <stem>_fields.h5/.xmf field snapshots in PETSc's HDF5 VIZ layout (ParaView opens the .xmf):
-//                        vertex fields displacement, velocity, contact (pressure, t_x, t_y, state),
-//                        cell field stress (xx, yy, zz, yz, xz, xy).
+//                        /vertex_fields/state_displacement, state_velocity, bottom_contact (contact
+//                        pressure, t_x, t_y, state 0 open 1 stick 2 slip), /cell_fields/cell_stress
+//                        (xx, yy, zz, yz, xz, xy) [PETSc names them <vector>_<field>].
 // Nothing is overwritten unless -fem_output_overwrite; files are written under a temporary name
 // and renamed at the end, so a failed run leaves no half-written result.
 #include "gradfric/core/options.hpp"

@@ -30,6 +30,13 @@ enum class Phase { Pressure, Sliding };
 void elasticKernel(PetscInt numCells, const PetscInt* cellOffsets, const double* cellModulus, const double* stiffness,
                    const double* u, const double* v, double beta, double* f);
 
+// The stable step of the explicit scheme for these parameters (no mesh needed: every cell is the
+// same box): element frequencies with the stiffest graded E, contact penalty, damping.
+double stableTimeStep(const FemParameters& params, const Grading& grading);
+// The step a run uses: params.dt if set (refused with the limit in the message if above the
+// stable step), else dtSafety * stable step. Throws InputError.
+double chooseTimeStep(const FemParameters& params, const Grading& grading);
+
 struct ContactTotals {
   double fx = 0, fy = 0, fn = 0;  // total contact force on the plate [N]
   long long stick = 0, slip = 0, open = 0;
