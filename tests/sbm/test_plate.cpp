@@ -186,3 +186,25 @@ TEST(Plate, SlidingAtNinetyDegreesIsTheSameProblemRotated) {
   ASSERT_EQ(x.mu.size(), y.mu.size());
   for (std::size_t i = 0; i < x.mu.size(); ++i) EXPECT_NEAR(x.mu[i], y.mu[i], 1e-12) << i;
 }
+
+TEST(Plate, StressSnapshotsAtTheRequestedTimesOnly) {
+  // Before any block slips nothing moves, so the springs carry no stress; after the detachment
+  // front has passed, they do. No snapshot requested: none computed.
+  const Grading g = linear(GradedProperty::Friction, 0.3);
+  const Parameters p = paperParameters(20, 0.028, g);
+  Request q = defaultRequest(p);
+  const double load = p.loadingTime();
+  q.snapshotTimes = {0.0, 0.3 * load, 1.3 * load};
+  const Result r = simulate(p, g, q, {9, 0, 0});
+  ASSERT_EQ(r.snapshots.size(), 3u);
+  for (std::size_t k = 0; k < 3; ++k) {
+    EXPECT_NEAR(r.snapshots[k].time, q.snapshotTimes[k], p.timeStep);
+    ASSERT_EQ(r.snapshots[k].sigmaXOverP.size(), 400u);
+  }
+  for (double s : r.snapshots[1].sigmaXOverP) EXPECT_EQ(s, 0.0);
+  double largest = 0;
+  for (double s : r.snapshots[2].sigmaXOverP) largest = std::max(largest, std::fabs(s));
+  EXPECT_GT(largest, 0.01);
+  q.snapshotTimes.clear();
+  EXPECT_TRUE(simulate(p, g, q, {9, 0, 0}).snapshots.empty());
+}
