@@ -1,32 +1,11 @@
 #include "gradfric/fem/parameters.hpp"
 
 #include "gradfric/core/input_error.hpp"
-#include "gradfric/core/petsc_call.hpp"
 
-#include <optional>
 
 #include <cmath>
 
 namespace gradfric::fem {
-
-namespace {
-
-// OptionReader::wasSet/realIfSet (core/options.cpp) pass the name to PetscOptionsHasName without
-// its leading dash, which PETSc refuses; until that is fixed the FEM reader asks PETSc itself.
-bool isSet(const std::string& name) {
-  PetscBool set = PETSC_FALSE;
-  GF_CALL(PetscOptionsHasName(nullptr, "fem_", ("-" + name).c_str(), &set));
-  return set;
-}
-
-std::optional<double> realIfSet(OptionReader& o, const std::string& name, const std::string& unit,
-                                const std::string& help, const std::string& defaultText) {
-  if (isSet(name)) return o.real(name, 0.0, unit, help);
-  if (helpRequested()) o.text(name, "(" + defaultText + ")", help + " [" + unit + "]");
-  return std::nullopt;
-}
-
-}  // namespace
 
 double FemParameters::shearWaveSpeed() const { return std::sqrt(shearModulus() / rho); }
 
@@ -63,20 +42,20 @@ FemParameters readFemParameters(MPI_Comm comm, RunParameters* record) {
   q.vC = o.real("v_c", q.vC, "m/s", "critical velocity v_c of Eq. 1");
   q.contact = o.flag("contact", true, "contact with the rigid plane (off: free bottom face, for tests)");
   const double hzGuess = q.H / std::max(1, q.nz);
-  if (auto kn = realIfSet(o, "kn", "Pa/m", "normal penalty stiffness k_n", "E0/hz")) q.kn = *kn;
-  if (auto kt = realIfSet(o, "kt", "Pa/m", "tangential penalty stiffness k_t", "k_n")) q.kt = *kt;
-  if (auto g = realIfSet(o, "settle_damping", "1/s", "mass-proportional damping during the pressure step", "c_s/H"))
+  if (auto kn = o.realIfSet("kn", "Pa/m", "normal penalty stiffness k_n", "E0/hz")) q.kn = *kn;
+  if (auto kt = o.realIfSet("kt", "Pa/m", "tangential penalty stiffness k_t", "k_n")) q.kt = *kt;
+  if (auto g = o.realIfSet("settle_damping", "1/s", "mass-proportional damping during the pressure step", "c_s/H"))
     q.settleDamping = *g;
   q.slideDamping = o.real("slide_damping", 0.0, "1/s", "mass-proportional damping during sliding");
   q.stiffnessDamping = o.real("stiffness_damping", 0.0, "s", "stiffness-proportional (Rayleigh beta) damping");
-  if (auto dt = realIfSet(o, "dt", "s", "time step", "dt_safety * stable step")) q.dt = *dt;
+  if (auto dt = o.realIfSet("dt", "s", "time step", "dt_safety * stable step")) q.dt = *dt;
   q.dtSafety = o.real("dt_safety", q.dtSafety, "1", "time step as a fraction of the stable step");
-  if (auto t = realIfSet(o, "ramp_time", "s", "pressure ramp duration", "20 H/c_s")) q.rampTime = *t;
-  if (auto t = realIfSet(o, "settle_time", "s", "hold under pressure before sliding", "10 H/c_s")) q.settleTime = *t;
-  if (auto t = realIfSet(o, "slide_time", "s", "longest sliding duration", "2.5 * Eq. 2 peak time")) q.slideTime = *t;
-  if (auto t = realIfSet(o, "kinetic_window_start", "s", "kinetic window start after the peak", "0.25 * Eq. 2"))
+  if (auto t = o.realIfSet("ramp_time", "s", "pressure ramp duration", "20 H/c_s")) q.rampTime = *t;
+  if (auto t = o.realIfSet("settle_time", "s", "hold under pressure before sliding", "10 H/c_s")) q.settleTime = *t;
+  if (auto t = o.realIfSet("slide_time", "s", "longest sliding duration", "2.5 * Eq. 2 peak time")) q.slideTime = *t;
+  if (auto t = o.realIfSet("kinetic_window_start", "s", "kinetic window start after the peak", "0.25 * Eq. 2"))
     q.windowStart = *t;
-  if (auto t = realIfSet(o, "kinetic_window_length", "s", "kinetic window length", "0.5 * Eq. 2")) q.windowLength = *t;
+  if (auto t = o.realIfSet("kinetic_window_length", "s", "kinetic window length", "0.5 * Eq. 2")) q.windowLength = *t;
   q.stopWhenKnown = o.flag("stop_when_known", true, "stop once mu_s, the peak time and mu_k are known");
   q.partitioner = o.choice("partitioner", "metis", {"metis", "ptscotch", "simple"}, "mesh partitioner");
   q.output = o.text("output", "", "HDF5 results file (empty: none); snapshots go to <name>_fields.h5 + .xmf");
@@ -99,32 +78,32 @@ FemParameters readFemParameters(MPI_Comm comm, RunParameters* record) {
   o.requirePositive("mu_k", q.muK, "1");
   if (q.muK > q.muS) throw InputError(o.fullName("mu_k"), formatReal(q.muK), "<= mu_s = " + formatReal(q.muS));
   o.requirePositive("v_c", q.vC, "m/s");
-  if (isSet("kn")) o.requirePositive("kn", q.kn, "Pa/m");
-  if (isSet("kt")) o.requirePositive("kt", q.kt, "Pa/m");
-  if (isSet("settle_damping")) o.requireNonNegative("settle_damping", q.settleDamping, "1/s");
+  if (o.wasSet("kn")) o.requirePositive("kn", q.kn, "Pa/m");
+  if (o.wasSet("kt")) o.requirePositive("kt", q.kt, "Pa/m");
+  if (o.wasSet("settle_damping")) o.requireNonNegative("settle_damping", q.settleDamping, "1/s");
   o.requireNonNegative("slide_damping", q.slideDamping, "1/s");
   o.requireNonNegative("stiffness_damping", q.stiffnessDamping, "s");
-  if (isSet("dt")) o.requirePositive("dt", q.dt, "s");
+  if (o.wasSet("dt")) o.requirePositive("dt", q.dt, "s");
   o.requireRange("dt_safety", q.dtSafety, 1e-6, 1.0, "0 < dt_safety <= 1");
   for (const char* name : {"ramp_time", "settle_time", "kinetic_window_start"})
-    if (isSet(name)) o.requireNonNegative(name, name[0] == 'r' ? q.rampTime : name[0] == 's' ? q.settleTime : q.windowStart, "s");
-  if (isSet("slide_time")) o.requirePositive("slide_time", q.slideTime, "s");
-  if (isSet("kinetic_window_length")) o.requirePositive("kinetic_window_length", q.windowLength, "s");
+    if (o.wasSet(name)) o.requireNonNegative(name, name[0] == 'r' ? q.rampTime : name[0] == 's' ? q.settleTime : q.windowStart, "s");
+  if (o.wasSet("slide_time")) o.requirePositive("slide_time", q.slideTime, "s");
+  if (o.wasSet("kinetic_window_length")) o.requirePositive("kinetic_window_length", q.windowLength, "s");
   o.requireAtLeast("history_every", q.historyEvery, 1);
   (void)hzGuess;
 
   FemParameters derived = q;
   derived.resolveDerived();
-  if (!isSet("kn")) o.recordDerived("kn", derived.kn, "Pa/m", "normal penalty stiffness k_n");
-  if (!isSet("kt")) o.recordDerived("kt", derived.kt, "Pa/m", "tangential penalty stiffness k_t");
-  if (!isSet("settle_damping"))
+  if (!o.wasSet("kn")) o.recordDerived("kn", derived.kn, "Pa/m", "normal penalty stiffness k_n");
+  if (!o.wasSet("kt")) o.recordDerived("kt", derived.kt, "Pa/m", "tangential penalty stiffness k_t");
+  if (!o.wasSet("settle_damping"))
     o.recordDerived("settle_damping", derived.settleDamping, "1/s", "mass-proportional damping during the pressure step");
-  if (!isSet("ramp_time")) o.recordDerived("ramp_time", derived.rampTime, "s", "pressure ramp duration");
-  if (!isSet("settle_time")) o.recordDerived("settle_time", derived.settleTime, "s", "hold under pressure");
-  if (!isSet("slide_time")) o.recordDerived("slide_time", derived.slideTime, "s", "longest sliding duration");
-  if (!isSet("kinetic_window_start"))
+  if (!o.wasSet("ramp_time")) o.recordDerived("ramp_time", derived.rampTime, "s", "pressure ramp duration");
+  if (!o.wasSet("settle_time")) o.recordDerived("settle_time", derived.settleTime, "s", "hold under pressure");
+  if (!o.wasSet("slide_time")) o.recordDerived("slide_time", derived.slideTime, "s", "longest sliding duration");
+  if (!o.wasSet("kinetic_window_start"))
     o.recordDerived("kinetic_window_start", derived.windowStart, "s", "kinetic window start after the peak");
-  if (!isSet("kinetic_window_length"))
+  if (!o.wasSet("kinetic_window_length"))
     o.recordDerived("kinetic_window_length", derived.windowLength, "s", "kinetic window length");
   return derived;
 }
