@@ -34,8 +34,9 @@ namespace {
 
 // Options that steer one run but not its results: kept out of /scene (stored under /run), so a
 // resumed or re-ranked run of the same scene writes the same /scene.
-const std::set<std::string> kRunControl = {"-output",           "-output_overwrite", "-ensemble_resume",
-                                           "-ensemble_monitor", "-ensemble_schedule", "-ensemble_abort_after"};
+const std::set<std::string> kRunControl = {"-output",          "-output_overwrite",    "-ensemble_resume",
+                                           "-ensemble_monitor", "-ensemble_schedule",   "-ensemble_abort_after",
+                                           "-ensemble_dry_run"};
 
 struct LogEvents {
   PetscLogEvent task = 0, write = 0, statistics = 0;
@@ -250,8 +251,10 @@ void runSpringBlockScene(MPI_Comm comm, RunParameters* record) {
   const bool resume = ens.flag("resume", false, "continue an interrupted run of the same scene (skips finished tasks)");
   const std::string scheduleName = ens.choice("schedule", "dynamic", {"dynamic", "static"},
                                               "task distribution: shared counter (one-sided MPI) or round robin");
+  const bool dryRun = ens.flag("dry_run", false, "check the scene and print the plan, run nothing, write nothing");
   const PetscInt abortAfter = ens.integer(
-      "abort_after", 0, "1", "testing only: rank 0 exits abruptly after finishing this many tasks (0: never)");
+      "abort_after", 0, "1",
+      "testing only: every rank exits abruptly (no close, no finalize) once this many tasks finished (0: never)");
   OptionReader out(comm, "", "Results file", record);
   const std::string output = out.text("output", "gradfric_sbm.h5", "results file (parallel HDF5; see docs/ensemble.md)");
   const bool overwrite = out.flag("output_overwrite", false, "replace an existing results file");
@@ -346,8 +349,6 @@ void runSpringBlockScene(MPI_Comm comm, RunParameters* record) {
     (kRunControl.count(o.name) ? runAttributes : scene).push_back(a);
   }
 
-  const OutputPlan plan = planOutput(comm, output, overwrite, resume);
-
   // ---- What this run does. ----
   record->print(comm, "gradfric spring-block scene: resolved parameters");
   GF_CALL(PetscPrintf(comm, "Active effects:\n"));
@@ -366,6 +367,13 @@ void runSpringBlockScene(MPI_Comm comm, RunParameters* record) {
                         history ? ", mu(t) histories" : "", request.firstSlipMap ? ", first-slip maps" : "",
                         request.snapshotTimes.empty() ? "" : ", sigma_x/p snapshots"));
   }
+
+  if (dryRun) {
+    GF_CALL(PetscPrintf(comm, "Dry run (-ensemble_dry_run): scene checked, %d task(s) planned, nothing run or written\n",
+                        P * R));
+    return;
+  }
+  const OutputPlan plan = planOutput(comm, output, overwrite, resume);
 
   // ---- The results file. ----
   io::ResultsFile file = [&] {
@@ -434,7 +442,15 @@ void runSpringBlockScene(MPI_Comm comm, RunParameters* record) {
   const auto start = std::chrono::steady_clock::now();
   {
     TaskCounter counter(comm, scheduleName == "dynamic" ? Schedule::Dynamic : Schedule::Static);
+    auto abortIfDue = [&](long finishedOverall) {
+      if (abortAfter <= 0 || finishedOverall < abortAfter) return;
+      std::printf("ensemble: -ensemble_abort_after %ld reached: rank %d exits abruptly (test of resume)\n",
+                  static_cast<long>(abortAfter), rank);
+      std::fflush(stdout);
+      std::_Exit(86);
+    };
     for (;;) {
+      if (abortAfter > 0) abortIfDue(counter.finishedSoFar());
       const long index = counter.next();
       if (index >= static_cast<long>(tasks.size())) break;
       const Task task = tasks[index];
@@ -485,12 +501,7 @@ void runSpringBlockScene(MPI_Comm comm, RunParameters* record) {
                       left > 0 ? hms(eta).c_str() : "0:00:00");
           std::fflush(stdout);
         }
-        if (abortAfter > 0 && rank == 0 && finishedHere >= abortAfter) {
-          std::printf("ensemble: -ensemble_abort_after %ld reached: rank 0 exits abruptly (test of resume)\n",
-                      static_cast<long>(abortAfter));
-          std::fflush(stdout);
-          std::_Exit(86);
-        }
+        abortIfDue(all);
       } catch (const std::exception& e) {
         failure = "task (point " + std::to_string(task.point) + ", realisation " + std::to_string(task.realisation) +
                   ") failed on rank " + std::to_string(rank) + ": " + e.what();

@@ -25,10 +25,10 @@ TaskCounter::~TaskCounter() {
   MPI_Win_free(&window_);
 }
 
-long TaskCounter::fetchAdd(int slot) {
+long TaskCounter::fetchAdd(int slot, bool add) {
   const long one = 1;
   long previous = 0;
-  GF_CALL_MPI(MPI_Fetch_and_op(&one, &previous, MPI_LONG, 0, slot, MPI_SUM, window_));
+  GF_CALL_MPI(MPI_Fetch_and_op(&one, &previous, MPI_LONG, 0, slot, add ? MPI_SUM : MPI_NO_OP, window_));
   GF_CALL_MPI(MPI_Win_flush(0, window_));
   return previous;
 }
@@ -42,6 +42,11 @@ long TaskCounter::finishOne() {
   ++localFinished_;
   if (schedule_ == Schedule::Static) return localFinished_ * size_;
   return fetchAdd(1) + 1;
+}
+
+long TaskCounter::finishedSoFar() {
+  if (schedule_ == Schedule::Static) return localFinished_ * size_;
+  return fetchAdd(1, false);
 }
 
 }  // namespace gradfric::ensemble

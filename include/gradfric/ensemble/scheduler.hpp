@@ -25,9 +25,11 @@ public:
   // Records one finished task; returns the number finished over all ranks so far (dynamic) or
   // an estimate (static: this rank's count times the number of ranks).
   long finishOne();
+  // The number finished over all ranks so far, without changing it (static: an estimate).
+  long finishedSoFar();
 
 private:
-  long fetchAdd(int slot);
+  long fetchAdd(int slot, bool add = true);
   MPI_Comm comm_;
   Schedule schedule_;
   int rank_ = 0;

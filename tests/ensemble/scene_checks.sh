@@ -1,0 +1,142 @@
+#!/usr/bin/env bash
+# End-to-end checks of the spring-block ensemble through the gradfric driver.
+#   scene_checks.sh <driver> <source-dir> <check>
+# checks: determinism, kill_resume, refuse, resume_mismatch, single, help, scenes
+# Each check fails (exit 1) if what it guards is wrong. Results files are compared with h5diff,
+# excluding /run (wall times, which rank ran which task, run-control options): everything else,
+# every attribute and dataset, must be equal value for value.
+set -euo pipefail
+driver=$1
+src=$2
+check=$3
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
+work=$(mktemp -d "$PWD/ensemble_${check}_XXXXXX")
+trap 'rm -rf "$work"' EXIT
+run() {  # run <ranks> <args...>
+  local n=$1
+  shift
+  mpiexec --oversubscribe -n "$n" "$driver" "$@"
+}
+fail() {
+  echo "FAILED: $*" >&2
+  exit 1
+}
+same() {  # same <a.h5> <b.h5>: identical apart from /run
+  h5diff --exclude-path /run "$1" "$2" >"$work/diff.txt" 2>&1 || {
+    head -20 "$work/diff.txt" >&2
+    fail "$1 and $2 differ"
+  }
+}
+# The reduced Figure 4 scene on a smaller lattice (test time); 5 x 3 = 15 tasks.
+scene=(-options_file "$src/input/sbm_fig4_reduced.opts" -sbm_N 16 -ensemble_delta -0.3,-0.1,0,0.1,0.3
+       -ensemble_realisations 3 -ensemble_monitor)
+
+case "$check" in
+determinism)
+  for n in 1 2 3; do
+    run "$n" "${scene[@]}" -output "$work/np$n.h5" >"$work/np$n.log"
+    [ -f "$work/np$n.h5" ] || fail "no results file from $n ranks"
+    [ ! -e "$work/np$n.h5.partial" ] || fail "temporary file left behind"
+  done
+  grep -q "\[15/15\]" "$work/np2.log" || fail "no progress line for the last task"
+  same "$work/np1.h5" "$work/np2.h5"
+  same "$work/np1.h5" "$work/np3.h5"
+  # Who ran what did change (so the comparison above is not vacuous) ...
+  h5dump -d /run/rank "$work/np2.h5" | grep -q "1," || fail "rank 1 ran no task on 2 ranks"
+  # ... and h5diff does see a different realisation set: another seed must differ.
+  run 2 "${scene[@]}" -ensemble_seed 99 -output "$work/seed.h5" >/dev/null
+  if h5diff --exclude-path /run "$work/np1.h5" "$work/seed.h5" >/dev/null 2>&1; then
+    fail "a different seed gave the same file"
+  fi
+  # The static schedule gives the same file too.
+  run 2 "${scene[@]}" -ensemble_schedule static -output "$work/static.h5" >/dev/null
+  same "$work/np1.h5" "$work/static.h5"
+  ;;
+kill_resume)
+  run 2 "${scene[@]}" -output "$work/full.h5" >"$work/full.log"
+  # Every rank exits abruptly (no file close, no MPI_Finalize) once 3 tasks have finished.
+  if run 2 "${scene[@]}" -ensemble_abort_after 3 -output "$work/cut.h5" >"$work/cut.log" 2>&1; then
+    fail "the interrupted run reported success"
+  fi
+  [ ! -e "$work/cut.h5" ] || fail "an interrupted run left a file under the final name"
+  [ -f "$work/cut.h5.partial" ] || fail "no .partial file after the interruption"
+  # The partial file is readable HDF5 and keeps the finished tasks.
+  done_count=$(h5dump -y -d /realisations/done "$work/cut.h5.partial" | sed -n '/DATA {/,/}/p' | grep -o '[01]' | grep -c 1 || true)
+  [ "$done_count" -ge 3 ] || fail "only $done_count finished tasks kept after the interruption"
+  [ "$done_count" -le 4 ] || fail "the interruption came too late to test anything ($done_count tasks)"
+  h5dump -a /complete "$work/cut.h5.partial" | grep -q "(0): 0" || fail "interrupted file not marked incomplete"
+  # Without -ensemble_resume the interrupted run is not overwritten by accident.
+  if run 1 "${scene[@]}" -output "$work/cut.h5" >"$work/refused.log" 2>&1; then fail "started over an interrupted run"; fi
+  grep -q "ensemble_resume" "$work/refused.log" || fail "no hint to -ensemble_resume"
+  run 2 "${scene[@]}" -ensemble_resume -output "$work/cut.h5" >"$work/resume.log"
+  grep -q "$done_count of 15 tasks already finished" "$work/resume.log" || fail "resume did not skip the finished tasks"
+  [ ! -e "$work/cut.h5.partial" ] || fail "the .partial file was not renamed"
+  same "$work/full.h5" "$work/cut.h5"
+  # Resuming a finished file runs nothing and keeps it equal.
+  run 1 "${scene[@]}" -ensemble_resume -output "$work/cut.h5" >"$work/again.log"
+  grep -q "15 of 15 tasks already finished" "$work/again.log" || fail "a finished file was run again"
+  same "$work/full.h5" "$work/cut.h5"
+  ;;
+refuse)
+  run 1 "${scene[@]}" -ensemble_realisations 1 -output "$work/a.h5" >/dev/null
+  cp "$work/a.h5" "$work/a.copy"
+  if run 1 "${scene[@]}" -ensemble_realisations 1 -output "$work/a.h5" >"$work/b.log" 2>&1; then
+    fail "an existing results file was overwritten"
+  fi
+  grep -q "output_overwrite" "$work/b.log" || fail "no hint to -output_overwrite"
+  cmp -s "$work/a.h5" "$work/a.copy" || fail "the refused run modified the existing file"
+  run 1 "${scene[@]}" -ensemble_realisations 1 -output "$work/a.h5" -output_overwrite >/dev/null
+  if run 1 "${scene[@]}" -output "$work/no/such/folder/x.h5" >"$work/c.log" 2>&1; then fail "wrote into a missing folder"; fi
+  grep -q "writable folder" "$work/c.log" || fail "no message about the output folder"
+  if run 1 "${scene[@]}" -ensemble_delta 0,1.2 -output "$work/d.h5" >"$work/d.log" 2>&1; then fail "|Delta| >= 1 accepted"; fi
+  grep -q "ensemble_delta" "$work/d.log" || fail "the bad option is not named"
+  if run 1 -grading_profile none -ensemble_delta 0,0.2 -output "$work/e.h5" >"$work/e.log" 2>&1; then
+    fail "a Delta sweep without a grading profile accepted"
+  fi
+  if run 1 "${scene[@]}" -ensemble_realisatons 2 -output "$work/f.h5" >"$work/f.log" 2>&1; then fail "misspelt option accepted"; fi
+  [ ! -e "$work/f.h5" ] && [ ! -e "$work/f.h5.partial" ] || fail "a refused run wrote a file"
+  ;;
+resume_mismatch)
+  run 1 "${scene[@]}" -ensemble_realisations 1 -ensemble_abort_after 1 -output "$work/m.h5" >/dev/null 2>&1 || true
+  [ -f "$work/m.h5.partial" ] || fail "no partial file to resume"
+  if run 1 "${scene[@]}" -ensemble_realisations 1 -sbm_N 18 -ensemble_resume -output "$work/m.h5" >"$work/m.log" 2>&1; then
+    fail "resumed with a different lattice"
+  fi
+  grep -q "sbm_N: file 16, now 18" "$work/m.log" || fail "the differing option is not named"
+  ;;
+single)
+  run 1 -sbm_N 16 -output "$work/s.h5" >"$work/s.log"
+  grep -Eq "^Result: mu_s = 0\.[0-9]+, mu_k = 0\.[0-9]+" "$work/s.log" || fail "no 'mu_s = ..., mu_k = ...' line"
+  grep -q "results in $work/s.h5" "$work/s.log" || fail "where the results went is not printed"
+  # The printed mu_s is the one in the file.
+  printed=$(sed -n 's/^Result: mu_s = \([0-9.]*\),.*/\1/p' "$work/s.log")
+  stored=$(h5dump -m %.6f -d /statistics/mu_s_mean "$work/s.h5" | sed -n 's/.*(0): \([0-9.]*\).*/\1/p')
+  [ "$printed" = "$stored" ] || fail "printed mu_s $printed, file $stored"
+  ;;
+help)
+  run 1 -help -output "$work/h.h5" >"$work/h.log" 2>&1
+  grep -q -- "-ensemble_delta" "$work/h.log" || fail "-help does not list -ensemble_delta"
+  grep -q -- "-sbm_N" "$work/h.log" || fail "-help does not list -sbm_N"
+  [ ! -e "$work/h.h5" ] && [ ! -e "$work/h.h5.partial" ] || fail "-help ran the scene"
+  ;;
+scenes)
+  # Every SBM scene of input/ is valid: read and checked in full (-ensemble_dry_run: no work).
+  count=0
+  for f in "$src"/input/sbm_*.opts; do
+    run 1 -options_file "$f" -ensemble_dry_run -output "$work/dry.h5" >"$work/dry.log" 2>&1 ||
+      { cat "$work/dry.log" >&2; fail "scene $f refused"; }
+    grep -q "Dry run" "$work/dry.log" || fail "scene $f: no dry-run line"
+    ! grep -q "WARNING" "$work/dry.log" || fail "scene $f: unused options"
+    count=$((count + 1))
+  done
+  [ "$count" -ge 20 ] || fail "only $count SBM scenes in input/"
+  for fig in 2 4 5 6 7 8 9 10 11 12; do
+    [ -f "$src/input/sbm_fig${fig}.opts" ] && [ -f "$src/input/sbm_fig${fig}_reduced.opts" ] ||
+      fail "scene of Figure $fig missing"
+  done
+  ;;
+*)
+  fail "unknown check $check"
+  ;;
+esac
+echo "ensemble check $check: passed"

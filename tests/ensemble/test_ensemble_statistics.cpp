@@ -1,0 +1,109 @@
+// Statistics of a sweep point: exact values for small samples, Student t quantiles against
+// tables, the relative variation and its propagated error.
+#include "gradfric/ensemble/statistics.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+using namespace gradfric::ensemble;
+
+namespace {
+const double kNaN = std::numeric_limits<double>::quiet_NaN();
+}
+
+TEST(EnsembleStatistics, StudentQuantilesMatchTables) {
+  // Two-sided 95 % critical values (tables of the t distribution).
+  EXPECT_NEAR(studentTQuantile(0.975, 1), 12.7062047, 1e-6);
+  EXPECT_NEAR(studentTQuantile(0.975, 2), 4.30265273, 1e-7);
+  EXPECT_NEAR(studentTQuantile(0.975, 4), 2.77644511, 1e-7);
+  EXPECT_NEAR(studentTQuantile(0.975, 19), 2.09302405, 1e-7);
+  EXPECT_NEAR(studentTQuantile(0.975, 1000), 1.96233908, 1e-7);
+  EXPECT_NEAR(studentTQuantile(0.025, 19), -2.09302405, 1e-7);
+  EXPECT_NEAR(studentTQuantile(0.995, 10), 3.16927267, 1e-7);
+  EXPECT_DOUBLE_EQ(studentTQuantile(0.5, 3), 0.0);
+}
+
+TEST(EnsembleStatistics, IncompleteBetaKnownValues) {
+  EXPECT_NEAR(incompleteBeta(1.0, 1.0, 0.3), 0.3, 1e-14);                        // uniform
+  EXPECT_NEAR(incompleteBeta(2.0, 3.0, 0.4), 0.5248, 1e-12);                    // polynomial case
+  EXPECT_NEAR(incompleteBeta(0.5, 0.5, 0.5), 0.5, 1e-12);                       // symmetric
+  const double x = 0.9, a = 5.0, b = 2.0;  // I_x(5,2) = x^5 (6 - 5x)
+  EXPECT_NEAR(incompleteBeta(a, b, x), std::pow(x, 5) * (6 - 5 * x), 1e-12);
+}
+
+TEST(EnsembleStatistics, SummaryOfASmallSample) {
+  const Summary s = summarise({0.9, 1.0, 1.1, 1.0});
+  EXPECT_EQ(s.count, 4);
+  EXPECT_NEAR(s.mean, 1.0, 1e-15);
+  const double sd = std::sqrt(0.02 / 3.0);
+  EXPECT_NEAR(s.stdDev, sd, 1e-15);
+  EXPECT_NEAR(s.stdError, sd / 2.0, 1e-15);
+  const double t = 3.18244631;  // t(0.975, 3)
+  EXPECT_NEAR(s.ciLow, 1.0 - t * sd / 2.0, 1e-8);
+  EXPECT_NEAR(s.ciHigh, 1.0 + t * sd / 2.0, 1e-8);
+}
+
+TEST(EnsembleStatistics, NaNEntriesAreSkippedAndSmallSamplesHaveNoSpread) {
+  const Summary s = summarise({kNaN, 2.0, kNaN, 4.0});
+  EXPECT_EQ(s.count, 2);
+  EXPECT_DOUBLE_EQ(s.mean, 3.0);
+  EXPECT_NEAR(s.stdDev, std::sqrt(2.0), 1e-15);
+  const Summary one = summarise({0.7});
+  EXPECT_EQ(one.count, 1);
+  EXPECT_DOUBLE_EQ(one.mean, 0.7);
+  EXPECT_TRUE(std::isnan(one.stdDev));
+  EXPECT_TRUE(std::isnan(one.ciLow));
+  const Summary none = summarise({kNaN});
+  EXPECT_EQ(none.count, 0);
+  EXPECT_TRUE(std::isnan(none.mean));
+}
+
+TEST(EnsembleStatistics, NoCancellationForCloseValues) {
+  // Values 1 +- 1e-9: a one-pass sum of squares would lose the spread entirely.
+  const Summary s = summarise({1.0 + 1e-9, 1.0 - 1e-9, 1.0 + 1e-9, 1.0 - 1e-9});
+  EXPECT_NEAR(s.stdDev, 1e-9 * std::sqrt(4.0 / 3.0), 1e-15);
+}
+
+TEST(EnsembleStatistics, RelativeVariationAndPropagatedError) {
+  Summary ref;
+  ref.count = 10;
+  ref.mean = 0.95;
+  ref.stdError = 0.002;
+  Summary point;
+  point.count = 10;
+  point.mean = 0.76;
+  point.stdError = 0.003;
+  const RelativeVariation v = relativeVariation(point, ref, false);
+  EXPECT_NEAR(v.value, (0.76 - 0.95) / 0.95, 1e-15);
+  const double expected = std::hypot(0.003 / 0.95, 0.76 * 0.002 / (0.95 * 0.95));
+  EXPECT_NEAR(v.error, expected, 1e-15);
+  const RelativeVariation self = relativeVariation(ref, ref, true);
+  EXPECT_EQ(self.value, 0.0);
+  EXPECT_EQ(self.error, 0.0);
+}
+
+TEST(EnsembleStatistics, PointTableCountsOnlyFinishedRealisations) {
+  // 2 points x 3 realisations; point 0 is the reference of both.
+  const std::vector<double> muS = {1.0, 0.9, 100.0, 0.8, 0.7, 0.6};
+  const std::vector<double> muK = {0.6, 0.6, 100.0, kNaN, 0.5, 0.7};
+  const std::vector<signed char> confirmed = {1, 1, 1, 1, 0, 1};
+  const std::vector<unsigned char> done = {1, 1, 0, 1, 1, 1};  // (0, 2) not finished: its 100 must not count
+  const auto stats = pointStatistics(3, {0, 0}, muS, muK, confirmed, done);
+  ASSERT_EQ(stats.size(), 2u);
+  EXPECT_EQ(stats[0].finished, 2);
+  EXPECT_NEAR(stats[0].muStatic.mean, 0.95, 1e-15);
+  EXPECT_NEAR(stats[0].muKinetic.mean, 0.6, 1e-15);
+  EXPECT_EQ(stats[1].finished, 3);
+  EXPECT_EQ(stats[1].peaksUnconfirmed, 1);
+  EXPECT_NEAR(stats[1].muStatic.mean, 0.7, 1e-15);
+  EXPECT_EQ(stats[1].muKinetic.count, 2);  // the NaN mu_k is skipped
+  EXPECT_NEAR(stats[1].muKinetic.mean, 0.6, 1e-15);
+  EXPECT_EQ(stats[0].muStaticRelative.value, 0.0);
+  EXPECT_NEAR(stats[1].muStaticRelative.value, (0.7 - 0.95) / 0.95, 1e-15);
+  EXPECT_GT(stats[1].muStaticRelative.error, 0.0);
+  const auto orphan = pointStatistics(3, {-1, -1}, muS, muK, confirmed, done);
+  EXPECT_TRUE(std::isnan(orphan[1].muStaticRelative.value));
+  EXPECT_THROW(pointStatistics(2, {0, 0}, muS, muK, confirmed, done), std::invalid_argument);
+}
