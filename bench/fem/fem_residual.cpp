@@ -1,0 +1,127 @@
+// The elastic internal force on the paper mesh: the specialised kernel (one precomputed 24x24
+// box-cell stiffness scaled by E) against PETSc's generic PetscFE residual
+// (DMPlexTSComputeRHSFunctionFEM), and the whole right-hand side of one explicit step.
+// Prints the specialised/generic ratio at the end of the run. Mesh by -fem_nx/-fem_ny/-fem_nz.
+#include <petscsection.h>
+#include <petscsf.h>
+
+#include "gradfric/core/petsc_handle.hpp"
+#include "gradfric/fem/parameters.hpp"
+#include "gradfric/fem/plate_model.hpp"
+
+#include <benchmark/benchmark.h>
+#include <petscsys.h>
+
+#include <cstdio>
+#include <map>
+#include <memory>
+#include <string>
+
+namespace {
+
+using namespace gradfric;
+using namespace gradfric::fem;
+
+std::unique_ptr<PlateModel> gModel;
+std::map<std::string, double> gSecondsPerCall;
+
+PlateModel& model() {
+  if (!gModel) {
+    FemParameters q;
+    PetscInt n = 0;
+    PetscBool set = PETSC_FALSE;
+    PetscOptionsGetInt(nullptr, nullptr, "-fem_nx", &n, &set);
+    if (set) q.nx = n;
+    PetscOptionsGetInt(nullptr, nullptr, "-fem_ny", &n, &set);
+    if (set) q.ny = n;
+    PetscOptionsGetInt(nullptr, nullptr, "-fem_nz", &n, &set);
+    if (set) q.nz = n;
+    Grading g;
+    g.profile = GradingProfile::Linear;
+    g.delta = 0.2;
+    gModel = std::make_unique<PlateModel>(PETSC_COMM_WORLD, q, g);
+  }
+  return *gModel;
+}
+
+template <typename Call>
+void timeCalls(benchmark::State& state, const char* name, Call call) {
+  double total = 0;
+  long calls = 0;
+  for (auto _ : state) {
+    MPI_Barrier(PETSC_COMM_WORLD);
+    const double t0 = MPI_Wtime();
+    call();
+    MPI_Barrier(PETSC_COMM_WORLD);
+    const double dt = MPI_Wtime() - t0;
+    state.SetIterationTime(dt);
+    total += dt;
+    ++calls;
+  }
+  gSecondsPerCall[name] = total / calls;
+  state.counters["cells"] = static_cast<double>(model().globalCells());
+  state.counters["ns_per_cell"] = 1e9 * total / calls / model().globalCells();
+}
+
+void BM_ElasticSpecialised(benchmark::State& state) {
+  PlateModel& m = model();
+  OwnedVec u, f;
+  DMCreateGlobalVector(m.displacementDM(), u.out());
+  VecDuplicate(u, f.out());
+  VecSet(u, 1e-9);
+  timeCalls(state, "specialised", [&] { m.elasticForceSpecialised(u, f); });
+}
+
+void BM_ElasticGeneric(benchmark::State& state) {
+  PlateModel& m = model();
+  OwnedVec u, f;
+  DMCreateGlobalVector(m.displacementDM(), u.out());
+  VecDuplicate(u, f.out());
+  VecSet(u, 1e-9);
+  timeCalls(state, "generic", [&] { m.elasticForceGeneric(u, f); });
+}
+
+void BM_WholeRightHandSide(benchmark::State& state) {
+  PlateModel& m = model();
+  OwnedVec X(m.createState()), F;
+  VecDuplicate(X, F.out());
+  timeCalls(state, "rhs", [&] { m.rhs(0.0, X, F); });
+}
+
+// Ranks other than 0 run the same (collective) benchmarks silently.
+class QuietReporter : public benchmark::BenchmarkReporter {
+public:
+  bool ReportContext(const Context&) override { return true; }
+  void ReportRuns(const std::vector<Run>&) override {}
+};
+
+}  // namespace
+
+BENCHMARK(BM_ElasticSpecialised)->UseManualTime()->Unit(benchmark::kMillisecond)->MinTime(1.0);
+BENCHMARK(BM_ElasticGeneric)->UseManualTime()->Unit(benchmark::kMillisecond)->MinTime(2.0);
+BENCHMARK(BM_WholeRightHandSide)->UseManualTime()->Unit(benchmark::kMillisecond)->MinTime(1.0);
+
+int main(int argc, char** argv) {
+  benchmark::Initialize(&argc, argv);
+  if (PetscInitialize(&argc, &argv, nullptr, nullptr)) return 1;
+  int rank = 0, size = 1;
+  MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
+  MPI_Comm_size(PETSC_COMM_WORLD, &size);
+  {
+    QuietReporter quiet;
+    if (rank == 0) {
+      benchmark::RunSpecifiedBenchmarks();
+    } else {
+      benchmark::RunSpecifiedBenchmarks(&quiet);
+    }
+    if (rank == 0 && gSecondsPerCall.count("specialised") && gSecondsPerCall.count("generic")) {
+      const double s = gSecondsPerCall["specialised"], g = gSecondsPerCall["generic"];
+      std::printf("elastic residual on %d rank(s), %d cells: specialised %.3f ms, generic %.1f ms, ratio "
+                  "specialised/generic %.4f (generic is %.0fx slower)\n",
+                  size, static_cast<int>(model().globalCells()), 1e3 * s, 1e3 * g, s / g, g / s);
+    }
+    gModel.reset();
+  }
+  PetscFinalize();
+  return 0;
+}
