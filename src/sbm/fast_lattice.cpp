@@ -40,7 +40,7 @@ void directionOf(double degrees, double& cx, double& cy) {
 Motion motionOf(const Parameters& p, double timeStep, double damping) {
   double cx, cy;
   directionOf(p.slidingAngle, cx, cy);
-  return {timeStep, damping, p.blockMass(), p.velocity * cx, p.velocity * cy};
+  return {timeStep, damping, p.blockMass(), p.velocity * cx, p.velocity * cy, p.integrator};
 }
 
 FastLattice::FastLattice(const LatticeStiffness& stiffness, const FrictionField& friction, const Motion& motion)
@@ -51,7 +51,7 @@ FastLattice::FastLattice(const LatticeStiffness& stiffness, const FrictionField&
     v->assign(n, 0.0);
   state_.assign(n, Stuck);
   everSlipped_.assign(n, 0);
-  for (auto* v : {&fx_, &fy_, &carryX_, &carryY_, &nextX_, &nextY_, &springX_, &springY_, &dot_})
+  for (auto* v : {&fx_, &fy_, &carryX_, &carryY_, &nextX_, &nextY_, &springX_, &springY_})
     v->assign(nb_, 0.0);
 }
 
@@ -109,7 +109,6 @@ struct RowArrays {
   double* __restrict aUy;
   double* __restrict aVx;
   double* __restrict aVy;
-  double* __restrict dot;  // v_new . v_old (stage 4)
 };
 
 // RK4 stage update of one row: acceleration from the driving force, the frozen kinetic friction
@@ -133,7 +132,6 @@ GF_ALWAYS_INLINE void updateRow(int nb, double toNext, double sixth, double invM
   double* __restrict aUy = a.aUy;
   double* __restrict aVx = a.aVx;
   double* __restrict aVy = a.aVy;
-  double* __restrict dot = a.dot;
   for (int c = 0; c < nb; ++c) {
     const double wx = Stage == 1 ? vx[c] : svx[c];  // velocity at this stage
     const double wy = Stage == 1 ? vy[c] : svy[c];
@@ -161,140 +159,236 @@ GF_ALWAYS_INLINE void updateRow(int nb, double toNext, double sixth, double invM
       uy[c] += sixth * (aUy[c] + wy);
       const double newX = vx[c] + sixth * (aVx[c] + ax);
       const double newY = vy[c] + sixth * (aVy[c] + ay);
-      dot[c] = m * (newX * vx[c] + newY * vy[c]);
       vx[c] = newX;
       vy[c] = newY;
     }
   }
 }
 
+// Velocity Verlet, second half kick of the previous step: v_n = v_{n-1/2} + h/2 a_n.
+GF_ALWAYS_INLINE void closeKick(int nb, double half, double invMass, double gamma, const double* __restrict fx,
+                                const double* __restrict fy, const double* __restrict kfx,
+                                const double* __restrict kfy, const double* __restrict mobile,
+                                double* __restrict vx, double* __restrict vy) {
+  for (int c = 0; c < nb; ++c) {
+    const double m = mobile[c];
+    vx[c] += half * m * ((fx[c] - kfx[c]) * invMass - gamma * vx[c]);
+    vy[c] += half * m * ((fy[c] - kfy[c]) * invMass - gamma * vy[c]);
+  }
+}
+
+// Velocity Verlet, first half kick and drift: v_{n+1/2} = v_n + h/2 a_n, u_{n+1} = u_n + h v_{n+1/2}.
+GF_ALWAYS_INLINE void openKickAndDrift(int nb, double half, double h, double invMass, double gamma,
+                                       const double* __restrict fx, const double* __restrict fy,
+                                       const double* __restrict kfx, const double* __restrict kfy,
+                                       const double* __restrict mobile, double* __restrict vx, double* __restrict vy,
+                                       double* __restrict ux, double* __restrict uy) {
+  for (int c = 0; c < nb; ++c) {
+    const double m = mobile[c];
+    vx[c] += half * m * ((fx[c] - kfx[c]) * invMass - gamma * vx[c]);
+    vy[c] += half * m * ((fy[c] - kfy[c]) * invMass - gamma * vy[c]);
+    ux[c] += h * vx[c];
+    uy[c] += h * vy[c];
+  }
+}
+
 }  // namespace
 
-template <bool Graded, FrictionField::Layout L, int Stage>
-GF_ALWAYS_INLINE void FastLattice::stage(double t, double& sumX, double& sumY) {
+// Forces F_mot on row r at positions (px, py) and time t into fx_, fy_: slider springs, the
+// reactions carried from the row below, the row's horizontal springs and the springs to the row
+// above (whose reactions go to next*). With WantSum, adds the slider forces to (sumX, sumY).
+template <bool Graded, bool WantSum>
+GF_ALWAYS_INLINE void FastLattice::rowForces(int r, const double* px, const double* py, double t, const double* carryX,
+                                             const double* carryY, double* nextX, double* nextY, double& sumX,
+                                             double& sumY) {
   const int nb = nb_;
   const double l = stiffness_.spacing;
   const double diagonalLength = std::sqrt(2.0) * l;
+  const double drivenX = motion_.sliderVelocityX * t;
+  const double drivenY = motion_.sliderVelocityY * t;
+  const double* kH = stiffness_.horizontal.data();
+  const double* kS = stiffness_.slider.data();
+  const double kH0 = kH[0], kS0 = kS[0];
+  double* fx = fx_.data();
+  double* fy = fy_.data();
+  double* hx = springX_.data();
+  double* hy = springY_.data();
+  const double* rx = px + r * nb;
+  const double* ry = py + r * nb;
+  for (int c = 0; c < nb; ++c) {
+    const double k = Graded ? kS[c] : kS0;
+    fx[c] = k * (drivenX - rx[c]) + carryX[c];
+    fy[c] = k * (drivenY - ry[c]) + carryY[c];
+  }
+  if (WantSum) {  // the macroscopic friction force: the sum of the slider forces
+    for (int c = 0; c < nb; ++c) {
+      const double k = Graded ? kS[c] : kS0;
+      sumX += k * (drivenX - rx[c]);
+      sumY += k * (drivenY - ry[c]);
+    }
+  }
+  for (int c = 0; c + 1 < nb; ++c) {
+    const Force2 f = springForce(Graded ? kH[c] : kH0, l, 0.0, l, rx[c + 1] - rx[c], ry[c + 1] - ry[c]);
+    hx[c] = f.x;
+    hy[c] = f.y;
+  }
+  for (int c = 0; c + 1 < nb; ++c) {
+    fx[c] += hx[c];
+    fy[c] += hy[c];
+  }
+  for (int c = 0; c + 1 < nb; ++c) {
+    fx[c + 1] -= hx[c];
+    fy[c + 1] -= hy[c];
+  }
+  if (r + 1 < nb)
+    springsToRowAbove<Graded>(nb, l, diagonalLength, stiffness_.vertical.data(), stiffness_.diagonal.data(), rx, ry,
+                              rx + nb, ry + nb, fx, fy, nextX, nextY);
+}
+
+// Stick/slip transitions of row r with its driving forces at t_n (see integrator.hpp). Branches,
+// so it runs as a short scalar loop of its own.
+template <FrictionField::Layout L>
+GF_ALWAYS_INLINE void FastLattice::transitions(int r, double t) {
+  const int nb = nb_, base = r * nb;
+  const double* fx = fx_.data();
+  const double* fy = fy_.data();
+  const double* staticForce = friction_.staticForce.data() + (L == FrictionField::Layout::PerBlock ? base : 0);
+  std::uint8_t* state = state_.data() + base;
+  double* mobile = mobile_.data() + base;
+  double* vx = vx_.data() + base;
+  double* vy = vy_.data() + base;
+  for (int c = 0; c < nb; ++c) {
+    if (state[c] == Slipping) continue;
+    const double threshold = L == FrictionField::Layout::Uniform ? staticForce[0] : staticForce[c];
+    const bool holds = fx[c] * fx[c] + fy[c] * fy[c] <= threshold * threshold;
+    if (state[c] == Stuck) {
+      if (holds) continue;
+      state[c] = Slipping;
+      mobile[c] = 1.0;
+      if (!everSlipped_[base + c]) {
+        everSlipped_[base + c] = 1;
+        ++slipped_;
+        if (firstSlip_) firstSlip_[base + c] = t;
+      }
+    } else if (holds) {  // reversed during the last step and held by static friction
+      state[c] = Stuck;
+      mobile[c] = 0.0;
+      vx[c] = 0.0;
+      vy[c] = 0.0;
+    } else {
+      state[c] = Slipping;
+    }
+  }
+}
+
+// The kinetic friction vector of this step for row r: mu_k,i F_n along the velocity at t_n, or
+// along F_mot for a block starting from rest; zero for a stuck block. Frozen for the step, like
+// the stick state, so that a velocity crossing zero inside the step is seen as a reversal.
+template <FrictionField::Layout L>
+GF_ALWAYS_INLINE void FastLattice::frictionVector(int r) {
+  const int nb = nb_, base = r * nb;
+  const double* __restrict fx = fx_.data();
+  const double* __restrict fy = fy_.data();
+  const double* __restrict kineticForce =
+      friction_.kineticForce.data() + (L == FrictionField::Layout::PerBlock ? base : 0);
+  const double* __restrict mobile = mobile_.data() + base;
+  const double* __restrict vx = vx_.data() + base;
+  const double* __restrict vy = vy_.data() + base;
+  double* __restrict kfx = frictionX_.data() + base;
+  double* __restrict kfy = frictionY_.data() + base;
+  for (int c = 0; c < nb; ++c) {
+    const double kinetic = L == FrictionField::Layout::Uniform ? kineticForce[0] : kineticForce[c];
+    const double speed2 = vx[c] * vx[c] + vy[c] * vy[c];
+    const double force2 = fx[c] * fx[c] + fy[c] * fy[c];
+    const bool moving = speed2 > 0.0;
+    const double dirX = moving ? vx[c] : fx[c];
+    const double dirY = moving ? vy[c] : fy[c];
+    const double norm2 = moving ? speed2 : force2;
+    const double frictionPerNorm = norm2 > 0.0 ? mobile[c] * kinetic / std::sqrt(norm2) : 0.0;
+    kfx[c] = frictionPerNorm * dirX;
+    kfy[c] = frictionPerNorm * dirY;
+  }
+}
+
+// A slipping block whose new velocity points against this step's friction reversed: it may
+// re-stick at the next step.
+GF_ALWAYS_INLINE void FastLattice::markReversals(int r) {
+  const int nb = nb_, base = r * nb;
+  const double* kfx = frictionX_.data() + base;
+  const double* kfy = frictionY_.data() + base;
+  const double* vx = vx_.data() + base;
+  const double* vy = vy_.data() + base;
+  std::uint8_t* state = state_.data() + base;
+  for (int c = 0; c < nb; ++c)
+    if (vx[c] * kfx[c] + vy[c] * kfy[c] < 0.0) state[c] = Reversed;
+}
+
+template <bool Graded, FrictionField::Layout L, int Stage>
+GF_ALWAYS_INLINE void FastLattice::rk4Stage(double t, double& sumX, double& sumY) {
+  const int nb = nb_;
   const double h = motion_.timeStep;
   const double toNext = Stage == 3 ? h : 0.5 * h;  // from u_n to the next stage's point
   const double sixth = h / 6.0;
   const double invMass = 1.0 / motion_.mass;
   const double gamma = motion_.damping;
-  const double drivenX = motion_.sliderVelocityX * t;
-  const double drivenY = motion_.sliderVelocityY * t;
-  const double* kH = stiffness_.horizontal.data();
-  const double* kV = stiffness_.vertical.data();
-  const double* kD = stiffness_.diagonal.data();
-  const double* kS = stiffness_.slider.data();
-  const double kH0 = kH[0], kS0 = kS[0];
   // Positions where this stage evaluates the forces: u_n for stage 1, the stage point otherwise.
+  // A row's stage point is overwritten once its forces are complete: no later row reads it.
   const double* px = Stage == 1 ? ux_.data() : sx_.data();
   const double* py = Stage == 1 ? uy_.data() : sy_.data();
-  double* fx = fx_.data();
-  double* fy = fy_.data();
   double* carryX = carryX_.data();
   double* carryY = carryY_.data();
   double* nextX = nextX_.data();
   double* nextY = nextY_.data();
-  double* hx = springX_.data();
-  double* hy = springY_.data();
   std::fill(carryX, carryX + nb, 0.0);
   std::fill(carryY, carryY + nb, 0.0);
-
   for (int r = 0; r < nb; ++r) {
     const int base = r * nb;
-    const double* rx = px + base;
-    const double* ry = py + base;
-    // Slider springs and the reactions of the springs to the row below.
-    for (int c = 0; c < nb; ++c) {
-      const double k = Graded ? kS[c] : kS0;
-      fx[c] = k * (drivenX - rx[c]) + carryX[c];
-      fy[c] = k * (drivenY - ry[c]) + carryY[c];
-    }
-    if (Stage == 1) {  // the macroscopic friction force: sum of the slider forces at t_n
-      for (int c = 0; c < nb; ++c) {
-        const double k = Graded ? kS[c] : kS0;
-        sumX += k * (drivenX - rx[c]);
-        sumY += k * (drivenY - ry[c]);
-      }
-    }
-    // Horizontal springs of this row.
-    for (int c = 0; c + 1 < nb; ++c) {
-      const Force2 f = springForce(Graded ? kH[c] : kH0, l, 0.0, l, rx[c + 1] - rx[c], ry[c + 1] - ry[c]);
-      hx[c] = f.x;
-      hy[c] = f.y;
-    }
-    for (int c = 0; c + 1 < nb; ++c) {
-      fx[c] += hx[c];
-      fy[c] += hy[c];
-    }
-    for (int c = 0; c + 1 < nb; ++c) {
-      fx[c + 1] -= hx[c];
-      fy[c + 1] -= hy[c];
-    }
-    if (r + 1 < nb)
-      springsToRowAbove<Graded>(nb, l, diagonalLength, kV, kD, rx, ry, rx + nb, ry + nb, fx, fy, nextX, nextY);
-
-    // The forces on row r are complete: stick/slip transitions (stage 1 only), then the update.
-    const double* staticForce = friction_.staticForce.data() + (L == FrictionField::Layout::PerBlock ? base : 0);
-    const double* kineticForce = friction_.kineticForce.data() + (L == FrictionField::Layout::PerBlock ? base : 0);
-    double* vx = vx_.data() + base;
-    double* vy = vy_.data() + base;
-    double* mobile = mobile_.data() + base;
+    rowForces<Graded, Stage == 1>(r, px, py, t, carryX, carryY, nextX, nextY, sumX, sumY);
     if (Stage == 1) {
-      std::uint8_t* state = state_.data() + base;
-      for (int c = 0; c < nb; ++c) {
-        if (state[c] == Slipping) continue;
-        const double threshold = L == FrictionField::Layout::Uniform ? staticForce[0] : staticForce[c];
-        const bool holds = fx[c] * fx[c] + fy[c] * fy[c] <= threshold * threshold;
-        if (state[c] == Stuck) {
-          if (holds) continue;
-          state[c] = Slipping;
-          mobile[c] = 1.0;
-          if (!everSlipped_[base + c]) {
-            everSlipped_[base + c] = 1;
-            ++slipped_;
-            if (firstSlip_) firstSlip_[base + c] = t;
-          }
-        } else if (holds) {  // reversed during the last step and held by static friction
-          state[c] = Stuck;
-          mobile[c] = 0.0;
-          vx[c] = 0.0;
-          vy[c] = 0.0;
-        } else {
-          state[c] = Slipping;
-        }
-      }
-    }
-    double* kfx = frictionX_.data() + base;
-    double* kfy = frictionY_.data() + base;
-    if (Stage == 1) {
-      // The kinetic friction vector of this step: -mu_k,i F_n along the velocity at t_n, or along
-      // F_mot for a block starting from rest; frozen for the four stages, like the stick state,
-      // so that a velocity crossing zero inside the step is seen as a reversal, not chattering.
-      for (int c = 0; c < nb; ++c) {
-        const double kinetic = L == FrictionField::Layout::Uniform ? kineticForce[0] : kineticForce[c];
-        const double speed2 = vx[c] * vx[c] + vy[c] * vy[c];
-        const double force2 = fx[c] * fx[c] + fy[c] * fy[c];
-        const bool moving = speed2 > 0.0;
-        const double dirX = moving ? vx[c] : fx[c];
-        const double dirY = moving ? vy[c] : fy[c];
-        const double norm2 = moving ? speed2 : force2;
-        const double frictionPerNorm = norm2 > 0.0 ? mobile[c] * kinetic / std::sqrt(norm2) : 0.0;
-        kfx[c] = frictionPerNorm * dirX;
-        kfy[c] = frictionPerNorm * dirY;
-      }
+      transitions<L>(r, t);
+      frictionVector<L>(r);
     }
     updateRow<Stage>(nb, toNext, sixth, invMass, gamma,
-                     RowArrays{fx, fy, kfx, kfy, mobile, ux_.data() + base, uy_.data() + base, vx, vy,
-                               sx_.data() + base, sy_.data() + base, svx_.data() + base, svy_.data() + base,
-                               accUx_.data() + base, accUy_.data() + base, accVx_.data() + base,
-                               accVy_.data() + base, dot_.data()});
-    if (Stage == 4) {  // a slipping block whose velocity reversed may re-stick at the next step
-      std::uint8_t* state = state_.data() + base;
-      for (int c = 0; c < nb; ++c)
-        if (dot_[c] < 0.0) state[c] = Reversed;
-    }
+                     RowArrays{fx_.data(), fy_.data(), frictionX_.data() + base, frictionY_.data() + base,
+                               mobile_.data() + base, ux_.data() + base, uy_.data() + base, vx_.data() + base,
+                               vy_.data() + base, sx_.data() + base, sy_.data() + base, svx_.data() + base,
+                               svy_.data() + base, accUx_.data() + base, accUy_.data() + base, accVx_.data() + base,
+                               accVy_.data() + base});
+    if (Stage == 4) markReversals(r);
+    std::swap(carryX, nextX);
+    std::swap(carryY, nextY);
+  }
+}
+
+// Velocity Verlet, one force evaluation per step, fused in one sweep: with F(u_n) of a row
+// complete, close the previous step's kick (v_n = v_{n-1/2} + h/2 a_n, friction and damping of
+// that step), decide the stick/slip transitions at t_n, open this step's kick
+// (v_{n+1/2} = v_n + h/2 a_n) and drift (u_{n+1} = u_n + h v_{n+1/2}). Damping is evaluated with
+// the velocity at hand (explicit). vx_, vy_ hold the half-step velocity between steps.
+template <bool Graded, FrictionField::Layout L>
+GF_ALWAYS_INLINE void FastLattice::verletStep(double t, double& sumX, double& sumY) {
+  const int nb = nb_;
+  const double half = 0.5 * motion_.timeStep;
+  const double h = motion_.timeStep;
+  const double invMass = 1.0 / motion_.mass;
+  const double gamma = motion_.damping;
+  double* carryX = carryX_.data();
+  double* carryY = carryY_.data();
+  double* nextX = nextX_.data();
+  double* nextY = nextY_.data();
+  std::fill(carryX, carryX + nb, 0.0);
+  std::fill(carryY, carryY + nb, 0.0);
+  for (int r = 0; r < nb; ++r) {
+    const int base = r * nb;
+    rowForces<Graded, true>(r, ux_.data(), uy_.data(), t, carryX, carryY, nextX, nextY, sumX, sumY);
+    closeKick(nb, half, invMass, gamma, fx_.data(), fy_.data(), frictionX_.data() + base, frictionY_.data() + base,
+              mobile_.data() + base, vx_.data() + base, vy_.data() + base);
+    markReversals(r);
+    transitions<L>(r, t);
+    frictionVector<L>(r);
+    openKickAndDrift(nb, half, h, invMass, gamma, fx_.data(), fy_.data(), frictionX_.data() + base,
+                     frictionY_.data() + base, mobile_.data() + base, vx_.data() + base, vy_.data() + base,
+                     ux_.data() + base, uy_.data() + base);
     std::swap(carryX, nextX);
     std::swap(carryY, nextY);
   }
@@ -303,18 +397,22 @@ GF_ALWAYS_INLINE void FastLattice::stage(double t, double& sumX, double& sumY) {
 namespace {
 
 template <bool Graded, FrictionField::Layout L>
-GF_ALWAYS_INLINE void fullStep(FastLattice& lattice, double t, double h, double& sumX, double& sumY) {
-  lattice.stage<Graded, L, 1>(t, sumX, sumY);
-  lattice.stage<Graded, L, 2>(t + 0.5 * h, sumX, sumY);
-  lattice.stage<Graded, L, 3>(t + 0.5 * h, sumX, sumY);
-  lattice.stage<Graded, L, 4>(t + h, sumX, sumY);
+GF_ALWAYS_INLINE void fullStep(FastLattice& lattice, bool verlet, double t, double h, double& sumX, double& sumY) {
+  if (verlet) {
+    lattice.verletStep<Graded, L>(t, sumX, sumY);
+    return;
+  }
+  lattice.rk4Stage<Graded, L, 1>(t, sumX, sumY);
+  lattice.rk4Stage<Graded, L, 2>(t + 0.5 * h, sumX, sumY);
+  lattice.rk4Stage<Graded, L, 3>(t + 0.5 * h, sumX, sumY);
+  lattice.rk4Stage<Graded, L, 4>(t + h, sumX, sumY);
 }
 
 // One compiled entry per (uniform|graded stiffness) x (friction layout), each cloned for
 // AVX-512, AVX2 and baseline x86-64 and chosen at load time: portable and fast.
 #define GF_STEP_VARIANT(name, graded, layout)                                                        \
-  GF_KERNEL_CLONES void name(FastLattice& lattice, double t, double h, double& sx, double& sy) { \
-    fullStep<graded, FrictionField::Layout::layout>(lattice, t, h, sx, sy);                       \
+  GF_KERNEL_CLONES void name(FastLattice& lattice, bool verlet, double t, double h, double& sx, double& sy) { \
+    fullStep<graded, FrictionField::Layout::layout>(lattice, verlet, t, h, sx, sy);                              \
   }
 GF_STEP_VARIANT(stepUniformUniform, false, Uniform)
 GF_STEP_VARIANT(stepUniformColumn, false, PerColumn)
@@ -329,16 +427,17 @@ GF_STEP_VARIANT(stepGradedBlock, true, PerBlock)
 void FastLattice::dispatch(double& sumX, double& sumY) {
   const double t = time();
   const double h = motion_.timeStep;
+  const bool verlet = motion_.integrator == Integrator::VelocityVerlet;
   using Layout = FrictionField::Layout;
   const Layout layout = friction_.layout;
   if (!stiffness_.graded) {
-    if (layout == Layout::Uniform) stepUniformUniform(*this, t, h, sumX, sumY);
-    else if (layout == Layout::PerColumn) stepUniformColumn(*this, t, h, sumX, sumY);
-    else stepUniformBlock(*this, t, h, sumX, sumY);
+    if (layout == Layout::Uniform) stepUniformUniform(*this, verlet, t, h, sumX, sumY);
+    else if (layout == Layout::PerColumn) stepUniformColumn(*this, verlet, t, h, sumX, sumY);
+    else stepUniformBlock(*this, verlet, t, h, sumX, sumY);
   } else {
-    if (layout == Layout::Uniform) stepGradedUniform(*this, t, h, sumX, sumY);
-    else if (layout == Layout::PerColumn) stepGradedColumn(*this, t, h, sumX, sumY);
-    else stepGradedBlock(*this, t, h, sumX, sumY);
+    if (layout == Layout::Uniform) stepGradedUniform(*this, verlet, t, h, sumX, sumY);
+    else if (layout == Layout::PerColumn) stepGradedColumn(*this, verlet, t, h, sumX, sumY);
+    else stepGradedBlock(*this, verlet, t, h, sumX, sumY);
   }
 }
 

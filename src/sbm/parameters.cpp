@@ -11,11 +11,12 @@ namespace gradfric::sbm {
 double stableTimeStep(const Parameters& p, const Grading& grading) {
   // Highest lattice frequency: the zone-boundary mode q = (pi, 0) of the square lattice with
   // axial k and diagonal k/2 has m omega^2 = 6k + K_s (stiffest band). Classical RK4 is stable
-  // on the imaginary axis up to |omega dt| = 2 sqrt(2).
+  // on the imaginary axis up to |omega dt| = 2 sqrt(2), velocity Verlet up to omega dt = 2.
   const LatticeStiffness s = buildStiffness(p, grading);
   double largest = 0.0;
   for (int c = 0; c < p.blocksPerSide; ++c) largest = std::max(largest, 6.0 * s.vertical[c] + s.slider[c]);
-  return 2.0 * std::sqrt(2.0) / std::sqrt(largest / p.blockMass());
+  const double limit = p.integrator == Integrator::VelocityVerlet ? 2.0 : 2.0 * std::sqrt(2.0);
+  return limit / std::sqrt(largest / p.blockMass());
 }
 
 Parameters readParameters(MPI_Comm comm, RunParameters* record, const Grading& grading) {
@@ -33,7 +34,9 @@ Parameters readParameters(MPI_Comm comm, RunParameters* record, const Grading& g
   p.sigmaStatic = o.real("sigma_s", p.sigmaStatic, "1", "relative standard deviation of the local mu_s (0: no dispersion)");
   p.sigmaKinetic = o.real("sigma_k", p.sigmaKinetic, "1", "relative standard deviation of the local mu_k (0: no dispersion)");
   p.blocksPerSide = static_cast<int>(o.integer("N", p.blocksPerSide, "1", "blocks per side N_b"));
-  o.choice("integrator", "rk4", {"rk4"}, "time integrator (fixed step)");
+  const std::string integrator = o.choice("integrator", "rk4", {"rk4", "verlet"},
+                                          "time integrator, fixed step: classical RK4 (4 force evaluations a step) or velocity Verlet (1)");
+  p.integrator = integrator == "verlet" ? Integrator::VelocityVerlet : Integrator::RK4;
 
   o.requirePositive("L", p.length, "m");
   o.requirePositive("lz", p.thickness, "m");
@@ -62,17 +65,18 @@ Parameters readParameters(MPI_Comm comm, RunParameters* record, const Grading& g
   }
 
   const double stable = stableTimeStep(p, grading);
-  const double safety = o.real("dt_safety", 0.25, "1", "default time step as a fraction of the RK4 stability limit");
+  const double safety = o.real("dt_safety", 0.25, "1", "default time step as a fraction of the integrator's stability limit");
   o.requireRange("dt_safety", safety, 1e-6, 1.0, "0 < dt_safety <= 1");
-  if (auto dt = o.realIfSet("dt", "s", "time step (refused above the RK4 stability limit)", "dt_safety x stable step")) {
+  const std::string scheme = p.integrator == Integrator::VelocityVerlet ? "velocity Verlet" : "RK4";
+  if (auto dt = o.realIfSet("dt", "s", "time step (refused above the integrator's stability limit)", "dt_safety x stable step")) {
     p.timeStep = *dt;
     o.requirePositive("dt", p.timeStep, "s");
     if (p.timeStep > stable)
       throw InputError(o.fullName("dt"), formatReal(p.timeStep),
-                       "<= " + formatReal(stable) + " s, the RK4 stability limit of this lattice");
+                       "<= " + formatReal(stable) + " s, the " + scheme + " stability limit of this lattice");
   } else {
     p.timeStep = safety * stable;
-    o.recordDerived("dt", p.timeStep, "s", "time step = dt_safety x RK4 stability limit " + formatReal(stable) + " s");
+    o.recordDerived("dt", p.timeStep, "s", "time step = dt_safety x " + scheme + " stability limit " + formatReal(stable) + " s");
   }
   return p;
 }

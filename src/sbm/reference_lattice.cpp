@@ -149,13 +149,12 @@ StepObservation ReferenceLattice::step() {
   axpy(k3, h);
   derivative(y, t + h, k4);
   for (std::size_t i = 0; i < n; ++i) {
-    const Block old = blocks_[i];
     Block& b = blocks_[i];
     b.ux += h / 6.0 * (((k1[i].ux + 2.0 * k2[i].ux) + 2.0 * k3[i].ux) + k4[i].ux);
     b.uy += h / 6.0 * (((k1[i].uy + 2.0 * k2[i].uy) + 2.0 * k3[i].uy) + k4[i].uy);
     b.vx += h / 6.0 * (((k1[i].vx + 2.0 * k2[i].vx) + 2.0 * k3[i].vx) + k4[i].vx);
     b.vy += h / 6.0 * (((k1[i].vy + 2.0 * k2[i].vy) + 2.0 * k3[i].vy) + k4[i].vy);
-    if (state_[i] != Stuck && b.vx * old.vx + b.vy * old.vy < 0.0) state_[i] = Reversed;
+    if (state_[i] != Stuck && b.vx * frictionX_[i] + b.vy * frictionY_[i] < 0.0) state_[i] = Reversed;
   }
   ++steps_;
   return observation;

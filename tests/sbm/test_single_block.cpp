@@ -47,8 +47,9 @@ StickSlipCycle runStickSlip(const Parameters& p, double duration) {
 }
 
 template <class Lattice>
-void checkAgainstAnalytic() {
+void checkAgainstAnalytic(Integrator integrator = Integrator::RK4) {
   Parameters p = sbm::testing::paperParameters(2, 0.0, {}, 0.02, 0.0);  // undamped, small step
+  p.integrator = integrator;
   p.damping = 0.0;
   const double fn = p.normalForcePerBlock();
   const double k = p.sliderStiffness(p.youngsModulus);
@@ -74,6 +75,9 @@ void checkAgainstAnalytic() {
 
 TEST(SingleBlock, StickSlipMatchesAnalyticSolutionFastKernel) { checkAgainstAnalytic<FastLattice>(); }
 TEST(SingleBlock, StickSlipMatchesAnalyticSolutionReferenceKernel) { checkAgainstAnalytic<ReferenceLattice>(); }
+TEST(SingleBlock, StickSlipMatchesAnalyticSolutionVelocityVerlet) {
+  checkAgainstAnalytic<FastLattice>(Integrator::VelocityVerlet);
+}
 
 TEST(SingleBlock, DampingShortensTheOvershoot) {
   // With damping the block stops earlier: the trough rises above the undamped 2 mu_k - mu_s.

@@ -14,8 +14,10 @@
 //    velocity that crosses zero inside a step chatter around zero instead of re-sticking.)
 //  - at the start of each step, with F_mot of the new state: a stuck block with
 //    |F_mot| > mu_s,i F_n starts to slip; a slipping block whose velocity reversed during the
-//    last step (v_new . v_old <= 0) re-sticks (velocity set to zero) if |F_mot| <= mu_s,i F_n,
-//    and slides on otherwise.
+//    last step (it points against that step's friction force) re-sticks (velocity set to zero)
+//    if |F_mot| <= mu_s,i F_n, and slides on otherwise.
+// FastLattice also offers velocity Verlet (Parameters::integrator), one force evaluation per step
+// instead of four, with the same stick/slip rule.
 #include "gradfric/sbm/lattice.hpp"
 
 #include <cstdint>
@@ -35,6 +37,7 @@ struct Motion {
   double mass;              // m [kg]
   double sliderVelocityX;   // v cos(theta) [m/s]
   double sliderVelocityY;   // v sin(theta)
+  Integrator integrator = Integrator::RK4;
 };
 
 Motion motionOf(const Parameters& parameters, double timeStep, double damping);
@@ -57,13 +60,22 @@ public:
   const double* velocityY() const { return vy_.data(); }
   const std::uint8_t* blockStates() const { return state_.data(); }
 
-  // Internals for the kernel (public so that the fused stage templates can reach them).
-  struct Rows;
+  // The kernel's parts (public so that the per-ISA entry points can reach them).
   template <bool Graded, FrictionField::Layout L, int Stage>
-  void stage(double time, double& sumX, double& sumY);
+  void rk4Stage(double time, double& sumX, double& sumY);
+  template <bool Graded, FrictionField::Layout L>
+  void verletStep(double time, double& sumX, double& sumY);
 
 private:
   void dispatch(double& sumX, double& sumY);
+  template <bool Graded, bool WantSum>
+  void rowForces(int r, const double* px, const double* py, double t, const double* carryX, const double* carryY,
+                 double* nextX, double* nextY, double& sumX, double& sumY);
+  template <FrictionField::Layout L>
+  void transitions(int r, double t);
+  template <FrictionField::Layout L>
+  void frictionVector(int r);
+  void markReversals(int r);
   LatticeStiffness stiffness_;
   FrictionField friction_;
   Motion motion_;
@@ -81,7 +93,7 @@ private:
   std::vector<std::uint8_t> state_;
   std::vector<std::uint8_t> everSlipped_;
   // Row work space: forces on the current row, carried forces for the next row, spring forces.
-  std::vector<double> fx_, fy_, carryX_, carryY_, nextX_, nextY_, springX_, springY_, dot_;
+  std::vector<double> fx_, fy_, carryX_, carryY_, nextX_, nextY_, springX_, springY_;
 };
 
 class ReferenceLattice {

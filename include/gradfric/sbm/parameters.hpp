@@ -9,7 +9,7 @@
 
 namespace gradfric::sbm {
 
-enum class Integrator { RK4 };
+enum class Integrator { RK4, VelocityVerlet };
 
 struct Parameters {
   // Plate and material
@@ -65,7 +65,8 @@ struct Request {
 Parameters readParameters(MPI_Comm comm, RunParameters* record, const Grading& grading);
 Request readRequest(MPI_Comm comm, RunParameters* record, const Parameters& parameters);
 
-// The largest RK4 step that is stable for this lattice (stiffest band, undamped estimate).
+// The largest step that is stable for this lattice with the parameters' integrator (stiffest
+// band, undamped): |omega_max dt| <= 2 sqrt(2) for RK4, 2 for velocity Verlet.
 double stableTimeStep(const Parameters& parameters, const Grading& grading);
 
 }  // namespace gradfric::sbm
