@@ -439,6 +439,7 @@ void runSpringBlockScene(MPI_Comm comm, RunParameters* record) {
   // ---- The tasks. ----
   std::string failure;
   long finishedHere = 0;
+  double taskSecondsHere = 0.0;
   const auto start = std::chrono::steady_clock::now();
   {
     TaskCounter counter(comm, scheduleName == "dynamic" ? Schedule::Dynamic : Schedule::Static);
@@ -488,6 +489,7 @@ void runSpringBlockScene(MPI_Comm comm, RunParameters* record) {
         file.writeTask(o);
         GF_CALL(PetscLogEventEnd(events.write, 0, 0, 0, 0));
         ++finishedHere;
+        taskSecondsHere += wall;
         const long all = counter.finishOne();
         if (monitor) {
           const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -575,10 +577,13 @@ void runSpringBlockScene(MPI_Comm comm, RunParameters* record) {
 
   const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   long ranHere = finishedHere, ranAll = 0;
+  double taskSecondsAll = 0.0;
   GF_CALL_MPI(MPI_Allreduce(&ranHere, &ranAll, 1, MPI_LONG, MPI_SUM, comm));
+  GF_CALL_MPI(MPI_Allreduce(&taskSecondsHere, &taskSecondsAll, 1, MPI_DOUBLE, MPI_SUM, comm));
   printStatistics(comm, sweep, R, stats, request.kineticFriction);
-  GF_CALL(PetscPrintf(comm, "\n%ld task(s) run in %s on %d rank(s) (%.3g tasks/s); results in %s\n", ranAll,
-                      hms(elapsed).c_str(), size, elapsed > 0 ? ranAll / elapsed : 0.0, plan.finalPath.c_str()));
+  GF_CALL(PetscPrintf(comm, "\n%ld task(s) run in %s on %d rank(s): %.4g tasks/s, mean task %.4g s; results in %s\n",
+                      ranAll, hms(elapsed).c_str(), size, elapsed > 0 ? ranAll / elapsed : 0.0,
+                      ranAll > 0 ? taskSecondsAll / ranAll : 0.0, plan.finalPath.c_str()));
 }
 
 }  // namespace gradfric::ensemble
