@@ -19,6 +19,16 @@ double stableTimeStep(const Parameters& p, const Grading& grading) {
   return limit / std::sqrt(largest / p.blockMass());
 }
 
+double slipTime(const Parameters& p, const Grading& grading) {
+  const LatticeStiffness s = buildStiffness(p, grading);
+  const double stiffest = *std::max_element(s.slider.begin(), s.slider.end());
+  return std::sqrt(p.blockMass() / stiffest);
+}
+
+double defaultTimeStep(const Parameters& p, const Grading& grading) {
+  return std::min(p.timeStepSafety * stableTimeStep(p, grading), p.timeStepSlip * slipTime(p, grading));
+}
+
 Parameters readParameters(MPI_Comm comm, RunParameters* record, const Grading& grading) {
   OptionReader o(comm, "sbm_", "Spring-block model", record);
   Parameters p;
@@ -65,18 +75,23 @@ Parameters readParameters(MPI_Comm comm, RunParameters* record, const Grading& g
   }
 
   const double stable = stableTimeStep(p, grading);
-  const double safety = o.real("dt_safety", 0.25, "1", "default time step as a fraction of the integrator's stability limit");
-  o.requireRange("dt_safety", safety, 1e-6, 1.0, "0 < dt_safety <= 1");
+  p.timeStepSafety = o.real("dt_safety", p.timeStepSafety, "1", "default dt: at most this fraction of the integrator's stability limit");
+  o.requireRange("dt_safety", p.timeStepSafety, 1e-6, 1.0, "0 < dt_safety <= 1");
+  p.timeStepSlip = o.real("dt_slip", p.timeStepSlip, "1", "default dt: at most this fraction of the slip time sqrt(m/K_s)");
+  o.requirePositive("dt_slip", p.timeStepSlip, "");
   const std::string scheme = p.integrator == Integrator::VelocityVerlet ? "velocity Verlet" : "RK4";
-  if (auto dt = o.realIfSet("dt", "s", "time step (refused above the integrator's stability limit)", "dt_safety x stable step")) {
+  if (auto dt = o.realIfSet("dt", "s", "time step (refused above the integrator's stability limit)",
+                            "min(dt_safety x stable step, dt_slip x slip time)")) {
     p.timeStep = *dt;
     o.requirePositive("dt", p.timeStep, "s");
     if (p.timeStep > stable)
       throw InputError(o.fullName("dt"), formatReal(p.timeStep),
                        "<= " + formatReal(stable) + " s, the " + scheme + " stability limit of this lattice");
   } else {
-    p.timeStep = safety * stable;
-    o.recordDerived("dt", p.timeStep, "s", "time step = dt_safety x " + scheme + " stability limit " + formatReal(stable) + " s");
+    p.timeStep = defaultTimeStep(p, grading);
+    o.recordDerived("dt", p.timeStep, "s",
+                    "time step = min(dt_safety x " + scheme + " stability limit " + formatReal(stable) +
+                        " s, dt_slip x slip time " + formatReal(slipTime(p, grading)) + " s)");
   }
   return p;
 }

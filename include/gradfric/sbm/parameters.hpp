@@ -29,8 +29,10 @@ struct Parameters {
   // Lattice and numerics
   int blocksPerSide = 120;  // N_b
   double damping = 0.0;     // gamma [1/s]; default 0.1 sqrt(K_int/m)
-  double timeStep = 0.0;    // dt [s]; default from the stability limit
+  double timeStep = 0.0;    // dt [s]; default: defaultTimeStep()
   Integrator integrator = Integrator::RK4;
+  double timeStepSafety = 0.25;  // default dt at most this fraction of the stability limit
+  double timeStepSlip = 0.1;     // ... and at most this fraction of the slip time 1/omega_s
 
   double spacing() const { return length / blocksPerSide; }
   double blockMass() const { return density * thickness * spacing() * spacing(); }
@@ -68,5 +70,13 @@ Request readRequest(MPI_Comm comm, RunParameters* record, const Parameters& para
 // The largest step that is stable for this lattice with the parameters' integrator (stiffest
 // band, undamped): |omega_max dt| <= 2 sqrt(2) for RK4, 2 for velocity Verlet.
 double stableTimeStep(const Parameters& parameters, const Grading& grading);
+
+// The slip time 1/omega_s = sqrt(m / K_s) of the stiffest band: the time scale of a slip event,
+// which sets the accuracy of mu_s and mu_k (stick/slip events make every scheme first order in
+// dt, docs/accuracy.md). It does not depend on N_b.
+double slipTime(const Parameters& parameters, const Grading& grading);
+
+// The shipped default step: min(timeStepSafety x stable step, timeStepSlip x slip time).
+double defaultTimeStep(const Parameters& parameters, const Grading& grading);
 
 }  // namespace gradfric::sbm
