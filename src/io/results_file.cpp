@@ -108,15 +108,16 @@ std::vector<T> readAll(hid_t dataset, hid_t memType) {
   return out;
 }
 
+// Variable-length UTF-8 strings: h5py reads them as str, h5dump prints them plainly.
 void writeStringAttribute(hid_t object, const std::string& name, const std::string& value) {
   if (GF_H5(H5Aexists(object, name.c_str())) > 0) GF_H5(H5Adelete(object, name.c_str()));
   H5Type type(GF_H5(H5Tcopy(H5T_C_S1)));
-  GF_H5(H5Tset_size(type, std::max<size_t>(value.size(), 1)));
-  GF_H5(H5Tset_strpad(type, H5T_STR_NULLPAD));
+  GF_H5(H5Tset_size(type, H5T_VARIABLE));
+  GF_H5(H5Tset_cset(type, H5T_CSET_UTF8));
   H5Space space(GF_H5(H5Screate(H5S_SCALAR)));
   H5Attribute attribute(GF_H5(H5Acreate2(object, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT)));
-  std::string padded = value.empty() ? std::string(1, '\0') : value;
-  GF_H5(H5Awrite(attribute, type, padded.data()));
+  const char* text = value.c_str();
+  GF_H5(H5Awrite(attribute, type, &text));
 }
 
 template <typename T>
@@ -147,6 +148,7 @@ std::string readStringAttribute(hid_t attribute) {
     char* text = nullptr;
     H5Type memType(GF_H5(H5Tcopy(H5T_C_S1)));
     GF_H5(H5Tset_size(memType, H5T_VARIABLE));
+    GF_H5(H5Tset_cset(memType, H5Tget_cset(type)));
     GF_H5(H5Aread(attribute, memType, &text));
     std::string out = text ? text : "";
     H5free_memory(text);
