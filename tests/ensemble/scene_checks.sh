@@ -72,6 +72,31 @@ kill_resume)
   grep -q "$done_count of 15 tasks already finished" "$work/resume.log" || fail "resume did not skip the finished tasks"
   [ ! -e "$work/cut.h5.partial" ] || fail "the .partial file was not renamed"
   same "$work/full.h5" "$work/cut.h5"
+  # A real kill: SIGKILL to every rank in the middle of the run (larger lattice: slower tasks).
+  big=("${scene[@]}" -sbm_N 40)
+  run 2 "${big[@]}" -output "$work/bigfull.h5" >/dev/null
+  mpiexec --oversubscribe -n 2 "$driver" "${big[@]}" -output "$work/killed.h5" >"$work/killed.log" 2>&1 &
+  launcher=$!
+  finished=0
+  for _ in $(seq 1 300); do  # wait until at least one task is in the file
+    sleep 0.05
+    if [ -f "$work/killed.h5.partial" ]; then
+      finished=$(h5dump -y -d /realisations/done "$work/killed.h5.partial" 2>/dev/null |
+        sed -n '/DATA {/,/}/p' | grep -o '[01]' | grep -c 1 || true)
+      [ "$finished" -ge 1 ] && break
+    fi
+  done
+  ranks=$(pgrep -P "$launcher" || true)
+  [ -n "$ranks" ] || fail "the run to kill had already ended"
+  kill -KILL $ranks
+  wait "$launcher" && fail "the killed run reported success" || true
+  [ -f "$work/killed.h5.partial" ] || fail "no .partial file after SIGKILL"
+  kept=$(h5dump -y -d /realisations/done "$work/killed.h5.partial" | sed -n '/DATA {/,/}/p' | grep -o '[01]' | grep -c 1 || true)
+  [ "$kept" -ge "$finished" ] || fail "SIGKILL lost finished tasks ($kept < $finished)"
+  [ "$kept" -lt 15 ] || fail "the kill came too late to test anything"
+  run 2 "${big[@]}" -ensemble_resume -output "$work/killed.h5" >"$work/killed_resume.log"
+  grep -q "$kept of 15 tasks already finished" "$work/killed_resume.log" || fail "resume after SIGKILL did not skip $kept tasks"
+  same "$work/bigfull.h5" "$work/killed.h5"
   # Resuming a finished file runs nothing and keeps it equal.
   run 1 "${scene[@]}" -ensemble_resume -output "$work/cut.h5" >"$work/again.log"
   grep -q "15 of 15 tasks already finished" "$work/again.log" || fail "a finished file was run again"
