@@ -72,6 +72,9 @@ FemRunResult runPlateExperiment(PlateModel& model, const StepObserver& observer)
     ++r.steps;
   }
   r.settledNormalForce = model.contactTotals().fn / normal;
+  if (q.verbose)
+    GF_CALL(PetscPrintf(model.comm(), "  step 1 done: t = %.4e s, %ld steps, normal force %.6f p L^2\n", t, r.steps,
+                        r.settledNormalForce));
   r.wallPressure = MPI_Wtime() - t0;
 
   // Step 2: the top slides at v.
@@ -103,6 +106,9 @@ FemRunResult runPlateExperiment(PlateModel& model, const StepObserver& observer)
       r.peakConfirmed = true;
     }
     if (observer) observer(ts_, state);
+    if (q.verbose && r.time.size() % 500 == 0)
+      GF_CALL(PetscPrintf(model.comm(), "  sliding: t - t0 = %.4e s, mu = %.5f, slipping nodes %lld, sticking %lld\n", ts_,
+                          mu, totals.slip, totals.stick));
     const double windowEnd = r.peakTime + q.windowStart + q.windowLength;
     if (q.stopWhenKnown && r.peakConfirmed && ts_ >= windowEnd) break;
     if (ts_ >= q.slideTime - 0.5 * r.dt) break;

@@ -35,6 +35,13 @@ with h5py.File(fields, "r") as f:
     s = f["cell_fields/cell_stress"]
     assert s.shape[0] == 2 and s.shape[1] == 8 * 8 * 2, s.shape
     assert len(f["time"][:]) == 2
+    # Cells in VTK hexahedron order (what the .xmf's "Hexahedron" means to ParaView).
+    x = f["geometry/vertices"][:]
+    for cell in f["viz/topology/cells"][:5]:
+        p = x[cell.astype(int)]
+        p = (p - p.min(0)) / (p.max(0) - p.min(0))
+        assert p.round().astype(int).tolist() == [[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0],
+                                                   [0, 0, 1], [1, 0, 1], [1, 1, 1], [0, 1, 1]], p
     pressure = f["vertex_fields/bottom_contact"][1, :, 0]
     assert pressure.max() > 0.5 * 1e4, pressure.max()  # contact pressure near p on the bottom
 xmf = os.path.join(work, "run_fields.xmf")
