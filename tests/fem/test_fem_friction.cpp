@@ -74,3 +74,17 @@ TEST(FemFriction, FrictionGradientLowersGlobalStaticFriction) {
   // The local means are unchanged: the reduction is the detachment starting at the weak side.
   EXPECT_GT(graded.muS, 0.5);
 }
+
+TEST(FemFriction, PetscRungeKuttaByOptionAgreesWithVelocityVerlet) {
+  // -ts_type rk -ts_rk_type 4 (four evaluations a step) against gfverlet (one), same dt.
+  const FemRunResult verlet = runCoarse(test::noGrading());
+  PetscOptionsSetValue(nullptr, "-ts_type", "rk");
+  PetscOptionsSetValue(nullptr, "-ts_rk_type", "4");
+  const FemRunResult rk4 = runCoarse(test::noGrading());
+  PetscOptionsClearValue(nullptr, "-ts_type");
+  PetscOptionsClearValue(nullptr, "-ts_rk_type");
+  PetscPrintf(PETSC_COMM_WORLD, "gfverlet mu_s %.5f peak %.4e s; rk4 mu_s %.5f peak %.4e s\n", verlet.muS,
+              verlet.peakTime, rk4.muS, rk4.peakTime);
+  EXPECT_NEAR(rk4.muS, verlet.muS, 0.01 * verlet.muS);
+  EXPECT_NEAR(rk4.peakTime, verlet.peakTime, 0.03 * verlet.peakTime);
+}
