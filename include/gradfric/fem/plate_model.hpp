@@ -108,6 +108,7 @@ private:
   Grading grading_;
   OwnedDM dm_, dmU_, dmAux_;
   OwnedVec xLocal_, fLocal_, auxLocal_;
+  OwnedVec uGlobal_, fGlobal_, uLocal_, fLocalU_;  // displacement-DM work vectors of rhs()
   BoxElement element_;
   PetscInt numCells_ = 0, globalCells_ = 0, globalVertices_ = 0;
   PetscInt vStart_ = 0, vEnd_ = 0;
