@@ -46,6 +46,13 @@ with h5py.File(fields, "r") as f:
     assert pressure.max() > 0.5 * 1e4, pressure.max()  # contact pressure near p on the bottom
 xmf = os.path.join(work, "run_fields.xmf")
 ET.parse(xmf)  # well-formed XML
+# ParaView itself, when installed (Debian's paraview + python3-paraview provide pvbatch).
+pvbatch = "/usr/bin/pvbatch"
+if os.path.exists(pvbatch):
+    script = os.path.join(os.path.dirname(os.path.abspath(__file__)), "paraview_open.py")
+    r = subprocess.run([pvbatch, script, xmf, str(8 * 8 * 2)], env=env, capture_output=True, text=True)
+    assert r.returncode == 0 and "paraview OK" in r.stdout, r.stdout + r.stderr
+    print(r.stdout.strip())
 # No overwrite without the flag; nothing half-written left behind.
 r = subprocess.run(mpi + base, env=env, capture_output=True, text=True)
 assert r.returncode == 2 and "-fem_output_overwrite" in r.stderr, r.stdout + r.stderr
