@@ -2,6 +2,7 @@
 """Runs gradfric-fem with output on a coarse plate and checks the files: the history with h5py,
 the field snapshots in PETSc's VIZ layout, the .xmf beside them, and the refusal to overwrite."""
 import os
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -59,4 +60,5 @@ assert r.returncode == 2 and "-fem_output_overwrite" in r.stderr, r.stdout + r.s
 r = subprocess.run(mpi + base + ["-fem_output_overwrite"], env=env, capture_output=True, text=True)
 assert r.returncode == 0, r.stderr
 assert not [n for n in os.listdir(work) if n.endswith(".tmp")], os.listdir(work)
-print("fem output OK:", work)
+shutil.rmtree(work)
+print("fem output OK")
