@@ -93,6 +93,37 @@ FrictionField buildFriction(const Parameters& p, const Grading& grading, StreamK
   return f;
 }
 
+LatticeEnergy latticeEnergy(const LatticeStiffness& s, double mass, const double* ux, const double* uy,
+                            const double* vx, const double* vy, double sliderX, double sliderY) {
+  const int nb = s.blocksPerSide;
+  const double l = s.spacing, ld = std::sqrt(2.0) * l;
+  LatticeEnergy e;
+  auto spring = [&](int i, int j, double k, double restX, double restY, double restLength) {
+    const double dx = restX + ux[j] - ux[i], dy = restY + uy[j] - uy[i];
+    const double length = std::sqrt(dx * dx + dy * dy);
+    const double dux = ux[j] - ux[i], duy = uy[j] - uy[i];
+    const double extension = (2.0 * (restX * dux + restY * duy) + dux * dux + duy * duy) / (length + restLength);
+    e.internal += 0.5 * k * extension * extension;
+  };
+  for (int r = 0; r < nb; ++r) {
+    for (int c = 0; c < nb; ++c) {
+      const int i = r * nb + c;
+      e.kinetic += 0.5 * mass * (vx[i] * vx[i] + vy[i] * vy[i]);
+      const double sx = sliderX - ux[i], sy = sliderY - uy[i];
+      e.slider += 0.5 * s.slider[c] * (sx * sx + sy * sy);
+      if (c + 1 < nb) spring(i, i + 1, s.horizontal[c], l, 0, l);
+      if (r + 1 < nb) {
+        spring(i, i + nb, s.vertical[c], 0, l, l);
+        if (c + 1 < nb) {
+          spring(i, i + nb + 1, s.diagonal[c], l, l, ld);
+          spring(i + 1, i + nb, s.diagonal[c], -l, l, ld);
+        }
+      }
+    }
+  }
+  return e;
+}
+
 void blockStress(const LatticeStiffness& s, double thickness, const double* ux, const double* uy, int r, int c,
                  double stress[3]) {
   const int nb = s.blocksPerSide;

@@ -1,12 +1,14 @@
 // One realisation: build the lattice, integrate, watch the observables, stop once they are known.
 #include "gradfric/sbm/model.hpp"
 
+#include "gradfric/core/options.hpp"
 #include "gradfric/core/petsc_call.hpp"
 #include "gradfric/sbm/integrator.hpp"
 #include "gradfric/sbm/lattice.hpp"
 
 #include <petsclog.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -53,9 +55,20 @@ struct PeakTracker {
 std::vector<double> asVector(const double* data, std::size_t n) { return std::vector<double>(data, data + n); }
 std::vector<double> asVector(std::vector<double> data, std::size_t) { return data; }
 
+std::string instabilityMessage(const std::string& what, double t, std::int64_t step, const Parameters& p,
+                               double stable) {
+  std::ostringstream m;
+  m << "the spring-block run became unstable at t = " << t << " s (step " << step << "): " << what
+    << ". Likely cause: the time step dt = " << p.timeStep << " s is at or above the stability limit "
+    << stable << " s of this lattice (stiffest band";
+  if (p.damping > 0) m << ", damping gamma dt = " << p.damping * p.timeStep;
+  m << "). Lower -sbm_dt or -sbm_dt_safety.";
+  return m.str();
+}
+
 template <class Lattice>
-void integrate(Lattice& lattice, const LatticeStiffness& stiffness, const Parameters& p, const Request& q,
-               Result& result) {
+void integrate(Lattice& lattice, const LatticeStiffness& stiffness, const FrictionField& friction, const Motion& motion,
+               const Parameters& p, const Request& q, double stable, Result& result) {
   const auto& events = logEvents();
   const int nb = p.blocksPerSide;
   const std::size_t n = std::size_t(nb) * nb;
@@ -66,6 +79,11 @@ void integrate(Lattice& lattice, const LatticeStiffness& stiffness, const Parame
     lattice.recordFirstSlips(result.firstSlipTime.data());
   }
   PeakTracker peak{q.peakDrop, q.peakHold};
+  // The monitor: mu(t) finite at every step; kinetic + elastic energy never above the work done
+  // by the slider (trapezoidal rule) every energyCheckInterval steps.
+  double work = 0.0, previousFx = 0.0, previousFy = 0.0;
+  result.maxLocalStatic = *std::max_element(friction.staticForce.begin(), friction.staticForce.end()) /
+                          p.normalForcePerBlock();
   std::vector<double> muPerStep;  // every step, for the kinetic window
   std::size_t nextSnapshot = 0;
   double nextSample = 0.0;
@@ -86,14 +104,20 @@ void integrate(Lattice& lattice, const LatticeStiffness& stiffness, const Parame
     const StepObservation o = lattice.step();
     GF_CALL(PetscLogEventEnd(events.step, 0, 0, 0, 0));
     const double mu = std::hypot(o.sliderForceX, o.sliderForceY) / totalNormal;
-    muPerStep.push_back(mu);
-    if (t >= nextSample - 0.5 * dt) {
-      result.time.push_back(t);
-      result.mu.push_back(mu);
-      nextSample += q.historyInterval > 0 ? q.historyInterval : dt;
-    }
+    // mu(t) cannot exceed the largest local static coefficient but by a dynamic overshoot: twice
+    // that is a blow-up, caught at once.
+    if (!std::isfinite(mu) || mu > 2.0 * result.maxLocalStatic)
+      throw NumericalInstability(instabilityMessage(
+          std::isfinite(mu) ? "mu(t) = " + formatReal(mu) + " exceeds twice the largest local mu_s (" +
+                                  formatReal(result.maxLocalStatic) + ")"
+                            : "mu(t) is not finite",
+          t, lattice.steps(), p, stable));
+    if (lattice.steps() > 1)
+      work += 0.5 * dt * ((previousFx + o.sliderForceX) * motion.sliderVelocityX +
+                          (previousFy + o.sliderForceY) * motion.sliderVelocityY);
+    previousFx = o.sliderForceX;
+    previousFy = o.sliderForceY;
     peak.observe(t, mu, lattice.slippedBlocks() == int(n));
-
     bool done;
     if (q.endTime > 0) {
       done = t >= q.endTime;
@@ -101,7 +125,31 @@ void integrate(Lattice& lattice, const LatticeStiffness& stiffness, const Parame
       done = peak.confirmed && nextSnapshot == q.snapshotTimes.size() &&
              (!q.kineticFriction || t >= peak.time + q.kineticDelay + q.kineticWidth);
     }
-    if (done || t >= q.maxTime) break;
+    done = done || t >= q.maxTime;
+    if (done || (q.energyCheckInterval > 0 && lattice.steps() % q.energyCheckInterval == 0)) {
+      // State at t + dt against the work up to t plus one more step of the current force.
+      const double bound = work + 2.0 * dt * std::fabs(o.sliderForceX * motion.sliderVelocityX +
+                                                       o.sliderForceY * motion.sliderVelocityY);
+      const auto ux = asVector(lattice.displacementX(), n), uy = asVector(lattice.displacementY(), n);
+      const auto vx = asVector(lattice.velocityX(), n), vy = asVector(lattice.velocityY(), n);
+      const double tn = lattice.time();
+      const LatticeEnergy e = latticeEnergy(stiffness, p.blockMass(), ux.data(), uy.data(), vx.data(), vy.data(),
+                                            motion.sliderVelocityX * tn, motion.sliderVelocityY * tn);
+      result.energy = e.total();
+      result.sliderWork = work;
+      if (!std::isfinite(e.total()) || e.total() > bound * (1.0 + 1e-3))
+        throw NumericalInstability(instabilityMessage(
+            "the kinetic + elastic energy " + formatReal(e.total()) + " J exceeds the work done by the slider " +
+                formatReal(bound) + " J",
+            t, lattice.steps(), p, stable));
+    }
+    muPerStep.push_back(mu);
+    if (t >= nextSample - 0.5 * dt) {
+      result.time.push_back(t);
+      result.mu.push_back(mu);
+      nextSample += q.historyInterval > 0 ? q.historyInterval : dt;
+    }
+    if (done) break;
   }
   result.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   result.steps = lattice.steps();
@@ -136,12 +184,13 @@ Result simulate(const Parameters& p, const Grading& grading, const Request& q, S
   GF_CALL(PetscLogEventEnd(events.setup, 0, 0, 0, 0));
   Result result;
   result.redrawnBlocks = friction.redrawnBlocks;
+  const double stable = stableTimeStep(p, grading);
   if (kernel == Kernel::Fast) {
     FastLattice lattice(stiffness, friction, motion);
-    integrate(lattice, stiffness, p, q, result);
+    integrate(lattice, stiffness, friction, motion, p, q, stable, result);
   } else {
     ReferenceLattice lattice(stiffness, friction, motion);
-    integrate(lattice, stiffness, p, q, result);
+    integrate(lattice, stiffness, friction, motion, p, q, stable, result);
   }
   return result;
 }

@@ -177,3 +177,11 @@ std::vector<double> ReferenceLattice::velocityX() const {
 }
 
 }  // namespace gradfric::sbm
+
+namespace gradfric::sbm {
+std::vector<double> ReferenceLattice::velocityY() const {
+  std::vector<double> out;
+  for (const auto& b : blocks_) out.push_back(b.vy);
+  return out;
+}
+}  // namespace gradfric::sbm

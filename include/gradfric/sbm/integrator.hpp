@@ -57,7 +57,7 @@ public:
   const double* displacementX() const { return ux_.data(); }
   const double* displacementY() const { return uy_.data(); }
   const double* velocityX() const { return vx_.data(); }
-  const double* velocityY() const { return vy_.data(); }
+  const double* velocityY() const { return vy_.data(); }  // half-step velocity with Verlet
   const std::uint8_t* blockStates() const { return state_.data(); }
 
   // The kernel's parts (public so that the per-ISA entry points can reach them).
@@ -107,6 +107,7 @@ public:
   std::vector<double> displacementX() const;
   std::vector<double> displacementY() const;
   std::vector<double> velocityX() const;
+  std::vector<double> velocityY() const;
   // Driving force F_mot (springs + slider) on every block at the current state (for tests).
   void drivingForces(std::vector<double>& fx, std::vector<double>& fy) const;
 

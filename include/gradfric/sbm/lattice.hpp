@@ -50,6 +50,15 @@ struct FrictionField {
 // until 0 < mu_k,i <= mu_s,i. With sigma = 0 nothing is drawn.
 FrictionField buildFriction(const Parameters& parameters, const Grading& grading, StreamKey key);
 
+// Energies of a lattice state [J]: kinetic, elastic in the internal springs, elastic in the
+// slider springs (slider at sliderX, sliderY, the displacement of the slider's end).
+struct LatticeEnergy {
+  double kinetic = 0.0, internal = 0.0, slider = 0.0;
+  double total() const { return kinetic + internal + slider; }
+};
+LatticeEnergy latticeEnergy(const LatticeStiffness& stiffness, double mass, const double* ux, const double* uy,
+                            const double* vx, const double* vy, double sliderX, double sliderY);
+
 // sigma_x / p of every block from its springs (virial stress over the block's volume l^2 l_z,
 // positive in tension). ux, uy: displacements [N_b^2].
 void longitudinalStress(const LatticeStiffness& stiffness, double thickness, double pressure, const double* ux,

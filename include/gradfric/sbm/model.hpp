@@ -7,6 +7,7 @@
 #include "gradfric/sbm/parameters.hpp"
 
 #include <cstdint>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,18 @@ struct Result {
   double endTime = 0.0;      // simulated time reached [s]
   double wallSeconds = 0.0;  // elapsed wall time of the integration
   int redrawnBlocks = 0;     // local coefficients redrawn to keep 0 < mu_k,i <= mu_s,i
+  // Energy balance at the end [J]: kinetic + elastic never exceeds the slider's work (checked).
+  double energy = 0.0;
+  double sliderWork = 0.0;
+  double maxLocalStatic = 0.0;  // the largest local mu_s,i: mu(t) stays below it (checked)
+};
+
+// Thrown by simulate() when the run blows up (a non-finite mu(t), or kinetic plus elastic energy
+// above the work the slider has done): the message names the quantity, the time and the likely
+// cause. Checked every step (mu) and every Request::energyCheckInterval steps (energy).
+class NumericalInstability : public std::runtime_error {
+public:
+  using std::runtime_error::runtime_error;
 };
 
 // Fast: the production kernel. Reference: the plain kernel the tests compare against.
