@@ -581,9 +581,14 @@ void runSpringBlockScene(MPI_Comm comm, RunParameters* record) {
   GF_CALL_MPI(MPI_Allreduce(&ranHere, &ranAll, 1, MPI_LONG, MPI_SUM, comm));
   GF_CALL_MPI(MPI_Allreduce(&taskSecondsHere, &taskSecondsAll, 1, MPI_DOUBLE, MPI_SUM, comm));
   printStatistics(comm, sweep, R, stats, request.kineticFriction);
-  GF_CALL(PetscPrintf(comm, "\n%ld task(s) run in %s on %d rank(s): %.4g tasks/s, mean task %.4g s; results in %s\n",
+  // busy: the share of rank-seconds spent inside tasks (the rest: start-up, file writes, waiting
+  // for the last task, statistics).
+  GF_CALL(PetscPrintf(comm,
+                      "\n%ld task(s) run in %s on %d rank(s): %.4g tasks/s, mean task %.4g s, ranks busy %.1f %%; "
+                      "results in %s\n",
                       ranAll, hms(elapsed).c_str(), size, elapsed > 0 ? ranAll / elapsed : 0.0,
-                      ranAll > 0 ? taskSecondsAll / ranAll : 0.0, plan.finalPath.c_str()));
+                      ranAll > 0 ? taskSecondsAll / ranAll : 0.0,
+                      elapsed > 0 ? 100.0 * taskSecondsAll / (size * elapsed) : 0.0, plan.finalPath.c_str()));
 }
 
 }  // namespace gradfric::ensemble
