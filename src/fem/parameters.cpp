@@ -41,7 +41,6 @@ FemParameters readFemParameters(MPI_Comm comm, RunParameters* record) {
   q.muK = o.real("mu_k", q.muK, "1", "local kinetic friction coefficient (reference)");
   q.vC = o.real("v_c", q.vC, "m/s", "critical velocity v_c of Eq. 1");
   q.contact = o.flag("contact", true, "contact with the rigid plane (off: free bottom face, for tests)");
-  const double hzGuess = q.H / std::max(1, q.nz);
   if (auto kn = o.realIfSet("kn", "Pa/m", "normal penalty stiffness k_n", "E0/hz")) q.kn = *kn;
   if (auto kt = o.realIfSet("kt", "Pa/m", "tangential penalty stiffness k_t", "k_n")) q.kt = *kt;
   if (auto g = o.realIfSet("settle_damping", "1/s", "mass-proportional damping during the pressure step", "c_s/H"))
@@ -90,7 +89,6 @@ FemParameters readFemParameters(MPI_Comm comm, RunParameters* record) {
   if (o.wasSet("slide_time")) o.requirePositive("slide_time", q.slideTime, "s");
   if (o.wasSet("kinetic_window_length")) o.requirePositive("kinetic_window_length", q.windowLength, "s");
   o.requireAtLeast("history_every", q.historyEvery, 1);
-  (void)hzGuess;
 
   FemParameters derived = q;
   derived.resolveDerived();

@@ -8,7 +8,6 @@
 #include <metis.h>
 
 #include <stdexcept>
-#include <type_traits>
 
 namespace gradfric::fem {
 

@@ -231,8 +231,6 @@ void PlateModel::buildNodes() {
   }
   PetscSection gsection = nullptr;
   GF_CALL(DMGetGlobalSection(dm_, &gsection));
-  const ExponentialVelocityWeakening reference{params_.muS, params_.muK, params_.vC};
-  (void)reference;
   for (PetscInt p = vStart_; p < vEnd_; ++p) {
     PetscInt goff = 0;
     GF_CALL(PetscSectionGetOffset(gsection, p, &goff));
