@@ -53,7 +53,10 @@ void timeCalls(benchmark::State& state, const char* name, Call call) {
     const double t0 = MPI_Wtime();
     call();
     MPI_Barrier(PETSC_COMM_WORLD);
-    const double dt = MPI_Wtime() - t0;
+    double dt = MPI_Wtime() - t0;
+    // Every rank must see the same time, or Google Benchmark picks different iteration counts
+    // on different ranks and the collective calls deadlock.
+    MPI_Bcast(&dt, 1, MPI_DOUBLE, 0, PETSC_COMM_WORLD);
     state.SetIterationTime(dt);
     total += dt;
     ++calls;
