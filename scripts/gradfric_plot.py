@@ -1,0 +1,323 @@
+#!/usr/bin/python3
+"""Draw what a gradfric results file holds, the way the paper shows it.
+
+    /usr/bin/python3 scripts/gradfric_plot.py RESULTS.h5 [--fem FEM.h5 ...] [--out DIR] [--prefix NAME]
+
+RESULTS.h5 is a spring-block ensemble file (gradfric) or a finite-element history
+(gradfric-fem). Figures written to DIR (default: beside the file), as PNG:
+
+  <name>_mu_t.png           mu(t) histories, one curve per sweep point (paper Figures 2 and 6)
+  <name>_variation.png      relative variation of mu_s and mu_k against Delta with 95 % bands,
+                            SBM and FEM together (Figures 4, 7, 9, 10, 11); one curve per
+                            sliding angle, property or profile when those are swept (Figure 8)
+  <name>_first_slip.png     first-slip time on the plate (the detachment front)
+  <name>_sigma_x.png        sigma_x/p snapshots (Figures 5 and 12)
+  <name>_detachment.gif     animation of the sigma_x/p snapshots (the Supporting Information videos)
+
+FEM history files given with --fem are added to the mu(t) and variation plots (their Delta is
+read from their /parameters). Needs Debian's python3-h5py, python3-matplotlib (and python3-pil
+for the animation), installed by scripts/setup.sh.
+"""
+import argparse
+import os
+import sys
+
+import h5py
+import matplotlib
+import numpy as np
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+
+def text(value):
+    if isinstance(value, bytes):
+        return value.decode()
+    if isinstance(value, np.ndarray) and value.shape == ():
+        return text(value[()])
+    return str(value)
+
+
+def strings(dataset):
+    return [text(v) for v in dataset[:]]
+
+
+class Ensemble:
+    """A spring-block ensemble results file (layout: docs/ensemble.md)."""
+
+    def __init__(self, path):
+        self.path = path
+        self.f = h5py.File(path, "r")
+        if text(self.f.attrs.get("format", "")) != "gradfric-sbm-ensemble":
+            raise ValueError(f"{path} is not a gradfric spring-block ensemble file")
+        sweep = self.f["sweep"]
+        self.axes = [a for a in text(sweep.attrs.get("axes", "")).split(",") if a]
+        self.delta = sweep["delta"][:]
+        self.theta = sweep["theta"][:]
+        self.sigma = sweep["sigma"][:]
+        self.property = strings(sweep["property"])
+        self.profile = strings(sweep["profile"])
+        self.points = len(self.delta)
+        self.done = self.f["realisations/done"][:].astype(bool)
+        self.scene = {k: text(v) for k, v in self.f["scene"].attrs.items()}
+
+    def label(self, p):
+        parts = []
+        for axis in self.axes or ["delta"]:
+            if axis == "delta":
+                parts.append(f"Delta={self.delta[p]:g}")
+            elif axis == "theta":
+                parts.append(f"theta={self.theta[p]:g} deg")
+            elif axis == "sigma":
+                parts.append(f"sigma={100 * self.sigma[p]:g} %")
+            elif axis == "property":
+                parts.append(self.property[p])
+            elif axis == "profile":
+                parts.append(self.profile[p])
+        return ", ".join(parts)
+
+    def statistic(self, name):
+        return self.f["statistics"][name][:]
+
+    def histories(self, p):
+        """Every finished realisation's (time, mu) of point p."""
+        if "history" not in self.f:
+            return []
+        out = []
+        for r in np.flatnonzero(self.done[p]):
+            n = int(self.f["history/length"][p, r])
+            if n > 0:
+                out.append((self.f["history/time"][p, r, :n], self.f["history/mu"][p, r, :n]))
+        return out
+
+
+class FemHistory:
+    """A finite-element history file (layout: docs/fem.md)."""
+
+    def __init__(self, path):
+        self.path = path
+        f = h5py.File(path, "r")
+        if text(f.attrs.get("format", "")) != "gradfric-fem-history":
+            raise ValueError(f"{path} is not a gradfric-fem history file")
+        self.time = f["history/time"][:]
+        self.mu = f["history/mu"][:]
+        self.results = {k: float(v) for k, v in f["results"].attrs.items() if np.ndim(v) == 0 and not isinstance(v, bytes)}
+        self.parameters = {k: text(v).split(" ")[0] for k, v in f["parameters"].attrs.items()} if "parameters" in f else {}
+        self.delta = float(self.parameters.get("grading_delta", self.parameters.get("-grading_delta", 0.0)))
+        self.profile = self.parameters.get("grading_profile", self.parameters.get("-grading_profile", "none"))
+        if self.profile == "none":
+            self.delta = 0.0
+        self.thickness = self.parameters.get("fem_H", self.parameters.get("-fem_H", ""))
+
+
+def plot_histories(ensemble, fems, png):
+    fig, ax = plt.subplots(figsize=(7.5, 4.8))
+    if ensemble is not None:
+        colours = plt.cm.viridis(np.linspace(0, 0.9, max(ensemble.points, 1)))
+        for p in range(ensemble.points):
+            runs = ensemble.histories(p)
+            for k, (t, mu) in enumerate(runs[:3]):  # a few realisations: the spread is visible
+                ax.plot(t * 1e3, mu, color=colours[p], lw=1.0 if k == 0 else 0.5, alpha=1.0 if k == 0 else 0.5,
+                        label=f"SBM {ensemble.label(p)}" if k == 0 else None)
+    for fem in fems:
+        label = f"FEM Delta={fem.delta:g}" + (f", H={fem.thickness}" if fem.thickness else "")
+        ax.plot(fem.time * 1e3, fem.mu, "--", lw=1.2, label=label)
+    ax.set_xlabel("time [ms]")
+    ax.set_ylabel("mu(t) = F / (p L^2)")
+    ax.set_title("Friction force history")
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=7, ncol=2)
+    fig.tight_layout()
+    fig.savefig(png, dpi=110)
+    plt.close(fig)
+    return png
+
+
+def series_key(ensemble, p):
+    """Points that differ only in Delta form one curve."""
+    return (ensemble.theta[p], ensemble.sigma[p], ensemble.property[p], ensemble.profile[p])
+
+
+def plot_variation(ensemble, fems, png):
+    fig, axes = plt.subplots(1, 2, figsize=(12, 4.8))
+    for ax, name in zip(axes, ("mu_s", "mu_k")):
+        if ensemble is not None:
+            relative = ensemble.statistic(f"{name}_relative") * 100
+            error = ensemble.statistic(f"{name}_relative_error") * 100
+            groups = {}
+            for p in range(ensemble.points):
+                groups.setdefault(series_key(ensemble, p), []).append(p)
+            for key, members in groups.items():
+                members = sorted(members, key=lambda p: ensemble.delta[p])
+                d = ensemble.delta[members]
+                y, e = relative[members], error[members]
+                theta, sigma, prop, profile = key
+                label = f"SBM {prop} {profile}" + (f", theta={theta:g}" if len(groups) > 1 else "")
+                ax.plot(d, y, "o-", label=label)
+                # 95 % band of the relative variation (propagated standard errors x 1.96)
+                ax.fill_between(d, y - 1.96 * e, y + 1.96 * e, alpha=0.2)
+        if fems:
+            reference = [f for f in fems if f.delta == 0.0]
+            if reference:
+                base = reference[0].results.get(name, np.nan)
+                pts = sorted((f.delta, 100 * (f.results.get(name, np.nan) / base - 1)) for f in fems)
+                ax.plot([x for x, _ in pts], [y for _, y in pts], "s--", color="tab:red", label="FEM")
+        ax.axhline(0, color="grey", lw=0.8)
+        ax.set_xlabel("Delta")
+        ax.set_ylabel(f"({name} - {name},0) / {name},0  [%]")
+        ax.set_title(f"Relative variation of the global {name}")
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(png, dpi=110)
+    plt.close(fig)
+    return png
+
+
+def first_finished(ensemble, first=None):
+    """(point, realisation) pairs with a finished realisation; `first` leads if given."""
+    order = list(range(ensemble.points))
+    if first is not None:
+        order = [first] + [p for p in order if p != first]
+    for p in order:
+        r = np.flatnonzero(ensemble.done[p])
+        if r.size:
+            yield p, r[0]
+
+
+def default_point(ensemble):
+    """The most strongly graded point: its snapshots show a detachment front."""
+    return int(np.argmax(np.abs(ensemble.delta))) if ensemble.points else 0
+
+
+def plot_first_slip(ensemble, png):
+    if "maps" not in ensemble.f or "first_slip_time" not in ensemble.f["maps"]:
+        return None
+    cases = list(first_finished(ensemble))[:6]
+    if not cases:
+        return None
+    length = float(ensemble.scene.get("sbm_L", "0.005"))
+    fig, axes = plt.subplots(1, len(cases), figsize=(3.6 * len(cases), 3.4), squeeze=False)
+    for ax, (p, r) in zip(axes[0], cases):
+        m = ensemble.f["maps/first_slip_time"][p, r] * 1e3
+        im = ax.imshow(m, origin="lower", extent=[0, length * 1e3, 0, length * 1e3], cmap="magma")
+        ax.set_title(ensemble.label(p), fontsize=8)
+        ax.set_xlabel("x [mm]")
+        fig.colorbar(im, ax=ax, label="first slip [ms]", shrink=0.8)
+    axes[0][0].set_ylabel("y [mm]")
+    fig.suptitle("Detachment front: time of each block's first slip", fontsize=10)
+    fig.tight_layout()
+    fig.savefig(png, dpi=110)
+    plt.close(fig)
+    return png
+
+
+def stress_frames(ensemble, point):
+    if "maps" not in ensemble.f or "sigma_x_over_p" not in ensemble.f["maps"]:
+        return None
+    cases = list(first_finished(ensemble, point))
+    if not cases:
+        return None
+    p, r = cases[0]
+    times = ensemble.f["maps/snapshot_time"][p, r]
+    keep = np.isfinite(times)
+    if not keep.any():
+        return None
+    return p, times[keep], ensemble.f["maps/sigma_x_over_p"][p, r][keep]
+
+
+def plot_sigma(ensemble, png, point):
+    frames = stress_frames(ensemble, point)
+    if frames is None:
+        return None
+    p, times, maps = frames
+    shown = list(range(len(times)))[:6]
+    limit = np.nanmax(np.abs(maps)) or 1.0
+    length = float(ensemble.scene.get("sbm_L", "0.005"))
+    fig, axes = plt.subplots(1, len(shown), figsize=(3.6 * len(shown), 3.4), squeeze=False)
+    for ax, k in zip(axes[0], shown):
+        im = ax.imshow(maps[k], origin="lower", extent=[0, length * 1e3, 0, length * 1e3], cmap="RdBu_r",
+                       vmin=-limit, vmax=limit)
+        ax.set_title(f"t = {times[k] * 1e3:.4f} ms", fontsize=8)
+        ax.set_xlabel("x [mm]")
+    axes[0][0].set_ylabel("y [mm]")
+    fig.colorbar(im, ax=axes[0].tolist(), label="sigma_x / p", shrink=0.8)
+    fig.suptitle(f"Longitudinal stress, {ensemble.label(p)}", fontsize=10)
+    fig.savefig(png, dpi=110)
+    plt.close(fig)
+    return png
+
+
+def animate_sigma(ensemble, gif, point):
+    frames = stress_frames(ensemble, point)
+    if frames is None or len(frames[1]) < 2:
+        return None
+    try:
+        from matplotlib.animation import FuncAnimation, PillowWriter
+    except ImportError:
+        return None
+    p, times, maps = frames
+    limit = np.nanmax(np.abs(maps)) or 1.0
+    fig, ax = plt.subplots(figsize=(4.8, 4.2))
+    im = ax.imshow(maps[0], origin="lower", cmap="RdBu_r", vmin=-limit, vmax=limit)
+    fig.colorbar(im, ax=ax, label="sigma_x / p")
+    title = ax.set_title("")
+
+    def update(k):
+        im.set_data(maps[k])
+        title.set_text(f"{ensemble.label(p)}: t = {times[k] * 1e3:.4f} ms")
+        return im, title
+
+    FuncAnimation(fig, update, frames=len(times), blit=False).save(gif, writer=PillowWriter(fps=4))
+    plt.close(fig)
+    return gif
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("results", help="an ensemble file (gradfric) or a FEM history (gradfric-fem)")
+    parser.add_argument("--fem", nargs="*", default=[], help="FEM history files to add")
+    parser.add_argument("--out", help="folder for the figures (default: beside the results file)")
+    parser.add_argument("--prefix", help="file name prefix (default: the results file's name)")
+    parser.add_argument("--point", type=int, help="sweep point of the stress snapshots (default: the largest |Delta|)")
+    args = parser.parse_args(argv)
+
+    if not os.path.exists(args.results):
+        sys.exit(f"gradfric_plot: no such file: {args.results}")
+    out = args.out or os.path.dirname(os.path.abspath(args.results))
+    os.makedirs(out, exist_ok=True)
+    prefix = os.path.join(out, args.prefix or os.path.splitext(os.path.basename(args.results))[0])
+
+    ensemble, fems = None, []
+    try:
+        ensemble = Ensemble(args.results)
+    except (ValueError, KeyError, OSError):
+        try:
+            fems.append(FemHistory(args.results))
+        except (ValueError, KeyError, OSError) as error:
+            sys.exit(f"gradfric_plot: {args.results} is neither a gradfric ensemble nor a FEM history ({error})")
+    for path in args.fem:
+        try:
+            fems.append(FemHistory(path))
+        except (ValueError, KeyError, OSError) as error:
+            sys.exit(f"gradfric_plot: --fem {path} is not a gradfric-fem history ({error})")
+
+    written = [plot_histories(ensemble, fems, prefix + "_mu_t.png")]
+    if ensemble is not None:
+        if len(set(ensemble.delta)) > 1:
+            written.append(plot_variation(ensemble, fems, prefix + "_variation.png"))
+        written.append(plot_first_slip(ensemble, prefix + "_first_slip.png"))
+        point = default_point(ensemble) if args.point is None else args.point
+        if not 0 <= point < ensemble.points:
+            sys.exit(f"gradfric_plot: --point {point} is out of range: 0 <= point < {ensemble.points}")
+        written.append(plot_sigma(ensemble, prefix + "_sigma_x.png", point))
+        written.append(animate_sigma(ensemble, prefix + "_detachment.gif", point))
+    elif len(fems) > 1:
+        written.append(plot_variation(None, fems, prefix + "_variation.png"))
+    for path in written:
+        if path:
+            print(f"gradfric_plot: wrote {path}")
+
+
+if __name__ == "__main__":
+    main()
