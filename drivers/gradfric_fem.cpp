@@ -10,6 +10,8 @@
 #include "gradfric/fem/plate_model.hpp"
 #include "gradfric/fem/simulation.hpp"
 #include "gradfric/physics/grading_options.hpp"
+#include "gradfric/sbm/model.hpp"
+#include "gradfric/sbm/parameters.hpp"
 
 #include <petscsys.h>
 
@@ -27,8 +29,22 @@ int main(int argc, char** argv) {
     RunParameters record;
     const Grading grading = readGrading(comm, &record);
     const FemParameters params = readFemParameters(comm, &record);
+    OptionReader driverOptions(comm, "fem_", "gradfric-fem: both models", &record);
+    const bool compare = driverOptions.flag(
+        "compare_sbm", false, "also run one spring-block realisation (-sbm_ options) on the same grading, side by side");
+    const PetscInt seed = driverOptions.integer("compare_seed", 1, "1", "random stream of that SBM realisation");
+    driverOptions.requireAtLeast("compare_seed", seed, 0);
+    sbm::Parameters sbmParams;
+    sbm::Request sbmRequest;
+    if (compare || helpRequested()) {
+      sbmParams = sbm::readParameters(comm, &record, grading);
+      sbmRequest = sbm::readRequest(comm, &record, sbmParams);
+    }
     if (helpRequested()) return;
-    checkUnusedOptions(comm, {"fem_", "grading_"});
+    if (compare)
+      checkUnusedOptions(comm, {"fem_", "grading_", "sbm_"});
+    else
+      checkUnusedOptions(comm, {"fem_", "grading_"});
     chooseTimeStep(params, grading);    // refuses a dt above the stable step before any work
     OutputFiles output(comm, params);  // refuses an existing file before any work
     PlateModel model(comm, params, grading);
@@ -63,5 +79,29 @@ int main(int argc, char** argv) {
                 r.settledNormalForce, r.muS, r.peakTime, eq2, r.peakTime / eq2, r.firstSlipTime, r.muK,
                 r.windowComplete ? "" : "  (window incomplete)", r.steps, r.dt, wall, r.wallPressure, r.wallSliding,
                 1e3 * wall / std::max(1L, r.steps));
+    if (compare) {
+      // One SBM realisation on rank 0 (the SBM has no MPI inside), the same grading.
+      int rank = 0;
+      MPI_Comm_rank(comm, &rank);
+      double sbmValues[4] = {0, 0, 0, 0};
+      if (rank == 0) {
+        const sbm::Result s = sbm::simulate(sbmParams, grading, sbmRequest,
+                                            StreamKey{static_cast<std::uint64_t>(seed), 0, 0});
+        sbmValues[0] = s.muStatic;
+        sbmValues[1] = s.muKinetic;
+        sbmValues[2] = s.peakTime;
+        sbmValues[3] = s.wallSeconds;
+      }
+      MPI_Bcast(sbmValues, 4, MPI_DOUBLE, 0, comm);
+      PetscPrintf(comm,
+                  "Side by side (grading %s):\n"
+                  "                   FEM            SBM\n"
+                  "  mu_s        %12.6f   %12.6f\n"
+                  "  mu_k        %12.6f   %12.6f\n"
+                  "  peak time   %12.4e   %12.4e s   (FEM Eq. 2: %.4e s, SBM loading time: %.4e s)\n"
+                  "  wall        %12.2f   %12.2f s\n",
+                  describe(grading).c_str(), r.muS, sbmValues[0], r.muK, sbmValues[1], r.peakTime, sbmValues[2], eq2,
+                  sbmParams.loadingTime(), wall, sbmValues[3]);
+    }
   });
 }
