@@ -137,6 +137,10 @@ single)
   printed=$(sed -n 's/^Result: mu_s = \([0-9.]*\),.*/\1/p' "$work/s.log")
   stored=$(h5dump -m %.6f -d /statistics/mu_s_mean "$work/s.h5" | sed -n 's/.*(0): \([0-9.]*\).*/\1/p')
   [ "$printed" = "$stored" ] || fail "printed mu_s $printed, file $stored"
+  # More ranks than tasks: two of three ranks find nothing to do; same file.
+  run 3 -sbm_N 16 -output "$work/s3.h5" >"$work/s3.log"
+  grep -q "^Result: mu_s = $printed," "$work/s3.log" || fail "3 ranks printed another mu_s"
+  same "$work/s.h5" "$work/s3.h5"
   ;;
 help)
   run 1 -help -output "$work/h.h5" >"$work/h.log" 2>&1
