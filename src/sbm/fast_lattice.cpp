@@ -323,6 +323,27 @@ GF_ALWAYS_INLINE void FastLattice::markReversals(int r) {
     if (vx[c] * kfx[c] + vy[c] * kfy[c] < 0.0) state[c] = Reversed;
 }
 
+// One sweep over the rows at positions (px, py): once row r's forces are complete (fx_, fy_),
+// update(r) advances that row while it is in cache; the springs to the next row leave their
+// reactions in a carry buffer.
+template <bool Graded, bool WantSum, class RowUpdate>
+GF_ALWAYS_INLINE void FastLattice::sweepRows(const double* px, const double* py, double t, double& sumX, double& sumY,
+                                             RowUpdate update) {
+  const int nb = nb_;
+  double* carryX = carryX_.data();
+  double* carryY = carryY_.data();
+  double* nextX = nextX_.data();
+  double* nextY = nextY_.data();
+  std::fill(carryX, carryX + nb, 0.0);
+  std::fill(carryY, carryY + nb, 0.0);
+  for (int r = 0; r < nb; ++r) {
+    rowForces<Graded, WantSum>(r, px, py, t, carryX, carryY, nextX, nextY, sumX, sumY);
+    update(r);
+    std::swap(carryX, nextX);
+    std::swap(carryY, nextY);
+  }
+}
+
 template <bool Graded, FrictionField::Layout L, int Stage>
 GF_ALWAYS_INLINE void FastLattice::rk4Stage(double t, double& sumX, double& sumY) {
   const int nb = nb_;
@@ -335,15 +356,8 @@ GF_ALWAYS_INLINE void FastLattice::rk4Stage(double t, double& sumX, double& sumY
   // A row's stage point is overwritten once its forces are complete: no later row reads it.
   const double* px = Stage == 1 ? ux_.data() : sx_.data();
   const double* py = Stage == 1 ? uy_.data() : sy_.data();
-  double* carryX = carryX_.data();
-  double* carryY = carryY_.data();
-  double* nextX = nextX_.data();
-  double* nextY = nextY_.data();
-  std::fill(carryX, carryX + nb, 0.0);
-  std::fill(carryY, carryY + nb, 0.0);
-  for (int r = 0; r < nb; ++r) {
+  sweepRows<Graded, Stage == 1>(px, py, t, sumX, sumY, [&](int r) {
     const int base = r * nb;
-    rowForces<Graded, Stage == 1>(r, px, py, t, carryX, carryY, nextX, nextY, sumX, sumY);
     if (Stage == 1) {
       transitions<L>(r, t);
       frictionVector<L>(r);
@@ -355,9 +369,7 @@ GF_ALWAYS_INLINE void FastLattice::rk4Stage(double t, double& sumX, double& sumY
                                svy_.data() + base, accUx_.data() + base, accUy_.data() + base, accVx_.data() + base,
                                accVy_.data() + base});
     if (Stage == 4) markReversals(r);
-    std::swap(carryX, nextX);
-    std::swap(carryY, nextY);
-  }
+  });
 }
 
 // Velocity Verlet, one force evaluation per step, fused in one sweep: with F(u_n) of a row
@@ -372,15 +384,8 @@ GF_ALWAYS_INLINE void FastLattice::verletStep(double t, double& sumX, double& su
   const double h = motion_.timeStep;
   const double invMass = 1.0 / motion_.mass;
   const double gamma = motion_.damping;
-  double* carryX = carryX_.data();
-  double* carryY = carryY_.data();
-  double* nextX = nextX_.data();
-  double* nextY = nextY_.data();
-  std::fill(carryX, carryX + nb, 0.0);
-  std::fill(carryY, carryY + nb, 0.0);
-  for (int r = 0; r < nb; ++r) {
+  sweepRows<Graded, true>(ux_.data(), uy_.data(), t, sumX, sumY, [&](int r) {
     const int base = r * nb;
-    rowForces<Graded, true>(r, ux_.data(), uy_.data(), t, carryX, carryY, nextX, nextY, sumX, sumY);
     closeKick(nb, half, invMass, gamma, fx_.data(), fy_.data(), frictionX_.data() + base, frictionY_.data() + base,
               mobile_.data() + base, vx_.data() + base, vy_.data() + base);
     markReversals(r);
@@ -389,9 +394,7 @@ GF_ALWAYS_INLINE void FastLattice::verletStep(double t, double& sumX, double& su
     openKickAndDrift(nb, half, h, invMass, gamma, fx_.data(), fy_.data(), frictionX_.data() + base,
                      frictionY_.data() + base, mobile_.data() + base, vx_.data() + base, vy_.data() + base,
                      ux_.data() + base, uy_.data() + base);
-    std::swap(carryX, nextX);
-    std::swap(carryY, nextY);
-  }
+  });
 }
 
 namespace {

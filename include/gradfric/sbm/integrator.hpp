@@ -68,6 +68,8 @@ public:
 
 private:
   void dispatch(double& sumX, double& sumY);
+  template <bool Graded, bool WantSum, class RowUpdate>
+  void sweepRows(const double* px, const double* py, double t, double& sumX, double& sumY, RowUpdate update);
   template <bool Graded, bool WantSum>
   void rowForces(int r, const double* px, const double* py, double t, const double* carryX, const double* carryY,
                  double* nextX, double* nextY, double& sumX, double& sumY);
