@@ -18,9 +18,9 @@ void FemParameters::resolveDerived() {
   if (rampTime < 0) rampTime = 20 * H / cs;
   if (settleTime < 0) settleTime = 10 * H / cs;
   const double ts = eq2PeakTime();
-  if (slideTime < 0) slideTime = 2.5 * ts;
-  if (windowStart < 0) windowStart = 0.25 * ts;
-  if (windowLength < 0) windowLength = 0.5 * ts;
+  if (slideTime < 0) slideTime = 3.0 * ts;
+  if (windowStart < 0) windowStart = 0.5 * ts;  // as the SBM: -sbm_muk_delay 0.5 t_load
+  if (windowLength < 0) windowLength = 1.0 * ts;  // as the SBM: -sbm_muk_width t_load
 }
 
 FemParameters readFemParameters(MPI_Comm comm, RunParameters* record) {
@@ -51,10 +51,10 @@ FemParameters readFemParameters(MPI_Comm comm, RunParameters* record) {
   q.dtSafety = o.real("dt_safety", q.dtSafety, "1", "time step as a fraction of the stable step");
   if (auto t = o.realIfSet("ramp_time", "s", "pressure ramp duration", "20 H/c_s")) q.rampTime = *t;
   if (auto t = o.realIfSet("settle_time", "s", "hold under pressure before sliding", "10 H/c_s")) q.settleTime = *t;
-  if (auto t = o.realIfSet("slide_time", "s", "longest sliding duration", "2.5 * Eq. 2 peak time")) q.slideTime = *t;
-  if (auto t = o.realIfSet("kinetic_window_start", "s", "kinetic window start after the peak", "0.25 * Eq. 2"))
+  if (auto t = o.realIfSet("slide_time", "s", "longest sliding duration", "3 * Eq. 2 peak time")) q.slideTime = *t;
+  if (auto t = o.realIfSet("kinetic_window_start", "s", "kinetic window start after the peak", "0.5 * Eq. 2"))
     q.windowStart = *t;
-  if (auto t = o.realIfSet("kinetic_window_length", "s", "kinetic window length", "0.5 * Eq. 2")) q.windowLength = *t;
+  if (auto t = o.realIfSet("kinetic_window_length", "s", "kinetic window length", "1.0 * Eq. 2")) q.windowLength = *t;
   q.stopWhenKnown = o.flag("stop_when_known", true, "stop once mu_s, the peak time and mu_k are known");
   q.partitioner = o.choice("partitioner", "metis", {"metis", "ptscotch", "simple"}, "mesh partitioner");
   q.output = o.text("output", "", "HDF5 results file (empty: none); snapshots go to <name>_fields.h5 + .xmf");

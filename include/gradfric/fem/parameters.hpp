@@ -35,9 +35,9 @@ struct FemParameters {
   double dtSafety = 0.9;
   double rampTime = -1;     // < 0: derived 20 H/c_s
   double settleTime = -1;   // < 0: derived 10 H/c_s
-  double slideTime = -1;    // < 0: derived 2.5 * Eq. 2 estimate (upper bound; stops earlier)
-  double windowStart = -1;  // kinetic window start after the peak; < 0: derived 0.25 * Eq. 2
-  double windowLength = -1; // < 0: derived 0.5 * Eq. 2
+  double slideTime = -1;    // < 0: derived 3 * Eq. 2 estimate (upper bound; stops earlier)
+  double windowStart = -1;  // kinetic window start after the peak; < 0: derived 0.5 * Eq. 2 (as the SBM)
+  double windowLength = -1; // < 0: derived 1.0 * Eq. 2 (as the SBM)
   bool stopWhenKnown = true;
   // Parallel
   std::string partitioner = "metis";
