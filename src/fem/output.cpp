@@ -142,8 +142,25 @@ void OutputFiles::createFieldDMs(PlateModel& model) {
   GF_CALL(DMCreateDS(stressDM_));
 }
 
+namespace {
+PetscLogEvent outputEvent() {
+  static PetscLogEvent event = 0;
+  if (!event) {
+    PetscClassId id = 0;
+    GF_CALL(PetscClassIdRegister("gradfric FEM output", &id));
+    GF_CALL(PetscLogEventRegister("GfFemOutput", id, &event));
+  }
+  return event;
+}
+}  // namespace
+
 void OutputFiles::writeSnapshot(PlateModel& model, Vec state, double t) {
   if (fieldsPath_.empty()) return;
+  struct EventScope {
+    PetscLogEvent e;
+    explicit EventScope(PetscLogEvent ev) : e(ev) { PetscLogEventBegin(e, 0, 0, 0, 0); }
+    ~EventScope() { PetscLogEventEnd(e, 0, 0, 0, 0); }
+  } scope(outputEvent());
   const std::string tmp = fieldsPath_ + ".tmp";
   if (!viewer_) {
     createFieldDMs(model);
