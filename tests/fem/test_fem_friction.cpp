@@ -42,8 +42,9 @@ TEST(FemFriction, PlateSettlesUnderPressureToThePenaltyPenetration) {
 }
 
 namespace {
-FemRunResult runCoarse(const Grading& grading) {
+FemRunResult runCoarse(const Grading& grading, double thetaDeg = 0.0) {
   FemParameters q = test::coarse(20, 20, 2);
+  q.thetaDeg = thetaDeg;
   PlateModel model(PETSC_COMM_WORLD, q, grading);
   return runPlateExperiment(model);
 }
@@ -87,4 +88,18 @@ TEST(FemFriction, PetscRungeKuttaByOptionAgreesWithVelocityVerlet) {
               verlet.peakTime, rk4.muS, rk4.peakTime);
   EXPECT_NEAR(rk4.muS, verlet.muS, 0.01 * verlet.muS);
   EXPECT_NEAR(rk4.peakTime, verlet.peakTime, 0.03 * verlet.peakTime);
+}
+
+TEST(FemFriction, PaperTrendsYoungsModulusGradientAndSlidingAngle) {
+  // Figure 9: an E gradient lowers mu_s too (detachment starts where E is larger).
+  const FemRunResult flat = runCoarse(test::noGrading());
+  const FemRunResult modulus = runCoarse(test::linear(GradedProperty::YoungsModulus, 0.3));
+  // Figure 8: with a friction gradient, sliding across it (90 deg) gives a larger mu_s than along it.
+  const FemRunResult along = runCoarse(test::linear(GradedProperty::Friction, 0.2), 0.0);
+  const FemRunResult across = runCoarse(test::linear(GradedProperty::Friction, 0.2), 90.0);
+  PetscPrintf(PETSC_COMM_WORLD, "E gradient 0.3: mu_s %.5f vs %.5f; friction gradient 0.2: mu_s %.5f at 0 deg, %.5f at 90 deg\n",
+              modulus.muS, flat.muS, along.muS, across.muS);
+  EXPECT_LT(modulus.muS, flat.muS * 0.95);
+  EXPECT_GT(across.muS, along.muS);
+  EXPECT_LT(across.muS, flat.muS);
 }
