@@ -137,7 +137,8 @@ OutputPlan planOutput(MPI_Comm comm, const std::string& output, bool overwrite, 
         mode = 0;  // nothing to resume: a fresh run (so a job script can always pass -ensemble_resume)
       }
       if (mode && !io::isHdf5File(mode == 1 ? partial : output))
-        error = "cannot resume: " + (mode == 1 ? partial : output) + " is not an HDF5 file";
+        error = "cannot resume: " + (mode == 1 ? partial : output) +
+                " is not an HDF5 file (start again with -output_overwrite)";
     } else if (exists(output)) {
       error = InputError("-output", output,
                          "a file that does not exist yet (it does: add -output_overwrite to replace it, or "
@@ -383,7 +384,14 @@ void runSpringBlockScene(MPI_Comm comm, RunParameters* record) {
       return io::ResultsFile::create(comm, plan.workPath, layout, table, scene);
     }
     GF_CALL(PetscPrintf(comm, "Resuming %s\n", plan.workPath.c_str()));
-    io::ResultsFile f = io::ResultsFile::open(comm, plan.workPath);
+    io::ResultsFile f = [&] {
+      try {
+        return io::ResultsFile::open(comm, plan.workPath);
+      } catch (const io::Hdf5Error& e) {
+        throw InputError("cannot resume " + plan.workPath + ": " + e.what() +
+                         " (start again with -output_overwrite)");
+      }
+    }();
     // The scene must be the one the file was started with.
     std::string differences;
     std::vector<io::Attribute> stored = f.sceneAttributes();
@@ -408,8 +416,8 @@ void runSpringBlockScene(MPI_Comm comm, RunParameters* record) {
         l.snapshotTimes.size() != layout.snapshotTimes.size())
       differences += "\n  layout (points, realisations, history capacity or maps)";
     if (!differences.empty())
-      throw InputError("cannot resume " + plan.workPath + ": the scene differs from the one it was started with:" +
-                       differences);
+      throw InputError("cannot resume " + plan.workPath + ": the scene differs from the one it was started with" +
+                       " (run that scene, or start again with -output_overwrite):" + differences);
     return f;
   }();
   runAttributes.push_back({"ranks", std::to_string(size), "", ""});
