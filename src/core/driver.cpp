@@ -45,7 +45,7 @@ int runDriver(int argc, char** argv, const char* help, const std::function<void(
     // Options are read identically on every rank, so every rank throws: rank 0 reports.
     if (rank == 0) std::fprintf(stderr, "gradfric: error: %s\n", e.what());
     status = 2;
-  } catch (const PetscError& e) {
+  } catch (const PetscCallError& e) {
     std::fprintf(stderr, "gradfric: [rank %d] %s\n", rank, e.what());
     std::fflush(stderr);
     MPI_Abort(comm, 3);  // other ranks may be waiting in a collective

@@ -4,7 +4,7 @@
 
 namespace gradfric {
 
-void throwPetscError(PetscErrorCode code, const char* expression, const char* file, int line) {
+void throwPetscCallError(PetscErrorCode code, const char* expression, const char* file, int line) {
   const char* text = nullptr;
   char* specific = nullptr;
   PetscErrorMessage(code, &text, &specific);
@@ -13,7 +13,7 @@ void throwPetscError(PetscErrorCode code, const char* expression, const char* fi
   if (text) message << " (" << text << ")";
   if (specific && specific[0]) message << ": " << specific;
   message << "\n  in " << expression << "\n  at " << file << ":" << line;
-  throw PetscError(code, message.str());
+  throw PetscCallError(code, message.str());
 }
 
 }  // namespace gradfric

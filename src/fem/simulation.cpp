@@ -6,14 +6,14 @@
 #include <cmath>
 #include <exception>
 
-// Outside namespace gradfric: PETSc's error macros call PetscError, hidden there by the class.
+// PETSc callbacks: exceptions stop at this boundary and become PETSc error codes.
 namespace {
 
 PetscErrorCode rhsCallback(TS, PetscReal t, Vec X, Vec F, void* ctx) {
   PetscFunctionBeginUser;
   try {
     static_cast<gradfric::fem::PlateModel*>(ctx)->rhs(t, X, F);
-  } catch (const gradfric::PetscError& e) {
+  } catch (const gradfric::PetscCallError& e) {
     SETERRQ(PETSC_COMM_SELF, e.code(), "%s", e.what());
   } catch (const std::exception& e) {
     SETERRQ(PETSC_COMM_SELF, PETSC_ERR_LIB, "%s", e.what());

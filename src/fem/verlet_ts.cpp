@@ -6,8 +6,7 @@
 
 #include <cstring>
 
-// PETSc callbacks live outside namespace gradfric: PETSc's error macros call a function named
-// PetscError, which gradfric::PetscError (the exception class) would hide.
+// PETSc callbacks of the project's TS type.
 namespace {
 
 struct VerletData {

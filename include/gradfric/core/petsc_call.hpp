@@ -1,6 +1,6 @@
 #pragma once
 // One throwing wrapper around PETSc calls. PETSc here is built as C, so PetscCallThrow does not
-// exist; GF_CALL turns a non-zero PetscErrorCode into a gradfric::PetscError carrying PETSc's
+// exist; GF_CALL turns a non-zero PetscErrorCode into a gradfric::PetscCallError carrying PETSc's
 // own message, the failing expression and where it was called.
 #include <petscsys.h>
 
@@ -9,28 +9,28 @@
 
 namespace gradfric {
 
-class PetscError : public std::runtime_error {
+class PetscCallError : public std::runtime_error {
 public:
-  PetscError(PetscErrorCode code, const std::string& what) : std::runtime_error(what), code_(code) {}
+  PetscCallError(PetscErrorCode code, const std::string& what) : std::runtime_error(what), code_(code) {}
   PetscErrorCode code() const { return code_; }
 
 private:
   PetscErrorCode code_;
 };
 
-[[noreturn]] void throwPetscError(PetscErrorCode code, const char* expression, const char* file, int line);
+[[noreturn]] void throwPetscCallError(PetscErrorCode code, const char* expression, const char* file, int line);
 
 }  // namespace gradfric
 
 #define GF_CALL(...)                                                                   \
   do {                                                                                 \
     PetscErrorCode gf_ierr_ = (__VA_ARGS__);                                           \
-    if (PetscUnlikely(gf_ierr_)) ::gradfric::throwPetscError(gf_ierr_, #__VA_ARGS__, __FILE__, __LINE__); \
+    if (PetscUnlikely(gf_ierr_)) ::gradfric::throwPetscCallError(gf_ierr_, #__VA_ARGS__, __FILE__, __LINE__); \
   } while (0)
 
 #define GF_CALL_MPI(...)                                                               \
   do {                                                                                 \
     int gf_mpierr_ = (__VA_ARGS__);                                                    \
     if (PetscUnlikely(gf_mpierr_ != MPI_SUCCESS))                                      \
-      ::gradfric::throwPetscError(PETSC_ERR_MPI, #__VA_ARGS__, __FILE__, __LINE__);    \
+      ::gradfric::throwPetscCallError(PETSC_ERR_MPI, #__VA_ARGS__, __FILE__, __LINE__);    \
   } while (0)

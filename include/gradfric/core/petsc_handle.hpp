@@ -1,6 +1,8 @@
 #pragma once
 // RAII ownership of PETSc objects: the destructor calls the matching XxxDestroy.
 #include <petscdm.h>
+#include <petscsection.h>
+#include <petscsf.h>
 #include <petscis.h>
 #include <petscmat.h>
 #include <petscts.h>
