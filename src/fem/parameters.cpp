@@ -49,6 +49,12 @@ FemParameters readFemParameters(MPI_Comm comm, RunParameters* record) {
   q.stiffnessDamping = o.real("stiffness_damping", 0.0, "s", "stiffness-proportional (Rayleigh beta) damping");
   if (auto dt = o.realIfSet("dt", "s", "time step", "dt_safety * stable step")) q.dt = *dt;
   q.dtSafety = o.real("dt_safety", q.dtSafety, "1", "time step as a fraction of the stable step");
+  q.dtCheck = o.flag("dt_check", true,
+                     "refuse a -fem_dt above the stable step (false: TESTING ONLY, to exercise the blow-up monitor)");
+  q.monitorEvery = static_cast<int>(
+      o.integer("monitor_every", q.monitorEvery, "1", "blow-up monitor: energy and finiteness check every n steps"));
+  q.monitorFactor = o.real("monitor_factor", q.monitorFactor, "1",
+                           "blow-up monitor: stop when kinetic + elastic energy exceeds this x (energy put in + p^2 L^2 H / 2E)");
   if (auto t = o.realIfSet("ramp_time", "s", "pressure ramp duration", "20 H/c_s")) q.rampTime = *t;
   if (auto t = o.realIfSet("settle_time", "s", "hold under pressure before sliding", "10 H/c_s")) q.settleTime = *t;
   if (auto t = o.realIfSet("slide_time", "s", "longest sliding duration", "3 * Eq. 2 peak time")) q.slideTime = *t;
@@ -89,6 +95,8 @@ FemParameters readFemParameters(MPI_Comm comm, RunParameters* record) {
   if (o.wasSet("slide_time")) o.requirePositive("slide_time", q.slideTime, "s");
   if (o.wasSet("kinetic_window_length")) o.requirePositive("kinetic_window_length", q.windowLength, "s");
   o.requireAtLeast("history_every", q.historyEvery, 1);
+  o.requireAtLeast("monitor_every", q.monitorEvery, 1);
+  o.requireRange("monitor_factor", q.monitorFactor, 1.0, 1e300, ">= 1");
 
   FemParameters derived = q;
   derived.resolveDerived();

@@ -33,6 +33,11 @@ struct FemParameters {
   // Time stepping
   double dt = 0;            // 0: safety * stable step
   double dtSafety = 0.9;
+  bool dtCheck = true;  // false (testing only): a dt above the stable step is accepted, to test the monitor
+  // Blow-up monitor: non-finite mu(t) or normal force any step; every monitorEvery steps, a
+  // non-finite state or kinetic + elastic energy above monitorFactor x (energy put in + reference).
+  int monitorEvery = 25;
+  double monitorFactor = 10.0;
   double rampTime = -1;     // < 0: derived 20 H/c_s
   double settleTime = -1;   // < 0: derived 10 H/c_s
   double slideTime = -1;    // < 0: derived 3 * Eq. 2 estimate (upper bound; stops earlier)

@@ -39,6 +39,8 @@ double chooseTimeStep(const FemParameters& params, const Grading& grading);
 
 struct ContactTotals {
   double fx = 0, fy = 0, fn = 0;  // total contact force on the plate [N]
+  double topZ = 0;                // sum over the top nodes of area * u_z [m^3] (pressure work -p dZ)
+  double driveX = 0, driveY = 0;  // force of the slider on the top in step 2 [N] (work: F . v dt)
   long long stick = 0, slip = 0, open = 0;
 };
 

@@ -4,6 +4,7 @@
 #include "gradfric/fem/plate_model.hpp"
 
 #include <functional>
+#include <stdexcept>
 #include <vector>
 
 namespace gradfric::fem {
@@ -21,12 +22,28 @@ struct FemRunResult {
   double dt = 0, stableDt = 0;
   long steps = 0;
   double wallPressure = 0, wallSliding = 0;  // seconds
+  // Energy balance, sampled by the blow-up monitor every -fem_monitor_every steps and at the end:
+  // time since the start of the run [s]; kinetic + elastic energy of the plate [J]; energy put in
+  // [J] = work of the pressure (-integral p dZ, Z = sum of area * u_z over the top) + work of the
+  // slider (integral F . v dt) + the kinetic energy given to the top at the start of sliding.
+  // Friction, damping and the penalty springs' own energy make the difference (energy <= put in,
+  // up to the integrator's O(dt^2) energy error).
+  std::vector<double> energyTime, energy, energyIn;
+};
+
+// Thrown (on every rank: the monitored values are global) when a run goes unstable: a non-finite
+// mu(t), normal force or state, or energy growing without bound. what() names the quantity, the
+// step and time, and the likely cause.
+class BlowUpError : public std::runtime_error {
+public:
+  using std::runtime_error::runtime_error;
 };
 
 // Called after each step of step 2 with the time since the start of sliding and the state.
 using StepObserver = std::function<void(double tSliding, Vec state)>;
 
-// Runs the experiment on a fresh TS (type gfverlet unless -ts_type says otherwise).
+// Runs the experiment on a fresh TS (type gfverlet unless -ts_type says otherwise). Throws
+// BlowUpError when the monitor sees the run go unstable (no result is returned, nothing written).
 FemRunResult runPlateExperiment(PlateModel& model, const StepObserver& observer = {});
 
 // Builds the TS used by the experiment and the tests: fixed step model.timeStep(), RHS of the
