@@ -5,6 +5,8 @@
 #   bash scripts/reproduce_paper.sh [sbm] [fem]      (default: both)
 #
 # Needs the build (scripts/setup.sh). About 40 minutes on 2 cores. NP=ranks (default 2).
+# SBM_SCENES overrides the list of SBM scenes; SBM_EXTRA adds options to every SBM run (e.g.
+# "-ensemble_realisations 10").
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
@@ -24,9 +26,11 @@ timed() {  # timed <label> <command...>: runs it, appends "label seconds" to the
 }
 
 sbm() {
-  for scene in sbm_fig2 sbm_fig4 sbm_fig5 sbm_fig6 sbm_fig7 sbm_fig8 sbm_fig9 sbm_fig10 sbm_fig11 sbm_fig12; do
+  local scenes=${SBM_SCENES:-sbm_fig2 sbm_fig4 sbm_fig5 sbm_fig6 sbm_fig7 sbm_fig8 sbm_fig9 sbm_fig10 sbm_fig11 sbm_fig12}
+  for scene in $scenes; do
+    # shellcheck disable=SC2086
     timed "$scene" mpiexec --oversubscribe -n "$np" "$here/build/drivers/gradfric" \
-      -options_file "$here/input/$scene.opts" -output "$out/$scene.h5" -output_overwrite
+      -options_file "$here/input/$scene.opts" -output "$out/$scene.h5" -output_overwrite ${SBM_EXTRA:-}
   done
 }
 

@@ -48,7 +48,7 @@ Parameters readParameters(MPI_Comm comm, RunParameters* record, const Grading& g
   p.sigmaStatic = o.real("sigma_s", p.sigmaStatic, "1", "relative standard deviation of the local mu_s (0: no dispersion)");
   p.sigmaKinetic = o.real("sigma_k", p.sigmaKinetic, "1", "relative standard deviation of the local mu_k (0: no dispersion)");
   p.blocksPerSide = static_cast<int>(o.integer("N", p.blocksPerSide, "1", "blocks per side N_b"));
-  const std::string integrator = o.choice("integrator", "rk4", {"rk4", "verlet"},
+  const std::string integrator = o.choice("integrator", "verlet", {"rk4", "verlet"},
                                           "time integrator, fixed step: classical RK4 (4 force evaluations a step) or velocity Verlet (1)");
   p.integrator = integrator == "verlet" ? Integrator::VelocityVerlet : Integrator::RK4;
 

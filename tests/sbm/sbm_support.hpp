@@ -10,13 +10,14 @@ namespace gradfric::sbm::testing {
 
 inline double naturalFrequency(const Parameters& p) { return std::sqrt(p.axialStiffness(p.youngsModulus) / p.blockMass()); }
 
-inline Parameters paperParameters(int blocksPerSide, double sigma, const Grading& grading = {}, double dtSafety = 0.25,
+// dtSafety > 0: that fraction of the stability limit; 0: the shipped default step.
+inline Parameters paperParameters(int blocksPerSide, double sigma, const Grading& grading = {}, double dtSafety = 0.0,
                                   double dampingFactor = 0.1) {
   Parameters p;
   p.blocksPerSide = blocksPerSide;
   p.sigmaStatic = p.sigmaKinetic = sigma;
   p.damping = dampingFactor * naturalFrequency(p);
-  p.timeStep = dtSafety * stableTimeStep(p, grading);
+  p.timeStep = dtSafety > 0 ? dtSafety * stableTimeStep(p, grading) : defaultTimeStep(p, grading);
   return p;
 }
 
