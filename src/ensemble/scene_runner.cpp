@@ -353,8 +353,29 @@ void runSpringBlockScene(MPI_Comm comm, RunParameters* record) {
   // ---- What this run does. ----
   record->print(comm, "gradfric spring-block scene: resolved parameters");
   GF_CALL(PetscPrintf(comm, "Active effects:\n"));
-  for (const auto& e : sbm::activeEffects(parameters, baseGrading, request))
-    GF_CALL(PetscPrintf(comm, "  - %s\n", e.c_str()));
+  {
+    // The effects of the most strongly graded point (the sweep line below lists the others).
+    Grading shown = baseGrading;
+    sbm::Parameters shownParameters = parameters;
+    double largest = -1.0;
+    for (const auto& q : sweep.points)
+      if (q.graded() && std::fabs(q.delta) > largest) {
+        largest = std::fabs(q.delta);
+        shown = gradingOf(q, baseGrading.bands);
+        shownParameters.slidingAngle = q.theta;
+        shownParameters.sigmaStatic = q.sigma;
+        shownParameters.sigmaKinetic = q.sigmaKinetic;
+      }
+    if (largest < 0 && !sweep.points.empty()) {
+      shown = gradingOf(sweep.points[0], baseGrading.bands);
+      shownParameters.slidingAngle = sweep.points[0].theta;
+      shownParameters.sigmaStatic = sweep.points[0].sigma;
+      shownParameters.sigmaKinetic = sweep.points[0].sigmaKinetic;
+    }
+    if (P > 1) GF_CALL(PetscPrintf(comm, "  (for the sweep point with the strongest grading)\n"));
+    for (const auto& e : sbm::activeEffects(shownParameters, shown, request))
+      GF_CALL(PetscPrintf(comm, "  - %s\n", e.c_str()));
+  }
   {
     std::string axes;
     for (const auto& a : sweep.axes) axes += (axes.empty() ? "" : " x ") + a;
