@@ -189,7 +189,7 @@ int historyCapacity(const sbm::Parameters& p, const sbm::Request& q) {
 }
 
 void printStatistics(MPI_Comm comm, const Sweep& sweep, int realisations, const std::vector<PointStatistics>& stats,
-                     bool kinetic) {
+                     bool kinetic, bool paired) {
   if (sweep.points.size() == 1 && realisations == 1) {
     const auto& s = stats[0];
     GF_CALL(PetscPrintf(comm, "\nResult: mu_s = %.6f, mu_k = %.6f%s\n", s.muStatic.mean, s.muKinetic.mean,
@@ -218,7 +218,9 @@ void printStatistics(MPI_Comm comm, const Sweep& sweep, int realisations, const 
   if (kinetic) table("Global kinetic friction mu_k", false);
   GF_CALL(PetscPrintf(comm,
                       "  rel. var. = (mu - mu_0)/mu_0 against the non-graded point of the same angle and dispersion,"
-                      " +- the error propagated from both standard errors\n"));
+                      " +- %s\n",
+                      paired ? "the error of the paired differences (common random numbers)"
+                             : "the error propagated from both standard errors"));
 }
 
 }  // namespace
@@ -244,6 +246,10 @@ void runSpringBlockScene(MPI_Comm comm, RunParameters* record) {
                                   "sweep of the graded property (empty: -grading_property alone)");
   lists.profile = ens.choiceList("profile", {}, {"none", "linear", "triangular"},
                                  "sweep of the grading profile (empty: -grading_profile alone)");
+  const bool commonStreams = ens.flag(
+      "common_streams", false,
+      "common random numbers: realisation r of every sweep point draws from the stream (seed, 0, r); the "
+      "relative variations then use paired errors");
   const bool history = ens.flag("history", true, "store the mu(t) history of every realisation");
   int interactive = rank == 0 ? isatty(STDOUT_FILENO) : 0;
   GF_CALL_MPI(MPI_Bcast(&interactive, 1, MPI_INT, 0, comm));
@@ -485,7 +491,8 @@ void runSpringBlockScene(MPI_Comm comm, RunParameters* record) {
       if (index >= static_cast<long>(tasks.size())) break;
       const Task task = tasks[index];
       try {
-        const StreamKey key{static_cast<std::uint64_t>(seed), static_cast<std::uint32_t>(task.point),
+        const StreamKey key{static_cast<std::uint64_t>(seed),
+                            static_cast<std::uint32_t>(commonStreams ? 0 : task.point),
                             static_cast<std::uint32_t>(task.realisation)};
         GF_CALL(PetscLogEventBegin(events.task, 0, 0, 0, 0));
         const auto taskStart = std::chrono::steady_clock::now();
@@ -559,7 +566,7 @@ void runSpringBlockScene(MPI_Comm comm, RunParameters* record) {
     std::vector<unsigned char> done(flags.begin(), flags.end());
     auto confirmed = file.readPeakConfirmed();
     stats = pointStatistics(R, sweep.reference, file.readRealisationReal("mu_s"), file.readRealisationReal("mu_k"),
-                            confirmed, done);
+                            confirmed, done, commonStreams);
     std::vector<std::pair<std::string, std::vector<double>>> real;
     std::vector<std::pair<std::string, std::vector<int>>> integer;
     auto column = [&](const char* name, auto get) {
@@ -609,7 +616,7 @@ void runSpringBlockScene(MPI_Comm comm, RunParameters* record) {
   double taskSecondsAll = 0.0;
   GF_CALL_MPI(MPI_Allreduce(&ranHere, &ranAll, 1, MPI_LONG, MPI_SUM, comm));
   GF_CALL_MPI(MPI_Allreduce(&taskSecondsHere, &taskSecondsAll, 1, MPI_DOUBLE, MPI_SUM, comm));
-  printStatistics(comm, sweep, R, stats, request.kineticFriction);
+  printStatistics(comm, sweep, R, stats, request.kineticFriction, commonStreams);
   // busy: the share of rank-seconds spent inside tasks (the rest: start-up, file writes, waiting
   // for the last task, statistics).
   GF_CALL(PetscPrintf(comm,

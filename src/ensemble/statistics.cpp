@@ -108,11 +108,30 @@ RelativeVariation relativeVariation(const Summary& point, const Summary& referen
   return r;
 }
 
+RelativeVariation pairedRelativeVariation(const std::vector<double>& point, const std::vector<double>& reference) {
+  std::vector<double> x, y;
+  for (size_t i = 0; i < point.size() && i < reference.size(); ++i)
+    if (std::isfinite(point[i]) && std::isfinite(reference[i])) {
+      x.push_back(point[i]);
+      y.push_back(reference[i]);
+    }
+  RelativeVariation r{kNaN, kNaN};
+  if (x.empty()) return r;
+  const Summary sx = summarise(x), sy = summarise(y);
+  const double m = sx.mean, m0 = sy.mean;
+  r.value = (m - m0) / m0;
+  if (x.size() < 2) return r;
+  std::vector<double> z(x.size());
+  for (size_t i = 0; i < x.size(); ++i) z[i] = x[i] / m0 - m * y[i] / (m0 * m0);
+  r.error = summarise(z).stdError;
+  return r;
+}
+
 std::vector<PointStatistics> pointStatistics(int realisations, const std::vector<int>& reference,
                                              const std::vector<double>& muStatic,
                                              const std::vector<double>& muKinetic,
                                              const std::vector<signed char>& peakConfirmed,
-                                             const std::vector<unsigned char>& done) {
+                                             const std::vector<unsigned char>& done, bool paired) {
   const size_t points = reference.size();
   const size_t R = static_cast<size_t>(realisations);
   if (muStatic.size() != points * R || muKinetic.size() != points * R || peakConfirmed.size() != points * R ||
@@ -139,6 +158,19 @@ std::vector<PointStatistics> pointStatistics(int realisations, const std::vector
       continue;
     }
     const bool self = static_cast<size_t>(ref) == p;
+    if (paired && !self) {
+      // Realisation r of both points, where both finished.
+      auto column = [&](const std::vector<double>& table, size_t point, size_t other) {
+        std::vector<double> v(R, kNaN);
+        for (size_t r = 0; r < R; ++r)
+          if (done[point * R + r] && done[other * R + r]) v[r] = table[point * R + r];
+        return v;
+      };
+      const size_t q = static_cast<size_t>(ref);
+      out[p].muStaticRelative = pairedRelativeVariation(column(muStatic, p, q), column(muStatic, q, p));
+      out[p].muKineticRelative = pairedRelativeVariation(column(muKinetic, p, q), column(muKinetic, q, p));
+      continue;
+    }
     out[p].muStaticRelative = relativeVariation(out[p].muStatic, out[ref].muStatic, self);
     out[p].muKineticRelative = relativeVariation(out[p].muKinetic, out[ref].muKinetic, self);
   }

@@ -107,3 +107,42 @@ TEST(EnsembleStatistics, PointTableCountsOnlyFinishedRealisations) {
   EXPECT_TRUE(std::isnan(orphan[1].muStaticRelative.value));
   EXPECT_THROW(pointStatistics(2, {0, 0}, muS, muK, confirmed, done), std::invalid_argument);
 }
+
+TEST(EnsembleStatistics, PairedRelativeVariation) {
+  // The point is exactly 0.8 x its reference realisation by realisation: the ratio is known
+  // without error from the pairs, while the independent formula sees both spreads.
+  const std::vector<double> y = {0.90, 0.93, 0.91, 0.95, 0.92};
+  std::vector<double> x;
+  for (double v : y) x.push_back(0.8 * v);
+  const RelativeVariation paired = pairedRelativeVariation(x, y);
+  EXPECT_NEAR(paired.value, -0.2, 1e-14);
+  EXPECT_LT(paired.error, 1e-14);
+  const RelativeVariation independent = relativeVariation(summarise(x), summarise(y), false);
+  EXPECT_NEAR(independent.value, -0.2, 1e-14);
+  EXPECT_GT(independent.error, 1e-3);
+  // Uncorrelated noise on top: the paired error is the standard error of z_r.
+  const std::vector<double> noisy = {0.72, 0.75, 0.73, 0.74, 0.76};
+  const RelativeVariation p2 = pairedRelativeVariation(noisy, y);
+  const double m = summarise(noisy).mean, m0 = summarise(y).mean;
+  std::vector<double> z;
+  for (size_t i = 0; i < y.size(); ++i) z.push_back(noisy[i] / m0 - m * y[i] / (m0 * m0));
+  EXPECT_NEAR(p2.error, summarise(z).stdError, 1e-15);
+  // Pairs with a NaN on either side are dropped; fewer than two pairs: no error estimate.
+  const RelativeVariation p3 = pairedRelativeVariation({0.8, kNaN, 0.7}, {1.0, 1.0, kNaN});
+  EXPECT_NEAR(p3.value, -0.2, 1e-15);
+  EXPECT_TRUE(std::isnan(p3.error));
+}
+
+TEST(EnsembleStatistics, PointTableUsesPairsWhenAsked) {
+  // Point 1 = 0.8 x point 0 realisation by realisation; realisation 2 of point 0 unfinished.
+  const std::vector<double> muS = {1.0, 0.9, 0.95, 0.8, 0.72, 0.76};
+  const std::vector<double> muK = {0.6, 0.6, 0.6, 0.48, 0.48, 0.48};
+  const std::vector<signed char> confirmed(6, 1);
+  const std::vector<unsigned char> done = {1, 1, 0, 1, 1, 1};
+  const auto paired = pointStatistics(3, {0, 0}, muS, muK, confirmed, done, true);
+  EXPECT_NEAR(paired[1].muStaticRelative.value, -0.2, 1e-14);  // over the common pairs 0 and 1
+  EXPECT_LT(paired[1].muStaticRelative.error, 1e-14);
+  EXPECT_EQ(paired[0].muStaticRelative.value, 0.0);
+  const auto independent = pointStatistics(3, {0, 0}, muS, muK, confirmed, done, false);
+  EXPECT_GT(independent[1].muStaticRelative.error, 1e-3);
+}

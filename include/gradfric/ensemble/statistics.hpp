@@ -31,6 +31,13 @@ struct RelativeVariation {
 };
 RelativeVariation relativeVariation(const Summary& point, const Summary& reference, bool isReference);
 
+// The same for paired samples (common random numbers: realisation r of the point and of its
+// reference share their random draws). First-order (delta-method) error from the pairs:
+//   z_r = x_r / m_0 - m y_r / m_0^2,  e = std(z) / sqrt(n),
+// over the realisations finite in both x (the point) and y (the reference). Needs n >= 2 pairs,
+// else NaN error.
+RelativeVariation pairedRelativeVariation(const std::vector<double>& point, const std::vector<double>& reference);
+
 // Everything the results file and the final table report for one sweep point.
 struct PointStatistics {
   Summary muStatic, muKinetic;
@@ -40,11 +47,12 @@ struct PointStatistics {
 };
 
 // Tables are P x R, row-major. reference[p] is the non-graded point of p (p itself for a
-// non-graded point) or -1. Only finished realisations (done[i] != 0) count.
+// non-graded point) or -1. Only finished realisations (done[i] != 0) count. paired: the relative
+// variations use pairedRelativeVariation (scenes run with common random numbers).
 std::vector<PointStatistics> pointStatistics(int realisations, const std::vector<int>& reference,
                                              const std::vector<double>& muStatic,
                                              const std::vector<double>& muKinetic,
                                              const std::vector<signed char>& peakConfirmed,
-                                             const std::vector<unsigned char>& done);
+                                             const std::vector<unsigned char>& done, bool paired = false);
 
 }  // namespace gradfric::ensemble
