@@ -19,6 +19,12 @@ LABELS = {
     "dt_verlet": "time step, velocity Verlet",
     "N": "lattice size N_b (vs the largest)",
     "R": "realisations R (statistical error)",
+    "dt_gfverlet": "FEM dt safety, gfverlet (50x50x2)",
+    "dt_ssp": "FEM dt safety, PETSc SSP (50x50x2)",
+    "dt_fine_mesh": "FEM dt safety, gfverlet (100x100x5)",
+    "kn": "FEM k_n factor (vs 30x default)",
+    "kt": "FEM k_t factor (vs 30x default)",
+    "mesh": "FEM mesh nx (vs 100x100x5)",
 }
 
 
