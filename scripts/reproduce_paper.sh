@@ -40,12 +40,14 @@ fem_run() {  # fem_run <label> <scene> [options...]
     -options_file "$here/input/$scene.opts" -fem_output "$out/$label.h5" -fem_output_overwrite "$@"
 }
 
+# FEM_DELTAS overrides the Delta values of the FEM sweeps (default -0.4 -0.2 0 0.2 0.4).
 fem() {
+  local deltas=${FEM_DELTAS:--0.4 -0.2 0 0.2 0.4}
   for h in H025 H050 H100; do fem_run "fem_fig2_$h" "fem_fig2_$h"; done
-  for d in -0.4 -0.2 0 0.2 0.4; do
+  for d in $deltas; do
     fem_run "fem_fig4_d$d" fem_fig4_friction -grading_delta "$d"
     fem_run "fem_fig9_d$d" fem_fig9_modulus -grading_delta "$d"
-    fem_run "fem_fig11_d$d" fem_fig11_triangular -grading_delta "$d"
+    [ "$d" != 0 ] && fem_run "fem_fig11_d$d" fem_fig11_triangular -grading_delta "$d"
   done
   for d in 0 0.2 0.4; do fem_run "fem_fig8_theta90_d$d" fem_fig8_angle -grading_delta "$d"; done
 }
@@ -59,7 +61,7 @@ plots() {
   [ -f "$out/sbm_fig6.h5" ] && $py "$plot" "$out/sbm_fig6.h5" --out "$figures" --prefix fig6
   [ -f "$out/sbm_fig8.h5" ] && $py "$plot" "$out/sbm_fig8.h5" --fem $(fems "fem_fig8_theta90_d*.h5") --out "$figures" --prefix fig8
   [ -f "$out/sbm_fig9.h5" ] && $py "$plot" "$out/sbm_fig9.h5" --fem $(fems "fem_fig9_d*.h5") --out "$figures" --prefix fig9_10
-  [ -f "$out/sbm_fig11.h5" ] && $py "$plot" "$out/sbm_fig11.h5" --fem $(fems "fem_fig11_d*.h5") --out "$figures" --prefix fig11
+  [ -f "$out/sbm_fig11.h5" ] && $py "$plot" "$out/sbm_fig11.h5" --fem $(fems "fem_fig11_d*.h5") $(fems "fem_fig4_d0.h5") --out "$figures" --prefix fig11
   [ -f "$out/sbm_fig12.h5" ] && $py "$plot" "$out/sbm_fig12.h5" --out "$figures" --prefix fig12
   true
 }
