@@ -304,7 +304,8 @@ def main(argv=None):
 
     written = [plot_histories(ensemble, fems, prefix + "_mu_t.png")]
     if ensemble is not None:
-        if len(set(ensemble.delta)) > 1:
+        # A relative variation needs a non-graded reference point in the sweep.
+        if len(set(ensemble.delta)) > 1 and np.isfinite(ensemble.statistic("mu_s_relative")).sum() > 1:
             written.append(plot_variation(ensemble, fems, prefix + "_variation.png"))
         written.append(plot_first_slip(ensemble, prefix + "_first_slip.png"))
         point = default_point(ensemble) if args.point is None else args.point

@@ -55,7 +55,7 @@ fem() {
 plots() {
   local py=/usr/bin/python3 plot=$here/scripts/gradfric_plot.py
   fems() { ls "$out"/$1 2>/dev/null || true; }
-  [ -f "$out/sbm_fig2.h5" ] && $py "$plot" "$out/sbm_fig2.h5" --fem $(fems "fem_fig2_H*.h5") --out "$figures" --prefix fig2
+  [ -f "$out/sbm_fig2.h5" ] && $py "$plot" "$out/sbm_fig2.h5" --fem $(fems "fem_fig2_H???.h5") --out "$figures" --prefix fig2
   [ -f "$out/sbm_fig4.h5" ] && $py "$plot" "$out/sbm_fig4.h5" --fem $(fems "fem_fig4_d*.h5") --out "$figures" --prefix fig4_7
   [ -f "$out/sbm_fig5.h5" ] && $py "$plot" "$out/sbm_fig5.h5" --out "$figures" --prefix fig5
   [ -f "$out/sbm_fig6.h5" ] && $py "$plot" "$out/sbm_fig6.h5" --out "$figures" --prefix fig6
