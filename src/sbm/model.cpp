@@ -28,7 +28,7 @@ const LogEvents& logEvents() {
     PetscClassId id;
     GF_CALL(PetscClassIdRegister("SpringBlock", &id));
     GF_CALL(PetscLogEventRegister("SbmSetup", id, &e.setup));
-    GF_CALL(PetscLogEventRegister("SbmRK4Step", id, &e.step));
+    GF_CALL(PetscLogEventRegister("SbmStep", id, &e.step));
     GF_CALL(PetscLogEventRegister("SbmSnapshot", id, &e.snapshot));
     return e;
   }();

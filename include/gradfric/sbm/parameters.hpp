@@ -63,7 +63,7 @@ struct Request {
   double peakHold = 0.0;              // or this long without a new maximum once all blocks slid [s]
   double endTime = 0.0;               // if > 0: run exactly this long, whatever is known
   double maxTime = 0.0;               // give up (peak unconfirmed) after this long [s]
-  int energyCheckInterval = 50;      // steps between two energy-balance checks of the monitor
+  int energyCheckInterval = 500;     // steps between two energy-balance checks (and at the end)
 };
 
 // Reads -sbm_* (physics, numerics) and the observable options; validates before any work.
