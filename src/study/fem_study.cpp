@@ -135,7 +135,7 @@ void runFiniteElementStudy(MPI_Comm comm, RunParameters* record) {
       "mesh_estimate", "", "meshes too big to run through: time a short run and estimate the full cost (e.g. 200x200x10)");
   const double meshSafety = o.real("mesh_dt_safety", 0.3, "1",
                                    "dt safety of the mesh ladder (small, so that the dt error does not mask the mesh error)");
-  const PetscInt estimateSteps = o.integer("mesh_estimate_steps", 40, "1", "steps of that short run");
+  const PetscInt estimateSteps = o.integer("mesh_estimate_steps", 40, 1, 1000000, "1", "steps of that short run");
   const auto integrators = o.choiceList("integrators", {"gfverlet", "rk4", "ssp"}, {"gfverlet", "rk4", "ssp"},
                                         "integrators of the dt ladder (gfverlet first: its finest rung is the reference)");
   auto safeties = o.realList("dt_safety", {0.1, 0.2, 0.3, 0.5, 0.7, 0.9}, "1",

@@ -68,11 +68,11 @@ void runSpringBlockStudy(MPI_Comm comm, RunParameters* record) {
   const auto integrators = o.choiceList("integrators", {"rk4", "verlet"}, {"rk4", "verlet"}, "integrators of the dt ladder");
   auto dts = o.realList("dt", {1e-9, 3e-9, 1e-8, 3e-8, 1e-7, 3e-7, 1e-6}, "s",
                         "time-step ladder (rungs above an integrator's stability limit are replaced by 0.98 x the limit)");
-  const PetscInt dtRealisations = o.integer("dt_realisations", 3, "1", "realisations (same seeds on every rung) of the dt ladder");
+  const PetscInt dtRealisations = o.integer("dt_realisations", 3, 1, 100000, "1", "realisations (same seeds on every rung) of the dt ladder");
   const auto sizes = o.realList("N", {30, 60, 120, 240}, "1", "lattice-size ladder N_b (finest is the reference)");
-  const PetscInt sizeRealisations = o.integer("N_realisations", 8, "1", "realisations per lattice size");
-  const PetscInt maxRealisations = o.integer("R_max", 32, "1", "sample size of the realisations ladder (R = 1, 2, 4, ... R_max)");
-  const PetscInt seed = o.integer("seed", 1, "1", "seed of the realisations' random streams");
+  const PetscInt sizeRealisations = o.integer("N_realisations", 8, 1, 100000, "1", "realisations per lattice size");
+  const PetscInt maxRealisations = o.integer("R_max", 32, 1, 1000000, "1", "sample size of the realisations ladder (R = 1, 2, 4, ... R_max)");
+  const PetscInt seed = o.integer("seed", 1, 0, PETSC_MAX_INT, "1", "seed of the realisations' random streams");
   OptionReader out(comm, "", "Results file", record);
   const std::string output = out.text("output", "gradfric_study.h5", "study results file (HDF5)");
   const bool overwrite = out.flag("output_overwrite", false, "replace an existing results file");
