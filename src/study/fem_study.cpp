@@ -67,6 +67,8 @@ std::vector<std::array<int, 3>> parseMeshes(const OptionReader& o, const std::st
     std::stringstream s(item);
     if (!(s >> m[0] >> x1 >> m[1] >> x2 >> m[2]) || x1 != 'x' || x2 != 'x' || m[0] < 1 || m[1] < 1 || m[2] < 1)
       throw InputError(o.fullName(name), text, "comma-separated meshes nx x ny x nz, e.g. 25x25x1,50x50x2");
+    if (double(m[0]) * m[1] * m[2] > 2e7)  // as -fem_nx/ny/nz: memory before any work
+      throw InputError(o.fullName(name), item, "meshes of at most 2e7 hexahedra");
     meshes.push_back(m);
   }
   return meshes;
@@ -157,7 +159,7 @@ void runFiniteElementStudy(MPI_Comm comm, RunParameters* record) {
   o.requireAtLeast("mesh_estimate_steps", estimateSteps, 2);
   for (auto* list : {&safeties, &safetiesOther, &paperSafeties})
     for (double s : *list) o.requireRange("dt_safety", s, 1e-6, 1.0, "0 < safety <= 1");
-  for (double f : factors) o.requirePositive("penalty_factors", f, "1");
+  for (double f : factors) o.requireRange("penalty_factors", f, 1e-6, 1e6, "1e-6 <= factor <= 1e6");
   o.requireRange("penalty_dt_safety", penaltySafety, 1e-6, 1.0, "0 < safety <= 1");
   o.requireRange("mesh_dt_safety", meshSafety, 1e-6, 1.0, "0 < safety <= 1");
   if (dtSet) throw InputError("-fem_dt", "(set)", "unset: the study sets the step as a fraction of the stable step");

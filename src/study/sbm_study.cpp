@@ -2,6 +2,7 @@
 #include "gradfric/study/study_file.hpp"
 
 #include "gradfric/core/input_error.hpp"
+#include "gradfric/core/run_limits.hpp"
 #include "gradfric/core/petsc_call.hpp"
 #include "gradfric/io/hdf5_handle.hpp"
 #include "gradfric/physics/grading_options.hpp"
@@ -82,7 +83,9 @@ void runSpringBlockStudy(MPI_Comm comm, RunParameters* record) {
   o.requireAtLeast("R_max", maxRealisations, 2);
   for (double dt : dts) o.requirePositive("dt", dt, "s");
   for (double n : sizes)
-    if (n < 2 || n != std::floor(n)) throw InputError(o.fullName("N"), formatReal(n), "whole numbers >= 2");
+    if (n < 2 || n > 4096 || n != std::floor(n)) throw InputError(o.fullName("N"), formatReal(n), "whole numbers 2 <= N <= 4096");
+  for (double dt : dts)  // before any work: a rung of 1e-300 s would never finish
+    requireRunLength(record, request.maxTime, dt, base.automaticTimeStep, o.fullName("dt"), {}, {}, "t_max");
   if (access(output.c_str(), F_OK) == 0 && !overwrite)
     throw InputError("-output", output, "a file that does not exist yet (add -output_overwrite to replace it)");
   checkUnusedOptions(comm, {"study_", "sbm_", "grading_", "output"});
