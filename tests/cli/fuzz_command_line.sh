@@ -11,9 +11,9 @@ mpiexec=${4:-mpiexec}
 G=$bin/gradfric
 F=$bin/gradfric-fem
 S=$bin/gradfric-study
-# The plate's physical options (-sbm_E, -fem_E ... until they move to -plate_E).
-SP=-sbm_
-FP=-fem_
+# The plate's physical options (one record for both models since the rename).
+SP=-plate_
+FP=-plate_
 
 # A single process needs no Open MPI daemon: starts faster.
 export OMPI_MCA_ess_singleton_isolated=1
@@ -126,6 +126,9 @@ sbm)
   run 2 ${SP}rho "$G" ${SP}rho 1e-300
   run 2 ${SP}theta "$G" ${SP}theta -inf
   run 2 ${SP}p "$G" ${SP}p 1e300
+  run 2 -plate_nu "$G" -plate_nu 0.3
+  run 2 "-sbm_E = 1e7: .*use -plate_E" "$G" -sbm_E 1e7
+  run 2 "did you mean -plate_mu_s" "$G" -plate_mus 0.6
   # Lists and choices.
   run 2 -ensemble_delta "$G" -grading_profile linear -ensemble_delta 0,inf
   run 2 -ensemble_delta "$G" -grading_profile linear -ensemble_delta 0,,x
@@ -202,6 +205,8 @@ fem)
   run 2 ${FP}mu_s "$F" ${FP}mu_s 1e300
   run 2 ${FP}H "$F" ${FP}H 1e-300
   run 2 ${FP}nu "$F" ${FP}nu 0.5
+  run 2 "-fem_H = 0.1: .*use -plate_H" "$F" -fem_H 0.1
+  run 2 "did you mean -plate_L" "$F" -plat_L 0.1
   run 2 -grading_profile "$F" -grading_delta 0.2
   run 2 -grading_bands "$F" -grading_profile linear -grading_delta 0.1 -grading_bands 0
   run 2 -fem_compare_seed "$F" -fem_compare_seed -1
