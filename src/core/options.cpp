@@ -70,12 +70,6 @@ const char* kRealAllowed = "a finite real number (|x| <= 1.8e308; 0 or |x| >= 2.
 
 std::vector<std::string> knownOptionNames() { return {knownNames().begin(), knownNames().end()}; }
 
-std::string formatReal(double value) {
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, "%.10g", value);
-  return buffer;
-}
-
 void RunParameters::add(ResolvedOption option) {
   for (auto& existing : options_)
     if (existing.name == option.name) {

@@ -105,11 +105,11 @@ sbm)
   run 2 -sbm_t_max "$G" -sbm_t_max nan
   run 2 -sbm_t_end "$G" -sbm_t_end 1e300
   run 2 -sbm_t_end "$G" -sbm_t_end -1
-  run 2 -sbm_history_interval "$G" -sbm_history_interval -1e-300
-  run 2 -sbm_muk_width "$G" -sbm_muk_width inf
+  run 2 -friction_history_interval "$G" -friction_history_interval -1e-300
+  run 2 -friction_muk_width "$G" -friction_muk_width inf
   run 2 -sbm_dt_safety "$G" -sbm_dt_safety 0
   run 2 -sbm_dt_safety "$G" -sbm_dt_safety nan
-  run 2 -sbm_peak_drop "$G" -sbm_peak_drop 2
+  run 2 -friction_peak_drop "$G" -friction_peak_drop 2
   run 2 -sbm_sigma_s "$G" -sbm_sigma_s inf
   run 2 -sbm_gamma "$G" -sbm_gamma 1e300
   run 2 -grading_delta "$G" -grading_profile linear -grading_delta nan
@@ -136,7 +136,7 @@ sbm)
   run 2 -ensemble_sigma "$G" -ensemble_sigma 0,1e308
   run 2 -sbm_snapshot_times "$G" -sbm_snapshot_times 1e-4,nan
   run 2 -ensemble_property "$G" -grading_profile linear -ensemble_property E,bogus
-  run 2 -sbm_observables "$G" -sbm_observables mu_s,bogus
+  run 2 -friction_observables "$G" -friction_observables mu_s,bogus
   run 2 -sbm_integrator "$G" -sbm_integrator euler
   run 2 -grading_profile "$G" -grading_profile ""
   run 2 -model "$G" -model fem
@@ -215,7 +215,7 @@ fem)
   run 2 -fem_nx "$F" --fem_nx 0
   run 2 "-options_file_yaml = $in/bad.yaml" "$F" -options_file_yaml "$in/bad.yaml"
   run 2 "includes itself" "$F" -options_file "$in/a.opts"
-  run 0 "-fem_kinetic_window_length" "$F" --help
+  run 0 "-fem_nx" "$F" --help
   run 0 "^gradfric [0-9.]+ \\(commit" "$F" -version
   ;;
 study)
