@@ -10,6 +10,7 @@
 #include <petscsys.h>
 
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -32,8 +33,12 @@ std::string messageOf(const std::function<void()>& f) {
   return "";
 }
 
+// The files go to a folder of their own under the working directory (the build tree under ctest).
+const std::string kFolder = "test_command_line_files/";
+
 std::string writeFile(const std::string& name, const std::string& content) {
-  const std::string path = "test_command_line_" + name;
+  std::filesystem::create_directories(kFolder);
+  const std::string path = kFolder + name;
   std::ofstream(path, std::ios::binary) << content;
   return path;
 }
@@ -118,10 +123,10 @@ TEST(CommandLine, OptionsFilesAreCheckedBeforePetscReadsThem) {
   EXPECT_NE(checkFile("-options_file_yaml", writeFile("bad.yaml", "a: [1, 2\nb: }\n")).find("not valid YAML"),
             std::string::npos);
   EXPECT_NE(checkFile("-options_file_yaml", writeFile("list.yaml", "- 1\n- 2\n")).find("mapping"), std::string::npos);
-  const std::string self = "test_command_line_self.opts";
+  const std::string self = kFolder + "self.opts";
   writeFile("self.opts", "-options_file " + self + "\n");
   EXPECT_NE(checkFile("-options_file", self).find("includes itself"), std::string::npos);
-  const std::string a = "test_command_line_a.opts", b = "test_command_line_b.opts";
+  const std::string a = kFolder + "a.opts", b = kFolder + "b.opts";
   writeFile("a.opts", "-x 1\n-options_file " + b + "\n");
   writeFile("b.opts", "-options_file " + a + "\n");
   EXPECT_NE(checkFile("-options_file", a).find("includes itself (" + a + " -> " + b + " -> " + a + ")"),
