@@ -7,7 +7,7 @@ here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build=${1:-$here/build}
 
 packages=(build-essential cmake pkg-config petsc-dev openmpi-bin libopenmpi-dev libhdf5-openmpi-dev
-          libmetis-dev librandom123-dev googletest libgtest-dev libbenchmark-dev
+          libmetis-dev librandom123-dev libyaml-dev googletest libgtest-dev libbenchmark-dev
           python3 python3-h5py python3-matplotlib python3-numpy hdf5-tools)
 missing=()
 for p in "${packages[@]}"; do

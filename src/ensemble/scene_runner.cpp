@@ -236,8 +236,8 @@ void runSpringBlockScene(MPI_Comm comm, RunParameters* record) {
   const Grading baseGrading = readGrading(comm, record);
   OptionReader ens(comm, "ensemble_", "Ensemble of spring-block realisations", record);
   const PetscInt realisations =
-      ens.integer("realisations", 1, "1", "realisations R per sweep point (new local friction draws each)");
-  const PetscInt seed = ens.integer("seed", 1, "1", "scene seed: a task's random stream is (seed, point, realisation)");
+      ens.integer("realisations", 1, 1, 10000000, "1", "realisations R per sweep point (new local friction draws each)");
+  const PetscInt seed = ens.integer("seed", 1, 0, PETSC_MAX_INT, "1", "scene seed: a task's random stream is (seed, point, realisation)");
   SweepLists lists;
   lists.delta = ens.realList("delta", {}, "1", "sweep of the grading amplitude Delta (empty: -grading_delta alone)");
   lists.theta = ens.realList("theta", {}, "degree", "sweep of the sliding angle (empty: -sbm_theta alone)");
@@ -261,7 +261,7 @@ void runSpringBlockScene(MPI_Comm comm, RunParameters* record) {
                                               "task distribution: shared counter (one-sided MPI) or round robin");
   const bool dryRun = ens.flag("dry_run", false, "check the scene and print the plan, run nothing, write nothing");
   const PetscInt abortAfter = ens.integer(
-      "abort_after", 0, "1",
+      "abort_after", 0, 0, PETSC_MAX_INT, "1",
       "testing only: every rank exits abruptly (no close, no finalize) once this many tasks finished (0: never)");
   OptionReader out(comm, "", "Results file", record);
   const std::string output = out.text("output", "gradfric_sbm.h5", "results file (parallel HDF5; see docs/ensemble.md)");
