@@ -10,6 +10,7 @@
 #include "gradfric/ensemble/sweep.hpp"
 #include "gradfric/io/results_file.hpp"
 #include "gradfric/physics/grading_options.hpp"
+#include "gradfric/sbm/lattice.hpp"
 #include "gradfric/sbm/model.hpp"
 #include "gradfric/sbm/parameters.hpp"
 
@@ -328,7 +329,7 @@ void runSpringBlockScene(MPI_Comm comm, RunParameters* record) {
   layout.statisticsInteger = {"finished", "mu_s_count", "mu_k_count", "peaks_unconfirmed"};
   {
     const double bytes = static_cast<double>(P) * R *
-                         (2.0 * layout.historyCapacity +
+                         (4.0 * layout.historyCapacity +  // time, mu, force_x, force_y
                           (layout.firstSlipMap ? 1.0 : 0.0) * layout.mapSide * layout.mapSide +
                           request.snapshotTimes.size() * (1.0 + layout.mapSide * layout.mapSide)) *
                          8.0;
@@ -349,6 +350,12 @@ void runSpringBlockScene(MPI_Comm comm, RunParameters* record) {
     table.profile.push_back(q.profile);
   }
   table.referencePoint = sweep.reference;
+  for (const auto& q : sweep.points) {  // the property fields each point uses (results file /properties)
+    const sbm::ColumnProperties c = sbm::columnProperties(parameters, gradingOf(q, baseGrading.bands));
+    table.modulus.insert(table.modulus.end(), c.modulus.begin(), c.modulus.end());
+    table.muStatic.insert(table.muStatic.end(), c.muStatic.begin(), c.muStatic.end());
+    table.muKinetic.insert(table.muKinetic.end(), c.muKinetic.begin(), c.muKinetic.end());
+  }
 
   std::vector<io::Attribute> scene, runAttributes;
   for (const auto& o : record->all()) {
@@ -447,8 +454,8 @@ void runSpringBlockScene(MPI_Comm comm, RunParameters* record) {
                        " (run that scene, or start again with -output_overwrite):" + differences);
     return f;
   }();
-  runAttributes.push_back({"ranks", std::to_string(size), "", ""});
   file.setRunAttributes(runAttributes);
+  file.setProvenance(io::collectProvenance(comm));  // version, command line, options files, date, ranks
 
   std::vector<unsigned char> finished;
   {
@@ -513,6 +520,8 @@ void runSpringBlockScene(MPI_Comm comm, RunParameters* record) {
         if (history) {
           o.time = std::move(result.time);
           o.mu = std::move(result.mu);
+          o.forceX = std::move(result.forceX);
+          o.forceY = std::move(result.forceY);
         }
         o.firstSlipTime = std::move(result.firstSlipTime);
         for (auto& s : result.snapshots) {

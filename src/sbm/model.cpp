@@ -147,6 +147,8 @@ void integrate(Lattice& lattice, const LatticeStiffness& stiffness, const Fricti
     if (t >= nextSample - 0.5 * dt) {
       result.time.push_back(t);
       result.mu.push_back(mu);
+      result.forceX.push_back(o.sliderForceX);
+      result.forceY.push_back(o.sliderForceY);
       nextSample += q.historyInterval > 0 ? q.historyInterval : dt;
     }
     if (done) break;

@@ -25,6 +25,7 @@ struct Result {
   bool peakConfirmed = false;  // false: stopped at maxTime before the peak was confirmed
   std::vector<double> time;  // mu(t) history, sampled every Request::historyInterval
   std::vector<double> mu;
+  std::vector<double> forceX, forceY;  // total slider-spring force on the plate [N] at the same samples
   std::vector<double> firstSlipTime;  // N_b x N_b as above; NaN where a block never slipped; empty if not asked
   std::vector<StressSnapshot> snapshots;
   std::int64_t steps = 0;
