@@ -266,9 +266,13 @@ ResultsFile ResultsFile::create(MPI_Comm comm, const std::string& path, const En
          "1: the task finished and its results are stored; 0: not run (yet)");
   }
   {
+    // No dimension scales here: a scale's REFERENCE_LIST would then name /run's datasets, and
+    // h5diff --exclude-path /run would still compare them through it.
     H5Group group = createGroup(root, "run");
-    real(group, "wall_seconds", {point, realisation}, "s", "wall time of each task");
-    make(group, "rank", H5T_STD_I32LE, H5T_NATIVE_INT, {point, realisation}, -1, "1", "the MPI rank that ran each task");
+    H5Dataset wall = createDataset<double>(group, "wall_seconds", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, {P, R}, kNaN);
+    describe(wall, "s", "wall time of each task [point, realisation]");
+    H5Dataset rank = createDataset<int>(group, "rank", H5T_STD_I32LE, H5T_NATIVE_INT, {P, R}, -1);
+    describe(rank, "1", "the MPI rank that ran each task [point, realisation]");
   }
   if (C > 0) {
     H5Group group = createGroup(root, "history");
