@@ -1,4 +1,4 @@
-"""Renders a FEM snapshot with ParaView: sigma_xz of the cells (the plate seen from above: the top
+"""Renders a FEM snapshot with ParaView: sigma_xz of the cells (the plate seen from below: the bottom
 layer of cells) beside the contact pressure on the contact face (seen from below).
 
     xvfb-run -a pvbatch scripts/render_fem_fields.py run_fields.xmf out.png [time]
@@ -53,7 +53,7 @@ def view_of(source, array, where, component, title, from_below):
     return view
 
 
-stress = view_of(reader, "cell_stress", "CELLS", 2, "sigma_xz [Pa]", from_below=False)
+stress = view_of(reader, "cell_stress", "CELLS", 2, "sigma_xz [Pa]", from_below=True)
 # The contact face: nodes in contact (pressure > 0) on the bottom.
 bottom = Threshold(Input=ExtractSurface(Input=reader), Scalars=["POINTS", "bottom_contact_pressure"])
 bottom.LowerThreshold = 1e-12
