@@ -10,6 +10,7 @@
 #include "gradfric/ensemble/sweep.hpp"
 #include "gradfric/io/results_file.hpp"
 #include "gradfric/physics/grading_options.hpp"
+#include "gradfric/physics/plate_options.hpp"
 #include "gradfric/sbm/lattice.hpp"
 #include "gradfric/sbm/model.hpp"
 #include "gradfric/sbm/parameters.hpp"
@@ -285,7 +286,8 @@ void runSpringBlockScene(MPI_Comm comm, RunParameters* record) {
       stiffest = g;
     }
   }
-  const sbm::Parameters parameters = sbm::readParameters(comm, record, stiffest);
+  const Plate plate = readPlate(comm, record);
+  const sbm::Parameters parameters = sbm::readParameters(comm, record, plate, stiffest);
   const sbm::Request request = sbm::readRequest(comm, record, parameters);
   if (helpRequested()) return;
   ens.requireAtLeast("realisations", realisations, 1);
@@ -305,9 +307,9 @@ void runSpringBlockScene(MPI_Comm comm, RunParameters* record) {
     throw InputError(ens.fullName("property"), "(a list)",
                      "only with a grading profile: set -grading_profile linear or triangular (it is none)");
 
-  checkUnusedOptions(comm, {"ensemble_", "sbm_", "grading_", "output"});
+  checkUnusedOptions(comm, {"ensemble_", "plate_", "sbm_", "grading_", "output"});
 
-  base.theta = parameters.slidingAngle;
+  base.theta = parameters.plate.slidingAngle;
   base.sigma = parameters.sigmaStatic;
   base.sigmaKinetic = parameters.sigmaKinetic;
   sweep = buildSweep(lists, base);
@@ -375,13 +377,13 @@ void runSpringBlockScene(MPI_Comm comm, RunParameters* record) {
       if (q.graded() && std::fabs(q.delta) > largest) {
         largest = std::fabs(q.delta);
         shown = gradingOf(q, baseGrading.bands);
-        shownParameters.slidingAngle = q.theta;
+        shownParameters.plate.slidingAngle = q.theta;
         shownParameters.sigmaStatic = q.sigma;
         shownParameters.sigmaKinetic = q.sigmaKinetic;
       }
     if (largest < 0 && !sweep.points.empty()) {
       shown = gradingOf(sweep.points[0], baseGrading.bands);
-      shownParameters.slidingAngle = sweep.points[0].theta;
+      shownParameters.plate.slidingAngle = sweep.points[0].theta;
       shownParameters.sigmaStatic = sweep.points[0].sigma;
       shownParameters.sigmaKinetic = sweep.points[0].sigmaKinetic;
     }
@@ -472,7 +474,7 @@ void runSpringBlockScene(MPI_Comm comm, RunParameters* record) {
   std::vector<sbm::Parameters> pointParameters(P, parameters);
   std::vector<Grading> pointGrading(P);
   for (int p = 0; p < P; ++p) {
-    pointParameters[p].slidingAngle = sweep.points[p].theta;
+    pointParameters[p].plate.slidingAngle = sweep.points[p].theta;
     pointParameters[p].sigmaStatic = sweep.points[p].sigma;
     pointParameters[p].sigmaKinetic = sweep.points[p].sigmaKinetic;
     pointGrading[p] = gradingOf(sweep.points[p], baseGrading.bands);

@@ -247,10 +247,10 @@ void OutputFiles::writeHistory(const PlateModel& model, const FemRunResult& r, c
       std::vector<double> x, modulus, muS, muK;
       for (int i = 0; i < q.nx; ++i) {
         const double centre = (i + 0.5) / q.nx;
-        x.push_back(centre * q.L);
-        modulus.push_back(q.E * g.modulusFactor(centre));
-        muS.push_back(q.muS * g.frictionFactor(centre));
-        muK.push_back(q.muK * g.frictionFactor(centre));
+        x.push_back(centre * q.plate.length);
+        modulus.push_back(q.plate.youngsModulus * g.modulusFactor(centre));
+        muS.push_back(q.plate.muStatic * g.frictionFactor(centre));
+        muK.push_back(q.plate.muKinetic * g.frictionFactor(centre));
       }
       H5Group properties = createGroup(file, "properties");
       H5Dataset column = vector(properties, "x", x, "m", "centre of each cell column along the grading axis x");

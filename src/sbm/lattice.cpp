@@ -28,7 +28,7 @@ LatticeStiffness buildStiffness(const Parameters& p, const Grading& grading) {
   s.spacing = p.spacing();
   s.graded = grading.gradesModulus();
   std::vector<double> modulus(nb);
-  for (int c = 0; c < nb; ++c) modulus[c] = p.youngsModulus * grading.modulusFactor(columnCentre(c, nb));
+  for (int c = 0; c < nb; ++c) modulus[c] = p.plate.youngsModulus * grading.modulusFactor(columnCentre(c, nb));
   s.vertical.resize(nb);
   s.slider.resize(nb);
   for (int c = 0; c < nb; ++c) {
@@ -49,9 +49,9 @@ ColumnProperties columnProperties(const Parameters& p, const Grading& grading) {
   ColumnProperties c;
   for (int column = 0; column < nb; ++column) {
     const double x = columnCentre(column, nb);
-    c.modulus.push_back(p.youngsModulus * grading.modulusFactor(x));
-    c.muStatic.push_back(p.muStatic * grading.frictionFactor(x));
-    c.muKinetic.push_back(p.muKinetic * grading.frictionFactor(x));
+    c.modulus.push_back(p.plate.youngsModulus * grading.modulusFactor(x));
+    c.muStatic.push_back(p.plate.muStatic * grading.frictionFactor(x));
+    c.muKinetic.push_back(p.plate.muKinetic * grading.frictionFactor(x));
   }
   return c;
 }
@@ -73,8 +73,8 @@ FrictionField buildFriction(const Parameters& p, const Grading& grading, StreamK
   std::vector<double> meanStatic(columns), meanKinetic(columns);
   for (int c = 0; c < columns; ++c) {
     const double factor = grading.frictionFactor(columnCentre(c, nb));
-    meanStatic[c] = p.muStatic * factor;
-    meanKinetic[c] = p.muKinetic * factor;
+    meanStatic[c] = p.plate.muStatic * factor;
+    meanKinetic[c] = p.plate.muKinetic * factor;
   }
   if (!dispersed) {
     for (int c = 0; c < columns; ++c) {

@@ -73,7 +73,7 @@ void integrate(Lattice& lattice, const LatticeStiffness& stiffness, const Fricti
   const int nb = p.blocksPerSide;
   const std::size_t n = std::size_t(nb) * nb;
   const double dt = p.timeStep;
-  const double totalNormal = p.pressure * p.length * p.length;
+  const double totalNormal = p.plate.pressure * p.plate.length * p.plate.length;
   if (q.firstSlipMap) {
     result.firstSlipTime.assign(n, std::numeric_limits<double>::quiet_NaN());
     lattice.recordFirstSlips(result.firstSlipTime.data());
@@ -95,7 +95,7 @@ void integrate(Lattice& lattice, const LatticeStiffness& stiffness, const Fricti
       StressSnapshot snapshot{t, std::vector<double>(n)};
       const auto ux = asVector(lattice.displacementX(), n);
       const auto uy = asVector(lattice.displacementY(), n);
-      longitudinalStress(stiffness, p.thickness, p.pressure, ux.data(), uy.data(), snapshot.sigmaXOverP.data());
+      longitudinalStress(stiffness, p.layerThickness, p.plate.pressure, ux.data(), uy.data(), snapshot.sigmaXOverP.data());
       result.snapshots.push_back(std::move(snapshot));
       ++nextSnapshot;
       GF_CALL(PetscLogEventEnd(events.snapshot, 0, 0, 0, 0));
@@ -215,7 +215,7 @@ std::vector<std::string> activeEffects(const Parameters& p, const Grading& g, co
     effects.push_back("no dispersion: no random draws, no per-block coefficients");
   }
   effects.push_back(p.damping > 0 ? "viscous damping gamma = " + formatReal(p.damping) + " 1/s" : "no damping");
-  effects.push_back("sliding angle theta = " + formatReal(p.slidingAngle) + " degree");
+  effects.push_back("sliding angle theta = " + formatReal(p.plate.slidingAngle) + " degree");
   std::string observed = "observables: mu_s";
   if (q.kineticFriction) observed += ", mu_k";
   if (q.firstSlipMap) observed += ", first-slip map";

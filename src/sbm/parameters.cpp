@@ -33,18 +33,16 @@ double defaultTimeStep(const Parameters& p, const Grading& grading) {
   return std::min(p.timeStepSafety * stableTimeStep(p, grading), p.timeStepSlip * slipTime(p, grading));
 }
 
-Parameters readParameters(MPI_Comm comm, RunParameters* record, const Grading& grading) {
+Parameters readParameters(MPI_Comm comm, RunParameters* record, const Plate& plate, const Grading& grading) {
   OptionReader o(comm, "sbm_", "Spring-block model", record);
   Parameters p;
-  p.length = o.real("L", p.length, "m", "side L of the square plate");
-  p.thickness = o.real("lz", p.thickness, "m", "layer thickness l_z (block mass rho l_z l^2)");
-  p.density = o.real("rho", p.density, "kg/m^3", "density rho");
-  p.youngsModulus = o.real("E", p.youngsModulus, "Pa", "reference Young's modulus E0 (Poisson ratio 1/3, fixed by the lattice)");
-  p.pressure = o.real("p", p.pressure, "Pa", "normal pressure p (F_n = p l^2 per block)");
-  p.velocity = o.real("v", p.velocity, "m/s", "slider speed v");
-  p.slidingAngle = o.real("theta", p.slidingAngle, "degree", "angle between the sliding direction and the grading axis x");
-  p.muStatic = o.real("mu_s", p.muStatic, "1", "mean local static friction coefficient mu_s");
-  p.muKinetic = o.real("mu_k", p.muKinetic, "1", "mean local kinetic friction coefficient mu_k");
+  p.plate = plate;
+  // The lattice's springs (axial k, diagonal k/2) fix Poisson's ratio at 1/3.
+  if (std::fabs(plate.poissonRatio - 1.0 / 3.0) > 1e-12)
+    throw InputError("-plate_nu", formatReal(plate.poissonRatio),
+                     "1/3 with the spring-block model (its lattice has Poisson's ratio 1/3)");
+  p.layerThickness = o.real("lz", p.layerThickness, "m",
+                            "mass layer thickness l_z: block mass rho l_z l^2, slider K_s = G l^2/l_z (paper: 0.057 mm)");
   p.sigmaStatic = o.real("sigma_s", p.sigmaStatic, "1", "relative standard deviation of the local mu_s (0: no dispersion)");
   p.sigmaKinetic = o.real("sigma_k", p.sigmaKinetic, "1", "relative standard deviation of the local mu_k (0: no dispersion)");
   p.blocksPerSide = static_cast<int>(o.integer("N", p.blocksPerSide, "1", "blocks per side N_b"));
@@ -52,22 +50,13 @@ Parameters readParameters(MPI_Comm comm, RunParameters* record, const Grading& g
                                           "time integrator, fixed step: classical RK4 (4 force evaluations a step) or velocity Verlet (1)");
   p.integrator = integrator == "verlet" ? Integrator::VelocityVerlet : Integrator::RK4;
 
-  o.requirePositive("L", p.length, "m");
-  o.requirePositive("lz", p.thickness, "m");
-  o.requirePositive("rho", p.density, "kg/m^3");
-  o.requirePositive("E", p.youngsModulus, "Pa");
-  o.requirePositive("p", p.pressure, "Pa");
-  o.requirePositive("v", p.velocity, "m/s");
-  if (!std::isfinite(p.slidingAngle)) throw InputError(o.fullName("theta"), formatReal(p.slidingAngle), "a finite angle [degree]");
-  o.requirePositive("mu_s", p.muStatic, "");
-  o.requireRange("mu_k", p.muKinetic, 0.0, p.muStatic, "0 < mu_k <= mu_s = " + formatReal(p.muStatic));
-  o.requirePositive("mu_k", p.muKinetic, "");
+  o.requirePositive("lz", p.layerThickness, "m");
   o.requireRange("sigma_s", p.sigmaStatic, 0.0, 0.5, "0 <= sigma_s <= 0.5");
   o.requireRange("sigma_k", p.sigmaKinetic, 0.0, 0.5, "0 <= sigma_k <= 0.5");
   o.requireAtLeast("N", p.blocksPerSide, 2);
   if (p.blocksPerSide > 4096) throw InputError(o.fullName("N"), std::to_string(p.blocksPerSide), "2 <= N <= 4096");
 
-  const double kInt = p.axialStiffness(p.youngsModulus);
+  const double kInt = p.axialStiffness(p.plate.youngsModulus);
   const double omega = std::sqrt(kInt / p.blockMass());
   if (auto gamma = o.realIfSet("gamma", "1/s", "damping coefficient gamma (underdamped: gamma < sqrt(K_int/m))",
                                "0.1 sqrt(K_int/m)")) {

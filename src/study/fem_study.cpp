@@ -11,6 +11,7 @@
 #include "gradfric/fem/simulation.hpp"
 #include "gradfric/io/hdf5_handle.hpp"
 #include "gradfric/physics/grading_options.hpp"
+#include "gradfric/physics/plate_options.hpp"
 
 #include <petscsys.h>
 #include <sys/resource.h>
@@ -121,7 +122,8 @@ void runFiniteElementStudy(MPI_Comm comm, RunParameters* record) {
   GF_CALL_MPI(MPI_Comm_size(comm, &size));
 
   const Grading grading = readGrading(comm, record);
-  fem::FemParameters base = fem::readFemParameters(comm, record);
+  const Plate plate = readPlate(comm, record);
+  fem::FemParameters base = fem::readFemParameters(comm, record, plate);
   PetscBool knSet = PETSC_FALSE, ktSet = PETSC_FALSE, dtSet = PETSC_FALSE;
   GF_CALL(PetscOptionsHasName(nullptr, nullptr, "-fem_kn", &knSet));
   GF_CALL(PetscOptionsHasName(nullptr, nullptr, "-fem_kt", &ktSet));
@@ -164,7 +166,7 @@ void runFiniteElementStudy(MPI_Comm comm, RunParameters* record) {
   if (!base.output.empty()) throw InputError("-fem_output", base.output, "unset: the study writes -output");
   if (rank == 0 && access(output.c_str(), F_OK) == 0 && !overwrite)
     throw InputError("-output", output, "a file that does not exist yet (add -output_overwrite to replace it)");
-  checkUnusedOptions(comm, {"study_", "fem_", "grading_", "output"});
+  checkUnusedOptions(comm, {"study_", "plate_", "fem_", "grading_", "output"});
   std::sort(safeties.begin(), safeties.end());
   std::sort(safetiesOther.begin(), safetiesOther.end());
   std::sort(factors.begin(), factors.end());

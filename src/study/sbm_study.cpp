@@ -5,6 +5,7 @@
 #include "gradfric/core/petsc_call.hpp"
 #include "gradfric/io/hdf5_handle.hpp"
 #include "gradfric/physics/grading_options.hpp"
+#include "gradfric/physics/plate_options.hpp"
 #include "gradfric/sbm/model.hpp"
 
 #include <petscsys.h>
@@ -58,7 +59,8 @@ void runSpringBlockStudy(MPI_Comm comm, RunParameters* record) {
   GF_CALL_MPI(MPI_Comm_size(comm, &size));
 
   const Grading grading = readGrading(comm, record);
-  const sbm::Parameters base = sbm::readParameters(comm, record, grading);
+  const Plate plate = readPlate(comm, record);
+  const sbm::Parameters base = sbm::readParameters(comm, record, plate, grading);
   sbm::Request request = sbm::readRequest(comm, record, base);
   request.endTime = 0.0;
   request.historyInterval = 1e3;  // the study keeps no histories
@@ -85,7 +87,7 @@ void runSpringBlockStudy(MPI_Comm comm, RunParameters* record) {
     if (n < 2 || n != std::floor(n)) throw InputError(o.fullName("N"), formatReal(n), "whole numbers >= 2");
   if (access(output.c_str(), F_OK) == 0 && !overwrite)
     throw InputError("-output", output, "a file that does not exist yet (add -output_overwrite to replace it)");
-  checkUnusedOptions(comm, {"study_", "sbm_", "grading_", "output"});
+  checkUnusedOptions(comm, {"study_", "plate_", "sbm_", "grading_", "output"});
   std::sort(dts.begin(), dts.end());
 
   // ---- The ladders and their tasks. ----

@@ -25,13 +25,6 @@ r = subprocess.run(["mpiexec", "--oversubscribe", "-n", "2", driver, "-options_f
 assert r.returncode == 0, r.stdout + r.stderr
 
 
-def option(scene, *names):  # the plate's options may carry either prefix
-    for n in names:
-        if n in scene:
-            return scene[n]
-    raise KeyError(names)
-
-
 with h5py.File(out, "r") as f:
     undescribed = []
 
@@ -51,7 +44,7 @@ with h5py.File(out, "r") as f:
     assert f.attrs["format_version"] == 2 and isinstance(f.attrs["format"], str)
 
     scene = {k: v for k, v in f["scene"].attrs.items()}
-    p, side = float(option(scene, "plate_p", "sbm_p")), float(option(scene, "plate_L", "sbm_L"))
+    p, side = float(scene["plate_p"]), float(scene["plate_L"])
     n = f["history/length"][:]
     mu, fx, fy = f["history/mu"][:], f["history/force_x"][:], f["history/force_y"][:]
     for point in range(mu.shape[0]):
@@ -66,8 +59,7 @@ with h5py.File(out, "r") as f:
 
     # The property fields: this scene grades friction linearly; E is uniform.
     delta = f["sweep/delta"][:]
-    e0, mus0, muk0 = (float(option(scene, *names)) for names in
-                      (("plate_E", "sbm_E"), ("plate_mu_s", "sbm_mu_s"), ("plate_mu_k", "sbm_mu_k")))
+    e0, mus0, muk0 = (float(scene[name]) for name in ("plate_E", "plate_mu_s", "plate_mu_k"))
     assert np.all(f["properties/E"][:] == e0)
     mus, muk = f["properties/mu_s"][:], f["properties/mu_k"][:]
     for point, d in enumerate(delta):

@@ -47,11 +47,11 @@ with h5py.File(out, "r") as f:
     # Axes as dimension scales.
     assert f["history/mu"].dims[0].keys() == ["time"] and f["properties/E"].dims[0].keys() == ["x"]
     # The force components give mu: |(Fx, Fy)| / (p L^2).
-    p = float(scene.get("plate_p", scene.get("fem_p", "1e4")))
-    side = float(scene.get("plate_L", scene.get("fem_L", "5e-3")))
+    p = float(scene["plate_p"])
+    side = float(scene["plate_L"])
     fx, fy = f["history/force_x"][:], f["history/force_y"][:]
     assert np.allclose(np.hypot(fx, fy) / (p * side**2), mu, rtol=1e-12, atol=1e-15)
-    assert np.allclose(f["properties/E"][:], float(scene.get("plate_E", scene.get("fem_E", "1e7"))))
+    assert np.allclose(f["properties/E"][:], float(scene["plate_E"]))
     prov = f["provenance"].attrs
     assert prov["ranks"] == 2 and prov["software_version"] and prov["software_commit"], dict(prov)
     assert "-fem_output" in prov["command_line"] and prov["date"].endswith("Z"), dict(prov)

@@ -8,7 +8,7 @@
 
 namespace gradfric::sbm::testing {
 
-inline double naturalFrequency(const Parameters& p) { return std::sqrt(p.axialStiffness(p.youngsModulus) / p.blockMass()); }
+inline double naturalFrequency(const Parameters& p) { return std::sqrt(p.axialStiffness(p.plate.youngsModulus) / p.blockMass()); }
 
 // dtSafety > 0: that fraction of the stability limit; 0: the shipped default step.
 inline Parameters paperParameters(int blocksPerSide, double sigma, const Grading& grading = {}, double dtSafety = 0.0,

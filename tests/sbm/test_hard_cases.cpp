@@ -39,7 +39,7 @@ Grading graded(GradingProfile profile, GradedProperty property, double delta, in
 Result run(const HardCase& c, double dtScale, double endTime = 0.0) {
   Parameters p = sbm::testing::paperParameters(c.blocks, c.sigma, c.grading, 0.25, c.dampingFactor);
   p.integrator = c.integrator;
-  p.slidingAngle = c.theta;
+  p.plate.slidingAngle = c.theta;
   p.timeStep = (c.dtSafety > 0 ? c.dtSafety * stableTimeStep(p, c.grading) : defaultTimeStep(p, c.grading)) * dtScale;
   Request q = sbm::testing::defaultRequest(p);
   q.kineticFriction = !c.peakOnly;

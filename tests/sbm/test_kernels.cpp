@@ -34,7 +34,7 @@ TEST(Kernels, SameHistoriesForEveryCodePath) {
   for (const auto& c : cases) {
     Parameters p = sbm::testing::paperParameters(10, c.sigma, c.grading);
     p.integrator = Integrator::RK4;  // the plain reference implements RK4
-    p.slidingAngle = c.theta;
+    p.plate.slidingAngle = c.theta;
     Request q = sbm::testing::defaultRequest(p);
     const Result fast = simulate(p, c.grading, q, {3, 1, 2}, Kernel::Fast);
     const Result plain = simulate(p, c.grading, q, {3, 1, 2}, Kernel::Reference);

@@ -44,16 +44,16 @@ TEST(Plate, UniformPlateWithoutDispersionHasTheLocalCoefficients) {
   Parameters p = paperParameters(30, 0.0, {}, 0.05, 0.0);
   p.damping = 0.0;
   const double fn = p.normalForcePerBlock();
-  const double k = p.sliderStiffness(p.youngsModulus);
+  const double k = p.sliderStiffness(p.plate.youngsModulus);
   const double omega = std::sqrt(k / p.blockMass());
-  const double a = (p.muStatic - p.muKinetic) * fn / k;
-  const double period = 2 * a / p.velocity + (2 * M_PI - 2 * std::atan(a * omega / p.velocity)) / omega;
+  const double a = (p.plate.muStatic - p.plate.muKinetic) * fn / k;
+  const double period = 2 * a / p.plate.velocity + (2 * M_PI - 2 * std::atan(a * omega / p.plate.velocity)) / omega;
   Request q = defaultRequest(p);
   q.kineticDelay = 0.1 * period;
   q.kineticWidth = 3 * period;
   const Result r = simulate(p, {}, q, {});
-  EXPECT_NEAR(r.muStatic, p.muStatic, 0.005 * p.muStatic);
-  EXPECT_NEAR(r.muKinetic, p.muKinetic, 0.005 * p.muKinetic);
+  EXPECT_NEAR(r.muStatic, p.plate.muStatic, 0.005 * p.plate.muStatic);
+  EXPECT_NEAR(r.muKinetic, p.plate.muKinetic, 0.005 * p.plate.muKinetic);
   EXPECT_TRUE(r.peakConfirmed);
 }
 
@@ -62,8 +62,8 @@ TEST(Plate, DampingRaisesKineticFrictionOfTheUniformPlate) {
   // undispersed plate is then above mu_k (documented; why mu_k depends on gamma).
   Parameters p = paperParameters(20, 0.0, {}, 0.1, 0.1);
   const Result r = simulate(p, {}, defaultRequest(p), {});
-  EXPECT_GT(r.muKinetic, p.muKinetic * 1.01);
-  EXPECT_LT(r.muKinetic, p.muStatic);
+  EXPECT_GT(r.muKinetic, p.plate.muKinetic * 1.01);
+  EXPECT_LT(r.muKinetic, p.plate.muStatic);
 }
 
 TEST(Plate, StaticFrictionFallsAsDispersionGrows) {
@@ -181,7 +181,7 @@ TEST(Plate, SlidingAtNinetyDegreesIsTheSameProblemRotated) {
   Parameters p = paperParameters(12, 0.0);
   Request q = defaultRequest(p);
   const Result x = simulate(p, {}, q, {});
-  p.slidingAngle = 90.0;
+  p.plate.slidingAngle = 90.0;
   const Result y = simulate(p, {}, q, {});
   ASSERT_EQ(x.mu.size(), y.mu.size());
   for (std::size_t i = 0; i < x.mu.size(); ++i) EXPECT_NEAR(x.mu[i], y.mu[i], 1e-12) << i;
