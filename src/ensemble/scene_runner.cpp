@@ -253,6 +253,9 @@ void runSpringBlockScene(MPI_Comm comm, RunParameters* record) {
       "common random numbers: realisation r of every sweep point draws from the stream (seed, 0, r); the "
       "relative variations then use paired errors");
   const bool history = ens.flag("history", true, "store the mu(t) history of every realisation");
+  const bool frictionFields = ens.flag(
+      "friction_fields", false,
+      "store every realisation's local mu_s,i and mu_k,i (2 N_b^2 values a task; they follow from the seed anyway)");
   int interactive = rank == 0 ? isatty(STDOUT_FILENO) : 0;
   GF_CALL_MPI(MPI_Bcast(&interactive, 1, MPI_INT, 0, comm));
   const bool monitor =
@@ -323,6 +326,7 @@ void runSpringBlockScene(MPI_Comm comm, RunParameters* record) {
   layout.historyCapacity = history ? historyCapacity(parameters, request) : 0;
   layout.mapSide = parameters.blocksPerSide;
   layout.firstSlipMap = request.firstSlipMap;
+  layout.frictionFields = frictionFields;
   layout.snapshotTimes = request.snapshotTimes;
   layout.statisticsReal = {"mu_s_mean",      "mu_s_std",     "mu_s_stderr",         "mu_s_ci95_low",
                            "mu_s_ci95_high", "mu_s_relative", "mu_s_relative_error", "mu_k_mean",
@@ -333,6 +337,7 @@ void runSpringBlockScene(MPI_Comm comm, RunParameters* record) {
     const double bytes = static_cast<double>(P) * R *
                          (4.0 * layout.historyCapacity +  // time, mu, force_x, force_y
                           (layout.firstSlipMap ? 1.0 : 0.0) * layout.mapSide * layout.mapSide +
+                          (layout.frictionFields ? 2.0 : 0.0) * layout.mapSide * layout.mapSide +
                           request.snapshotTimes.size() * (1.0 + layout.mapSide * layout.mapSide)) *
                          8.0;
     if (bytes > 64e9)
@@ -448,7 +453,7 @@ void runSpringBlockScene(MPI_Comm comm, RunParameters* record) {
     }
     const auto& l = f.layout();
     if (l.points != P || l.realisations != R || l.historyCapacity != layout.historyCapacity ||
-        l.mapSide != layout.mapSide || l.firstSlipMap != layout.firstSlipMap ||
+        l.mapSide != layout.mapSide || l.firstSlipMap != layout.firstSlipMap || l.frictionFields != layout.frictionFields ||
         l.snapshotTimes.size() != layout.snapshotTimes.size())
       differences += "\n  layout (points, realisations, history capacity or maps)";
     if (!differences.empty())
@@ -526,6 +531,17 @@ void runSpringBlockScene(MPI_Comm comm, RunParameters* record) {
           o.forceY = std::move(result.forceY);
         }
         o.firstSlipTime = std::move(result.firstSlipTime);
+        if (frictionFields) {  // the same draw as the run's (a pure function of the stream key)
+          const auto& q = pointParameters[task.point];
+          const sbm::FrictionField field = sbm::buildFriction(q, pointGrading[task.point], key);
+          const int nb = q.blocksPerSide;
+          const double normal = q.normalForcePerBlock();
+          for (int row = 0; row < nb; ++row)
+            for (int column = 0; column < nb; ++column) {
+              o.localStatic.push_back(field.staticAt(row, column) / normal);
+              o.localKinetic.push_back(field.kineticAt(row, column) / normal);
+            }
+        }
         for (auto& s : result.snapshots) {
           o.snapshotTime.push_back(s.time);
           o.snapshots.push_back(std::move(s.sigmaXOverP));

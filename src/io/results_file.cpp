@@ -159,6 +159,7 @@ ResultsFile ResultsFile::create(MPI_Comm comm, const std::string& path, const En
   writeIntAttribute(root, "history_capacity", layout.historyCapacity);
   writeIntAttribute(root, "map_side", layout.mapSide);
   writeIntAttribute(root, "first_slip_map", layout.firstSlipMap ? 1 : 0);
+  writeIntAttribute(root, "friction_fields", layout.frictionFields ? 1 : 0);
 
   // The scene: every resolved option as attributes; units and origins in subgroups.
   writeOptionRecord(root, "scene", scene);
@@ -283,8 +284,14 @@ ResultsFile ResultsFile::create(MPI_Comm comm, const std::string& path, const En
     real(group, "force_y", prc, "N", "y component of the sum of the slider-spring forces on the plate");
     make(group, "length", H5T_STD_I32LE, H5T_NATIVE_INT, {point, realisation}, 0, "1", "number of samples of each task");
   }
-  if (layout.firstSlipMap || S > 0) {
+  if (layout.firstSlipMap || layout.frictionFields || S > 0) {
     H5Group group = createGroup(root, "maps");
+    if (layout.frictionFields) {
+      real(group, "mu_s_local", {point, realisation, row, column}, "1",
+           "local static coefficient mu_s,i of each block, as drawn for the realisation");
+      real(group, "mu_k_local", {point, realisation, row, column}, "1",
+           "local kinetic coefficient mu_k,i of each block, as drawn for the realisation");
+    }
     if (layout.firstSlipMap)
       real(group, "first_slip_time", {point, realisation, row, column}, "s",
            "time of each block's first slip; NaN: never slipped");
@@ -349,6 +356,7 @@ void ResultsFile::readLayout() {
   layout_.historyCapacity = readScalarAttribute<int>(root, "history_capacity", H5T_NATIVE_INT, 0);
   layout_.mapSide = readScalarAttribute<int>(root, "map_side", H5T_NATIVE_INT, 0);
   layout_.firstSlipMap = readScalarAttribute<int>(root, "first_slip_map", H5T_NATIVE_INT, 0) != 0;
+  layout_.frictionFields = readScalarAttribute<int>(root, "friction_fields", H5T_NATIVE_INT, 0) != 0;
   if (H5Lexists(root, "maps/snapshot_times", H5P_DEFAULT) > 0) {
     H5Dataset d(GF_H5(H5Dopen2(root, "maps/snapshot_times", H5P_DEFAULT)));
     layout_.snapshotTimes = readAll<double>(d, H5T_NATIVE_DOUBLE);
@@ -416,6 +424,10 @@ void ResultsFile::openDatasets() {
     historyLength_ = open("history/length");
   }
   if (layout_.firstSlipMap) firstSlip_ = open("maps/first_slip_time");
+  if (layout_.frictionFields) {
+    localStatic_ = open("maps/mu_s_local");
+    localKinetic_ = open("maps/mu_k_local");
+  }
   if (!layout_.snapshotTimes.empty()) {
     snapshotTime_ = open("maps/snapshot_time");
     snapshots_ = open("maps/sigma_x_over_p");
@@ -460,6 +472,13 @@ void ResultsFile::writeTask(const TaskOutput& t) {
     std::vector<double> map(N * N, kNaN);
     if (t.firstSlipTime.size() == map.size()) map = t.firstSlipTime;
     writeSlab(firstSlip_, H5T_NATIVE_DOUBLE, {p, r, 0, 0}, {1, 1, N, N}, map.data(), x);
+  }
+  if (layout_.frictionFields) {
+    for (auto [dataset, values] : {std::pair{localStatic_.get(), &t.localStatic}, std::pair{localKinetic_.get(), &t.localKinetic}}) {
+      std::vector<double> map(N * N, kNaN);
+      if (values->size() == map.size()) map = *values;
+      writeSlab(dataset, H5T_NATIVE_DOUBLE, {p, r, 0, 0}, {1, 1, N, N}, map.data(), x);
+    }
   }
   const hsize_t S = layout_.snapshotTimes.size();
   if (S > 0) {
@@ -560,6 +579,8 @@ void ResultsFile::close() {
   historyForceY_.reset();
   historyLength_.reset();
   firstSlip_.reset();
+  localStatic_.reset();
+  localKinetic_.reset();
   snapshotTime_.reset();
   snapshots_.reset();
   independent_.reset();

@@ -3,7 +3,9 @@
 with xarray (engine h5netcdf): every dataset has units and a description, the axes are named
 dimension scales, the force components reproduce mu(t), the property fields are the ones the
 scene asked for, and /run records the software version, command line, options file text, date
-and ranks.  Usage: check_self_describing.py <gradfric driver> <source dir> <version>
+and ranks; each realisation's local friction coefficients follow from the file alone (the recipe of
+docs/ensemble.md with numpy's Philox) and equal the ones stored with -ensemble_friction_fields.
+Usage: check_self_describing.py <gradfric driver> <source dir> <version>
 """
 import os
 import shutil
@@ -13,6 +15,7 @@ import tempfile
 
 import h5py
 import numpy as np
+from numpy.random import Philox
 
 driver, src, version = sys.argv[1:4]
 env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
@@ -21,8 +24,33 @@ out = os.path.join(work, "sweep.h5")
 scene_file = os.path.join(src, "input", "sbm_fig4_reduced.opts")
 r = subprocess.run(["mpiexec", "--oversubscribe", "-n", "2", driver, "-options_file", scene_file, "-sbm_N", "16",
                     "-ensemble_delta", "-0.3,0,0.3", "-ensemble_realisations", "2", "-sbm_observables", "first_slip",
-                    "-output", out], env=env, capture_output=True, text=True)
+                    "-ensemble_friction_fields", "true", "-output", out], env=env, capture_output=True, text=True)
 assert r.returncode == 0, r.stdout + r.stderr
+
+
+def local_coefficients(f, point, realisation):
+    """Each block's (mu_s,i, mu_k,i) of a realisation from the file alone (docs/ensemble.md)."""
+    scene = f["scene"].attrs
+    q = 0 if scene["ensemble_common_streams"] == "true" else point
+    key = [int(scene["ensemble_seed"]), (q << 32) | realisation]
+    sigma_s, sigma_k = f["sweep/sigma"][point], f["sweep/sigma_kinetic"][point]
+    mean_s, mean_k = f["properties/mu_s"][point], f["properties/mu_k"][point]
+    n = len(mean_s)
+    mus, muk = np.empty((n, n)), np.empty((n, n))
+    for row in range(n):
+        for column in range(n):
+            for attempt in range(1000):
+                counter = (row * n + column) | (attempt << 64)  # words (i, attempt, 0, 0)
+                # numpy's Philox steps its counter before each block: start one below.
+                w = Philox(key=key, counter=(counter - 1) % 2**256).random_raw(2)
+                u0, u1 = ((w >> np.uint64(11)) + np.uint64(1)).astype(float) * 2.0**-53
+                radius = np.sqrt(-2 * np.log(u0))
+                s = mean_s[column] * (1 + sigma_s * radius * np.cos(2 * np.pi * u1))
+                k = mean_k[column] * (1 + sigma_k * radius * np.sin(2 * np.pi * u1))
+                if 0 < k <= s:
+                    break
+            mus[row, column], muk[row, column] = s, k
+    return mus, muk
 
 
 with h5py.File(out, "r") as f:
@@ -67,6 +95,13 @@ with h5py.File(out, "r") as f:
         assert np.isclose(mus[point, -1] - mus[point, 0], 2 * d * mus0), (d, mus[point])   # edge bands 1 -+ delta
         assert np.allclose(muk[point] / mus[point], muk0 / mus0)
 
+    # Each realisation's coefficients: regenerated from (seed, point, realisation) = stored.
+    for point in range(len(delta)):
+        for real in range(f.attrs["realisations"]):
+            s, k = local_coefficients(f, point, real)
+            assert np.allclose(s, f["maps/mu_s_local"][point, real], rtol=1e-14, atol=0), (point, real)
+            assert np.allclose(k, f["maps/mu_k_local"][point, real], rtol=1e-14, atol=0), (point, real)
+            assert np.isclose(s.mean(), mus0, rtol=0.05) and s.std() > 0  # dispersed around the mean
     run = f["run"].attrs
     assert run["software_version"] == version, run["software_version"]
     assert run["software_commit"], "no commit"

@@ -29,6 +29,7 @@ struct EnsembleLayout {
   int historyCapacity = 0;  // C: mu(t) samples kept per task (0: no histories)
   int mapSide = 0;          // N_b: side of the first-slip and stress maps
   bool firstSlipMap = false;
+  bool frictionFields = false;  // /maps/mu_s_local, mu_k_local: each realisation's local coefficients
   std::vector<double> snapshotTimes;  // requested sigma_x/p snapshot times [s] (S of them)
   // Names of the per-point statistics columns (/statistics/<name>), real and integer.
   std::vector<std::string> statisticsReal;
@@ -64,6 +65,7 @@ struct TaskOutput {
   std::vector<double> mu;
   std::vector<double> forceX, forceY;  // slider force components [N] at the same samples
   std::vector<double> firstSlipTime;  // N_b x N_b or empty
+  std::vector<double> localStatic, localKinetic;  // mu_s,i and mu_k,i, N_b x N_b (frictionFields)
   std::vector<double> snapshotTime;   // actual time of each snapshot taken (<= S)
   std::vector<std::vector<double>> snapshots;  // sigma_x/p maps, N_b x N_b each
   double wallSeconds = 0.0;
@@ -126,7 +128,7 @@ private:
   H5Dataset muStatic_, muKinetic_, peakTime_, endTime_, peakConfirmed_, steps_, redrawn_, done_;
   H5Dataset wallSeconds_, taskRank_;
   H5Dataset historyTime_, historyMu_, historyForceX_, historyForceY_, historyLength_;
-  H5Dataset firstSlip_, snapshotTime_, snapshots_;
+  H5Dataset firstSlip_, localStatic_, localKinetic_, snapshotTime_, snapshots_;
   H5PropertyList independent_;
 };
 
