@@ -23,7 +23,7 @@ work = tempfile.mkdtemp(prefix="gradfric_describe_")
 out = os.path.join(work, "sweep.h5")
 scene_file = os.path.join(src, "input", "sbm_fig4_reduced.opts")
 r = subprocess.run(["mpiexec", "--oversubscribe", "-n", "2", driver, "-options_file", scene_file, "-sbm_N", "16",
-                    "-ensemble_delta", "-0.3,0,0.3", "-ensemble_realisations", "2", "-sbm_observables", "first_slip",
+                    "-ensemble_delta", "-0.3,0,0.3", "-ensemble_realisations", "2", "-friction_observables", "first_slip",
                     "-ensemble_friction_fields", "true", "-output", out], env=env, capture_output=True, text=True)
 assert r.returncode == 0, r.stdout + r.stderr
 
