@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# A fuzz-style battery of bad and extreme command lines for the three drivers (issue 11). Every
+# A fuzz-style battery of bad and extreme command lines for the three drivers. Every
 # case must: exit 2 (0 for -help/-version), print exactly one stderr line "gradfric: error: ..."
 # naming the option, show no PETSc banner/traceback, leave no file behind, finish within 60 s.
 # Usage: fuzz_command_line.sh <drivers folder> <scratch folder> <group: sbm|fem|study|mpi> [mpiexec]

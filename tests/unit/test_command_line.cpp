@@ -1,4 +1,4 @@
-// Issue 11: integers without wrap-around, finite reals, near misses, options files checked before
+// The command line: integers without wrap-around, finite reals, near misses, options files checked before
 // PETSc reads them, run lengths refused before any work.
 #include "gradfric/core/command_line.hpp"
 #include "gradfric/core/input_error.hpp"
