@@ -1,5 +1,6 @@
 #include "gradfric/core/driver.hpp"
 
+#include "gradfric/core/collective_error.hpp"
 #include "gradfric/core/input_error.hpp"
 #include "gradfric/core/petsc_call.hpp"
 
@@ -45,6 +46,10 @@ int runDriver(int argc, char** argv, const char* help, const std::function<void(
     // Options are read identically on every rank, so every rank throws: rank 0 reports.
     if (rank == 0) std::fprintf(stderr, "gradfric: error: %s\n", e.what());
     status = 2;
+  } catch (const CollectiveError& e) {
+    // Agreed by every rank (e.g. a failed write or rename on rank 0, broadcast): rank 0 reports.
+    if (rank == 0) std::fprintf(stderr, "gradfric: error: %s\n", e.what());
+    status = 1;
   } catch (const PetscCallError& e) {
     std::fprintf(stderr, "gradfric: [rank %d] %s\n", rank, e.what());
     std::fflush(stderr);
