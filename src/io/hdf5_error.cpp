@@ -6,6 +6,8 @@
 
 #include <hdf5.h>
 
+#include <cerrno>
+#include <cstring>
 #include <string>
 
 namespace gradfric::io {
@@ -40,7 +42,16 @@ std::string innermostHdf5Reason() {
   return text;
 }
 
+// The system's reason when it is one a write can fail with (errno may be stale otherwise).
+static std::string writeFailure(int error) {
+  switch (error) {
+    case ENOSPC: case EFBIG: case EDQUOT: case EROFS: case EIO: return std::strerror(error);
+    default: return "";
+  }
+}
+
 void throwHdf5Error(const char* expression, const char* file, int line) {
+  const std::string system = writeFailure(errno);
   const std::string reason = innermostHdf5Reason();
   ActiveScope& scope = activeScope();
   if (scope.depth > 0) {
@@ -48,7 +59,7 @@ void throwHdf5Error(const char* expression, const char* file, int line) {
     MPI_Comm_rank(scope.comm, &rank);
     abortJob(scope.comm, "writing " + scope.path + " failed on rank " + std::to_string(rank) +
                              (reason.empty() ? std::string() : ": " + reason) +
-                             " (is the disk full or the file system read-only?)");
+                             (system.empty() ? " (is the disk full or the file system read-only?)" : ": " + system));
   }
   throw Hdf5Error(std::string("HDF5 call failed: ") + expression + (reason.empty() ? "" : ": " + reason) + " (" +
                       file + ":" + std::to_string(line) + ")",
