@@ -53,7 +53,8 @@ Decision decideHere(const OutputRequest& r) {
   const std::string temporary = path + r.temporarySuffix;
   const std::string folder = folderOf(path);
   const bool resumable = !r.resumeOption.empty();
-  auto refuse = [&](const std::string& allowed) { return Decision{InputError(r.option, path, allowed).what()}; };
+  const std::string& value = r.value.empty() ? path : r.value;
+  auto refuse = [&](const std::string& allowed) { return Decision{InputError(r.option, value, allowed).what()}; };
   if (path.empty()) return Decision{InputError(r.option, "(empty)", "a file path").what()};
   if (isDirectory(path)) return refuse("a file path (" + path + " is a directory)");
   if (!isDirectory(folder)) return refuse("a path in an existing, writable folder (" + folder + " does not exist)");

@@ -18,6 +18,7 @@ namespace gradfric::io {
 struct OutputRequest {
   std::string option = "-output";                      // the option naming the path, for messages
   std::string path;                                    // the file the user asked for
+  std::string value;                                   // the option's value, if not path itself
   std::string temporarySuffix = ".tmp";                // the run writes path + suffix
   bool overwrite = false;                              // replace an existing file (on success)
   std::string overwriteOption = "-output_overwrite";   // the option that allows it
