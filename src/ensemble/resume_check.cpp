@@ -5,7 +5,12 @@
 #include "gradfric/ensemble/scene_file.hpp"
 #include "gradfric/io/collective_file.hpp"
 
+#include <csignal>
+#include <cstdio>
+#include <cstring>
 #include <string>
+
+#include <unistd.h>
 
 namespace gradfric::ensemble {
 
@@ -50,9 +55,14 @@ std::string problemWith(const Scene& scene, const std::string& path) {
       const std::string reason = io::innermostHdf5Reason();
       return "it is truncated or damaged, HDF5 cannot open it" + (reason.empty() ? "" : " (" + reason + ")") + again;
     }
-    if (H5Aexists(raw, "format") <= 0)
-      return "it is an HDF5 file of another program (no attribute format = " + std::string(io::kFormatName) + ")" +
-             again;
+    const htri_t hasFormat = H5Aexists(raw, "format");
+    if (hasFormat < 0) {
+      const std::string reason = io::innermostHdf5Reason();
+      return "it is damaged: its root group cannot be read" + (reason.empty() ? "" : " (" + reason + ")") + again;
+    }
+    if (hasFormat == 0)
+      return "it is not a gradfric ensemble results file (no attribute format = " + std::string(io::kFormatName) +
+             ": a file of another program, or a damaged one)" + again;
   }
   try {
     io::ResultsFile file = io::ResultsFile::openReadOnly(MPI_COMM_SELF, path);
@@ -77,11 +87,40 @@ std::string problemWith(const Scene& scene, const std::string& path) {
 
 }  // namespace
 
+namespace {
+
+// HDF5 1.10 can loop for ever on some damaged files (a corrupt global heap behind a string
+// attribute): past a time limit, rank 0 says so and exits, which ends the job (no hang).
+char timeoutMessage[1024];
+
+void onTimeout(int) {
+  const ssize_t ignored = write(STDERR_FILENO, timeoutMessage, std::strlen(timeoutMessage));
+  (void)ignored;
+  _exit(2);
+}
+
+std::string problemWithin(const Scene& scene, const std::string& path, unsigned seconds) {
+  std::snprintf(timeoutMessage, sizeof timeoutMessage,
+                "gradfric: error: invalid option -ensemble_resume (continue %s): it is damaged: HDF5 did not finish "
+                "reading it within %u s (start again with -output_overwrite)\n",
+                path.c_str(), seconds);
+  struct sigaction action {}, previous{};
+  action.sa_handler = onTimeout;
+  sigaction(SIGALRM, &action, &previous);
+  alarm(seconds);
+  const std::string problem = io::withoutHdf5Printing([&] { return problemWith(scene, path); });
+  alarm(0);
+  sigaction(SIGALRM, &previous, nullptr);
+  return problem;
+}
+
+}  // namespace
+
 void checkResumable(MPI_Comm comm, const Scene& scene, const std::string& path) {
   int rank = 0;
   MPI_Comm_rank(comm, &rank);
   std::string problem;
-  if (rank == 0) problem = io::withoutHdf5Printing([&] { return problemWith(scene, path); });
+  if (rank == 0) problem = problemWithin(scene, path, 60);
   int length = static_cast<int>(problem.size());
   MPI_Bcast(&length, 1, MPI_INT, 0, comm);
   problem.resize(length);
