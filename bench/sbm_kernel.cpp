@@ -34,7 +34,7 @@ Setup makeSetup() {
   Setup s;
   Grading grading;
   s.parameters.blocksPerSide = blocksPerSide;
-  s.parameters.damping = 0.1 * std::sqrt(s.parameters.axialStiffness(s.parameters.youngsModulus) / s.parameters.blockMass());
+  s.parameters.damping = 0.1 * std::sqrt(s.parameters.axialStiffness(s.parameters.plate.youngsModulus) / s.parameters.blockMass());
   s.parameters.timeStep = 0.25 * stableTimeStep(s.parameters, grading);
   s.stiffness = buildStiffness(s.parameters, grading);
   s.friction = buildFriction(s.parameters, grading, StreamKey{1, 0, 0});

@@ -10,6 +10,7 @@
 #include "gradfric/fem/plate_model.hpp"
 #include "gradfric/fem/simulation.hpp"
 #include "gradfric/physics/grading_options.hpp"
+#include "gradfric/physics/plate_options.hpp"
 #include "gradfric/sbm/model.hpp"
 #include "gradfric/sbm/parameters.hpp"
 
@@ -28,7 +29,8 @@ int main(int argc, char** argv) {
     using namespace gradfric::fem;
     RunParameters record;
     const Grading grading = readGrading(comm, &record);
-    const FemParameters params = readFemParameters(comm, &record);
+    const Plate plate = readPlate(comm, &record);  // one plate for both models
+    const FemParameters params = readFemParameters(comm, &record, plate);
     OptionReader driverOptions(comm, "fem_", "gradfric-fem: both models", &record);
     const bool compare = driverOptions.flag(
         "compare_sbm", false, "also run one spring-block realisation (-sbm_ options) on the same grading, side by side");
@@ -37,14 +39,14 @@ int main(int argc, char** argv) {
     sbm::Parameters sbmParams;
     sbm::Request sbmRequest;
     if (compare || helpRequested()) {
-      sbmParams = sbm::readParameters(comm, &record, grading);
+      sbmParams = sbm::readParameters(comm, &record, plate, grading);
       sbmRequest = sbm::readRequest(comm, &record, sbmParams);
     }
     if (helpRequested()) return;
     if (compare)
-      checkUnusedOptions(comm, {"fem_", "grading_", "sbm_"});
+      checkUnusedOptions(comm, {"plate_", "friction_", "fem_", "grading_", "sbm_"});
     else
-      checkUnusedOptions(comm, {"fem_", "grading_"});
+      checkUnusedOptions(comm, {"plate_", "fem_", "grading_"});
     chooseTimeStep(params, grading);    // refuses a dt above the stable step before any work
     OutputFiles output(comm, params);  // refuses an existing file before any work
     PlateModel model(comm, params, grading);
@@ -60,8 +62,8 @@ int main(int argc, char** argv) {
                 "  pressure ramp %.3g s + settle %.3g s (mass damping %.3g 1/s), sliding at %.3g m/s, theta %.3g deg;\n"
                 "  contact penalty k_n %.3g, k_t %.3g Pa/m; Eq. 1 friction, v_c %.3g m/s; dt %.4g s (stable %.4g s)\n",
                 describe(grading).c_str(), params.nx, params.ny, params.nz, static_cast<int>(model.globalCells()), size,
-                params.partitioner.c_str(), params.rampTime, params.settleTime, params.settleDamping, params.v,
-                params.thetaDeg, params.kn, params.kt, params.vC, model.timeStep(), model.stableTimeStep());
+                params.partitioner.c_str(), params.rampTime, params.settleTime, params.settleDamping, params.plate.velocity,
+                params.plate.slidingAngle, params.kn, params.kt, params.vC, model.timeStep(), model.stableTimeStep());
     StepObserver observer = output.snapshotObserver(model);
     const double wall0 = MPI_Wtime();
     const FemRunResult r = runPlateExperiment(model, observer);
@@ -87,9 +89,9 @@ int main(int argc, char** argv) {
       if (rank == 0) {
         const sbm::Result s = sbm::simulate(sbmParams, grading, sbmRequest,
                                             StreamKey{static_cast<std::uint64_t>(seed), 0, 0});
-        sbmValues[0] = s.muStatic;
-        sbmValues[1] = s.muKinetic;
-        sbmValues[2] = s.peakTime;
+        sbmValues[0] = s.friction.muStatic;
+        sbmValues[1] = s.friction.muKinetic;
+        sbmValues[2] = s.friction.peakTime;
         sbmValues[3] = s.wallSeconds;
       }
       MPI_Bcast(sbmValues, 4, MPI_DOUBLE, 0, comm);

@@ -107,7 +107,7 @@ class FemHistory:
         self.profile = self.parameters.get("grading_profile", self.parameters.get("-grading_profile", "none"))
         if self.profile == "none":
             self.delta = 0.0
-        self.thickness = self.parameters.get("fem_H", self.parameters.get("-fem_H", ""))
+        self.thickness = self.parameters.get("plate_H", self.parameters.get("-plate_H", self.parameters.get("fem_H", "")))
 
 
 def plot_histories(ensemble, fems, png):

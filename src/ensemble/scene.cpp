@@ -5,6 +5,7 @@
 #include "gradfric/core/input_error.hpp"
 #include "gradfric/core/petsc_call.hpp"
 #include "gradfric/physics/grading_options.hpp"
+#include "gradfric/physics/plate_options.hpp"
 #include "gradfric/sbm/model.hpp"
 
 #include <unistd.h>
@@ -49,8 +50,9 @@ int historyCapacity(const sbm::Parameters& p, const sbm::Request& q) {
   const double dt = p.timeStep;
   const double steps = std::ceil(duration / dt) + 2.0;
   double samples = steps;
-  if (q.historyInterval > dt) samples = std::min(samples, std::floor(duration / q.historyInterval) + 3.0);
-  if (samples > 5e7) throw InputError("-sbm_history_interval", formatReal(q.historyInterval),
+  const double interval = q.measurement.historyInterval;
+  if (interval > dt) samples = std::min(samples, std::floor(duration / interval) + 3.0);
+  if (samples > 5e7) throw InputError("-friction_history_interval", formatReal(interval),
                                       "an interval giving at most 5e7 mu(t) samples per realisation up to t_max");
   return static_cast<int>(samples) + 2;
 }
@@ -137,7 +139,7 @@ io::EnsembleLayout layoutOf(const Scene& s) {
   layout.realisations = s.realisations;
   layout.historyCapacity = s.history ? historyCapacity(s.parameters, s.request) : 0;
   layout.mapSide = s.parameters.blocksPerSide;
-  layout.firstSlipMap = s.request.firstSlipMap;
+  layout.firstSlipMap = s.request.measurement.firstSlipMap;
   layout.snapshotTimes = s.request.snapshotTimes;
   layout.statisticsReal = {"mu_s_mean",      "mu_s_std",     "mu_s_stderr",         "mu_s_ci95_low",
                            "mu_s_ci95_high", "mu_s_relative", "mu_s_relative_error", "mu_k_mean",
@@ -151,8 +153,8 @@ io::EnsembleLayout layoutOf(const Scene& s) {
                        8.0;
   if (bytes > 64e9)
     throw InputError("results file would need " + formatReal(bytes / 1e9) +
-                     " GB: store fewer observables (-sbm_observables, -sbm_snapshot_times), a coarser "
-                     "-sbm_history_interval or -ensemble_history false");
+                     " GB: store fewer observables (-friction_observables, -sbm_snapshot_times), a coarser "
+                     "-friction_history_interval or -ensemble_history false");
   return layout;
 }
 
@@ -175,7 +177,7 @@ io::SweepTable tableOf(const Sweep& sweep) {
 
 sbm::Parameters Scene::pointParameters(int p) const {
   sbm::Parameters q = parameters;
-  q.slidingAngle = sweep.points[p].theta;
+  q.plate.slidingAngle = sweep.points[p].theta;
   q.sigmaStatic = sweep.points[p].sigma;
   q.sigmaKinetic = sweep.points[p].sigmaKinetic;
   return q;
@@ -193,13 +195,14 @@ std::optional<Scene> readScene(MPI_Comm comm, RunParameters* record) {
   base.property = toString(s.baseGrading.property);
   base.profile = toString(s.baseGrading.profile);
   const Grading stiffest = stiffestGrading(buildSweep(lists, base), s.baseGrading, &s.stiffestFactor);
-  s.parameters = sbm::readParameters(comm, record, stiffest);
+  const Plate plate = readPlate(comm, record);
+  s.parameters = sbm::readParameters(comm, record, plate, stiffest);
   s.request = sbm::readRequest(comm, record, s.parameters);
   if (helpRequested()) return std::nullopt;
   checkSweepLists(lists, s.baseGrading);
-  checkUnusedOptions(comm, {"ensemble_", "sbm_", "grading_", "output"});
+  checkUnusedOptions(comm, {"ensemble_", "plate_", "friction_", "sbm_", "grading_", "output"});
 
-  base.theta = s.parameters.slidingAngle;
+  base.theta = s.parameters.plate.slidingAngle;
   base.sigma = s.parameters.sigmaStatic;
   base.sigmaKinetic = s.parameters.sigmaKinetic;
   s.sweep = buildSweep(lists, base);

@@ -69,7 +69,7 @@ void printSweep(MPI_Comm comm, const Scene& scene) {
     GF_CALL(PetscPrintf(comm, "  - one time step for the whole sweep, from its stiffest band (E x %g)\n",
                         scene.stiffestFactor));
   GF_CALL(PetscPrintf(comm, "  - stored: mu_s, mu_k per realisation%s%s%s\n",
-                      scene.history ? ", mu(t) histories" : "", scene.request.firstSlipMap ? ", first-slip maps" : "",
+                      scene.history ? ", mu(t) histories" : "", scene.request.measurement.firstSlipMap ? ", first-slip maps" : "",
                       scene.request.snapshotTimes.empty() ? "" : ", sigma_x/p snapshots"));
 }
 
@@ -102,7 +102,7 @@ void printStatistics(MPI_Comm comm, const Scene& scene, const std::vector<PointS
     return;
   }
   printTable(comm, scene, stats, "Global static friction mu_s", true);
-  if (scene.request.kineticFriction) printTable(comm, scene, stats, "Global kinetic friction mu_k", false);
+  if (scene.request.measurement.kinetic) printTable(comm, scene, stats, "Global kinetic friction mu_k", false);
   GF_CALL(PetscPrintf(comm,
                       "  rel. var. = (mu - mu_0)/mu_0 against the non-graded point of the same angle and dispersion,"
                       " +- %s\n",

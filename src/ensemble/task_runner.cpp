@@ -27,16 +27,16 @@ io::TaskOutput toTaskOutput(const Task& task, sbm::Result&& result, bool history
   io::TaskOutput o;
   o.point = task.point;
   o.realisation = task.realisation;
-  o.muStatic = result.muStatic;
-  o.muKinetic = result.muKinetic;
-  o.peakTime = result.peakTime;
+  o.muStatic = result.friction.muStatic;
+  o.muKinetic = result.friction.muKinetic;
+  o.peakTime = result.friction.peakTime;
   o.endTime = result.endTime;
-  o.peakConfirmed = result.peakConfirmed;
+  o.peakConfirmed = result.friction.peakConfirmed;
   o.steps = result.steps;
   o.redrawnBlocks = result.redrawnBlocks;
   if (history) {
-    o.time = std::move(result.time);
-    o.mu = std::move(result.mu);
+    o.time = std::move(result.friction.time);
+    o.mu = std::move(result.friction.mu);
   }
   o.firstSlipTime = std::move(result.firstSlipTime);
   for (auto& s : result.snapshots) {

@@ -7,11 +7,12 @@
 
 namespace gradfric::fem {
 
-double FemParameters::shearWaveSpeed() const { return std::sqrt(shearModulus() / rho); }
+double FemParameters::shearWaveSpeed() const { return std::sqrt(shearModulus() / plate.density); }
 
 void FemParameters::resolveDerived() {
+  const double H = plate.thickness;
   const double hz = H / nz;
-  if (kn <= 0) kn = E / hz;
+  if (kn <= 0) kn = plate.youngsModulus / hz;
   if (kt <= 0) kt = kn;
   const double cs = shearWaveSpeed();
   if (settleDamping < 0) settleDamping = cs / H;
@@ -23,22 +24,13 @@ void FemParameters::resolveDerived() {
   if (windowLength < 0) windowLength = 1.0 * ts;  // as the SBM: -sbm_muk_width t_load
 }
 
-FemParameters readFemParameters(MPI_Comm comm, RunParameters* record) {
+FemParameters readFemParameters(MPI_Comm comm, RunParameters* record, const Plate& plate) {
   OptionReader o(comm, "fem_", "Finite-element plate model (3D, explicit)", record);
   FemParameters q;
+  q.plate = plate;
   q.nx = static_cast<int>(o.integer("nx", q.nx, "1", "hexahedra along x (grading axis)"));
   q.ny = static_cast<int>(o.integer("ny", q.ny, "1", "hexahedra along y"));
   q.nz = static_cast<int>(o.integer("nz", q.nz, "1", "hexahedra through the thickness"));
-  q.L = o.real("L", q.L, "m", "plate side L");
-  q.H = o.real("H", q.H, "m", "plate thickness H");
-  q.E = o.real("E", q.E, "Pa", "reference Young's modulus E0");
-  q.nu = o.real("nu", q.nu, "1", "Poisson's ratio");
-  q.rho = o.real("rho", q.rho, "kg/m^3", "density");
-  q.p = o.real("p", q.p, "Pa", "top pressure p");
-  q.v = o.real("v", q.v, "m/s", "top sliding speed v");
-  q.thetaDeg = o.real("theta", q.thetaDeg, "deg", "sliding direction, angle to the grading axis x");
-  q.muS = o.real("mu_s", q.muS, "1", "local static friction coefficient (reference)");
-  q.muK = o.real("mu_k", q.muK, "1", "local kinetic friction coefficient (reference)");
   q.vC = o.real("v_c", q.vC, "m/s", "critical velocity v_c of Eq. 1");
   q.contact = o.flag("contact", true, "contact with the rigid plane (off: free bottom face, for tests)");
   if (auto kn = o.realIfSet("kn", "Pa/m", "normal penalty stiffness k_n", "E0/hz")) q.kn = *kn;
@@ -72,16 +64,6 @@ FemParameters readFemParameters(MPI_Comm comm, RunParameters* record) {
   o.requireAtLeast("nx", q.nx, 1);
   o.requireAtLeast("ny", q.ny, 1);
   o.requireAtLeast("nz", q.nz, 1);
-  o.requirePositive("L", q.L, "m");
-  o.requirePositive("H", q.H, "m");
-  o.requirePositive("E", q.E, "Pa");
-  o.requireRange("nu", q.nu, 0.0, 0.4999, "0 <= nu < 0.5");
-  o.requirePositive("rho", q.rho, "kg/m^3");
-  o.requirePositive("p", q.p, "Pa");
-  o.requirePositive("v", q.v, "m/s");
-  o.requirePositive("mu_s", q.muS, "1");
-  o.requirePositive("mu_k", q.muK, "1");
-  if (q.muK > q.muS) throw InputError(o.fullName("mu_k"), formatReal(q.muK), "<= mu_s = " + formatReal(q.muS));
   o.requirePositive("v_c", q.vC, "m/s");
   if (o.wasSet("kn")) o.requirePositive("kn", q.kn, "Pa/m");
   if (o.wasSet("kt")) o.requirePositive("kt", q.kt, "Pa/m");

@@ -54,7 +54,7 @@ PlateModel::PlateModel(MPI_Comm comm, const FemParameters& params, const Grading
   GF_CALL(PetscLogEventRegister("GfFemElastic", classId, &evKernel_));
   GF_CALL(PetscLogEventRegister("GfFemContact", classId, &evContact_));
   GF_CALL(PetscLogEventRegister("GfFemGeneric", classId, &evGeneric_));
-  element_ = makeBoxElement(params_.L / params_.nx, params_.L / params_.ny, params_.H / params_.nz, params_.nu);
+  element_ = makeBoxElement(params_.plate.length / params_.nx, params_.plate.length / params_.ny, params_.plate.thickness / params_.nz, params_.plate.poissonRatio);
   buildMesh();
   buildCells();
   buildNodes();
@@ -72,7 +72,7 @@ PlateModel::PlateModel(MPI_Comm comm, const FemParameters& params, const Grading
 void PlateModel::buildMesh() {
   const PetscInt faces[3] = {params_.nx, params_.ny, params_.nz};
   const PetscReal lower[3] = {0, 0, 0};
-  const PetscReal upper[3] = {params_.L, params_.L, params_.H};
+  const PetscReal upper[3] = {params_.plate.length, params_.plate.length, params_.plate.thickness};
   OwnedDM serial;
   GF_CALL(DMPlexCreateBoxMesh(comm_, 3, PETSC_FALSE, faces, lower, upper, nullptr, PETSC_TRUE, serial.out()));
   DM distributed = distributeMesh(serial, params_.partitioner);
@@ -110,7 +110,7 @@ void PlateModel::buildCells() {
   GF_CALL(VecGetArrayRead(coords, &x));
   cellVertices_.assign(8 * numCells_, 0);
   cellStateOff_.assign(8 * numCells_, 0);
-  cellModulus_.assign(numCells_, params_.E);
+  cellModulus_.assign(numCells_, params_.plate.youngsModulus);
   for (PetscInt c = cStart; c < cEnd; ++c) {
     PetscInt np = 0;
     PetscInt* pts = nullptr;
@@ -144,7 +144,7 @@ void PlateModel::buildCells() {
       if (voff != soff + 3) throw std::runtime_error("plate mesh: unexpected state layout");
       cellStateOff_[8 * cell + a] = soff;
     }
-    cellModulus_[cell] = params_.E * grading_.modulusFactor(centre[0] / params_.L);
+    cellModulus_[cell] = params_.plate.youngsModulus * grading_.modulusFactor(centre[0] / params_.plate.length);
   }
   GF_CALL(VecRestoreArrayRead(coords, &x));
 }
@@ -152,7 +152,7 @@ void PlateModel::buildCells() {
 void PlateModel::buildNodes() {
   // Assemble nodal quantities through the state layout: slot 0 lumped mass, 1 bottom area,
   // 2 bottom area x friction factor, 3 top area.
-  const double rho = params_.rho, volume = element_.volume();
+  const double rho = params_.plate.density, volume = element_.volume();
   GF_CALL(VecZeroEntries(fLocal_));
   PetscScalar* f = nullptr;
   GF_CALL(VecGetArray(fLocal_, &f));
@@ -189,15 +189,15 @@ void PlateModel::buildNodes() {
         if (p < vStart_ || p >= vEnd_) continue;
         PetscInt off = 0;
         GF_CALL(PetscSectionGetOffset(coordSection, p, &off));
-        const double zExpected = value == 1 ? 0.0 : params_.H;
-        if (std::fabs(x[off + 2] - zExpected) > 1e-9 * params_.H)
+        const double zExpected = value == 1 ? 0.0 : params_.plate.thickness;
+        if (std::fabs(x[off + 2] - zExpected) > 1e-9 * params_.plate.thickness)
           throw std::runtime_error("plate mesh: Face Sets value does not match the face position");
         xc += x[off] / 4.0;
         if (nv < 4) verts[nv] = p;
         ++nv;
       }
       GF_CALL(DMPlexRestoreTransitiveClosure(dm_, faces[i], PETSC_TRUE, &np, &pts));
-      const double factor = grading_.frictionFactor(xc / params_.L);
+      const double factor = grading_.frictionFactor(xc / params_.plate.length);
       for (int k = 0; k < std::min(nv, 4); ++k) {
         PetscInt soff = 0;
         GF_CALL(PetscSectionGetOffset(section, verts[k], &soff));
@@ -245,8 +245,8 @@ void PlateModel::buildNodes() {
       node.y = x[off + 1];
       node.area = g[6 * b + 1];
       const double factor = g[6 * b + 2] / g[6 * b + 1];  // area-weighted band factor
-      node.muS = params_.muS * factor;
-      node.muK = params_.muK * factor;
+      node.muS = params_.plate.muStatic * factor;
+      node.muK = params_.plate.muKinetic * factor;
       bottom_.push_back(node);
     }
     if (g[6 * b + 3] > 0) top_.push_back({b, g[6 * b + 3]});
@@ -258,13 +258,13 @@ void PlateModel::buildNodes() {
 double stableTimeStep(const FemParameters& given, const Grading& grading) {
   FemParameters q = given;
   q.resolveDerived();
-  const BoxElement element = makeBoxElement(q.L / q.nx, q.L / q.ny, q.H / q.nz, q.nu);
+  const BoxElement element = makeBoxElement(q.plate.length / q.nx, q.plate.length / q.ny, q.plate.thickness / q.nz, q.plate.poissonRatio);
   double factor = 1.0;
   for (int band = 0; band < grading.bands; ++band)
     if (grading.gradesModulus()) factor = std::max(factor, grading.bandFactor(band));
-  double omega2 = elementMaxFrequencySquared(element, q.E * factor, q.rho);
+  double omega2 = elementMaxFrequencySquared(element, q.plate.youngsModulus * factor, q.plate.density);
   // Penalty springs: k * area / nodal mass = 2 k / (rho hz) at every bottom node.
-  if (q.contact) omega2 += 2.0 * std::max(q.kn, q.kt) / (q.rho * element.hz);
+  if (q.contact) omega2 += 2.0 * std::max(q.kn, q.kt) / (q.plate.density * element.hz);
   const double omega = std::sqrt(omega2);
   const double gamma = std::max(q.settleDamping, q.slideDamping);
   const double xi = 0.5 * q.stiffnessDamping * omega + gamma / (2.0 * omega);
@@ -301,8 +301,8 @@ Vec PlateModel::createState() const {
 }
 
 double PlateModel::pressureAt(double t) const {
-  if (phase_ == Phase::Sliding || params_.rampTime <= 0) return params_.p;
-  return params_.p * std::min(1.0, t / params_.rampTime);
+  if (phase_ == Phase::Sliding || params_.rampTime <= 0) return params_.plate.pressure;
+  return params_.plate.pressure * std::min(1.0, t / params_.rampTime);
 }
 
 void PlateModel::rhs(double t, Vec X, Vec F) {
@@ -420,12 +420,12 @@ void PlateModel::commitContact() {
 
 void PlateModel::startSliding(Vec X) {
   phase_ = Phase::Sliding;
-  const double theta = params_.thetaDeg * M_PI / 180.0;
+  const double theta = params_.plate.slidingAngle * M_PI / 180.0;
   PetscScalar* x = nullptr;
   GF_CALL(VecGetArray(X, &x));
   for (const TopNode& n : top_) {
-    x[6 * n.block + 3] = params_.v * std::cos(theta);
-    x[6 * n.block + 4] = params_.v * std::sin(theta);
+    x[6 * n.block + 3] = params_.plate.velocity * std::cos(theta);
+    x[6 * n.block + 4] = params_.plate.velocity * std::sin(theta);
   }
   GF_CALL(VecRestoreArray(X, &x));
 }
@@ -556,7 +556,7 @@ void PlateModel::setupGeneric() {
   GF_CALL(DMGetDS(dmU_, &ds));
   GF_CALL(PetscDSSetRHSResidual(ds, 0, nullptr, g1Elastic));
   GF_CALL(PetscDSSetImplicit(ds, 0, PETSC_FALSE));  // else the RHS residual is silently zero (3.18)
-  const PetscScalar constants[1] = {params_.nu};
+  const PetscScalar constants[1] = {params_.plate.poissonRatio};
   GF_CALL(PetscDSSetConstants(ds, 1, const_cast<PetscScalar*>(constants)));
   // E per cell as a piecewise-constant auxiliary field.
   GF_CALL(DMClone(dm_, dmAux_.out()));

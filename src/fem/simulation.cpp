@@ -60,7 +60,7 @@ class Monitor {
 public:
   Monitor(PlateModel& model, TS ts, FemRunResult* result) : model_(model), ts_(ts), r_(result) {
     const FemParameters& q = model.params();
-    reference_ = q.p * q.p * q.L * q.L * q.H / (2 * q.E);  // elastic energy of the plate compressed by p
+    reference_ = q.plate.pressure * q.plate.pressure * q.plate.length * q.plate.length * q.plate.thickness / (2 * q.plate.youngsModulus);  // elastic energy of the plate compressed by p
   }
   void startSliding(Vec state, double kineticBefore) { injected_ += model_.kineticEnergy(state) - kineticBefore; }
   // After every step, with the totals of that step (already summed over ranks).
@@ -75,8 +75,8 @@ public:
     lastZ_ = totals.topZ;
     lastP_ = p;
     if (model_.phase() == Phase::Sliding) {
-      const double theta = q.thetaDeg * M_PI / 180.0;
-      const double power = q.v * (totals.driveX * std::cos(theta) + totals.driveY * std::sin(theta));
+      const double theta = q.plate.slidingAngle * M_PI / 180.0;
+      const double power = q.plate.velocity * (totals.driveX * std::cos(theta) + totals.driveY * std::sin(theta));
       driveWork_ += 0.5 * (power + (sliding_ ? lastPower_ : power)) * model_.timeStep();
       lastPower_ = power;
       sliding_ = true;
@@ -148,7 +148,7 @@ FemRunResult runPlateExperiment(PlateModel& model, const StepObserver& observer)
   r.stableDt = model.stableTimeStep();
   OwnedVec X(model.createState());
   OwnedTS ts(createPlateTS(model, X));
-  const double normal = q.p * q.L * q.L;
+  const double normal = q.plate.pressure * q.plate.length * q.plate.length;
 
   // Step 1: pressure ramp and hold.
   model.setPhase(Phase::Pressure);

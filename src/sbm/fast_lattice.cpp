@@ -39,8 +39,8 @@ void directionOf(double degrees, double& cx, double& cy) {
 
 Motion motionOf(const Parameters& p, double timeStep, double damping) {
   double cx, cy;
-  directionOf(p.slidingAngle, cx, cy);
-  return {timeStep, damping, p.blockMass(), p.velocity * cx, p.velocity * cy, p.integrator};
+  directionOf(p.plate.slidingAngle, cx, cy);
+  return {timeStep, damping, p.blockMass(), p.plate.velocity * cx, p.plate.velocity * cy, p.integrator};
 }
 
 FastLattice::FastLattice(const LatticeStiffness& stiffness, const FrictionField& friction, const Motion& motion)

@@ -28,7 +28,7 @@ LatticeStiffness buildStiffness(const Parameters& p, const Grading& grading) {
   s.spacing = p.spacing();
   s.graded = grading.gradesModulus();
   std::vector<double> modulus(nb);
-  for (int c = 0; c < nb; ++c) modulus[c] = p.youngsModulus * grading.modulusFactor(columnCentre(c, nb));
+  for (int c = 0; c < nb; ++c) modulus[c] = p.plate.youngsModulus * grading.modulusFactor(columnCentre(c, nb));
   s.vertical.resize(nb);
   s.slider.resize(nb);
   for (int c = 0; c < nb; ++c) {
@@ -61,8 +61,8 @@ FrictionField buildFriction(const Parameters& p, const Grading& grading, StreamK
   std::vector<double> meanStatic(columns), meanKinetic(columns);
   for (int c = 0; c < columns; ++c) {
     const double factor = grading.frictionFactor(columnCentre(c, nb));
-    meanStatic[c] = p.muStatic * factor;
-    meanKinetic[c] = p.muKinetic * factor;
+    meanStatic[c] = p.plate.muStatic * factor;
+    meanKinetic[c] = p.plate.muKinetic * factor;
   }
   if (!dispersed) {
     for (int c = 0; c < columns; ++c) {

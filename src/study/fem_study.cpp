@@ -9,6 +9,7 @@
 #include "gradfric/core/input_error.hpp"
 #include "gradfric/core/petsc_call.hpp"
 #include "gradfric/physics/grading_options.hpp"
+#include "gradfric/physics/plate_options.hpp"
 
 #include <petscsys.h>
 
@@ -55,7 +56,8 @@ fem::FemParameters Study::onMesh(const Mesh& m) const {
 std::optional<Study> readStudy(MPI_Comm comm, RunParameters* record) {
   Study s;
   s.grading = readGrading(comm, record);
-  s.base = fem::readFemParameters(comm, record);
+  const Plate plate = readPlate(comm, record);
+  s.base = fem::readFemParameters(comm, record, plate);
   PetscBool knSet = PETSC_FALSE, ktSet = PETSC_FALSE, dtSet = PETSC_FALSE;
   GF_CALL(PetscOptionsHasName(nullptr, nullptr, "-fem_kn", &knSet));
   GF_CALL(PetscOptionsHasName(nullptr, nullptr, "-fem_kt", &ktSet));
@@ -99,7 +101,7 @@ std::optional<Study> readStudy(MPI_Comm comm, RunParameters* record) {
   o.requireRange("mesh_dt_safety", s.meshSafety, 1e-6, 1.0, "0 < safety <= 1");
   if (dtSet) throw InputError("-fem_dt", "(set)", "unset: the study sets the step as a fraction of the stable step");
   if (!s.base.output.empty()) throw InputError("-fem_output", s.base.output, "unset: the study writes -output");
-  checkUnusedOptions(comm, {"study_", "fem_", "grading_", "output"});
+  checkUnusedOptions(comm, {"study_", "plate_", "fem_", "grading_", "output"});
   for (auto* list : {&s.safeties, &s.safetiesOther, &s.factors, &s.fineSafeties}) std::sort(list->begin(), list->end());
   s.base.verbose = false;
   s.base.dt = 0;

@@ -7,6 +7,7 @@
 #include "gradfric/core/input_error.hpp"
 #include "gradfric/core/petsc_call.hpp"
 #include "gradfric/physics/grading_options.hpp"
+#include "gradfric/physics/plate_options.hpp"
 #include "gradfric/sbm/model.hpp"
 
 #include <petscsys.h>
@@ -63,10 +64,11 @@ double standardError(const std::vector<double>& v) {
 std::optional<Study> readStudy(MPI_Comm comm, RunParameters* record) {
   Study s;
   s.grading = readGrading(comm, record);
-  s.base = sbm::readParameters(comm, record, s.grading);
+  const Plate plate = readPlate(comm, record);
+  s.base = sbm::readParameters(comm, record, plate, s.grading);
   s.request = sbm::readRequest(comm, record, s.base);
   s.request.endTime = 0.0;
-  s.request.historyInterval = 1e3;  // the study keeps no histories
+  s.request.measurement.historyInterval = 1e3;  // the study keeps no histories
   OptionReader o(comm, "study_", "Accuracy-cost study (spring-block model)", record);
   s.knobs = o.choiceList("knobs", {"dt", "N", "R"}, {"dt", "N", "R"},
                          "ladders to run: time step per integrator, lattice size, number of realisations");
@@ -88,7 +90,7 @@ std::optional<Study> readStudy(MPI_Comm comm, RunParameters* record) {
   for (double dt : s.dts) o.requirePositive("dt", dt, "s");
   for (double n : s.sizes)
     if (n < 2 || n != std::floor(n)) throw InputError(o.fullName("N"), formatReal(n), "whole numbers >= 2");
-  checkUnusedOptions(comm, {"study_", "sbm_", "grading_", "output"});
+  checkUnusedOptions(comm, {"study_", "plate_", "friction_", "sbm_", "grading_", "output"});
   std::sort(s.dts.begin(), s.dts.end());
   s.dtRealisations = int(dtRealisations);
   s.sizeRealisations = int(sizeRealisations);
@@ -163,13 +165,13 @@ void runTasks(MPI_Comm comm, const Study& s, const std::vector<Task>& tasks, std
     const sbm::Result r = sbm::simulate(t.parameters, s.grading, s.request,
                                         StreamKey{s.seed, 0, std::uint32_t(t.realisation)});
     double* slot = &flat[4 * order[k]];
-    slot[0] = r.muStatic;
-    slot[1] = r.muKinetic;
+    slot[0] = r.friction.muStatic;
+    slot[1] = r.friction.muKinetic;
     slot[2] = r.wallSeconds;
     slot[3] = double(r.steps);
     std::printf("  [rank %d] %-9s rung %d realisation %d: dt = %.3g s, N_b = %d: mu_s = %.6f, mu_k = %.6f, %.2f s\n", rank,
                 (*ladders)[t.ladder].name.c_str(), t.rung, t.realisation, t.parameters.timeStep,
-                t.parameters.blocksPerSide, r.muStatic, r.muKinetic, r.wallSeconds);
+                t.parameters.blocksPerSide, r.friction.muStatic, r.friction.muKinetic, r.wallSeconds);
     std::fflush(stdout);
   }
   GF_CALL_MPI(MPI_Allreduce(MPI_IN_PLACE, flat.data(), int(flat.size()), MPI_DOUBLE, MPI_SUM, comm));

@@ -50,7 +50,7 @@ inline double maxLocalStatic(const FemParameters& q, const Grading& g) {
   double f = 1.0;
   if (g.gradesFriction())
     for (int band = 0; band < g.bands; ++band) f = std::max(f, g.bandFactor(band));
-  return q.muS * f;
+  return q.plate.muStatic * f;
 }
 
 struct Checked {
@@ -75,7 +75,7 @@ inline Checked runAndCheck(const HardCase& c, FemParameters q, const Grading& g,
   EXPECT_EQ(aboveCap, 0u) << label << ": mu(t) above max local mu_s x normal force";
   EXPECT_GT(r.muK, 0.0) << label;
   EXPECT_LE(r.muS, cap) << label;
-  const double reference = p.p * p.p * p.L * p.L * p.H / (2 * p.E);
+  const double reference = p.plate.pressure * p.plate.pressure * p.plate.length * p.plate.length * p.plate.thickness / (2 * p.plate.youngsModulus);
   EXPECT_FALSE(r.energy.empty());
   for (std::size_t i = 0; i < r.energy.size(); ++i) {
     EXPECT_TRUE(std::isfinite(r.energy[i]));

@@ -16,20 +16,20 @@ using namespace gradfric::fem;
 TEST(FemDynamics, FreePlateKeepsItsEnergyOver1000VerletSteps) {
   FemParameters q = test::coarse(8, 8, 3);
   q.contact = false;
-  q.p = 0;
+  q.plate.pressure = 0;
   q.settleDamping = 0;
   q.slideDamping = 0;
   PlateModel model(PETSC_COMM_WORLD, q, test::noGrading());
   OwnedVec X(model.createState());
   // A smooth bending-and-stretching velocity field plus an initial strain.
   test::setState(model, X, [&](const double* x, double* u, double* v) {
-    const double sx = std::sin(M_PI * x[0] / q.L), cy = std::cos(M_PI * x[1] / q.L);
+    const double sx = std::sin(M_PI * x[0] / q.plate.length), cy = std::cos(M_PI * x[1] / q.plate.length);
     u[0] = 1e-8 * sx * cy;
     u[1] = 0;
     u[2] = 0;
     v[0] = 0;
     v[1] = 1e-4 * sx;
-    v[2] = 1e-3 * sx * cy * (x[2] / q.H);
+    v[2] = 1e-3 * sx * cy * (x[2] / q.plate.thickness);
   });
   // Velocity Verlet conserves a shadow energy: the computed energy oscillates by O((omega dt)^2)
   // in the stiff thickness modes but must not drift. Drift = change of the mean over 100 steps
@@ -60,13 +60,13 @@ TEST(FemDynamics, FreePlateKeepsItsEnergyOver1000VerletSteps) {
 TEST(FemDynamics, CompressionalPulseTravelsAtTheWaveSpeed) {
   // nu = 0: a uniaxial pulse u_x(x - c t) stays uniaxial, c = sqrt(E / rho) exactly.
   FemParameters q = test::coarse(240, 1, 1);
-  q.nu = 0.0;
+  q.plate.poissonRatio = 0.0;
   q.contact = false;
-  q.p = 0;
+  q.plate.pressure = 0;
   q.settleDamping = 0;
   PlateModel model(PETSC_COMM_WORLD, q, test::noGrading());
-  const double c = std::sqrt(q.E / q.rho);
-  const double x0 = 0.25 * q.L, w = 0.04 * q.L;
+  const double c = std::sqrt(q.plate.youngsModulus / q.plate.density);
+  const double x0 = 0.25 * q.plate.length, w = 0.04 * q.plate.length;
   OwnedVec X(model.createState());
   test::setState(model, X, [&](const double* x, double* u, double* v) {
     const double s = (x[0] - x0) / w, g = std::exp(-s * s);
@@ -81,7 +81,7 @@ TEST(FemDynamics, CompressionalPulseTravelsAtTheWaveSpeed) {
   };
   const double start = centroid(X);
   OwnedTS ts(createPlateTS(model, X));
-  const double travel = 0.4 * q.L;
+  const double travel = 0.4 * q.plate.length;
   PetscReal t = 0;
   while (t < travel / c) {
     ASSERT_EQ(TSStep(ts), 0);

@@ -29,22 +29,22 @@ TEST(FemFriction, PlateSettlesUnderPressureToThePenaltyPenetration) {
   Vec s = nullptr;
   TSGetSolution(ts, &s);
   const ContactTotals totals = model.contactTotals();
-  const double force = r.p * r.L * r.L;
+  const double force = r.plate.pressure * r.plate.length * r.plate.length;
   double mean = 0, lo = 0, hi = 0;
   model.bottomPenetration(s, &mean, &lo, &hi);
   PetscPrintf(PETSC_COMM_WORLD, "settled: normal force %.6f p L^2, penetration mean %.5f min %.5f max %.5f of p/k_n\n",
-              totals.fn / force, mean * r.kn / r.p, lo * r.kn / r.p, hi * r.kn / r.p);
+              totals.fn / force, mean * r.kn / r.plate.pressure, lo * r.kn / r.plate.pressure, hi * r.kn / r.plate.pressure);
   EXPECT_NEAR(totals.fn / force, 1.0, 0.005);
-  EXPECT_NEAR(mean / (r.p / r.kn), 1.0, 0.01);
+  EXPECT_NEAR(mean / (r.plate.pressure / r.kn), 1.0, 0.01);
   EXPECT_EQ(totals.open, 0);
   // Settled: the plate is at rest.
-  EXPECT_LT(model.kineticEnergy(s), 1e-6 * r.p * r.p / r.kn * r.L * r.L);
+  EXPECT_LT(model.kineticEnergy(s), 1e-6 * r.plate.pressure * r.plate.pressure / r.kn * r.plate.length * r.plate.length);
 }
 
 namespace {
 FemRunResult runCoarse(const Grading& grading, double thetaDeg = 0.0) {
   FemParameters q = test::coarse(20, 20, 2);
-  q.thetaDeg = thetaDeg;
+  q.plate.slidingAngle = thetaDeg;
   PlateModel model(PETSC_COMM_WORLD, q, grading);
   return runPlateExperiment(model);
 }
@@ -59,8 +59,8 @@ TEST(FemFriction, NonGradedPlateStaticFrictionAndPeakTimeOfEquation2) {
   EXPECT_TRUE(r.peakConfirmed);
   // The global peak never exceeds the local mu_s; the shear concentration at the plate's edges
   // starts a detachment avalanche somewhat below it (see docs/fem.md): 0.89 on this mesh.
-  EXPECT_LE(r.muS, q.muS * 1.02);
-  EXPECT_GT(r.muS, q.muS * 0.85);
+  EXPECT_LE(r.muS, q.plate.muStatic * 1.02);
+  EXPECT_GT(r.muS, q.plate.muStatic * 0.85);
   // Paper Eq. 2: Delta t_s = mu_s p H / (G v).
   EXPECT_NEAR(r.peakTime / eq2, 1.0, 0.15);
   EXPECT_GT(r.firstSlipTime, 0.0);

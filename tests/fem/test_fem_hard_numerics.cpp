@@ -32,7 +32,7 @@ std::vector<HardCase> numericsCases() {
                      q.resolveDerived();
                      q.kn *= 0.01;
                      q.kt *= 0.01;
-                     const double stretch = 1 + q.shearModulus() / (q.H * q.kt);
+                     const double stretch = 1 + q.shearModulus() / (q.plate.thickness * q.kt);
                      q.slideTime *= stretch;
                      q.windowStart *= stretch;
                      q.windowLength *= stretch;
@@ -44,7 +44,7 @@ std::vector<HardCase> numericsCases() {
   // 0.9 / 0.45, 1.74 % at 0.6 / 0.3 (mu_s 0.8808 / 0.8657). Tolerance 2.5 %.
   {
     HardCase c{"thick_plate_H0.1mm", [](FemParameters& q, Grading&) {
-                 q.H = 1e-4;
+                 q.plate.thickness = 1e-4;
                  q.nz = 4;
                }};
     c.muSTolerance = 0.025;

@@ -61,14 +61,14 @@ TEST(FemModel, PatchTestUniformStrainIsReproducedExactly) {
   VecRestoreArray(u, &uu);
   model.elasticForceSpecialised(u, f);
   // Stress of the uniform strain.
-  const Lame l = lameFromYoung(q.E, q.nu);
+  const Lame l = lameFromYoung(q.plate.youngsModulus, q.plate.poissonRatio);
   double eps[3][3], sigma[3][3];
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) eps[i][j] = 0.5 * (A[i][j] + A[j][i]);
   const double tr = eps[0][0] + eps[1][1] + eps[2][2];
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) sigma[i][j] = 2 * l.mu * eps[i][j] + (i == j ? l.lambda * tr : 0.0);
-  const double hx = q.L / q.nx, hy = q.L / q.ny, hz = q.H / q.nz;
+  const double hx = q.plate.length / q.nx, hy = q.plate.length / q.ny, hz = q.plate.thickness / q.nz;
   // Round-off: each nodal force sums ~200 products about 100x larger than the face force.
   const double tol = 1e-10;
   const PetscScalar* ff = nullptr;
@@ -77,18 +77,18 @@ TEST(FemModel, PatchTestUniformStrainIsReproducedExactly) {
   for (PetscInt i = 0; i < n; i += 3) {
     const double px = x[i], py = x[i + 1], pz = x[i + 2];
     auto on = [](double v, double lo, double hi) { return std::fabs(v - lo) < 1e-12 * hi || std::fabs(v - hi) < 1e-12 * hi; };
-    const bool bx = on(px, 0, q.L), by = on(py, 0, q.L), bz = on(pz, 0, q.H);
+    const bool bx = on(px, 0, q.plate.length), by = on(py, 0, q.plate.length), bz = on(pz, 0, q.plate.thickness);
     const double scale = std::fabs(sigma[0][0]) * hy * hz;
     if (!bx && !by && !bz) {  // interior node: zero force
       ++interior;
       for (int c = 0; c < 3; ++c) EXPECT_NEAR(ff[i + c], 0.0, tol * scale);
     } else if (bx && !by && !bz) {  // inside an x face: the traction sigma n times hy hz
       ++faceNodes;
-      const double nx = px > 0.5 * q.L ? 1.0 : -1.0;
+      const double nx = px > 0.5 * q.plate.length ? 1.0 : -1.0;
       for (int c = 0; c < 3; ++c) EXPECT_NEAR(ff[i + c], -sigma[c][0] * nx * hy * hz, 1e-10 * scale);
     } else if (bz && !bx && !by) {  // inside a z face
       ++faceNodes;
-      const double nz = pz > 0.5 * q.H ? 1.0 : -1.0;
+      const double nz = pz > 0.5 * q.plate.thickness ? 1.0 : -1.0;
       for (int c = 0; c < 3; ++c) EXPECT_NEAR(ff[i + c], -sigma[c][2] * nz * hx * hy, 1e-10 * scale);
     }
   }
@@ -103,8 +103,8 @@ TEST(FemModel, PatchTestUniformStrainIsReproducedExactly) {
 TEST(FemModel, LumpedMassAndFaceAreas) {
   FemParameters q = test::coarse(6, 5, 2);
   PlateModel model(PETSC_COMM_WORLD, q, test::noGrading());
-  EXPECT_NEAR(model.totalMass(), q.rho * q.L * q.L * q.H, 1e-12 * q.rho * q.L * q.L * q.H);
-  EXPECT_NEAR(model.topArea(), q.L * q.L, 1e-12 * q.L * q.L);
+  EXPECT_NEAR(model.totalMass(), q.plate.density * q.plate.length * q.plate.length * q.plate.thickness, 1e-12 * q.plate.density * q.plate.length * q.plate.length * q.plate.thickness);
+  EXPECT_NEAR(model.topArea(), q.plate.length * q.plate.length, 1e-12 * q.plate.length * q.plate.length);
   EXPECT_EQ(model.globalCells(), 6 * 5 * 2);
   EXPECT_GT(model.stableTimeStep(), 0.0);
   EXPECT_NEAR(model.timeStep(), q.dtSafety * model.stableTimeStep(), 1e-20);

@@ -28,23 +28,29 @@ expect() {
 expect -grading_delta -grading_profile linear -grading_delta 1
 expect -grading_delta -grading_profile linear -grading_delta -1.5
 expect -ensemble_delta -grading_profile linear -ensemble_delta 0,0.5,1.0
-expect -sbm_E -sbm_E 0
-expect -sbm_E -sbm_E -1e6
-expect -sbm_L -sbm_L 0
+expect -plate_E -plate_E 0
+expect -plate_E -plate_E -1e6
+expect -plate_L -plate_L 0
 expect -sbm_lz -sbm_lz -1
-expect -sbm_rho -sbm_rho 0
-expect -sbm_p -sbm_p 0
-expect -sbm_v -sbm_v -0.001
+expect -plate_rho -plate_rho 0
+expect -plate_p -plate_p 0
+expect -plate_v -plate_v -0.001
 expect -sbm_dt -sbm_dt 0
 expect -sbm_dt -sbm_dt 1e-3
 expect -sbm_N -sbm_N 1
-expect -sbm_mu_k -sbm_mu_s 0.5 -sbm_mu_k 0.6
+expect -plate_mu_k -plate_mu_s 0.5 -plate_mu_k 0.6
 expect -sbm_sigma_s -sbm_sigma_s -0.01
 expect -sbm_sigma_k -sbm_sigma_k -0.2
 expect -grading_profile -grading_profile parabolic
 expect -grading_property -grading_property hardness
 expect -ensemble_property -grading_profile linear -ensemble_property E,stiffness
-expect -sbm_E -sbm_E ten
+expect -plate_E -plate_E ten
+# Names from before the plate record: refused with the new spelling.
+expect "use -plate_E = 2e7" -sbm_E 2e7
+expect "use -plate_H = 1e-4" -fem_H 1e-4
+expect "use -plate_theta = 90" -sbm_theta 90
+# The lattice fixes Poisson's ratio at 1/3.
+expect -plate_nu -plate_nu 0.3
 expect -options_file -options_file "$scratch/no_such_scene.opts"
 expect -output -output /no/such/folder/results.h5
 expect -sbm_dealta -sbm_dealta 0.1

@@ -73,11 +73,11 @@ TEST(LatticeElasticity, IsotropicWithModulusEAndPoissonRatioOneThird) {
   Parameters p;
   p.blocksPerSide = 9;
   const LatticeStiffness s = buildStiffness(p, {});
-  const auto S = compliance(s, p.thickness, 1e-5);
+  const auto S = compliance(s, p.layerThickness, 1e-5);
   for (double degrees : {0.0, 90.0, 45.0, 30.0}) {
     double modulus, poisson;
     uniaxial(S, degrees * M_PI / 180.0, modulus, poisson);
-    EXPECT_NEAR(modulus, p.youngsModulus, 0.01 * p.youngsModulus) << degrees << " degrees";
+    EXPECT_NEAR(modulus, p.plate.youngsModulus, 0.01 * p.plate.youngsModulus) << degrees << " degrees";
     EXPECT_NEAR(poisson, 1.0 / 3.0, 0.02 / 3.0) << degrees << " degrees";
   }
 }
@@ -92,12 +92,12 @@ TEST(LatticeElasticity, SnapshotStressIsTheContinuumStress) {
   std::vector<double> ux(nb * nb), uy(nb * nb, 0.0), sigma(nb * nb);
   for (int r = 0; r < nb; ++r)
     for (int c = 0; c < nb; ++c) ux[r * nb + c] = exx * c * s.spacing;
-  longitudinalStress(s, p.thickness, p.pressure, ux.data(), uy.data(), sigma.data());
-  const double expected = p.youngsModulus / (1 - 1.0 / 9.0) * exx / p.pressure;
+  longitudinalStress(s, p.layerThickness, p.plate.pressure, ux.data(), uy.data(), sigma.data());
+  const double expected = p.plate.youngsModulus / (1 - 1.0 / 9.0) * exx / p.plate.pressure;
   EXPECT_NEAR(sigma[3 * nb + 3], expected, 1e-3 * expected);
   // Tension is positive, compression negative.
   for (auto& u : ux) u = -u;
-  longitudinalStress(s, p.thickness, p.pressure, ux.data(), uy.data(), sigma.data());
+  longitudinalStress(s, p.layerThickness, p.plate.pressure, ux.data(), uy.data(), sigma.data());
   EXPECT_NEAR(sigma[3 * nb + 3], -expected, 1e-3 * expected);
 }
 
@@ -116,7 +116,7 @@ TEST(LatticeElasticity, GradedSpringsTakeTheSeriesStiffness) {
     EXPECT_DOUBLE_EQ(s.diagonal[c], a * b / (a + b));
   }
   // Column 0 is band 0: E = E0 (1 - Delta); the last column E0 (1 + Delta).
-  EXPECT_DOUBLE_EQ(s.vertical.front(), 0.75 * p.youngsModulus * 0.5 * p.thickness);
-  EXPECT_DOUBLE_EQ(s.vertical.back(), 0.75 * p.youngsModulus * 1.5 * p.thickness);
-  EXPECT_DOUBLE_EQ(s.slider.back(), p.sliderStiffness(1.5 * p.youngsModulus));
+  EXPECT_DOUBLE_EQ(s.vertical.front(), 0.75 * p.plate.youngsModulus * 0.5 * p.layerThickness);
+  EXPECT_DOUBLE_EQ(s.vertical.back(), 0.75 * p.plate.youngsModulus * 1.5 * p.layerThickness);
+  EXPECT_DOUBLE_EQ(s.slider.back(), p.sliderStiffness(1.5 * p.plate.youngsModulus));
 }

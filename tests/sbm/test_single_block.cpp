@@ -52,23 +52,23 @@ void checkAgainstAnalytic(Integrator integrator = Integrator::RK4) {
   p.integrator = integrator;
   p.damping = 0.0;
   const double fn = p.normalForcePerBlock();
-  const double k = p.sliderStiffness(p.youngsModulus);
+  const double k = p.sliderStiffness(p.plate.youngsModulus);
   const double omega = std::sqrt(k / p.blockMass());
-  const double amplitude = (p.muStatic - p.muKinetic) * fn / k;
-  const double period = 2.0 * amplitude / p.velocity + (2.0 * M_PI - 2.0 * std::atan(amplitude * omega / p.velocity)) / omega;
+  const double amplitude = (p.plate.muStatic - p.plate.muKinetic) * fn / k;
+  const double period = 2.0 * amplitude / p.plate.velocity + (2.0 * M_PI - 2.0 * std::atan(amplitude * omega / p.plate.velocity)) / omega;
   const auto cycle = runStickSlip<Lattice>(p, 3.5 * period);
   ASSERT_GE(cycle.peakTimes.size(), 3u);
   // The force can overshoot the threshold by at most one step of loading, K v dt.
-  const double loadingPerStep = k * p.velocity * p.timeStep;
+  const double loadingPerStep = k * p.plate.velocity * p.timeStep;
   for (double peak : cycle.peakForces) {
-    EXPECT_GE(peak, p.muStatic * fn - 1e-12 * fn);
-    EXPECT_LE(peak, p.muStatic * fn + 1.01 * loadingPerStep);
+    EXPECT_GE(peak, p.plate.muStatic * fn - 1e-12 * fn);
+    EXPECT_LE(peak, p.plate.muStatic * fn + 1.01 * loadingPerStep);
   }
-  for (double trough : cycle.troughForces) EXPECT_NEAR(trough / fn, 2 * p.muKinetic - p.muStatic, 0.01);
+  for (double trough : cycle.troughForces) EXPECT_NEAR(trough / fn, 2 * p.plate.muKinetic - p.plate.muStatic, 0.01);
   for (std::size_t i = 1; i < cycle.peakTimes.size(); ++i)
     EXPECT_NEAR(cycle.peakTimes[i] - cycle.peakTimes[i - 1], period, 0.005 * period) << "cycle " << i;
   // The first peak comes after loading from rest: t = mu_s F_n / (K v).
-  EXPECT_NEAR(cycle.peakTimes[0], p.muStatic * fn / (k * p.velocity), 2 * p.timeStep);
+  EXPECT_NEAR(cycle.peakTimes[0], p.plate.muStatic * fn / (k * p.plate.velocity), 2 * p.timeStep);
 }
 
 }  // namespace
@@ -83,10 +83,10 @@ TEST(SingleBlock, DampingShortensTheOvershoot) {
   // With damping the block stops earlier: the trough rises above the undamped 2 mu_k - mu_s.
   // Damping ratio 0.3 of the slider mode (omega_s = sqrt(K_s/m) does not depend on N_b).
   Parameters p = sbm::testing::paperParameters(2, 0.0, {}, 0.02, 0.0);
-  const double k = p.sliderStiffness(p.youngsModulus);
+  const double k = p.sliderStiffness(p.plate.youngsModulus);
   p.damping = 2 * 0.3 * std::sqrt(k / p.blockMass());
-  const auto cycle = runStickSlip<FastLattice>(p, 3.0 * p.muStatic * p.normalForcePerBlock() / (k * p.velocity));
+  const auto cycle = runStickSlip<FastLattice>(p, 3.0 * p.plate.muStatic * p.normalForcePerBlock() / (k * p.plate.velocity));
   ASSERT_GE(cycle.troughForces.size(), 1u);
-  EXPECT_GT(cycle.troughForces[0] / p.normalForcePerBlock(), 2 * p.muKinetic - p.muStatic + 0.05);
-  EXPECT_LT(cycle.troughForces[0] / p.normalForcePerBlock(), p.muKinetic);
+  EXPECT_GT(cycle.troughForces[0] / p.normalForcePerBlock(), 2 * p.plate.muKinetic - p.plate.muStatic + 0.05);
+  EXPECT_LT(cycle.troughForces[0] / p.normalForcePerBlock(), p.plate.muKinetic);
 }

@@ -1,6 +1,7 @@
 #pragma once
 // Parameters of the 3D finite-element plate model (all -fem_ options) and their reader.
 #include "gradfric/core/options.hpp"
+#include "gradfric/physics/plate.hpp"
 
 #include <string>
 #include <vector>
@@ -10,18 +11,10 @@ namespace gradfric::fem {
 struct FemParameters {
   // Mesh and geometry
   int nx = 100, ny = 100, nz = 5;
-  double L = 5e-3;   // plate side [m]
-  double H = 5e-5;   // plate thickness [m]
-  // Material (reference values; E graded by the -grading_ options)
-  double E = 10e6;       // [Pa]
-  double nu = 1.0 / 3.0;
-  double rho = 1200.0;   // [kg/m^3]
-  // Loading
-  double p = 1e4;        // top pressure [Pa]
-  double v = 1e-3;       // top sliding speed [m/s]
-  double thetaDeg = 0;   // sliding direction vs the grading axis x [deg]
-  // Friction (paper Eq. 1; local values graded by the -grading_ options)
-  double muS = 1.0, muK = 0.6;
+  // The physical plate (-plate_ options, shared with the spring-block model): size L, thickness
+  // H, material, pressure, sliding speed and angle, mean local mu_s and mu_k (graded by -grading_).
+  Plate plate;
+  // Friction law (paper Eq. 1)
   double vC = 1e-4;      // critical velocity v_c [m/s]
   bool contact = true;   // false: free bottom face (testing)
   double kn = 0, kt = 0;  // penalty stiffnesses [Pa/m]; 0 = derived E/hz
@@ -53,15 +46,15 @@ struct FemParameters {
   int historyEvery = 1;
   bool verbose = true;
 
-  double shearModulus() const { return E / (2 * (1 + nu)); }
+  double shearModulus() const { return plate.shearModulus(); }
   double shearWaveSpeed() const;
   // Paper Eq. 2: Delta t_s = mu_s p H / (G v).
-  double eq2PeakTime() const { return muS * p * H / (shearModulus() * v); }
+  double eq2PeakTime() const { return plate.loadingTime(plate.thickness); }
   // Fill the derived defaults (negative or zero placeholders) from the others.
   void resolveDerived();
 };
 
 // Reads and validates every -fem_ option (derived defaults recorded as such).
-FemParameters readFemParameters(MPI_Comm comm, RunParameters* record);
+FemParameters readFemParameters(MPI_Comm comm, RunParameters* record, const Plate& plate);
 
 }  // namespace gradfric::fem

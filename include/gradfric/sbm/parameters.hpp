@@ -2,7 +2,9 @@
 // Parameters of the 2D spring-block model (paper, "2D spring-block model"; shared/notes/model.md).
 // SI units throughout. All are PETSc options with the -sbm_ prefix.
 #include "gradfric/core/options.hpp"
+#include "gradfric/physics/friction_history.hpp"
 #include "gradfric/physics/grading.hpp"
+#include "gradfric/physics/plate.hpp"
 
 #include <string>
 #include <vector>
@@ -12,18 +14,11 @@ namespace gradfric::sbm {
 enum class Integrator { RK4, VelocityVerlet };
 
 struct Parameters {
-  // Plate and material
-  double length = 5e-3;        // L [m]
-  double thickness = 5.7e-5;   // l_z [m]
-  double density = 1200.0;     // rho [kg/m^3]
-  double youngsModulus = 1e7;  // E0 [Pa]
-  double poissonRatio = 1.0 / 3.0;  // fixed by the lattice (axial k, diagonal k/2)
-  double pressure = 1e4;       // p [Pa]
-  double velocity = 1e-3;      // slider speed v [m/s]
-  double slidingAngle = 0.0;   // theta between slider velocity and grading axis x [degree]
-  // Local friction (means; graded by the grading's friction factor) and relative dispersion
-  double muStatic = 1.0;
-  double muKinetic = 0.6;
+  // The physical plate (-plate_ options, shared with the FEM). The lattice has Poisson's ratio
+  // 1/3 (axial k, diagonal k/2); plate.thickness H is not used: the mass layer is l_z.
+  Plate plate;
+  double layerThickness = 5.7e-5;  // l_z [m]: block mass rho l_z l^2, slider K_s = G l^2 / l_z
+  // Relative dispersion of the local friction around the plate's (graded) means
   double sigmaStatic = 0.028;   // relative standard deviation of mu_s,i
   double sigmaKinetic = 0.028;  // relative standard deviation of mu_k,i
   // Lattice and numerics
@@ -37,38 +32,32 @@ struct Parameters {
   double timeStepSafety = 0.25;  // default dt at most this fraction of the stability limit
   double timeStepSlip = 0.03;    // ... and at most this fraction of the slip time sqrt(m/K_s)
 
-  double spacing() const { return length / blocksPerSide; }
-  double blockMass() const { return density * thickness * spacing() * spacing(); }
-  double axialStiffness(double modulus) const { return 0.75 * modulus * thickness; }  // K_int
-  double shearModulus(double modulus) const { return modulus / (2.0 * (1.0 + poissonRatio)); }
-  // Slider spring: shear stiffness of the column of height l_z under a block (model.md).
+  double spacing() const { return plate.length / blocksPerSide; }
+  double blockMass() const { return plate.density * layerThickness * spacing() * spacing(); }
+  double axialStiffness(double modulus) const { return 0.75 * modulus * layerThickness; }  // K_int
+  double shearModulus(double modulus) const { return plate.shearModulus(modulus); }
+  // Slider spring: shear stiffness of the column of height l_z under a block (docs/model.md).
   double sliderStiffness(double modulus) const {
-    return shearModulus(modulus) * spacing() * spacing() / thickness;
+    return shearModulus(modulus) * spacing() * spacing() / layerThickness;
   }
-  double normalForcePerBlock() const { return pressure * spacing() * spacing(); }
-  // Loading time to the static threshold of the uniform plate (SBM counterpart of paper Eq. 2).
-  double loadingTime() const { return muStatic * pressure * thickness / (shearModulus(youngsModulus) * velocity); }
+  double normalForcePerBlock() const { return plate.pressure * spacing() * spacing(); }
+  // Loading time to the static threshold of the uniform plate: paper Eq. 2 with H -> l_z.
+  double loadingTime() const { return plate.loadingTime(layerThickness); }
 };
 
-// What a run must determine; it stops as soon as these are known.
+// What a run must determine (the shared friction measurement) and the spring-block run's own
+// limits; it stops as soon as the observables are known.
 struct Request {
-  bool staticFriction = true;   // mu_s (always needed for the others: they are timed from the peak)
-  bool kineticFriction = true;  // mu_k over the window after the peak
-  bool firstSlipMap = true;     // first-slip time of every block
+  FrictionMeasurement measurement;    // -friction_ options: peak rule, kinetic window, history sampling
   std::vector<double> snapshotTimes;  // sigma_x/p maps at these times [s]
-  double historyInterval = 0.0;       // sampling of mu(t) [s]; 0 = every step
-  double kineticDelay = 0.0;          // window start after the peak [s]
-  double kineticWidth = 0.0;          // window width [s]
-  double peakDrop = 0.01;             // relative fall below the maximum that confirms the peak
-  double peakHold = 0.0;              // or this long without a new maximum once all blocks slid [s]
   double endTime = 0.0;               // if > 0: run exactly this long, whatever is known
   double maxTime = 0.0;               // give up (peak unconfirmed) after this long [s]
-  int energyCheckInterval = 500;     // steps between two energy-balance checks (and at the end)
+  int energyCheckInterval = 500;      // steps between two energy-balance checks (and at the end)
 };
 
 // Reads -sbm_* (physics, numerics) and the observable options; validates before any work.
 // The grading is needed for the stability limit (the stiffest band).
-Parameters readParameters(MPI_Comm comm, RunParameters* record, const Grading& grading);
+Parameters readParameters(MPI_Comm comm, RunParameters* record, const Plate& plate, const Grading& grading);
 Request readRequest(MPI_Comm comm, RunParameters* record, const Parameters& parameters);
 
 // The largest step that is stable for this lattice with the parameters' integrator (stiffest
