@@ -2,12 +2,16 @@
 //
 //   mpiexec -n 2 gradfric -options_file input/default.opts [-sbm_N 60 ...] [-help]
 //
-// -model sbm (the default and only choice; the FEM is gradfric-fem) runs the spring-block scene: every (sweep point, realisation) task spread
-// over the ranks, results in one HDF5 file (-output). -help lists every option with its default
-// and unit. See README.md.
+// -model sbm (the default and only choice; the FEM is gradfric-fem) runs the spring-block scene:
+// every (sweep point, realisation) task spread over the ranks, results in one HDF5 file (-output). -help lists every option with its default and unit. See README.md and
+// docs/ensemble.md.
 #include "gradfric/core/driver.hpp"
 #include "gradfric/core/options.hpp"
-#include "gradfric/ensemble/scene_runner.hpp"
+#include "gradfric/ensemble/scene.hpp"
+#include "gradfric/ensemble/scene_file.hpp"
+#include "gradfric/ensemble/scene_report.hpp"
+#include "gradfric/ensemble/task_runner.hpp"
+#include "gradfric/io/collective_file.hpp"
 
 #include <petscsys.h>
 
@@ -21,14 +25,26 @@ static const char help[] =
 
 namespace {
 
+struct PlotRequest {
+  bool plot = false;
+  std::string folder;
+};
+
+PlotRequest readPlotOptions(MPI_Comm comm, gradfric::RunParameters* record) {
+  gradfric::OptionReader options(comm, "", "Plots", record);
+  PlotRequest r;
+  r.plot = options.flag("plot", false, "draw the results (mu(t), relative variation, maps) as PNG when the run completes");
+  r.folder = options.text("plot_dir", "", "folder of the figures (default: beside the results file)");
+  return r;
+}
+
 // -plot: draw the results file with scripts/gradfric_plot.py once the run is complete.
-void plotResults(MPI_Comm comm, const gradfric::RunParameters& record, const std::string& folder) {
-  const auto* output = record.find("-output");
+void plotResults(MPI_Comm comm, const PlotRequest& request, const std::string& results) {
   int rank = 0;
   MPI_Comm_rank(comm, &rank);
-  if (!output || rank != 0) return;
-  const std::string command = "/usr/bin/python3 '" GRADFRIC_SCRIPTS_DIR "/gradfric_plot.py' '" + output->value +
-                              "'" + (folder.empty() ? "" : " --out '" + folder + "'");
+  if (!request.plot || rank != 0) return;
+  const std::string command = "/usr/bin/python3 '" GRADFRIC_SCRIPTS_DIR "/gradfric_plot.py' '" + results + "'" +
+                              (request.folder.empty() ? "" : " --out '" + request.folder + "'");
   if (std::system(command.c_str()) != 0)
     std::fprintf(stderr, "gradfric: warning: plotting failed (%s); the results file is complete\n", command.c_str());
 }
@@ -37,13 +53,23 @@ void plotResults(MPI_Comm comm, const gradfric::RunParameters& record, const std
 
 int main(int argc, char** argv) {
   return gradfric::runDriver(argc, argv, help, [](MPI_Comm comm) {
-    gradfric::RunParameters record;
-    gradfric::OptionReader model(comm, "", "Model", &record);
+    using namespace gradfric;
+    using namespace gradfric::ensemble;
+    RunParameters record;
+    OptionReader model(comm, "", "Model", &record);
     model.choice("model", "sbm", {"sbm"}, "the spring-block model (the finite-element model is the gradfric-fem driver)");
-    gradfric::OptionReader options(comm, "", "Plots", &record);
-    const bool plot = options.flag("plot", false, "draw the results (mu(t), relative variation, maps) as PNG when the run completes");
-    const std::string folder = options.text("plot_dir", "", "folder of the figures (default: beside the results file)");
-    gradfric::ensemble::runSpringBlockScene(comm, &record);
-    if (plot && !gradfric::helpRequested()) plotResults(comm, record, folder);
+    const PlotRequest plot = readPlotOptions(comm, &record);
+    const std::optional<Scene> scene = readScene(comm, &record);  // every option, checked
+    if (!scene) return;                                           // -help
+    printScene(comm, *scene, record);
+    if (scene->dryRun) return printDryRun(comm, *scene);
+    const io::OutputPlan plan = planResultsFile(comm, *scene);    // before any work
+    io::CollectiveFileScope writing(comm, plan.workPath());       // an I/O failure ends every rank
+    io::ResultsFile file = openResultsFile(comm, *scene, plan);
+    const TaskTally tally = runTasks(comm, *scene, file, plan.workPath());
+    const std::vector<PointStatistics> statistics = writeStatistics(file, *scene);
+    finishResultsFile(comm, file, plan);                          // complete: renamed into place
+    printResults(comm, *scene, statistics, tally, plan.path());
+    plotResults(comm, plot, plan.path());
   });
 }

@@ -2,6 +2,7 @@
 #include <petscsection.h>
 #include <petscsf.h>
 
+#include "gradfric/core/collective_error.hpp"
 #include "gradfric/core/driver.hpp"
 #include "gradfric/core/input_error.hpp"
 #include "gradfric/core/options.hpp"
@@ -16,94 +17,135 @@
 
 #include <petscsys.h>
 
+#include <algorithm>
 #include <cmath>
+#include <optional>
 
 static const char help[] =
     "gradfric-fem: explicit 3D FEM of an elastic plate sliding on a rigid plane with penalty contact and the\n"
     "velocity-weakening friction of the paper's Eq. 1; pressure step, then sliding; reports mu(t), mu_s,\n"
     "the peak time (vs Eq. 2) and mu_k. Options -fem_*, -grading_*, PETSc's -ts_type (default gfverlet).\n";
 
+namespace {
+
+using namespace gradfric;
+using namespace gradfric::fem;
+
+// Every option of a gradfric-fem run.
+struct FemRun {
+  Grading grading;
+  FemParameters params;
+  bool compare = false;  // also one SBM realisation on the same grading
+  std::uint64_t seed = 1;
+  sbm::Parameters sbmParams;
+  sbm::Request sbmRequest;
+};
+
+// Reads and checks every option (InputError on every rank alike); nullopt after -help.
+std::optional<FemRun> readFemRun(MPI_Comm comm, RunParameters* record) {
+  FemRun run;
+  run.grading = readGrading(comm, record);
+  const Plate plate = readPlate(comm, record);  // one plate for both models
+  run.params = readFemParameters(comm, record, plate);
+  OptionReader driverOptions(comm, "fem_", "gradfric-fem: both models", record);
+  run.compare = driverOptions.flag(
+      "compare_sbm", false, "also run one spring-block realisation (-sbm_ options) on the same grading, side by side");
+  const PetscInt seed = driverOptions.integer("compare_seed", 1, 0, PETSC_MAX_INT, "1", "random stream of that SBM realisation");
+  driverOptions.requireAtLeast("compare_seed", seed, 0);
+  run.seed = static_cast<std::uint64_t>(seed);
+  if (run.compare || helpRequested()) {
+    run.sbmParams = sbm::readParameters(comm, record, plate, run.grading);
+    run.sbmRequest = sbm::readRequest(comm, record, run.sbmParams);
+  }
+  if (helpRequested()) return std::nullopt;
+  if (run.compare)
+    checkUnusedOptions(comm, {"plate_", "friction_", "fem_", "grading_", "sbm_"});
+  else
+    checkUnusedOptions(comm, {"plate_", "fem_", "grading_"});
+  requireFemRunLength(run.params, run.grading, record);  // refuses a dt above the stable step, an endless run
+  return run;
+}
+
+void printPlan(MPI_Comm comm, const FemRun& run, const PlateModel& model, RunParameters* record) {
+  const FemParameters& params = run.params;
+  record->add({"-fem_dt (used)", formatReal(model.timeStep()), "s", "time step", OptionOrigin::Derived});
+  record->add({"stable step", formatReal(model.stableTimeStep()), "s", "mesh, wave speed, penalty, damping",
+               OptionOrigin::Derived});
+  record->print(comm, "gradfric-fem: resolved parameters");
+  int size = 1;
+  MPI_Comm_size(comm, &size);
+  PetscPrintf(comm,
+              "Active effects: grading %s; %d x %d x %d hexahedra (%d cells) on %d rank(s), partitioner %s;\n"
+              "  pressure ramp %.3g s + settle %.3g s (mass damping %.3g 1/s), sliding at %.3g m/s, theta %.3g deg;\n"
+              "  contact penalty k_n %.3g, k_t %.3g Pa/m; Eq. 1 friction, v_c %.3g m/s; dt %.4g s (stable %.4g s)\n",
+              describe(run.grading).c_str(), params.nx, params.ny, params.nz, static_cast<int>(model.globalCells()),
+              size, params.partitioner.c_str(), params.rampTime, params.settleTime, params.settleDamping,
+              params.plate.velocity, params.plate.slidingAngle, params.kn, params.kt, params.vC, model.timeStep(),
+              model.stableTimeStep());
+}
+
+void printResults(MPI_Comm comm, const FemRun& run, const FemRunResult& r, double wall) {
+  const double eq2 = run.params.eq2PeakTime();
+  PetscPrintf(comm,
+              "Results (FEM):\n"
+              "  settled normal force / (p L^2)  %.6f\n"
+              "  mu_s (global)                   %.6f\n"
+              "  peak time after sliding start   %.6e s   (Eq. 2: %.6e s, ratio %.4f)\n"
+              "  first slip after sliding start  %.6e s\n"
+              "  mu_k (kinetic window)           %.6f%s\n"
+              "  steps %ld, dt %.4e s, wall %.2f s (pressure %.2f s, sliding %.2f s), %.3f ms/step\n",
+              r.settledNormalForce, r.muS, r.peakTime, eq2, r.peakTime / eq2, r.firstSlipTime, r.muK,
+              r.windowComplete ? "" : "  (window incomplete)", r.steps, r.dt, wall, r.wallPressure, r.wallSliding,
+              1e3 * wall / std::max(1L, r.steps));
+}
+
+// -fem_compare_sbm: one SBM realisation on rank 0 (the SBM has no MPI inside), the same grading.
+void compareWithSpringBlocks(MPI_Comm comm, const FemRun& run, const FemRunResult& r, double wall) {
+  if (!run.compare) return;
+  int rank = 0;
+  MPI_Comm_rank(comm, &rank);
+  double sbmValues[4] = {0, 0, 0, 0};
+  std::string failure;  // on rank 0 only: agreed before the next collective call
+  if (rank == 0) {
+    try {
+      const sbm::Result s = sbm::simulate(run.sbmParams, run.grading, run.sbmRequest, StreamKey{run.seed, 0, 0});
+      sbmValues[0] = s.friction.muStatic;
+      sbmValues[1] = s.friction.muKinetic;
+      sbmValues[2] = s.friction.peakTime;
+      sbmValues[3] = s.wallSeconds;
+    } catch (const std::exception& e) {
+      failure = std::string("the spring-block run of -fem_compare_sbm failed: ") + e.what();
+    }
+  }
+  agreeOnError(comm, failure);
+  MPI_Bcast(sbmValues, 4, MPI_DOUBLE, 0, comm);
+  PetscPrintf(comm,
+              "Side by side (grading %s):\n"
+              "                   FEM            SBM\n"
+              "  mu_s        %12.6f   %12.6f\n"
+              "  mu_k        %12.6f   %12.6f\n"
+              "  peak time   %12.4e   %12.4e s   (FEM Eq. 2: %.4e s, SBM loading time: %.4e s)\n"
+              "  wall        %12.2f   %12.2f s\n",
+              describe(run.grading).c_str(), r.muS, sbmValues[0], r.muK, sbmValues[1], r.peakTime, sbmValues[2],
+              run.params.eq2PeakTime(), run.sbmParams.loadingTime(), wall, sbmValues[3]);
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
   return gradfric::runDriver(argc, argv, help, [](MPI_Comm comm) {
-    using namespace gradfric;
-    using namespace gradfric::fem;
     RunParameters record;
-    const Grading grading = readGrading(comm, &record);
-    const Plate plate = readPlate(comm, &record);  // one plate for both models
-    const FemParameters params = readFemParameters(comm, &record, plate);
-    OptionReader driverOptions(comm, "fem_", "gradfric-fem: both models", &record);
-    const bool compare = driverOptions.flag(
-        "compare_sbm", false, "also run one spring-block realisation (-sbm_ options) on the same grading, side by side");
-    const PetscInt seed = driverOptions.integer("compare_seed", 1, 0, PETSC_MAX_INT, "1", "random stream of that SBM realisation");
-    driverOptions.requireAtLeast("compare_seed", seed, 0);
-    sbm::Parameters sbmParams;
-    sbm::Request sbmRequest;
-    if (compare || helpRequested()) {
-      sbmParams = sbm::readParameters(comm, &record, plate, grading);
-      sbmRequest = sbm::readRequest(comm, &record, sbmParams);
-    }
-    if (helpRequested()) return;
-    if (compare)
-      checkUnusedOptions(comm, {"plate_", "friction_", "fem_", "grading_", "sbm_"});
-    else
-      checkUnusedOptions(comm, {"plate_", "fem_", "grading_"});
-    requireFemRunLength(params, grading, &record);  // refuses a dt above the stable step, an endless run
-    OutputFiles output(comm, params);  // refuses an existing file before any work
-    PlateModel model(comm, params, grading);
-    record.add({"-fem_dt (used)", formatReal(model.timeStep()), "s", "time step", OptionOrigin::Derived});
-    record.add({"stable step", formatReal(model.stableTimeStep()), "s", "mesh, wave speed, penalty, damping",
-                OptionOrigin::Derived});
-    record.print(comm, "gradfric-fem: resolved parameters");
-    const double eq2 = params.eq2PeakTime();
-    int size = 1;
-    MPI_Comm_size(comm, &size);
-    PetscPrintf(comm,
-                "Active effects: grading %s; %d x %d x %d hexahedra (%d cells) on %d rank(s), partitioner %s;\n"
-                "  pressure ramp %.3g s + settle %.3g s (mass damping %.3g 1/s), sliding at %.3g m/s, theta %.3g deg;\n"
-                "  contact penalty k_n %.3g, k_t %.3g Pa/m; Eq. 1 friction, v_c %.3g m/s; dt %.4g s (stable %.4g s)\n",
-                describe(grading).c_str(), params.nx, params.ny, params.nz, static_cast<int>(model.globalCells()), size,
-                params.partitioner.c_str(), params.rampTime, params.settleTime, params.settleDamping, params.plate.velocity,
-                params.plate.slidingAngle, params.kn, params.kt, params.vC, model.timeStep(), model.stableTimeStep());
-    StepObserver observer = output.snapshotObserver(model);
+    const std::optional<FemRun> run = readFemRun(comm, &record);  // every option, checked
+    if (!run) return;                                             // -help
+    OutputFiles output(comm, run->params);                        // planned before any work
+    PlateModel model(comm, run->params, run->grading);
+    printPlan(comm, *run, model, &record);
     const double wall0 = MPI_Wtime();
-    const FemRunResult r = runPlateExperiment(model, observer);
+    const FemRunResult result = runPlateExperiment(model, output.snapshotObserver(model));
     const double wall = MPI_Wtime() - wall0;
-    output.writeHistory(model, r, record);
-    output.finish();
-    PetscPrintf(comm,
-                "Results (FEM):\n"
-                "  settled normal force / (p L^2)  %.6f\n"
-                "  mu_s (global)                   %.6f\n"
-                "  peak time after sliding start   %.6e s   (Eq. 2: %.6e s, ratio %.4f)\n"
-                "  first slip after sliding start  %.6e s\n"
-                "  mu_k (kinetic window)           %.6f%s\n"
-                "  steps %ld, dt %.4e s, wall %.2f s (pressure %.2f s, sliding %.2f s), %.3f ms/step\n",
-                r.settledNormalForce, r.muS, r.peakTime, eq2, r.peakTime / eq2, r.firstSlipTime, r.muK,
-                r.windowComplete ? "" : "  (window incomplete)", r.steps, r.dt, wall, r.wallPressure, r.wallSliding,
-                1e3 * wall / std::max(1L, r.steps));
-    if (compare) {
-      // One SBM realisation on rank 0 (the SBM has no MPI inside), the same grading.
-      int rank = 0;
-      MPI_Comm_rank(comm, &rank);
-      double sbmValues[4] = {0, 0, 0, 0};
-      if (rank == 0) {
-        const sbm::Result s = sbm::simulate(sbmParams, grading, sbmRequest,
-                                            StreamKey{static_cast<std::uint64_t>(seed), 0, 0});
-        sbmValues[0] = s.friction.muStatic;
-        sbmValues[1] = s.friction.muKinetic;
-        sbmValues[2] = s.friction.peakTime;
-        sbmValues[3] = s.wallSeconds;
-      }
-      MPI_Bcast(sbmValues, 4, MPI_DOUBLE, 0, comm);
-      PetscPrintf(comm,
-                  "Side by side (grading %s):\n"
-                  "                   FEM            SBM\n"
-                  "  mu_s        %12.6f   %12.6f\n"
-                  "  mu_k        %12.6f   %12.6f\n"
-                  "  peak time   %12.4e   %12.4e s   (FEM Eq. 2: %.4e s, SBM loading time: %.4e s)\n"
-                  "  wall        %12.2f   %12.2f s\n",
-                  describe(grading).c_str(), r.muS, sbmValues[0], r.muK, sbmValues[1], r.peakTime, sbmValues[2], eq2,
-                  sbmParams.loadingTime(), wall, sbmValues[3]);
-    }
+    output.writeHistory(model, result, record);
+    output.finish();                                              // complete: renamed into place
+    printResults(comm, *run, result, wall);
+    compareWithSpringBlocks(comm, *run, result, wall);
   });
 }

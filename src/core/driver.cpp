@@ -1,6 +1,7 @@
 #include "gradfric/core/driver.hpp"
 
 #include "gradfric/core/command_line.hpp"
+#include "gradfric/core/collective_error.hpp"
 #include "gradfric/core/input_error.hpp"
 #include "gradfric/core/petsc_call.hpp"
 #include "gradfric/version.hpp"
@@ -46,6 +47,10 @@ int runWithPetsc(int argc, char** argv, const char* help, const std::function<vo
     // Options are read identically on every rank, so every rank throws: rank 0 reports.
     if (rank == 0) std::fprintf(stderr, "gradfric: error: %s\n", e.what());
     status = 2;
+  } catch (const CollectiveError& e) {
+    // Agreed by every rank (e.g. a failed write or rename on rank 0, broadcast): rank 0 reports.
+    if (rank == 0) std::fprintf(stderr, "gradfric: error: %s\n", e.what());
+    status = 1;
   } catch (const PetscCallError& e) {
     std::fprintf(stderr, "gradfric: [rank %d] %s\n", rank, e.what());
     std::fflush(stderr);

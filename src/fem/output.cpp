@@ -1,5 +1,6 @@
 #include "gradfric/fem/output.hpp"
 
+#include "gradfric/core/collective_error.hpp"
 #include "gradfric/core/input_error.hpp"
 #include "gradfric/core/petsc_call.hpp"
 #include "gradfric/fem/xdmf.hpp"
@@ -20,8 +21,6 @@
 namespace gradfric::fem {
 
 namespace {
-
-bool exists(const std::string& path) { return std::ifstream(path).good(); }
 
 std::string stem(const std::string& path) {
   const auto dot = path.rfind('.');
@@ -50,39 +49,31 @@ OutputFiles::OutputFiles(MPI_Comm comm, const FemParameters& params) : comm_(com
     pending_ = params.snapshotTimes;
     std::sort(pending_.begin(), pending_.end());
   }
-  int rank = 0;
-  MPI_Comm_rank(comm, &rank);
-  int clash = 0;
-  if (rank == 0 && !params.overwrite)
-    clash = exists(path_) ? 1 : (!fieldsPath_.empty() && (exists(fieldsPath_) || exists(xmfPath_))) ? 2 : 0;
-  GF_CALL_MPI(MPI_Bcast(&clash, 1, MPI_INT, 0, comm));
-  if (clash)
-    throw InputError("-fem_output", path_,
-                     std::string("a path that does not exist yet (") + (clash == 1 ? path_ : fieldsPath_) +
-                         " exists; add -fem_output_overwrite to replace it)");
-  // Refuse an unwritable place before the run, not after it.
-  int ok = 1;
-  if (rank == 0) {
-    std::ofstream probe(path_ + ".tmp");
-    ok = probe.good() ? 1 : 0;
-    probe.close();
-    std::remove((path_ + ".tmp").c_str());
+  // Every file planned before any work, refused on every rank alike (io::OutputPlan).
+  auto plan = [&](const std::string& path) {
+    io::OutputRequest request;
+    request.option = "-fem_output";
+    request.path = path;
+    request.value = path_;
+    request.temporarySuffix = ".tmp";
+    request.overwrite = params.overwrite;
+    request.overwriteOption = "-fem_output_overwrite";
+    return io::OutputPlan::decide(comm, request);
+  };
+  historyPlan_ = plan(path_);
+  if (!fieldsPath_.empty()) {
+    fieldsPlan_ = plan(fieldsPath_);
+    xmfPlan_ = plan(xmfPath_);
   }
-  GF_CALL_MPI(MPI_Bcast(&ok, 1, MPI_INT, 0, comm));
-  if (!ok) throw InputError("-fem_output", path_, "a writable path");
 }
 
 OutputFiles::~OutputFiles() {
   if (viewer_) PetscViewerDestroy(&viewer_);
   if (contactDM_) DMDestroy(&contactDM_);
   if (stressDM_) DMDestroy(&stressDM_);
-  if (!finished_) {  // failed run: leave nothing half-written
-    int rank = 0;
-    MPI_Comm_rank(comm_, &rank);
-    if (rank == 0) {
-      if (!path_.empty()) std::remove((path_ + ".tmp").c_str());
-      if (!fieldsPath_.empty()) std::remove((fieldsPath_ + ".tmp").c_str());
-    }
+  if (!finished_) {  // failed run: leave nothing half-written, and any earlier result whole
+    for (const auto* plan : {&historyPlan_, &fieldsPlan_, &xmfPlan_})
+      if (*plan) (*plan)->discard(comm_);
   }
 }
 
@@ -132,7 +123,19 @@ void OutputFiles::writeSnapshot(PlateModel& model, Vec state, double t) {
     explicit EventScope(PetscLogEvent ev) : e(ev) { PetscLogEventBegin(e, 0, 0, 0, 0); }
     ~EventScope() { PetscLogEventEnd(e, 0, 0, 0, 0); }
   } scope(outputEvent());
-  const std::string tmp = fieldsPath_ + ".tmp";
+  try {
+    writeFields(model, state, t);
+  } catch (const std::exception& e) {
+    // A collective write failed, perhaps on this rank only: unwinding would reach the collective
+    // close of the viewer and wait there for ever. One line, then every rank ends.
+    int rank = 0;
+    MPI_Comm_rank(comm_, &rank);
+    abortJob(comm_, "writing " + fieldsPlan_->workPath() + " failed on rank " + std::to_string(rank) + ": " + e.what());
+  }
+}
+
+void OutputFiles::writeFields(PlateModel& model, Vec state, double t) {
+  const std::string tmp = fieldsPlan_->workPath();
   if (!viewer_) {
     createFieldDMs(model);
     GF_CALL(PetscViewerHDF5Open(model.comm(), tmp.c_str(), FILE_MODE_WRITE, &viewer_));
@@ -180,11 +183,8 @@ void OutputFiles::writeSnapshot(PlateModel& model, Vec state, double t) {
 
 void OutputFiles::writeHistory(const PlateModel& model, const FemRunResult& r, const RunParameters& record) {
   if (path_.empty()) return;
-  int rank = 0;
-  MPI_Comm_rank(model.comm(), &rank);
-  if (rank == 0) {
+  historyPlan_->writeOnRank0(model.comm(), [&](const std::string& tmp) {
     using namespace io;
-    const std::string tmp = path_ + ".tmp";
     H5File file(GF_H5(H5Fcreate(tmp.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT)));
     writeStringAttribute(file, "format", "gradfric-fem-history");
     writeIntAttribute(file, "format_version", 2);  // 2: conventions of the ensemble file (docs/fem.md)
@@ -275,31 +275,49 @@ void OutputFiles::writeHistory(const PlateModel& model, const FemRunResult& r, c
       writeProvenance(provenance, provenance_);
     }
     writeIntAttribute(file, "complete", 1);
-  }
+  });
   historyWritten_ = true;
 }
 
-void OutputFiles::finish() {
+void OutputFiles::writeXdmf() {
   int rank = 0;
   MPI_Comm_rank(comm_, &rank);
-  if (viewer_) {
-    GF_CALL(PetscViewerPopFormat(viewer_));
-    GF_CALL(PetscViewerDestroy(&viewer_));
-  }
-  GF_CALL_MPI(MPI_Barrier(comm_));
+  int written = 1;
   if (rank == 0) {
-    if (!path_.empty() && historyWritten_) std::rename((path_ + ".tmp").c_str(), path_.c_str());
-    if (!fieldsPath_.empty() && snapshots_ > 0) {
-      std::rename((fieldsPath_ + ".tmp").c_str(), fieldsPath_.c_str());
-      try {
-        describeFieldsAndWriteXdmf(fieldsPath_, xmfPath_);
-      } catch (const std::exception& e) {
-        std::fprintf(stderr, "gradfric-fem: warning: could not write %s: %s\n", xmfPath_.c_str(), e.what());
-      }
+    // The .xmf names the fields file (in place by now) and is written to its temporary.
+    try {
+      describeFieldsAndWriteXdmf(fieldsPath_, xmfPlan_->workPath());
+    } catch (const std::exception& e) {
+      written = 0;
+      std::fprintf(stderr, "gradfric-fem: warning: could not write %s: %s\n", xmfPath_.c_str(), e.what());
+    }
+  }
+  GF_CALL_MPI(MPI_Bcast(&written, 1, MPI_INT, 0, comm_));
+  if (written)
+    xmfPlan_->commit(comm_);
+  else
+    xmfPlan_->discard(comm_);
+}
+
+void OutputFiles::finish() {
+  if (viewer_) {
+    try {
+      GF_CALL(PetscViewerPopFormat(viewer_));
+      GF_CALL(PetscViewerDestroy(&viewer_));  // collective: the last writes of the fields file
+    } catch (const std::exception& e) {
+      int rank = 0;
+      MPI_Comm_rank(comm_, &rank);
+      abortJob(comm_, "writing " + fieldsPlan_->workPath() + " failed on rank " + std::to_string(rank) + ": " + e.what());
     }
   }
   GF_CALL_MPI(MPI_Barrier(comm_));
-  finished_ = true;
+  finished_ = true;  // complete: a failed rename below keeps the new files under their temporary names
+  // Renamed into place only now: an earlier result stays whole until here.
+  if (historyPlan_ && historyWritten_) historyPlan_->commit(comm_);
+  if (fieldsPlan_ && snapshots_ > 0) {
+    fieldsPlan_->commit(comm_);
+    writeXdmf();
+  }
 }
 
 }  // namespace gradfric::fem

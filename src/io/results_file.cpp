@@ -10,10 +10,6 @@
 
 namespace gradfric::io {
 
-void throwHdf5Error(const char* expression, const char* file, int line) {
-  throw Hdf5Error(std::string("HDF5 call failed: ") + expression + " (" + file + ":" + std::to_string(line) + ")");
-}
-
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();

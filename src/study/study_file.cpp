@@ -21,4 +21,37 @@ void writeText(hid_t object, const std::string& name, const std::string& value) 
   GF_H5(H5Awrite(a, type, value.c_str()));
 }
 
+io::OutputPlan planStudyFile(MPI_Comm comm, const std::string& output, bool overwrite) {
+  io::OutputRequest request;
+  request.option = "-output";
+  request.path = output;
+  request.temporarySuffix = ".partial";
+  request.overwrite = overwrite;
+  request.overwriteOption = "-output_overwrite";
+  return io::OutputPlan::decide(comm, request);
+}
+
+std::vector<std::pair<std::string, std::string>> studyAttributes(
+    const RunParameters& record, const std::vector<std::pair<std::string, std::string>>& first) {
+  std::vector<std::pair<std::string, std::string>> attributes = {{"format", "gradfric-accuracy-study"}};
+  attributes.insert(attributes.end(), first.begin(), first.end());
+  for (const auto& option : record.all())
+    attributes.emplace_back(option.name[0] == '-' ? option.name.substr(1) : option.name, option.value);
+  return attributes;
+}
+
+void saveStudyFile(MPI_Comm comm, const io::OutputPlan& plan, const StudyFile& content) {
+  plan.writeOnRank0(comm, [&](const std::string& path) {
+    io::H5File file(GF_H5(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT)));
+    for (const auto& [name, value] : content.attributes) writeText(file, name, value);
+    for (const auto& ladder : content.ladders) {
+      io::H5Group group(GF_H5(H5Gcreate2(file, ladder.name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT)));
+      for (const auto& [name, value] : ladder.texts) writeText(group, name, value);
+      for (const auto& [name, values] : ladder.columns) writeVector(group, name, values);
+    }
+    GF_H5(H5Fflush(file, H5F_SCOPE_GLOBAL));  // a full disk shows here, not in a silent close
+  });
+  plan.commit(comm);
+}
+
 }  // namespace gradfric::study

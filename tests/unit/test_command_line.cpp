@@ -73,7 +73,9 @@ TEST(CommandLine, RealsMustBeFiniteAndRepresentable) {
     ScopedOption x("-t4_x", value);
     EXPECT_NE(messageOf([&] { reader.real("x", 1.0, "s", "a time"); }).find("-t4_x"), std::string::npos) << value;
     ScopedOption list("-t4_list", (std::string("1,") + value + ",2").c_str());
-    if (value[0]) EXPECT_NE(messageOf([&] { reader.realList("list", {}, "s", "times"); }).find("-t4_list"), std::string::npos) << value;
+    if (value[0]) {
+      EXPECT_NE(messageOf([&] { reader.realList("list", {}, "s", "times"); }).find("-t4_list"), std::string::npos) << value;
+    }
   }
   ScopedOption x("-t4_x", "-1.5e300");
   EXPECT_EQ(reader.real("x", 1.0, "s", "a time"), -1.5e300);

@@ -2,7 +2,8 @@
 // What every gradfric driver does around its body: settle the command line (--names, -version,
 // the options files), initialise MPI and PETSc,
 // turn exceptions into one clear message and an exit code, finalise.
-//   exit 0: success; 2: bad input (InputError); 3: PETSc error; 1: anything else.
+//   exit 0: success; 2: bad input (InputError); 3: PETSc error; 1: anything else (an error all
+//   ranks agreed on, CollectiveError, ends without MPI_Abort; any other one ends with MPI_Abort).
 #include <mpi.h>
 
 #include <functional>

@@ -11,14 +11,17 @@
 #include "gradfric/core/options.hpp"
 #include "gradfric/fem/simulation.hpp"
 #include "gradfric/io/provenance.hpp"
+#include "gradfric/io/output_plan.hpp"
 
+#include <optional>
 #include <string>
 
 namespace gradfric::fem {
 
 class OutputFiles {
 public:
-  // Collective. Throws InputError if a target exists and overwriting was not allowed.
+  // Collective. Plans every file before any work (io::OutputPlan): throws the same InputError on
+  // every rank for an existing file without overwriting, a directory, a missing or read-only folder.
   OutputFiles(MPI_Comm comm, const FemParameters& params);
   ~OutputFiles();
   OutputFiles(const OutputFiles&) = delete;
@@ -36,6 +39,8 @@ public:
 
 private:
   void createFieldDMs(PlateModel& model);
+  void writeFields(PlateModel& model, Vec state, double tSliding);
+  void writeXdmf();
   MPI_Comm comm_;
   FemParameters params_;
   io::Provenance provenance_;
@@ -45,6 +50,7 @@ private:
   PetscViewer viewer_ = nullptr;
   DM contactDM_ = nullptr, stressDM_ = nullptr;
   bool historyWritten_ = false, finished_ = false;
+  std::optional<io::OutputPlan> historyPlan_, fieldsPlan_, xmfPlan_;  // where each file goes
 };
 
 }  // namespace gradfric::fem

@@ -11,6 +11,12 @@ namespace gradfric::io {
 class Hdf5Error : public std::runtime_error {
 public:
   using std::runtime_error::runtime_error;
+  // reason: the innermost entry of HDF5's error stack when the call failed ("" if none).
+  Hdf5Error(const std::string& what, std::string reason) : std::runtime_error(what), reason_(std::move(reason)) {}
+  const std::string& reason() const { return reason_; }
+
+private:
+  std::string reason_;
 };
 
 [[noreturn]] void throwHdf5Error(const char* expression, const char* file, int line);

@@ -1,0 +1,57 @@
+#pragma once
+// A spring-block scene: every option of a `gradfric` run, read and checked before any work, and
+// what follows from them (the sweep, the results file's layout, the attributes it stores).
+// The run itself is a sequence of named steps (drivers/gradfric.cpp): readScene, printScene,
+// planResultsFile, openResultsFile, runTasks, finishResultsFile, printResults.
+#include "gradfric/core/options.hpp"
+#include "gradfric/ensemble/sweep.hpp"
+#include "gradfric/io/results_file.hpp"
+#include "gradfric/physics/grading.hpp"
+#include "gradfric/sbm/parameters.hpp"
+
+#include <mpi.h>
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace gradfric::ensemble {
+
+struct Scene {
+  // -ensemble_* and -output* options.
+  Grading baseGrading;
+  int realisations = 1;
+  std::uint64_t seed = 1;
+  bool commonStreams = false;  // realisation r of every point draws from the stream (seed, 0, r)
+  bool history = true;         // store the mu(t) histories
+  bool frictionFields = false;  // store every realisation's local mu_s,i, mu_k,i
+  bool monitor = false;        // a progress line per finished task
+  bool resume = false;
+  std::string schedule = "dynamic";
+  bool dryRun = false;
+  long abortAfter = 0;  // testing only: every rank exits abruptly after this many tasks
+  std::string output;
+  bool overwrite = false;
+  // -sbm_* options: one time step for the whole sweep, from its stiffest point.
+  sbm::Parameters parameters;
+  sbm::Request request;
+  double stiffestFactor = 1.0;  // the largest modulus factor of any point
+  // What follows.
+  Sweep sweep;
+  io::EnsembleLayout layout;
+  io::SweepTable table;
+  std::vector<io::Attribute> sceneAttributes;  // stored under /scene: define the results
+  std::vector<io::Attribute> runAttributes;    // stored under /run: steer this run only
+
+  int points() const { return static_cast<int>(sweep.points.size()); }
+  int tasks() const { return points() * realisations; }
+  // The model inputs of sweep point p.
+  sbm::Parameters pointParameters(int p) const;
+  Grading pointGrading(int p) const;
+};
+
+// Collective: reads and checks every option (InputError on every rank alike); nullopt after -help.
+std::optional<Scene> readScene(MPI_Comm comm, RunParameters* record);
+
+}  // namespace gradfric::ensemble

@@ -1,0 +1,131 @@
+// Is the file given to -ensemble_resume a results file of this scene? Checked on rank 0 with
+// HDF5's error printing off, before any rank opens it in parallel: a foreign, truncated or damaged
+// file, or one of another scene, gets one line saying what is wrong with it (exit 2).
+#include "gradfric/core/input_error.hpp"
+#include "gradfric/ensemble/scene_file.hpp"
+#include "gradfric/io/collective_file.hpp"
+
+#include <csignal>
+#include <cstdio>
+#include <cstring>
+#include <string>
+
+#include <unistd.h>
+
+namespace gradfric::ensemble {
+
+namespace {
+
+// "" if the scene and layout match; else the differences, "; "-separated.
+std::string sceneDifferences(const Scene& scene, const io::ResultsFile& file) {
+  std::string differences;
+  auto add = [&](const std::string& text) { differences += (differences.empty() ? "" : "; ") + text; };
+  const std::vector<io::Attribute> stored = file.sceneAttributes();
+  auto findStored = [&](const std::string& name) -> const io::Attribute* {
+    for (const auto& a : stored)
+      if (a.name == name) return &a;
+    return nullptr;
+  };
+  for (const auto& a : scene.sceneAttributes) {
+    const io::Attribute* s = findStored(a.name);
+    if (!s) add("-" + a.name + " = " + a.value + " (not in the file)");
+    else if (s->value != a.value) add("-" + a.name + ": file " + s->value + ", now " + a.value);
+  }
+  for (const auto& s : stored) {
+    bool found = false;
+    for (const auto& a : scene.sceneAttributes) found = found || a.name == s.name;
+    if (!found) add("-" + s.name + " = " + s.value + " (in the file only)");
+  }
+  const auto& l = file.layout();
+  const auto& want = scene.layout;
+  if (l.points != want.points || l.realisations != want.realisations || l.historyCapacity != want.historyCapacity ||
+      l.mapSide != want.mapSide || l.firstSlipMap != want.firstSlipMap || l.frictionFields != want.frictionFields ||
+      l.snapshotTimes.size() != want.snapshotTimes.size())
+    add("layout (points, realisations, history capacity or maps)");
+  return differences;
+}
+
+// Rank 0: what is wrong with the file, or "".
+std::string problemWith(const Scene& scene, const std::string& path) {
+  const char* again = " (start again with -output_overwrite)";
+  if (!io::isHdf5File(path)) return "it is not an HDF5 file" + std::string(again);
+  {
+    io::H5File raw(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT));
+    if (!raw.valid()) {
+      const std::string reason = io::innermostHdf5Reason();
+      return "it is truncated or damaged, HDF5 cannot open it" + (reason.empty() ? "" : " (" + reason + ")") + again;
+    }
+    const htri_t hasFormat = H5Aexists(raw, "format");
+    if (hasFormat < 0) {
+      const std::string reason = io::innermostHdf5Reason();
+      return "it is damaged: its root group cannot be read" + (reason.empty() ? "" : " (" + reason + ")") + again;
+    }
+    if (hasFormat == 0)
+      return "it is not a gradfric ensemble results file (no attribute format = " + std::string(io::kFormatName) +
+             ": a file of another program, or a damaged one)" + again;
+  }
+  try {
+    io::ResultsFile file = io::ResultsFile::openReadOnly(MPI_COMM_SELF, path);
+    // Everything a resumed run reads: a damaged part shows here, not in the middle of the run.
+    file.finishedTasks();
+    file.readRealisationReal("mu_s");
+    file.readRealisationReal("mu_k");
+    file.readPeakConfirmed();
+    const std::string differences = sceneDifferences(scene, file);
+    file.close();
+    if (!differences.empty())
+      return "it was started with another scene (run that scene, or start again with -output_overwrite): " +
+             differences;
+  } catch (const io::Hdf5Error& e) {
+    // Format and version problems come as sentences; a failed HDF5 call means a damaged file.
+    if (e.reason().empty() && std::string(e.what()).rfind("HDF5 call failed", 0) != 0)
+      return e.what() + std::string(again);
+    return "it is damaged: a part of it cannot be read" + (e.reason().empty() ? "" : " (" + e.reason() + ")") + again;
+  }
+  return "";
+}
+
+}  // namespace
+
+namespace {
+
+// HDF5 1.10 can loop for ever on some damaged files (a corrupt global heap behind a string
+// attribute): past a time limit, rank 0 says so and exits, which ends the job (no hang).
+char timeoutMessage[1024];
+
+void onTimeout(int) {
+  const ssize_t ignored = write(STDERR_FILENO, timeoutMessage, std::strlen(timeoutMessage));
+  (void)ignored;
+  _exit(2);
+}
+
+std::string problemWithin(const Scene& scene, const std::string& path, unsigned seconds) {
+  std::snprintf(timeoutMessage, sizeof timeoutMessage,
+                "gradfric: error: invalid option -ensemble_resume (continue %s): it is damaged: HDF5 did not finish "
+                "reading it within %u s (start again with -output_overwrite)\n",
+                path.c_str(), seconds);
+  struct sigaction action {}, previous{};
+  action.sa_handler = onTimeout;
+  sigaction(SIGALRM, &action, &previous);
+  alarm(seconds);
+  const std::string problem = io::withoutHdf5Printing([&] { return problemWith(scene, path); });
+  alarm(0);
+  sigaction(SIGALRM, &previous, nullptr);
+  return problem;
+}
+
+}  // namespace
+
+void checkResumable(MPI_Comm comm, const Scene& scene, const std::string& path) {
+  int rank = 0;
+  MPI_Comm_rank(comm, &rank);
+  std::string problem;
+  if (rank == 0) problem = problemWithin(scene, path, 60);
+  int length = static_cast<int>(problem.size());
+  MPI_Bcast(&length, 1, MPI_INT, 0, comm);
+  problem.resize(length);
+  if (length > 0) MPI_Bcast(problem.data(), length, MPI_CHAR, 0, comm);
+  if (!problem.empty()) throw InputError("invalid option -ensemble_resume (continue " + path + "): " + problem);
+}
+
+}  // namespace gradfric::ensemble

@@ -1,0 +1,107 @@
+// The results file of a spring-block scene run (include/gradfric/ensemble/scene_file.hpp).
+#include "gradfric/ensemble/scene_file.hpp"
+
+#include "gradfric/io/provenance.hpp"
+
+#include "gradfric/core/petsc_call.hpp"
+#include "gradfric/ensemble/log_events.hpp"
+
+#include <string>
+#include <utility>
+
+namespace gradfric::ensemble {
+
+io::OutputPlan planResultsFile(MPI_Comm comm, const Scene& scene) {
+  io::OutputRequest request;
+  request.option = "-output";
+  request.path = scene.output;
+  request.temporarySuffix = ".partial";
+  request.overwrite = scene.overwrite;
+  request.overwriteOption = "-output_overwrite";
+  request.resume = scene.resume;
+  request.resumeOption = "-ensemble_resume";
+  return io::OutputPlan::decide(comm, request);
+}
+
+io::ResultsFile openResultsFile(MPI_Comm comm, const Scene& scene, const io::OutputPlan& plan) {
+  int size = 1;
+  GF_CALL_MPI(MPI_Comm_size(comm, &size));
+  io::ResultsFile file = [&] {
+    if (plan.start() == io::OutputStart::Fresh) {
+      GF_CALL(PetscPrintf(comm, "Writing %s (renamed to %s when the run completes)\n", plan.workPath().c_str(),
+                          plan.path().c_str()));
+      return io::ResultsFile::create(comm, plan.workPath(), scene.layout, scene.table, scene.sceneAttributes);
+    }
+    checkResumable(comm, scene, plan.workPath());
+    GF_CALL(PetscPrintf(comm, "Resuming %s\n", plan.workPath().c_str()));
+    io::ResultsFile resumed = io::ResultsFile::open(comm, plan.workPath());
+    long finished = 0;
+    for (auto flag : resumed.finishedTasks()) finished += flag ? 1 : 0;
+    GF_CALL(PetscPrintf(comm, "%ld of %d tasks already finished; running the other %ld\n", finished, scene.tasks(),
+                        scene.tasks() - finished));
+    return resumed;
+  }();
+  file.setRunAttributes(scene.runAttributes);
+  file.setProvenance(io::collectProvenance(comm));  // version, command line, options files, date, ranks
+  return file;
+}
+
+namespace {
+
+template <class Get>
+std::vector<double> realColumn(const std::vector<PointStatistics>& stats, Get get) {
+  std::vector<double> v;
+  for (const auto& s : stats) v.push_back(get(s));
+  return v;
+}
+
+template <class Get>
+std::vector<int> integerColumn(const std::vector<PointStatistics>& stats, Get get) {
+  std::vector<int> v;
+  for (const auto& s : stats) v.push_back(get(s));
+  return v;
+}
+
+}  // namespace
+
+std::vector<PointStatistics> writeStatistics(io::ResultsFile& file, const Scene& scene) {
+  // Every rank reads the small P x R tables and computes the same numbers; rank 0 writes them.
+  GF_CALL(PetscLogEventBegin(logEvents().statistics, 0, 0, 0, 0));
+  const auto flags = file.finishedTasks();
+  const std::vector<unsigned char> done(flags.begin(), flags.end());
+  const auto stats = pointStatistics(scene.realisations, scene.sweep.reference, file.readRealisationReal("mu_s"),
+                                     file.readRealisationReal("mu_k"), file.readPeakConfirmed(), done,
+                                     scene.commonStreams);
+  using S = const PointStatistics&;
+  std::vector<std::pair<std::string, std::vector<double>>> real = {
+      {"mu_s_mean", realColumn(stats, [](S s) { return s.muStatic.mean; })},
+      {"mu_s_std", realColumn(stats, [](S s) { return s.muStatic.stdDev; })},
+      {"mu_s_stderr", realColumn(stats, [](S s) { return s.muStatic.stdError; })},
+      {"mu_s_ci95_low", realColumn(stats, [](S s) { return s.muStatic.ciLow; })},
+      {"mu_s_ci95_high", realColumn(stats, [](S s) { return s.muStatic.ciHigh; })},
+      {"mu_s_relative", realColumn(stats, [](S s) { return s.muStaticRelative.value; })},
+      {"mu_s_relative_error", realColumn(stats, [](S s) { return s.muStaticRelative.error; })},
+      {"mu_k_mean", realColumn(stats, [](S s) { return s.muKinetic.mean; })},
+      {"mu_k_std", realColumn(stats, [](S s) { return s.muKinetic.stdDev; })},
+      {"mu_k_stderr", realColumn(stats, [](S s) { return s.muKinetic.stdError; })},
+      {"mu_k_ci95_low", realColumn(stats, [](S s) { return s.muKinetic.ciLow; })},
+      {"mu_k_ci95_high", realColumn(stats, [](S s) { return s.muKinetic.ciHigh; })},
+      {"mu_k_relative", realColumn(stats, [](S s) { return s.muKineticRelative.value; })},
+      {"mu_k_relative_error", realColumn(stats, [](S s) { return s.muKineticRelative.error; })}};
+  std::vector<std::pair<std::string, std::vector<int>>> integer = {
+      {"finished", integerColumn(stats, [](S s) { return s.finished; })},
+      {"mu_s_count", integerColumn(stats, [](S s) { return s.muStatic.count; })},
+      {"mu_k_count", integerColumn(stats, [](S s) { return s.muKinetic.count; })},
+      {"peaks_unconfirmed", integerColumn(stats, [](S s) { return s.peaksUnconfirmed; })}};
+  file.writeStatistics(real, integer);
+  return stats;
+}
+
+void finishResultsFile(MPI_Comm comm, io::ResultsFile& file, const io::OutputPlan& plan) {
+  file.markComplete();
+  file.close();
+  GF_CALL(PetscLogEventEnd(logEvents().statistics, 0, 0, 0, 0));
+  plan.commit(comm);
+}
+
+}  // namespace gradfric::ensemble

@@ -1,0 +1,143 @@
+// What a spring-block scene run prints (include/gradfric/ensemble/scene_report.hpp).
+#include "gradfric/ensemble/scene_report.hpp"
+
+#include "gradfric/core/petsc_call.hpp"
+#include "gradfric/sbm/model.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+namespace gradfric::ensemble {
+
+std::string hms(double seconds) {
+  if (!std::isfinite(seconds) || seconds < 0) return "?";
+  const long s = static_cast<long>(seconds + 0.5);
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%ld:%02ld:%02ld", s / 3600, (s / 60) % 60, s % 60);
+  return buffer;
+}
+
+std::string pointLabel(const Sweep& sweep, int p) {
+  const SweepPoint& q = sweep.points[p];
+  std::ostringstream out;
+  bool first = true;
+  auto add = [&](const std::string& text) {
+    out << (first ? "" : ", ") << text;
+    first = false;
+  };
+  for (const auto& axis : sweep.axes) {
+    if (axis == "delta") add("Delta=" + formatReal(q.delta));
+    if (axis == "theta") add("theta=" + formatReal(q.theta));
+    if (axis == "sigma") add("sigma=" + formatReal(q.sigma));
+    if (axis == "property") add("property=" + q.property);
+    if (axis == "profile") add("profile=" + q.profile);
+  }
+  return first ? "single point" : out.str();
+}
+
+namespace {
+
+// The effects of the most strongly graded point (the sweep line lists the others).
+void printActiveEffects(MPI_Comm comm, const Scene& scene) {
+  int shown = scene.points() > 0 ? 0 : -1;
+  double largest = -1.0;
+  for (int p = 0; p < scene.points(); ++p) {
+    const SweepPoint& q = scene.sweep.points[p];
+    if (q.graded() && std::fabs(q.delta) > largest) {
+      largest = std::fabs(q.delta);
+      shown = p;
+    }
+  }
+  if (scene.points() > 1) GF_CALL(PetscPrintf(comm, "  (for the sweep point with the strongest grading)\n"));
+  const sbm::Parameters parameters = shown >= 0 ? scene.pointParameters(shown) : scene.parameters;
+  const Grading grading = shown >= 0 ? scene.pointGrading(shown) : scene.baseGrading;
+  for (const auto& e : sbm::activeEffects(parameters, grading, scene.request))
+    GF_CALL(PetscPrintf(comm, "  - %s\n", e.c_str()));
+}
+
+void printSweep(MPI_Comm comm, const Scene& scene) {
+  int size = 1;
+  GF_CALL_MPI(MPI_Comm_size(comm, &size));
+  const int P = scene.points(), R = scene.realisations, T = scene.tasks();
+  std::string axes;
+  for (const auto& a : scene.sweep.axes) axes += (axes.empty() ? "" : " x ") + a;
+  GF_CALL(PetscPrintf(comm, "  - sweep: %s (%d point%s) x %d realisation%s = %d task%s on %d rank%s, %s schedule\n",
+                      axes.empty() ? "none" : axes.c_str(), P, P == 1 ? "" : "s", R, R == 1 ? "" : "s", T,
+                      T == 1 ? "" : "s", size, size == 1 ? "" : "s", scene.schedule.c_str()));
+  if (scene.stiffestFactor > 1.0)
+    GF_CALL(PetscPrintf(comm, "  - one time step for the whole sweep, from its stiffest band (E x %g)\n",
+                        scene.stiffestFactor));
+  GF_CALL(PetscPrintf(comm, "  - stored: mu_s, mu_k per realisation%s%s%s\n",
+                      scene.history ? ", mu(t) histories" : "", scene.request.measurement.firstSlipMap ? ", first-slip maps" : "",
+                      scene.request.snapshotTimes.empty() ? "" : ", sigma_x/p snapshots"));
+}
+
+void printTable(MPI_Comm comm, const Scene& scene, const std::vector<PointStatistics>& stats, const char* title,
+                bool isStatic) {
+  GF_CALL(PetscPrintf(comm, "\n%s over %d realisation(s) per point (95%% CI: Student t):\n", title,
+                      scene.realisations));
+  GF_CALL(PetscPrintf(comm, "  %-5s %-32s %4s %10s %10s %10s %23s %19s\n", "point", "sweep", "R", "mean", "std",
+                      "std err", "95% CI", "rel. var. [%]"));
+  for (size_t p = 0; p < stats.size(); ++p) {
+    const Summary& s = isStatic ? stats[p].muStatic : stats[p].muKinetic;
+    const RelativeVariation& v = isStatic ? stats[p].muStaticRelative : stats[p].muKineticRelative;
+    char ci[64], rel[64];
+    std::snprintf(ci, sizeof ci, "[%.5f, %.5f]", s.ciLow, s.ciHigh);
+    if (std::isfinite(v.value))
+      std::snprintf(rel, sizeof rel, "%+7.3f +- %.3f", 100 * v.value, std::isfinite(v.error) ? 100 * v.error : 0.0);
+    else
+      std::snprintf(rel, sizeof rel, "%s", "(no reference)");
+    GF_CALL(PetscPrintf(comm, "  %-5zu %-32s %4d %10.6f %10.6f %10.6f %23s %19s%s\n", p,
+                        pointLabel(scene.sweep, static_cast<int>(p)).c_str(), s.count, s.mean, s.stdDev, s.stdError,
+                        ci, rel, isStatic && stats[p].peaksUnconfirmed ? "  (unconfirmed peaks)" : ""));
+  }
+}
+
+void printStatistics(MPI_Comm comm, const Scene& scene, const std::vector<PointStatistics>& stats) {
+  if (scene.points() == 1 && scene.realisations == 1) {
+    const auto& s = stats[0];
+    GF_CALL(PetscPrintf(comm, "\nResult: mu_s = %.6f, mu_k = %.6f%s\n", s.muStatic.mean, s.muKinetic.mean,
+                        s.peaksUnconfirmed ? "  (peak NOT confirmed before t_max: mu_s is the maximum reached)" : ""));
+    return;
+  }
+  printTable(comm, scene, stats, "Global static friction mu_s", true);
+  if (scene.request.measurement.kinetic) printTable(comm, scene, stats, "Global kinetic friction mu_k", false);
+  GF_CALL(PetscPrintf(comm,
+                      "  rel. var. = (mu - mu_0)/mu_0 against the non-graded point of the same angle and dispersion,"
+                      " +- %s\n",
+                      scene.commonStreams ? "the error of the paired differences (common random numbers)"
+                                          : "the error propagated from both standard errors"));
+}
+
+}  // namespace
+
+void printScene(MPI_Comm comm, const Scene& scene, const RunParameters& record) {
+  record.print(comm, "gradfric spring-block scene: resolved parameters");
+  GF_CALL(PetscPrintf(comm, "Active effects:\n"));
+  printActiveEffects(comm, scene);
+  printSweep(comm, scene);
+}
+
+void printDryRun(MPI_Comm comm, const Scene& scene) {
+  GF_CALL(PetscPrintf(comm, "Dry run (-ensemble_dry_run): scene checked, %d task(s) planned, nothing run or written\n",
+                      scene.tasks()));
+}
+
+void printResults(MPI_Comm comm, const Scene& scene, const std::vector<PointStatistics>& statistics,
+                  const TaskTally& tally, const std::string& resultsPath) {
+  int size = 1;
+  GF_CALL_MPI(MPI_Comm_size(comm, &size));
+  printStatistics(comm, scene, statistics);
+  // busy: the share of rank-seconds spent inside tasks (the rest: start-up, file writes, waiting
+  // for the last task, statistics).
+  const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - tally.start).count();
+  GF_CALL(PetscPrintf(comm,
+                      "\n%ld task(s) run in %s on %d rank(s): %.4g tasks/s, mean task %.4g s, ranks busy %.1f %%; "
+                      "results in %s\n",
+                      tally.ran, hms(elapsed).c_str(), size, elapsed > 0 ? tally.ran / elapsed : 0.0,
+                      tally.ran > 0 ? tally.taskSeconds / tally.ran : 0.0,
+                      elapsed > 0 ? 100.0 * tally.taskSeconds / (size * elapsed) : 0.0, resultsPath.c_str()));
+}
+
+}  // namespace gradfric::ensemble

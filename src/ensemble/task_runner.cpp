@@ -1,0 +1,159 @@
+// Running the tasks of a scene (include/gradfric/ensemble/task_runner.hpp).
+#include "gradfric/ensemble/task_runner.hpp"
+
+#include "gradfric/core/collective_error.hpp"
+#include "gradfric/core/random_stream.hpp"
+#include "gradfric/ensemble/log_events.hpp"
+#include "gradfric/ensemble/scheduler.hpp"
+#include "gradfric/sbm/model.hpp"
+
+#include "gradfric/sbm/lattice.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+
+namespace gradfric::ensemble {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// What the results file keeps of one realisation.
+io::TaskOutput toTaskOutput(const Task& task, sbm::Result&& result, bool history, double wall, int rank) {
+  io::TaskOutput o;
+  o.point = task.point;
+  o.realisation = task.realisation;
+  o.muStatic = result.friction.muStatic;
+  o.muKinetic = result.friction.muKinetic;
+  o.peakTime = result.friction.peakTime;
+  o.endTime = result.endTime;
+  o.peakConfirmed = result.friction.peakConfirmed;
+  o.steps = result.steps;
+  o.redrawnBlocks = result.redrawnBlocks;
+  if (history) {
+    o.time = std::move(result.friction.time);
+    o.mu = std::move(result.friction.mu);
+    o.forceX = std::move(result.friction.forceX);
+    o.forceY = std::move(result.friction.forceY);
+  }
+  o.firstSlipTime = std::move(result.firstSlipTime);
+  for (auto& s : result.snapshots) {
+    o.snapshotTime.push_back(s.time);
+    o.snapshots.push_back(std::move(s.sigmaXOverP));
+  }
+  o.wallSeconds = wall;
+  o.rank = rank;
+  return o;
+}
+
+// Runs one realisation and writes it; returns its wall time.
+double runTask(const Scene& scene, const Task& task, io::ResultsFile& file, int rank, io::TaskOutput* summary) {
+  const auto& events = logEvents();
+  const StreamKey key{scene.seed, static_cast<std::uint32_t>(scene.commonStreams ? 0 : task.point),
+                      static_cast<std::uint32_t>(task.realisation)};
+  GF_CALL(PetscLogEventBegin(events.task, 0, 0, 0, 0));
+  const auto start = Clock::now();
+  sbm::Result result = sbm::simulate(scene.pointParameters(task.point), scene.pointGrading(task.point),
+                                     scene.request, key);
+  const double wall = secondsSince(start);
+  GF_CALL(PetscLogEventEnd(events.task, 0, 0, 0, 0));
+  io::TaskOutput o = toTaskOutput(task, std::move(result), scene.history, wall, rank);
+  if (scene.frictionFields) {  // the same draw as the run's (a pure function of the stream key)
+    const sbm::Parameters q = scene.pointParameters(task.point);
+    const sbm::FrictionField field = sbm::buildFriction(q, scene.pointGrading(task.point), key);
+    const int nb = q.blocksPerSide;
+    const double normal = q.normalForcePerBlock();
+    for (int row = 0; row < nb; ++row)
+      for (int column = 0; column < nb; ++column) {
+        o.localStatic.push_back(field.staticAt(row, column) / normal);
+        o.localKinetic.push_back(field.kineticAt(row, column) / normal);
+      }
+  }
+  GF_CALL(PetscLogEventBegin(events.write, 0, 0, 0, 0));
+  file.writeTask(o);
+  GF_CALL(PetscLogEventEnd(events.write, 0, 0, 0, 0));
+  summary->muStatic = o.muStatic;
+  summary->muKinetic = o.muKinetic;
+  summary->peakConfirmed = o.peakConfirmed;
+  return wall;
+}
+
+void printProgress(const Scene& scene, const Task& task, const io::TaskOutput& o, double wall, long finishedAll,
+                   long pending, long alreadyDone, double elapsed, int rank) {
+  const long left = pending - finishedAll;
+  const double eta = finishedAll > 0 ? elapsed * left / finishedAll : NAN;
+  std::printf("[%ld/%d] point %d (%s) realisation %d: mu_s = %.6f, mu_k = %.6f%s  task %.2f s on rank %d;"
+              " elapsed %s, left ~%s\n",
+              finishedAll + alreadyDone, scene.tasks(), task.point, pointLabel(scene.sweep, task.point).c_str(),
+              task.realisation, o.muStatic, o.muKinetic, o.peakConfirmed ? "" : " (peak unconfirmed)", wall, rank,
+              hms(elapsed).c_str(), left > 0 ? hms(eta).c_str() : "0:00:00");
+  std::fflush(stdout);
+}
+
+// -ensemble_abort_after (testing only): every rank exits abruptly, as a killed job would.
+void abortIfDue(const Scene& scene, long finishedOverall, int rank) {
+  if (scene.abortAfter <= 0 || finishedOverall < scene.abortAfter) return;
+  std::printf("ensemble: -ensemble_abort_after %ld reached: rank %d exits abruptly (test of resume)\n",
+              scene.abortAfter, rank);
+  std::fflush(stdout);
+  std::_Exit(86);
+}
+
+}  // namespace
+
+TaskTally runTasks(MPI_Comm comm, const Scene& scene, io::ResultsFile& file, const std::string& resultsPath) {
+  int rank = 0;
+  GF_CALL_MPI(MPI_Comm_rank(comm, &rank));
+  const auto flags = file.finishedTasks();
+  const std::vector<Task> tasks =
+      pendingTasks(scene.sweep, scene.realisations, std::vector<unsigned char>(flags.begin(), flags.end()));
+  TaskTally tally;
+  tally.alreadyDone = static_cast<long>(scene.tasks()) - static_cast<long>(tasks.size());
+  long ranHere = 0;
+  double secondsHere = 0.0;
+  std::string failure;
+  const auto start = tally.start;
+  {
+    TaskCounter counter(comm, scene.schedule == "dynamic" ? Schedule::Dynamic : Schedule::Static);
+    for (;;) {
+      if (scene.abortAfter > 0) abortIfDue(scene, counter.finishedSoFar(), rank);
+      const long index = counter.next();
+      if (index >= static_cast<long>(tasks.size())) break;
+      const Task task = tasks[index];
+      try {
+        io::TaskOutput o;
+        const double wall = runTask(scene, task, file, rank, &o);
+        ++ranHere;
+        secondsHere += wall;
+        const long finishedAll = counter.finishOne();
+        if (scene.monitor)
+          printProgress(scene, task, o, wall, finishedAll, static_cast<long>(tasks.size()), tally.alreadyDone,
+                        secondsSince(start), rank);
+        abortIfDue(scene, finishedAll, rank);
+      } catch (const std::exception& e) {
+        failure = "task (point " + std::to_string(task.point) + ", realisation " + std::to_string(task.realisation) +
+                  ") failed on rank " + std::to_string(rank) + ": " + e.what();
+        break;  // the other ranks finish their tasks; everything finished stays in the file
+      }
+    }
+  }
+  file.flush();
+  try {
+    agreeOnError(comm, failure);
+  } catch (const CollectiveError& e) {
+    file.close();
+    throw CollectiveError(std::string(e.what()) + "; the finished tasks are in " + resultsPath +
+                          ", continue with -ensemble_resume");
+  }
+  GF_CALL_MPI(MPI_Allreduce(&ranHere, &tally.ran, 1, MPI_LONG, MPI_SUM, comm));
+  GF_CALL_MPI(MPI_Allreduce(&secondsHere, &tally.taskSeconds, 1, MPI_DOUBLE, MPI_SUM, comm));
+  return tally;
+}
+
+}  // namespace gradfric::ensemble
