@@ -61,7 +61,7 @@ int main(int argc, char** argv) {
                 "Active effects: grading %s; %d x %d x %d hexahedra (%d cells) on %d rank(s), partitioner %s;\n"
                 "  pressure ramp %.3g s + settle %.3g s (mass damping %.3g 1/s), sliding at %.3g m/s, theta %.3g deg;\n"
                 "  contact penalty k_n %.3g, k_t %.3g Pa/m; Eq. 1 friction, v_c %.3g m/s; dt %.4g s (stable %.4g s)\n",
-                describe(grading).c_str(), params.nx, params.ny, params.nz, static_cast<int>(model.globalCells()), size,
+                describe(grading).c_str(), params.nx, params.ny, params.nz, static_cast<int>(model.mesh().globalCells()), size,
                 params.partitioner.c_str(), params.rampTime, params.settleTime, params.settleDamping, params.plate.velocity,
                 params.plate.slidingAngle, params.kn, params.kt, params.vC, model.timeStep(), model.stableTimeStep());
     StepObserver observer = output.snapshotObserver(model);

@@ -179,7 +179,7 @@ void OutputFiles::writeSnapshot(PlateModel& model, Vec state, double t) {
   GF_CALL(VecZeroEntries(contact));
   PetscScalar* c = nullptr;
   GF_CALL(VecGetArray(contact, &c));
-  for (const auto& n : model.bottomNodes()) {
+  for (const auto& n : model.contact().nodes()) {
     c[4 * n.block + 0] = n.pressure;
     c[4 * n.block + 1] = n.tx;
     c[4 * n.block + 2] = n.ty;
@@ -189,7 +189,7 @@ void OutputFiles::writeSnapshot(PlateModel& model, Vec state, double t) {
   GF_CALL(VecView(contact, viewer_));
   GF_CALL(DMRestoreGlobalVector(contactDM_, &contact));
   std::vector<std::array<double, 6>> cellStress;
-  model.cellStresses(state, &cellStress);
+  model.elastic().cellStresses(state, &cellStress);
   GF_CALL(DMGetGlobalVector(stressDM_, &stress));
   GF_CALL(PetscObjectSetName(reinterpret_cast<PetscObject>(stress), "cell"));  // -> cell_stress
   PetscScalar* s = nullptr;

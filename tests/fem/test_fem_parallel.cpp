@@ -70,8 +70,8 @@ TEST(FemParallel, MetisPartitionIsBalancedAndCutsNoMoreFacesThanSimple) {
   // The distributed mesh really carries METIS's partition: cells per rank balanced.
   FemParameters q = test::coarse(30, 30, 3);
   PlateModel model(PETSC_COMM_WORLD, q, test::noGrading());
-  PetscInt local = model.localCells(), most = 0;
+  PetscInt local = model.mesh().localCells(), most = 0;
   MPI_Allreduce(&local, &most, 1, MPIU_INT, MPI_MAX, PETSC_COMM_WORLD);
-  EXPECT_LT(double(most), 1.05 * 0.5 * model.globalCells());
-  EXPECT_EQ(model.globalCells(), 30 * 30 * 3);
+  EXPECT_LT(double(most), 1.05 * 0.5 * model.mesh().globalCells());
+  EXPECT_EQ(model.mesh().globalCells(), 30 * 30 * 3);
 }

@@ -1,10 +1,12 @@
 #pragma once
 // The paper's two-step FEM experiment on a PlateModel: pressure ramp and hold (step 1), then the
 // top surface slides at v (step 2); mu(t), mu_s, the peak time, mu_k over the kinetic window.
+// Driven by one TSSolve (see simulation.cpp for the callbacks).
+#include "gradfric/fem/energy_monitor.hpp"
 #include "gradfric/fem/plate_model.hpp"
+#include "gradfric/fem/plate_ts.hpp"
 
 #include <functional>
-#include <stdexcept>
 #include <vector>
 
 namespace gradfric::fem {
@@ -31,23 +33,12 @@ struct FemRunResult {
   std::vector<double> energyTime, energy, energyIn;
 };
 
-// Thrown (on every rank: the monitored values are global) when a run goes unstable: a non-finite
-// mu(t), normal force or state, or energy growing without bound. what() names the quantity, the
-// step and time, and the likely cause.
-class BlowUpError : public std::runtime_error {
-public:
-  using std::runtime_error::runtime_error;
-};
-
 // Called after each step of step 2 with the time since the start of sliding and the state.
 using StepObserver = std::function<void(double tSliding, Vec state)>;
 
-// Runs the experiment on a fresh TS (type gfverlet unless -ts_type says otherwise). Throws
-// BlowUpError when the monitor sees the run go unstable (no result is returned, nothing written).
+// Runs the experiment on a fresh TS (createPlateTS: -ts_ options apply, -ts_monitor, -ts_view,
+// -ts_max_steps, -ts_type ...). Throws BlowUpError when the monitor sees the run go unstable (no
+// result is returned, nothing written).
 FemRunResult runPlateExperiment(PlateModel& model, const StepObserver& observer = {});
-
-// Builds the TS used by the experiment and the tests: fixed step model.timeStep(), RHS of the
-// model, -ts_ options applied. The caller owns the TS.
-TS createPlateTS(PlateModel& model, Vec state);
 
 }  // namespace gradfric::fem

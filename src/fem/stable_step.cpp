@@ -1,0 +1,40 @@
+#include "gradfric/fem/stable_step.hpp"
+
+#include "gradfric/core/input_error.hpp"
+#include "gradfric/core/options.hpp"
+#include "gradfric/fem/hex_element.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace gradfric::fem {
+
+double stableTimeStep(const FemParameters& given, const Grading& grading) {
+  FemParameters q = given;
+  q.resolveDerived();
+  const BoxElement element = makeBoxElement(q.plate.length / q.nx, q.plate.length / q.ny, q.plate.thickness / q.nz,
+                                            q.plate.poissonRatio);
+  double factor = 1.0;
+  for (int band = 0; band < grading.bands; ++band)
+    if (grading.gradesModulus()) factor = std::max(factor, grading.bandFactor(band));
+  double omega2 = elementMaxFrequencySquared(element, q.plate.youngsModulus * factor, q.plate.density);
+  // Penalty springs: k * area / nodal mass = 2 k / (rho hz) at every bottom node.
+  if (q.contact) omega2 += 2.0 * std::max(q.kn, q.kt) / (q.plate.density * element.hz);
+  const double omega = std::sqrt(omega2);
+  const double gamma = std::max(q.settleDamping, q.slideDamping);
+  const double xi = 0.5 * q.stiffnessDamping * omega + gamma / (2.0 * omega);
+  return centralDifferenceStableStep(omega2, xi);
+}
+
+double chooseTimeStep(const FemParameters& q, const Grading& grading) {
+  const double stable = stableTimeStep(q, grading);
+  if (q.dt > 0) {
+    if (q.dt > stable && q.dtCheck)
+      throw InputError("-fem_dt", formatReal(q.dt),
+                       "<= the stable step " + formatReal(stable) + " s (from mesh, wave speed, penalty, damping)");
+    return q.dt;
+  }
+  return q.dtSafety * stable;
+}
+
+}  // namespace gradfric::fem
