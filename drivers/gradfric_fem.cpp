@@ -8,6 +8,7 @@
 #include "gradfric/fem/output.hpp"
 #include "gradfric/fem/parameters.hpp"
 #include "gradfric/fem/plate_model.hpp"
+#include "gradfric/fem/plate_ts.hpp"
 #include "gradfric/fem/simulation.hpp"
 #include "gradfric/physics/grading_options.hpp"
 #include "gradfric/physics/plate_options.hpp"
@@ -43,6 +44,7 @@ int main(int argc, char** argv) {
       sbmRequest = sbm::readRequest(comm, &record, sbmParams);
     }
     if (helpRequested()) return;
+    readPlateTSOptions(comm);  // the -ts_ options: checked here, used by the run's TS
     if (compare)
       checkUnusedOptions(comm, {"plate_", "fem_", "grading_", "sbm_"});
     else
@@ -81,6 +83,9 @@ int main(int argc, char** argv) {
                 r.settledNormalForce, r.muS, r.peakTime, eq2, r.peakTime / eq2, r.firstSlipTime, r.muK,
                 r.windowComplete ? "" : "  (window incomplete)", r.steps, r.dt, wall, r.wallPressure, r.wallSliding,
                 1e3 * wall / std::max(1L, r.steps));
+    if (r.stoppedByTS)
+      PetscPrintf(comm, "  (the TS's limits -ts_max_steps / -ts_max_time ended the run %s)\n",
+                  r.time.empty() ? "before the sliding step" : "before the observables were known");
     if (compare) {
       // One SBM realisation on rank 0 (the SBM has no MPI inside), the same grading.
       int rank = 0;

@@ -1,5 +1,6 @@
 #include "gradfric/fem/plate_ts.hpp"
 
+#include "gradfric/core/input_error.hpp"
 #include "gradfric/core/petsc_call.hpp"
 #include "gradfric/fem/verlet_ts.hpp"
 
@@ -43,6 +44,25 @@ void solvePlateTS(TS ts) {
     std::rethrow_exception(error);
   }
   throwPetscCallError(code, "TSSolve(ts, nullptr)", __FILE__, __LINE__);
+}
+
+void readPlateTSOptions(MPI_Comm comm) {
+  registerVerletTS();
+  OwnedTS ts;
+  GF_CALL(TSCreate(comm, ts.out()));
+  GF_CALL(TSSetType(ts, TSGFVERLET));
+  char type[256] = "";
+  PetscBool typeGiven = PETSC_FALSE;
+  GF_CALL(PetscOptionsGetString(nullptr, nullptr, "-ts_type", type, sizeof type, &typeGiven));
+  const PetscErrorCode code = TSSetFromOptions(ts);
+  if (code == PETSC_ERR_ARG_UNKNOWN_TYPE && typeGiven)
+    throw InputError("-ts_type", type, "gfverlet (the default) or a PETSc TS type (rk, ssp, euler, ...)");
+  GF_CALL(code);
+  // Viewers TSSolve reads at its start and end: they count as used.
+  for (const char* name : {"-ts_view", "-ts_view_pre", "-ts_view_solution"}) {
+    PetscBool given = PETSC_FALSE;
+    GF_CALL(PetscOptionsHasName(nullptr, nullptr, name, &given));
+  }
 }
 
 TS createPlateTS(PlateModel& model, Vec state) {

@@ -45,6 +45,9 @@ public:
       r_.wallSliding = MPI_Wtime() - wall0_;
     else
       r_.wallPressure = MPI_Wtime() - wall0_;
+    TSConvergedReason reason = TS_CONVERGED_ITERATING;
+    GF_CALL(TSGetConvergedReason(ts, &reason));
+    r_.stoppedByTS = reason != TS_CONVERGED_USER;
     PetscReal t = 0;
     Vec state = nullptr;
     GF_CALL(TSGetTime(ts, &t));

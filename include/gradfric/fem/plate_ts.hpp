@@ -15,6 +15,10 @@ namespace gradfric::fem {
 
 TS createPlateTS(PlateModel& model, Vec state);
 
+// Reads the -ts_ options once on a throwaway TS, before any work: an unknown -ts_type is refused
+// early and the options count as used (checkUnusedOptions runs before the model exists).
+void readPlateTSOptions(MPI_Comm comm);
+
 // The post-step of createPlateTS (commit the contact state): call it first from a post-step that
 // replaces it.
 PetscErrorCode commitContactPostStep(TS ts);

@@ -19,6 +19,7 @@ struct FemRunResult {
   double firstSlipTime = -1; // first node slipping after the start of sliding [s]
   double muK = 0;            // mean of mu(t) over the kinetic window
   bool peakConfirmed = false, windowComplete = false;
+  bool stoppedByTS = false;  // the TS's own limits (-ts_max_steps, -ts_max_time) ended the run first
   double slideStart = 0;     // absolute time of the start of sliding [s]
   double settledNormalForce = 0;  // total contact normal force / (p L^2) at the end of step 1
   double dt = 0, stableDt = 0;
