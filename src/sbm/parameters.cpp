@@ -1,6 +1,7 @@
 #include "gradfric/sbm/parameters.hpp"
 
 #include "gradfric/core/input_error.hpp"
+#include "gradfric/physics/friction_options.hpp"
 #include "gradfric/sbm/lattice.hpp"
 
 #include <algorithm>
@@ -91,39 +92,22 @@ Parameters readParameters(MPI_Comm comm, RunParameters* record, const Plate& pla
 }
 
 Request readRequest(MPI_Comm comm, RunParameters* record, const Parameters& p) {
-  OptionReader o(comm, "sbm_", "Spring-block model", record);
   Request q;
-  const auto observables = o.choiceList("observables", {"mu_s", "mu_k", "first_slip"}, {"mu_s", "mu_k", "first_slip"},
-                                        "what the run must determine; it stops once these are known");
-  auto wants = [&](const char* name) { return std::find(observables.begin(), observables.end(), name) != observables.end(); };
-  q.staticFriction = true;  // the peak times everything else
-  q.kineticFriction = wants("mu_k");
-  q.firstSlipMap = wants("first_slip");
+  q.measurement = readFrictionMeasurement(comm, record, p.loadingTime());
+  OptionReader o(comm, "sbm_", "Spring-block model", record);
   q.snapshotTimes = o.realList("snapshot_times", {}, "s", "times of the sigma_x/p snapshots (none: no stress computed)");
   for (double t : q.snapshotTimes) o.requireNonNegative("snapshot_times", t, "s");
   std::sort(q.snapshotTimes.begin(), q.snapshotTimes.end());
-
   const double load = p.loadingTime();
-  auto derived = [&](const char* name, double factor, const char* unit, const char* help, const char* text) {
-    if (auto v = o.realIfSet(name, unit, help, text)) {
-      o.requireNonNegative(name, *v, unit);
-      return *v;
-    }
-    o.recordDerived(name, factor * load, unit, std::string(help) + " = " + text);
-    return factor * load;
-  };
-  q.historyInterval = derived("history_interval", 1e-3, "s", "sampling interval of the stored mu(t) history", "t_load / 1000");
-  q.kineticDelay = derived("muk_delay", 0.5, "s", "start of the mu_k window after the peak", "0.5 t_load");
-  q.kineticWidth = derived("muk_width", 1.0, "s", "width of the mu_k window", "t_load");
-  q.peakHold = derived("peak_hold", 0.25, "s", "peak confirmed once every block slid and no new maximum for this long", "0.25 t_load");
-  q.maxTime = derived("t_max", 20.0, "s", "give up if the peak is not confirmed by then", "20 t_load");
-  q.peakDrop = o.real("peak_drop", q.peakDrop, "1", "relative fall below the maximum that confirms the peak");
-  o.requireRange("peak_drop", q.peakDrop, 0.0, 1.0, "0 <= peak_drop <= 1");
+  if (auto t = o.realIfSet("t_max", "s", "give up if the peak is not confirmed by then", "20 t_load")) {
+    q.maxTime = *t;
+  } else {
+    q.maxTime = 20.0 * load;
+    o.recordDerived("t_max", q.maxTime, "s", "give up if the peak is not confirmed by then = 20 t_load");
+  }
   q.endTime = o.real("t_end", 0.0, "s", "if > 0: run exactly this long, whatever the observables (0: stop when known)");
   o.requireNonNegative("t_end", q.endTime, "s");
-  if (q.kineticWidth <= 0 && q.kineticFriction)
-    throw InputError(o.fullName("muk_width"), formatReal(q.kineticWidth), "> 0 [s] when mu_k is requested");
-  if (q.maxTime <= 0) throw InputError(o.fullName("t_max"), formatReal(q.maxTime), "> 0 [s]");
+  if (!(q.maxTime > 0)) throw InputError(o.fullName("t_max"), formatReal(q.maxTime), "> 0 [s]");
   return q;
 }
 

@@ -38,10 +38,10 @@ TEST(Kernels, SameHistoriesForEveryCodePath) {
     Request q = sbm::testing::defaultRequest(p);
     const Result fast = simulate(p, c.grading, q, {3, 1, 2}, Kernel::Fast);
     const Result plain = simulate(p, c.grading, q, {3, 1, 2}, Kernel::Reference);
-    ASSERT_EQ(fast.mu.size(), plain.mu.size());
-    for (std::size_t i = 0; i < fast.mu.size(); ++i) ASSERT_NEAR(fast.mu[i], plain.mu[i], 1e-9 * (1 + plain.mu[i])) << i;
-    EXPECT_NEAR(fast.muStatic, plain.muStatic, 1e-10);
-    EXPECT_NEAR(fast.muKinetic, plain.muKinetic, 1e-9);
+    ASSERT_EQ(fast.friction.mu.size(), plain.friction.mu.size());
+    for (std::size_t i = 0; i < fast.friction.mu.size(); ++i) ASSERT_NEAR(fast.friction.mu[i], plain.friction.mu[i], 1e-9 * (1 + plain.friction.mu[i])) << i;
+    EXPECT_NEAR(fast.friction.muStatic, plain.friction.muStatic, 1e-10);
+    EXPECT_NEAR(fast.friction.muKinetic, plain.friction.muKinetic, 1e-9);
     ASSERT_EQ(fast.firstSlipTime.size(), plain.firstSlipTime.size());
     for (std::size_t i = 0; i < fast.firstSlipTime.size(); ++i) EXPECT_EQ(fast.firstSlipTime[i], plain.firstSlipTime[i]);
   }
@@ -80,8 +80,8 @@ TEST(Kernels, VelocityVerletAgreesWithRK4) {
     const Result a = simulate(rk4, g, q, {2, 0, 0});
     const Result b = simulate(verlet, g, q, {2, 0, 0});
     const double tolerance = 0.002;
-    EXPECT_NEAR(b.muStatic, a.muStatic, tolerance * a.muStatic) << "safety " << safety;
-    EXPECT_NEAR(b.muKinetic, a.muKinetic, tolerance * a.muKinetic) << "safety " << safety;
-    EXPECT_NEAR(b.peakTime, a.peakTime, 0.01 * a.peakTime) << "safety " << safety;
+    EXPECT_NEAR(b.friction.muStatic, a.friction.muStatic, tolerance * a.friction.muStatic) << "safety " << safety;
+    EXPECT_NEAR(b.friction.muKinetic, a.friction.muKinetic, tolerance * a.friction.muKinetic) << "safety " << safety;
+    EXPECT_NEAR(b.friction.peakTime, a.friction.peakTime, 0.01 * a.friction.peakTime) << "safety " << safety;
   }
 }
