@@ -48,7 +48,7 @@ int main(int argc, char** argv) {
     if (compare)
       checkUnusedOptions(comm, {"plate_", "friction_", "fem_", "grading_", "sbm_"});
     else
-      checkUnusedOptions(comm, {"plate_", "fem_", "grading_"});
+      checkUnusedOptions(comm, {"plate_", "friction_", "fem_", "grading_"});
     chooseTimeStep(params, grading);    // refuses a dt above the stable step before any work
     OutputFiles output(comm, params);  // refuses an existing file before any work
     PlateModel model(comm, params, grading);
@@ -70,18 +70,22 @@ int main(int argc, char** argv) {
     const double wall0 = MPI_Wtime();
     const FemRunResult r = runPlateExperiment(model, observer);
     const double wall = MPI_Wtime() - wall0;
+    const FrictionSummary& f = r.friction;
     output.writeHistory(model, r, record);
     output.finish();
     PetscPrintf(comm,
                 "Results (FEM):\n"
                 "  settled normal force / (p L^2)  %.6f\n"
-                "  mu_s (global)                   %.6f\n"
+                "  mu_s (global)                   %.6f%s\n"
                 "  peak time after sliding start   %.6e s   (Eq. 2: %.6e s, ratio %.4f)\n"
                 "  first slip after sliding start  %.6e s\n"
                 "  mu_k (kinetic window)           %.6f%s\n"
                 "  steps %ld, dt %.4e s, wall %.2f s (pressure %.2f s, sliding %.2f s), %.3f ms/step\n",
-                r.settledNormalForce, r.muS, r.peakTime, eq2, r.peakTime / eq2, r.firstSlipTime, r.muK,
-                r.windowComplete ? "" : "  (window incomplete)", r.steps, r.dt, wall, r.wallPressure, r.wallSliding,
+                r.settledNormalForce, f.muStatic, f.peakConfirmed ? "" : "  (peak not confirmed)", f.peakTime, eq2,
+                f.peakTime / eq2, f.firstSlipTime, f.muKinetic,
+                !params.measurement.kinetic ? "  (not asked: -friction_observables)"
+                : f.kineticComplete         ? ""
+                                            : "  (window incomplete)", r.steps, r.dt, wall, r.wallPressure, r.wallSliding,
                 1e3 * wall / std::max(1L, r.steps));
     if (r.stoppedByTS)
       PetscPrintf(comm, "  (the TS's limits -ts_max_steps / -ts_max_time ended the run %s)\n",
@@ -107,7 +111,7 @@ int main(int argc, char** argv) {
                   "  mu_k        %12.6f   %12.6f\n"
                   "  peak time   %12.4e   %12.4e s   (FEM Eq. 2: %.4e s, SBM loading time: %.4e s)\n"
                   "  wall        %12.2f   %12.2f s\n",
-                  describe(grading).c_str(), r.muS, sbmValues[0], r.muK, sbmValues[1], r.peakTime, sbmValues[2], eq2,
+                  describe(grading).c_str(), f.muStatic, sbmValues[0], f.muKinetic, sbmValues[1], f.peakTime, sbmValues[2], eq2,
                   sbmParams.loadingTime(), wall, sbmValues[3]);
     }
   });

@@ -47,7 +47,7 @@ ContactTotals ContactBoundary::addForce(Vec X, Vec F) {
     if (r.state == ContactState::Stick) ++totals.stick;
     else if (r.state == ContactState::Slip) ++totals.slip;
     else ++totals.open;
-    if (n.everSlipped || r.state == ContactState::Slip) ++totals.everSlipped;
+    if (n.everSlipped || r.state != ContactState::Stick) ++totals.everSlipped;
   }
   totals.nodes = static_cast<long long>(nodes_.size());
   GF_CALL(VecRestoreArrayRead(X, &x));
@@ -55,12 +55,19 @@ ContactTotals ContactBoundary::addForce(Vec X, Vec F) {
   return totals;
 }
 
+double ContactBoundary::largestStaticCoefficient() const {
+  double local = 0, global = 0;
+  for (const Node& n : nodes_) local = std::max(local, n.law.muStatic);
+  GF_CALL_MPI(MPI_Allreduce(&local, &global, 1, MPI_DOUBLE, MPI_MAX, comm_));
+  return global;
+}
+
 void ContactBoundary::commit() {
   for (Node& n : nodes_) {
     n.anchorX = n.pendingX;
     n.anchorY = n.pendingY;
     n.state = n.pendingState;
-    if (n.state == ContactState::Slip) n.everSlipped = true;
+    if (n.state != ContactState::Stick) n.everSlipped = true;  // slipped or lost contact
   }
 }
 

@@ -2,8 +2,10 @@
 //  - pre-step: the start of sliding (step 2) once step 1 (ramp + settle) is over: the top's
 //    tangential velocity is set and the TS told to restart its step (TSRestartStep);
 //  - post-step: the contact state of the accepted step is committed, the step's totals are summed
-//    over ranks, mu(t) is recorded and the stop rule applied (TS_CONVERGED_USER once mu_s and the
-//    kinetic window are known, or at the end of the sliding time). The rule must see this step's
+//    over ranks, mu(t) fed to the shared FrictionHistory and its stop rule applied
+//    (TS_CONVERGED_USER once the -friction_observables are known, or at the end of the sliding
+//    time). "Every site slipped" for the FEM: every bottom node slipped or lost contact at least
+//    once since the start of sliding; "some site slipped": at least one did. The rule must see this step's
 //    mu: a monitor runs after the post-step and TSStep resets the converged reason, so only the
 //    post-step can stop the solve at this step;
 //  - monitors (TSMonitorSet): the blow-up / energy monitor, the snapshot output (StepObserver) and
@@ -21,10 +23,14 @@ namespace {
 
 class Experiment {
 public:
-  Experiment(PlateModel& model, const StepObserver& observer) : model_(model), observer_(observer), q_(model.params()) {
+  Experiment(PlateModel& model, const StepObserver& observer)
+      : model_(model),
+        observer_(observer),
+        q_(model.params()),
+        normal_(q_.plate.pressure * q_.plate.length * q_.plate.length),
+        history_(q_.measurement, normal_, model.timeStep()) {
     r_.dt = model.timeStep();
     r_.stableDt = model.stableTimeStep();
-    normal_ = q_.plate.pressure * q_.plate.length * q_.plate.length;
   }
 
   FemRunResult run() {
@@ -53,7 +59,7 @@ public:
     GF_CALL(TSGetTime(ts, &t));
     GF_CALL(TSGetSolution(ts, &state));
     if (r_.steps % q_.monitorEvery != 0) monitor_->check(r_.steps, t, state);  // the final state too
-    finish();
+    r_.friction = history_.summary();
     r_.energyTime = std::move(energyRecord.time);
     r_.energy = std::move(energyRecord.energy);
     r_.energyIn = std::move(energyRecord.energyIn);
@@ -139,37 +145,14 @@ private:
     if (model_.phase() != Phase::Sliding) return;
     const double tSliding = t - r_.slideStart;
     const ContactTotals& totals = sample_.totals;
-    const double mu = std::hypot(totals.fx, totals.fy) / normal_;
+    const double mu = history_.observe(tSliding, totals.fx, totals.fy, totals.everSlipped > 0,
+                                       totals.everSlipped == totals.nodes);
     sample_.mu = mu;
     r_.time.push_back(tSliding);
     r_.mu.push_back(mu);
     r_.normalForce.push_back(totals.fn / normal_);
-    if (r_.firstSlipTime < 0 && totals.slip > 0) r_.firstSlipTime = tSliding;
-    if (mu > muMax_) {
-      muMax_ = mu;
-      r_.peakTime = tSliding;
-      r_.peakConfirmed = false;
-    } else if (mu < 0.95 * muMax_) {
-      r_.peakConfirmed = true;
-    }
-    const double windowEnd = r_.peakTime + q_.windowStart + q_.windowLength;
-    const bool known = q_.stopWhenKnown && r_.peakConfirmed && tSliding >= windowEnd;
+    const bool known = q_.stopWhenKnown && history_.known();
     if (known || tSliding >= q_.slideTime - 0.5 * r_.dt) GF_CALL(TSSetConvergedReason(ts, TS_CONVERGED_USER));
-  }
-
-  // mu_s, mu_k over the kinetic window, and whether the window was observed to its end.
-  void finish() {
-    r_.muS = muMax_;
-    const double w0 = r_.peakTime + q_.windowStart, w1 = w0 + q_.windowLength;
-    double sum = 0;
-    long n = 0;
-    for (std::size_t i = 0; i < r_.time.size(); ++i)
-      if (r_.time[i] >= w0 && r_.time[i] <= w1) {
-        sum += r_.mu[i];
-        ++n;
-      }
-    r_.windowComplete = r_.peakConfirmed && !r_.time.empty() && r_.time.back() >= w1 - r_.dt;
-    r_.muK = n ? sum / n : std::nan("");
   }
 
   PlateModel& model_;
@@ -177,8 +160,10 @@ private:
   const FemParameters& q_;
   FemRunResult r_;
   std::optional<EnergyMonitor> monitor_;
+  double normal_;
+  FrictionHistory history_;
   Sample sample_;
-  double normal_ = 0, muMax_ = -1, wall0_ = 0;
+  double wall0_ = 0;
 };
 
 }  // namespace

@@ -1,11 +1,11 @@
 #include "gradfric/fem/stable_step.hpp"
 
-#include "gradfric/core/input_error.hpp"
-#include "gradfric/core/options.hpp"
 #include "gradfric/fem/hex_element.hpp"
+#include "gradfric/physics/stability.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace gradfric::fem {
 
@@ -28,13 +28,9 @@ double stableTimeStep(const FemParameters& given, const Grading& grading) {
 
 double chooseTimeStep(const FemParameters& q, const Grading& grading) {
   const double stable = stableTimeStep(q, grading);
-  if (q.dt > 0) {
-    if (q.dt > stable && q.dtCheck)
-      throw InputError("-fem_dt", formatReal(q.dt),
-                       "<= the stable step " + formatReal(stable) + " s (from mesh, wave speed, penalty, damping)");
-    return q.dt;
-  }
-  return q.dtSafety * stable;
+  const TimeStepPolicy policy{"-fem_dt", "the stable step (from mesh, wave speed, penalty, damping)", stable,
+                              q.dtCheck};
+  return policy.choose(q.dt > 0 ? std::optional<double>(q.dt) : std::nullopt, q.dtSafety * stable);
 }
 
 }  // namespace gradfric::fem

@@ -38,9 +38,9 @@ TEST(FemParallel, OneAndTwoRanksGiveTheSameFrictionHistory) {
   for (std::size_t i = 0; i < one.mu.size(); ++i)
     worst = std::max(worst, std::fabs(one.mu[i] - two.mu[i]) / std::max(1e-300, std::fabs(one.mu[i])));
   PetscPrintf(PETSC_COMM_WORLD, "1 vs 2 ranks: %zu samples, largest relative difference of mu(t) %.3e; mu_s %.12f vs %.12f\n",
-              one.mu.size(), worst, one.muS, two.muS);
+              one.mu.size(), worst, one.friction.muStatic, two.friction.muStatic);
   EXPECT_LT(worst, 1e-10);
-  EXPECT_NEAR(one.muS, two.muS, 1e-10 * one.muS);
+  EXPECT_NEAR(one.friction.muStatic, two.friction.muStatic, 1e-10 * one.friction.muStatic);
 }
 
 TEST(FemParallel, MetisPartitionIsBalancedAndCutsNoMoreFacesThanSimple) {

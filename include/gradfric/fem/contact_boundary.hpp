@@ -21,7 +21,7 @@ struct ContactTotals {
   double topZ = 0;                // sum over the top nodes of area * u_z [m^3] (pressure work -p dZ)
   double driveX = 0, driveY = 0;  // force of the slider on the top in step 2 [N] (work: F . v dt)
   long long stick = 0, slip = 0, open = 0;
-  long long everSlipped = 0;      // nodes that have slipped since resetSlipRecord (committed state)
+  long long everSlipped = 0;      // nodes that slipped or lost contact since resetSlipRecord
   long long nodes = 0;            // bottom nodes
 };
 
@@ -49,6 +49,7 @@ public:
   void resetSlipRecord();  // from now on, everSlipped counts slips after this point
 
   const std::vector<Node>& nodes() const { return nodes_; }
+  double largestStaticCoefficient() const;  // over the nodes and ranks
   // Mean penetration and its spread over the bottom nodes, over ranks (for tests).
   void penetration(Vec X, double* mean, double* minimum, double* maximum) const;
 

@@ -1,23 +1,18 @@
 #pragma once
-// The FEM's blow-up monitor and energy balance (FemRunResult::energy*): finite mu(t), normal force
-// and top displacement every step; every -fem_monitor_every steps, kinetic + elastic energy
-// bounded by the energy put in (pressure work, slider work, the kinetic energy given to the top at
-// the start of sliding). Throws BlowUpError naming the quantity, the step, the time and the cause.
+// The FEM's blow-up monitor and energy balance (FemRunResult::energy*), on the shared stability
+// layer (physics/stability.hpp): every step mu(t) finite and below twice the largest local mu_s
+// (frictionViolation, as the SBM), the normal force and the top displacement finite; every
+// -fem_monitor_every steps, kinetic + elastic energy bounded by -fem_monitor_factor x (the energy
+// put in + p^2 L^2 H / 2E) (EnergyBound); the energy put in is the pressure work, the slider work
+// and the kinetic energy given to the top at the start of sliding. A violation throws
+// NumericalInstability naming the quantity, the time, the step and the likely cause.
 #include "gradfric/fem/plate_model.hpp"
+#include "gradfric/physics/stability.hpp"
 
-#include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace gradfric::fem {
-
-// Thrown (on every rank: the monitored values are global) when a run goes unstable: a non-finite
-// mu(t), normal force or state, or energy growing without bound. what() names the quantity, the
-// step and time, and the likely cause.
-class BlowUpError : public std::runtime_error {
-public:
-  using std::runtime_error::runtime_error;
-};
 
 struct EnergyRecord {
   std::vector<double> time, energy, energyIn;  // see FemRunResult
@@ -39,7 +34,8 @@ private:
   PlateModel& model_;
   TS ts_;
   EnergyRecord* record_;
-  double reference_ = 0, injected_ = 0, pressureWork_ = 0, driveWork_ = 0;
+  EnergyBound bound_;
+  double muCeiling_ = 0, injected_ = 0, pressureWork_ = 0, driveWork_ = 0;
   double lastZ_ = 0, lastP_ = 0, lastPower_ = 0;
   bool started_ = true, sliding_ = false;  // the run starts at rest, Z = 0, p = 0
 };

@@ -4,7 +4,7 @@
 //    the model's right-hand side, and a post-step that commits the contact state of the accepted
 //    step (TSSetPostStep: PETSc calls it from TSSolve only, not from a bare TSStep).
 //  - guardedCallback: runs the body of a PETSc callback; an exception becomes a PETSc error code
-//    and is kept, and solvePlateTS rethrows it as it was (a BlowUpError stays a BlowUpError).
+//    and is kept, and solvePlateTS rethrows it as it was (a NumericalInstability stays one).
 #include "gradfric/fem/plate_model.hpp"
 
 #include <petscts.h>

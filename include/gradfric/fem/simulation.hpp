@@ -1,10 +1,12 @@
 #pragma once
 // The paper's two-step FEM experiment on a PlateModel: pressure ramp and hold (step 1), then the
-// top surface slides at v (step 2); mu(t), mu_s, the peak time, mu_k over the kinetic window.
+// top surface slides at v (step 2); mu(t) observed by the shared FrictionHistory (the rule of both
+// models: peak confirmed after a drop or a hold once every bottom node slipped or lost contact).
 // Driven by one TSSolve (see simulation.cpp for the callbacks).
 #include "gradfric/fem/energy_monitor.hpp"
 #include "gradfric/fem/plate_model.hpp"
 #include "gradfric/fem/plate_ts.hpp"
+#include "gradfric/physics/friction_history.hpp"
 
 #include <functional>
 #include <vector>
@@ -14,11 +16,10 @@ namespace gradfric::fem {
 struct FemRunResult {
   // mu(t) = |total tangential contact force| / (p L^2), time measured from the start of sliding.
   std::vector<double> time, mu, normalForce;  // every step of step 2
-  double muS = 0;            // global static coefficient: max of mu(t)
-  double peakTime = 0;       // time of the peak after the start of sliding [s]
-  double firstSlipTime = -1; // first node slipping after the start of sliding [s]
-  double muK = 0;            // mean of mu(t) over the kinetic window
-  bool peakConfirmed = false, windowComplete = false;
+  // The shared observer's result (physics/friction_history.hpp), times from the start of sliding:
+  // mu_s, its time and confirmation, mu_k over the kinetic window, the first slip (some bottom
+  // node slipping), the history sampled every -friction_history_interval with F_x, F_y.
+  FrictionSummary friction;
   bool stoppedByTS = false;  // the TS's own limits (-ts_max_steps, -ts_max_time) ended the run first
   double slideStart = 0;     // absolute time of the start of sliding [s]
   double settledNormalForce = 0;  // total contact normal force / (p L^2) at the end of step 1
@@ -38,7 +39,7 @@ struct FemRunResult {
 using StepObserver = std::function<void(double tSliding, Vec state)>;
 
 // Runs the experiment on a fresh TS (createPlateTS: -ts_ options apply, -ts_monitor, -ts_view,
-// -ts_max_steps, -ts_type ...). Throws BlowUpError when the monitor sees the run go unstable (no
+// -ts_max_steps, -ts_type ...). Throws NumericalInstability when the monitor sees the run go unstable (no
 // result is returned, nothing written).
 FemRunResult runPlateExperiment(PlateModel& model, const StepObserver& observer = {});
 

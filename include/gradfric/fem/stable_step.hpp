@@ -8,8 +8,9 @@ namespace gradfric::fem {
 // The stable step for these parameters (no mesh needed: every cell is the same box): element
 // frequencies with the stiffest graded E, contact penalty, damping.
 double stableTimeStep(const FemParameters& params, const Grading& grading);
-// The step a run uses: params.dt if set (refused with the limit in the message if above the
-// stable step), else dtSafety * stable step. Throws InputError.
+// The step a run uses, by the shared TimeStepPolicy (physics/stability.hpp): params.dt if set
+// (refused above the stable step unless -fem_dt_check false), else dtSafety * stable step.
+// Throws InputError.
 double chooseTimeStep(const FemParameters& params, const Grading& grading);
 
 }  // namespace gradfric::fem
