@@ -4,10 +4,10 @@
 //  - post-step: the contact state of the accepted step is committed, the step's totals are summed
 //    over ranks, mu(t) fed to the shared FrictionHistory and its stop rule applied
 //    (TS_CONVERGED_USER once the -friction_observables are known, or at the end of the sliding
-//    time). "Every site slipped" for the FEM: every bottom node slipped or lost contact at least
-//    once since the start of sliding; "some site slipped": at least one did. The rule must see this step's
-//    mu: a monitor runs after the post-step and TSStep resets the converged reason, so only the
-//    post-step can stop the solve at this step;
+//    time). The rule must see this step's mu: a monitor runs after the post-step and TSStep resets
+//    the converged reason, so only the post-step can stop the solve at this step. For the
+//    observer, "every site slipped" = every bottom node slipped or lost contact at least once
+//    since the start of sliding; the first slip = the first step with a node slipping;
 //  - monitors (TSMonitorSet): the blow-up / energy monitor, the snapshot output (StepObserver) and
 //    the progress lines; -ts_monitor and any other -ts_ monitor run alongside.
 #include "gradfric/fem/simulation.hpp"
@@ -145,7 +145,8 @@ private:
     if (model_.phase() != Phase::Sliding) return;
     const double tSliding = t - r_.slideStart;
     const ContactTotals& totals = sample_.totals;
-    const double mu = history_.observe(tSliding, totals.fx, totals.fy, totals.everSlipped > 0,
+    // First slip: a node slipping (not one losing contact); every site: slipped or lost contact.
+    const double mu = history_.observe(tSliding, totals.fx, totals.fy, totals.slip > 0,
                                        totals.everSlipped == totals.nodes);
     sample_.mu = mu;
     r_.time.push_back(tSliding);
