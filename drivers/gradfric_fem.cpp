@@ -1,4 +1,4 @@
-// gradfric-fem: the paper's 3D finite-element experiment (issue 4). All options: -help.
+// gradfric-fem: the paper's 3D finite-element experiment. All options: -help.
 #include <petscsection.h>
 #include <petscsf.h>
 

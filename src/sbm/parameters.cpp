@@ -2,6 +2,7 @@
 
 #include "gradfric/core/input_error.hpp"
 #include "gradfric/physics/friction_options.hpp"
+#include "gradfric/physics/stability.hpp"
 #include "gradfric/sbm/lattice.hpp"
 
 #include <algorithm>
@@ -75,19 +76,14 @@ Parameters readParameters(MPI_Comm comm, RunParameters* record, const Plate& pla
   o.requirePositive("dt_slip", p.timeStepSlip, "");
   const bool check = o.flag("dt_check", true, "refuse a dt above the stability limit (false: only to test the instability monitor)");
   const std::string scheme = p.integrator == Integrator::VelocityVerlet ? "velocity Verlet" : "RK4";
-  if (auto dt = o.realIfSet("dt", "s", "time step (refused above the integrator's stability limit)",
-                            "min(dt_safety x stable step, dt_slip x slip time)")) {
-    p.timeStep = *dt;
-    o.requirePositive("dt", p.timeStep, "s");
-    if (check && p.timeStep > stable)
-      throw InputError(o.fullName("dt"), formatReal(p.timeStep),
-                       "<= " + formatReal(stable) + " s, the " + scheme + " stability limit of this lattice");
-  } else {
-    p.timeStep = defaultTimeStep(p, grading);
+  const TimeStepPolicy policy{o.fullName("dt"), "the " + scheme + " stability limit of this lattice", stable, check};
+  const auto requested = o.realIfSet("dt", "s", "time step (refused above the integrator's stability limit)",
+                                     "min(dt_safety x stable step, dt_slip x slip time)");
+  p.timeStep = policy.choose(requested, defaultTimeStep(p, grading));
+  if (!requested)
     o.recordDerived("dt", p.timeStep, "s",
                     "time step = min(dt_safety x " + scheme + " stability limit " + formatReal(stable) +
                         " s, dt_slip x slip time " + formatReal(slipTime(p, grading)) + " s)");
-  }
   return p;
 }
 

@@ -1,5 +1,5 @@
 #pragma once
-// Parameters of the 2D spring-block model (paper, "2D spring-block model"; shared/notes/model.md).
+// Parameters of the 2D spring-block model (paper, "2D spring-block model"; docs/model.md).
 // SI units throughout. All are PETSc options with the -sbm_ prefix.
 #include "gradfric/core/options.hpp"
 #include "gradfric/physics/friction_history.hpp"
