@@ -48,7 +48,7 @@ void EnergyMonitor::check(long step, double t, Vec state) {
   record_->energy.push_back(energy);
   record_->energyIn.push_back(in);
   const std::string energyProblem =
-      bound_.violation(energy, in, "the energy put in (pressure, slider, kinetic energy of the start)");
+      bound_.violation(energy, in, "the energy put in");
   if (!energyProblem.empty()) fail(step, t, energyProblem);
 }
 

@@ -7,7 +7,9 @@
 //    time). The rule must see this step's mu: a monitor runs after the post-step and TSStep resets
 //    the converged reason, so only the post-step can stop the solve at this step. For the
 //    observer, "every site slipped" = every bottom node slipped or lost contact at least once
-//    since the start of sliding; the first slip = the first step with a node slipping;
+//    since the start of sliding (in a plate with a 0.1 E0 band, nodes there can stay stuck for
+//    many t_load while the plate shears above them: the peak is then not confirmed, see
+//    tests/fem/test_fem_hard_grading.cpp); the first slip = the first step with a node slipping;
 //  - monitors (TSMonitorSet): the blow-up / energy monitor, the snapshot output (StepObserver) and
 //    the progress lines; -ts_monitor and any other -ts_ monitor run alongside.
 #include "gradfric/fem/simulation.hpp"

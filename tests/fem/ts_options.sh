@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The FEM run is a TSSolve: PETSc's -ts_ options work as PETSc users expect (issue 10, item 5).
+# The FEM run is a TSSolve: PETSc's -ts_ options work as PETSc users expect.
 #  1. -ts_monitor prints every step, -ts_view the TS (type gfverlet), -ts_max_steps stops the run
 #     (exit 0, the stop named), on 2 ranks, and no -ts_ option is reported unused;
 #  2. a full run with -ts_monitor: the experiment stops itself (TS_CONVERGED_USER) and the last
