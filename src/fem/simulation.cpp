@@ -154,6 +154,8 @@ private:
     r_.time.push_back(tSliding);
     r_.mu.push_back(mu);
     r_.normalForce.push_back(totals.fn / normal_);
+    r_.forceX.push_back(totals.fx);
+    r_.forceY.push_back(totals.fy);
     const bool known = q_.stopWhenKnown && history_.known();
     if (known || tSliding >= q_.slideTime - 0.5 * r_.dt) GF_CALL(TSSetConvergedReason(ts, TS_CONVERGED_USER));
   }

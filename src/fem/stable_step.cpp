@@ -1,5 +1,6 @@
 #include "gradfric/fem/stable_step.hpp"
 
+#include "gradfric/core/run_limits.hpp"
 #include "gradfric/fem/hex_element.hpp"
 #include "gradfric/physics/stability.hpp"
 
@@ -31,6 +32,15 @@ double chooseTimeStep(const FemParameters& q, const Grading& grading) {
   const TimeStepPolicy policy{"-fem_dt", "the stable step (from mesh, wave speed, penalty, damping)", stable,
                               q.dtCheck};
   return policy.choose(q.dt > 0 ? std::optional<double>(q.dt) : std::nullopt, q.dtSafety * stable);
+}
+
+void requireFemRunLength(const FemParameters& q, const Grading& grading, const RunParameters* record) {
+  const double duration = q.rampTime + q.settleTime + q.slideTime;
+  requireResolvedTimescale(record, q.eq2PeakTime(), chooseTimeStep(q, grading), "-fem_dt",
+                           {"-fem_", "-plate_", "-grading_"}, "Eq. 2 peak time");
+  requireRunLength(record, duration, chooseTimeStep(q, grading), q.dtSafety * stableTimeStep(q, grading), "-fem_dt",
+                   {"-fem_slide_time", "-fem_settle_time", "-fem_ramp_time"}, {"-fem_", "-plate_", "-grading_"},
+                   "pressure step + sliding");
 }
 
 }  // namespace gradfric::fem

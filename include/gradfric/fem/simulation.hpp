@@ -15,7 +15,8 @@ namespace gradfric::fem {
 
 struct FemRunResult {
   // mu(t) = |total tangential contact force| / (p L^2), time measured from the start of sliding.
-  std::vector<double> time, mu, normalForce;  // every step of step 2
+  std::vector<double> time, mu, normalForce;  // every step of step 2; normalForce is F_n / (p L^2)
+  std::vector<double> forceX, forceY;          // total tangential contact force components [N]
   // The shared observer's result (physics/friction_history.hpp), times from the start of sliding:
   // mu_s, its time and confirmation, mu_k over the kinetic window, the first slip (some bottom
   // node slipping), the history sampled every -friction_history_interval with F_x, F_y.

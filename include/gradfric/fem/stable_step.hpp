@@ -1,5 +1,6 @@
 #pragma once
 // The stable step of the FEM's explicit scheme and the step a run uses.
+#include "gradfric/core/options.hpp"
 #include "gradfric/fem/parameters.hpp"
 #include "gradfric/physics/grading.hpp"
 
@@ -12,5 +13,8 @@ double stableTimeStep(const FemParameters& params, const Grading& grading);
 // (refused above the stable step unless -fem_dt_check false), else dtSafety * stable step.
 // Throws InputError.
 double chooseTimeStep(const FemParameters& params, const Grading& grading);
+// Refuses, before any work, a run of more than 1e9 steps (pressure step + sliding at the chosen
+// dt), naming the option the user set that made it so (see core/run_limits.hpp).
+void requireFemRunLength(const FemParameters& params, const Grading& grading, const RunParameters* record);
 
 }  // namespace gradfric::fem
