@@ -9,6 +9,7 @@
 #include "gradfric/fem/output.hpp"
 #include "gradfric/fem/parameters.hpp"
 #include "gradfric/fem/plate_model.hpp"
+#include "gradfric/fem/plate_ts.hpp"
 #include "gradfric/fem/simulation.hpp"
 #include "gradfric/physics/grading_options.hpp"
 #include "gradfric/physics/plate_options.hpp"
@@ -58,10 +59,11 @@ std::optional<FemRun> readFemRun(MPI_Comm comm, RunParameters* record) {
     run.sbmRequest = sbm::readRequest(comm, record, run.sbmParams);
   }
   if (helpRequested()) return std::nullopt;
+  readPlateTSOptions(comm);  // the -ts_ options: checked here, used by the run's TS
   if (run.compare)
     checkUnusedOptions(comm, {"plate_", "friction_", "fem_", "grading_", "sbm_"});
   else
-    checkUnusedOptions(comm, {"plate_", "fem_", "grading_"});
+    checkUnusedOptions(comm, {"plate_", "friction_", "fem_", "grading_"});
   requireFemRunLength(run.params, run.grading, record);  // refuses a dt above the stable step, an endless run
   return run;
 }
@@ -78,7 +80,7 @@ void printPlan(MPI_Comm comm, const FemRun& run, const PlateModel& model, RunPar
               "Active effects: grading %s; %d x %d x %d hexahedra (%d cells) on %d rank(s), partitioner %s;\n"
               "  pressure ramp %.3g s + settle %.3g s (mass damping %.3g 1/s), sliding at %.3g m/s, theta %.3g deg;\n"
               "  contact penalty k_n %.3g, k_t %.3g Pa/m; Eq. 1 friction, v_c %.3g m/s; dt %.4g s (stable %.4g s)\n",
-              describe(run.grading).c_str(), params.nx, params.ny, params.nz, static_cast<int>(model.globalCells()),
+              describe(run.grading).c_str(), params.nx, params.ny, params.nz, static_cast<int>(model.mesh().globalCells()),
               size, params.partitioner.c_str(), params.rampTime, params.settleTime, params.settleDamping,
               params.plate.velocity, params.plate.slidingAngle, params.kn, params.kt, params.vC, model.timeStep(),
               model.stableTimeStep());
@@ -86,17 +88,24 @@ void printPlan(MPI_Comm comm, const FemRun& run, const PlateModel& model, RunPar
 
 void printResults(MPI_Comm comm, const FemRun& run, const FemRunResult& r, double wall) {
   const double eq2 = run.params.eq2PeakTime();
+  const FrictionSummary& f = r.friction;
   PetscPrintf(comm,
               "Results (FEM):\n"
               "  settled normal force / (p L^2)  %.6f\n"
-              "  mu_s (global)                   %.6f\n"
+              "  mu_s (global)                   %.6f%s\n"
               "  peak time after sliding start   %.6e s   (Eq. 2: %.6e s, ratio %.4f)\n"
               "  first slip after sliding start  %.6e s\n"
               "  mu_k (kinetic window)           %.6f%s\n"
               "  steps %ld, dt %.4e s, wall %.2f s (pressure %.2f s, sliding %.2f s), %.3f ms/step\n",
-              r.settledNormalForce, r.muS, r.peakTime, eq2, r.peakTime / eq2, r.firstSlipTime, r.muK,
-              r.windowComplete ? "" : "  (window incomplete)", r.steps, r.dt, wall, r.wallPressure, r.wallSliding,
-              1e3 * wall / std::max(1L, r.steps));
+              r.settledNormalForce, f.muStatic, f.peakConfirmed ? "" : "  (peak not confirmed)", f.peakTime, eq2,
+              f.peakTime / eq2, f.firstSlipTime, f.muKinetic,
+              !run.params.measurement.kinetic ? "  (not asked: -friction_observables)"
+              : f.kineticComplete             ? ""
+                                              : "  (window incomplete)",
+              r.steps, r.dt, wall, r.wallPressure, r.wallSliding, 1e3 * wall / std::max(1L, r.steps));
+  if (r.stoppedByTS)
+    PetscPrintf(comm, "  (the TS's limits -ts_max_steps / -ts_max_time ended the run %s)\n",
+                r.time.empty() ? "before the sliding step" : "before the observables were known");
 }
 
 // -fem_compare_sbm: one SBM realisation on rank 0 (the SBM has no MPI inside), the same grading.
@@ -126,7 +135,8 @@ void compareWithSpringBlocks(MPI_Comm comm, const FemRun& run, const FemRunResul
               "  mu_k        %12.6f   %12.6f\n"
               "  peak time   %12.4e   %12.4e s   (FEM Eq. 2: %.4e s, SBM loading time: %.4e s)\n"
               "  wall        %12.2f   %12.2f s\n",
-              describe(run.grading).c_str(), r.muS, sbmValues[0], r.muK, sbmValues[1], r.peakTime, sbmValues[2],
+              describe(run.grading).c_str(), r.friction.muStatic, sbmValues[0], r.friction.muKinetic, sbmValues[1],
+              r.friction.peakTime, sbmValues[2],
               run.params.eq2PeakTime(), run.sbmParams.loadingTime(), wall, sbmValues[3]);
 }
 

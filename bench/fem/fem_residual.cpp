@@ -62,26 +62,26 @@ void timeCalls(benchmark::State& state, const char* name, Call call) {
     ++calls;
   }
   gSecondsPerCall[name] = total / calls;
-  state.counters["cells"] = static_cast<double>(model().globalCells());
-  state.counters["ns_per_cell"] = 1e9 * total / calls / model().globalCells();
+  state.counters["cells"] = static_cast<double>(model().mesh().globalCells());
+  state.counters["ns_per_cell"] = 1e9 * total / calls / model().mesh().globalCells();
 }
 
 void BM_ElasticSpecialised(benchmark::State& state) {
   PlateModel& m = model();
   OwnedVec u, f;
-  DMCreateGlobalVector(m.displacementDM(), u.out());
+  DMCreateGlobalVector(m.elastic().displacementDM(), u.out());
   VecDuplicate(u, f.out());
   VecSet(u, 1e-9);
-  timeCalls(state, "specialised", [&] { m.elasticForceSpecialised(u, f); });
+  timeCalls(state, "specialised", [&] { m.elastic().forceSpecialised(u, f); });
 }
 
 void BM_ElasticGeneric(benchmark::State& state) {
   PlateModel& m = model();
   OwnedVec u, f;
-  DMCreateGlobalVector(m.displacementDM(), u.out());
+  DMCreateGlobalVector(m.elastic().displacementDM(), u.out());
   VecDuplicate(u, f.out());
   VecSet(u, 1e-9);
-  timeCalls(state, "generic", [&] { m.elasticForceGeneric(u, f); });
+  timeCalls(state, "generic", [&] { m.elastic().forceGeneric(u, f); });
 }
 
 void BM_WholeRightHandSide(benchmark::State& state) {
@@ -121,7 +121,7 @@ int main(int argc, char** argv) {
       const double s = gSecondsPerCall["specialised"], g = gSecondsPerCall["generic"];
       std::printf("elastic residual on %d rank(s), %d cells: specialised %.3f ms, generic %.1f ms, ratio "
                   "specialised/generic %.4f (generic is %.0fx slower)\n",
-                  size, static_cast<int>(model().globalCells()), 1e3 * s, 1e3 * g, s / g, g / s);
+                  size, static_cast<int>(model().mesh().globalCells()), 1e3 * s, 1e3 * g, s / g, g / s);
     }
     gModel.reset();
   }

@@ -1,7 +1,7 @@
 // The specialised elastic kernel: a gather of the 24 element displacements, one 24x24 matrix-vector
 // product with the precomputed box-cell stiffness scaled by the cell's E, and a scatter-add.
 // Requires a symmetric stiffness (rows are read as columns).
-#include "gradfric/fem/plate_model.hpp"
+#include "gradfric/fem/elastic_operator.hpp"
 
 namespace gradfric::fem {
 

@@ -153,7 +153,7 @@ void OutputFiles::writeFields(PlateModel& model, Vec state, double t) {
   GF_CALL(VecZeroEntries(contact));
   PetscScalar* c = nullptr;
   GF_CALL(VecGetArray(contact, &c));
-  for (const auto& n : model.bottomNodes()) {
+  for (const auto& n : model.contact().nodes()) {
     c[4 * n.block + 0] = n.pressure;
     c[4 * n.block + 1] = n.tx;
     c[4 * n.block + 2] = n.ty;
@@ -163,7 +163,7 @@ void OutputFiles::writeFields(PlateModel& model, Vec state, double t) {
   GF_CALL(VecView(contact, viewer_));
   GF_CALL(DMRestoreGlobalVector(contactDM_, &contact));
   std::vector<std::array<double, 6>> cellStress;
-  model.cellStresses(state, &cellStress);
+  model.elastic().cellStresses(state, &cellStress);
   GF_CALL(DMGetGlobalVector(stressDM_, &stress));
   GF_CALL(PetscObjectSetName(reinterpret_cast<PetscObject>(stress), "cell"));  // -> cell_stress
   PetscScalar* s = nullptr;
@@ -220,15 +220,15 @@ void OutputFiles::writeHistory(const PlateModel& model, const FemRunResult& r, c
     }
     {
       H5Group results = createGroup(file, "results");
-      writeRealAttribute(results, "mu_s", r.muS);
-      writeRealAttribute(results, "mu_k", r.muK);
-      writeRealAttribute(results, "peak_time", r.peakTime);
+      writeRealAttribute(results, "mu_s", r.friction.muStatic);
+      writeRealAttribute(results, "mu_k", r.friction.muKinetic);
+      writeRealAttribute(results, "peak_time", r.friction.peakTime);
       writeRealAttribute(results, "eq2_peak_time", model.params().eq2PeakTime());
-      writeRealAttribute(results, "first_slip_time", r.firstSlipTime);
+      writeRealAttribute(results, "first_slip_time", r.friction.firstSlipTime);
       writeRealAttribute(results, "slide_start", r.slideStart);
       writeRealAttribute(results, "settled_normal_force", r.settledNormalForce);
-      writeIntAttribute(results, "peak_confirmed", r.peakConfirmed ? 1 : 0);
-      writeIntAttribute(results, "kinetic_window_complete", r.windowComplete ? 1 : 0);
+      writeIntAttribute(results, "peak_confirmed", r.friction.peakConfirmed ? 1 : 0);
+      writeIntAttribute(results, "kinetic_window_complete", r.friction.kineticComplete ? 1 : 0);
       writeRealAttribute(results, "dt", r.dt);
       writeRealAttribute(results, "stable_dt", r.stableDt);
       writeIntAttribute(results, "steps", static_cast<int>(r.steps));

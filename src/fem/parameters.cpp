@@ -1,6 +1,7 @@
 #include "gradfric/fem/parameters.hpp"
 
 #include "gradfric/core/input_error.hpp"
+#include "gradfric/physics/friction_options.hpp"
 
 
 #include <cmath>
@@ -20,8 +21,18 @@ void FemParameters::resolveDerived() {
   if (settleTime < 0) settleTime = 10 * H / cs;
   const double ts = eq2PeakTime();
   if (slideTime < 0) slideTime = 3.0 * ts;
-  if (windowStart < 0) windowStart = 0.5 * ts;  // as the SBM: -sbm_muk_delay 0.5 t_load
-  if (windowLength < 0) windowLength = 1.0 * ts;  // as the SBM: -sbm_muk_width t_load
+  // The defaults of readFrictionMeasurement (friction_options.cpp), with t_load = Eq. 2.
+  FrictionMeasurement& m = measurement;
+  if (m.historyInterval < 0) m.historyInterval = 1e-3 * ts;
+  if (m.kineticDelay < 0) m.kineticDelay = 0.5 * ts;
+  if (m.kineticWidth < 0) m.kineticWidth = 1.0 * ts;
+  if (m.peakHold < 0) m.peakHold = 0.25 * ts;
+}
+
+FrictionMeasurement derivedMeasurement() {
+  FrictionMeasurement m;
+  m.historyInterval = m.kineticDelay = m.kineticWidth = m.peakHold = -1.0;
+  return m;
 }
 
 FemParameters readFemParameters(MPI_Comm comm, RunParameters* record, const Plate& plate) {
@@ -50,10 +61,7 @@ FemParameters readFemParameters(MPI_Comm comm, RunParameters* record, const Plat
   if (auto t = o.realIfSet("ramp_time", "s", "pressure ramp duration", "20 H/c_s")) q.rampTime = *t;
   if (auto t = o.realIfSet("settle_time", "s", "hold under pressure before sliding", "10 H/c_s")) q.settleTime = *t;
   if (auto t = o.realIfSet("slide_time", "s", "longest sliding duration", "3 * Eq. 2 peak time")) q.slideTime = *t;
-  if (auto t = o.realIfSet("kinetic_window_start", "s", "kinetic window start after the peak", "0.5 * Eq. 2"))
-    q.windowStart = *t;
-  if (auto t = o.realIfSet("kinetic_window_length", "s", "kinetic window length", "1.0 * Eq. 2")) q.windowLength = *t;
-  q.stopWhenKnown = o.flag("stop_when_known", true, "stop once mu_s, the peak time and mu_k are known");
+  q.stopWhenKnown = o.flag("stop_when_known", true, "stop once the -friction_observables are known");
   q.partitioner = o.choice("partitioner", "metis", {"metis", "ptscotch", "simple"}, "mesh partitioner");
   q.output = o.text("output", "", "HDF5 results file (empty: none); snapshots go to <name>_fields.h5 + .xmf");
   q.overwrite = o.flag("output_overwrite", false, "replace an existing results file");
@@ -72,10 +80,9 @@ FemParameters readFemParameters(MPI_Comm comm, RunParameters* record, const Plat
   o.requireNonNegative("stiffness_damping", q.stiffnessDamping, "s");
   if (o.wasSet("dt")) o.requirePositive("dt", q.dt, "s");
   o.requireRange("dt_safety", q.dtSafety, 1e-6, 1.0, "0 < dt_safety <= 1");
-  for (const char* name : {"ramp_time", "settle_time", "kinetic_window_start"})
-    if (o.wasSet(name)) o.requireNonNegative(name, name[0] == 'r' ? q.rampTime : name[0] == 's' ? q.settleTime : q.windowStart, "s");
+  for (const char* name : {"ramp_time", "settle_time"})
+    if (o.wasSet(name)) o.requireNonNegative(name, name[0] == 'r' ? q.rampTime : q.settleTime, "s");
   if (o.wasSet("slide_time")) o.requirePositive("slide_time", q.slideTime, "s");
-  if (o.wasSet("kinetic_window_length")) o.requirePositive("kinetic_window_length", q.windowLength, "s");
   // Memory before any work: a hexahedron costs a few kB (DMPlex, state, element data).
   const double cells = static_cast<double>(q.nx) * q.ny * q.nz;
   if (cells > 2e7) {
@@ -97,10 +104,8 @@ FemParameters readFemParameters(MPI_Comm comm, RunParameters* record, const Plat
   if (!o.wasSet("ramp_time")) o.recordDerived("ramp_time", derived.rampTime, "s", "pressure ramp duration");
   if (!o.wasSet("settle_time")) o.recordDerived("settle_time", derived.settleTime, "s", "hold under pressure");
   if (!o.wasSet("slide_time")) o.recordDerived("slide_time", derived.slideTime, "s", "longest sliding duration");
-  if (!o.wasSet("kinetic_window_start"))
-    o.recordDerived("kinetic_window_start", derived.windowStart, "s", "kinetic window start after the peak");
-  if (!o.wasSet("kinetic_window_length"))
-    o.recordDerived("kinetic_window_length", derived.windowLength, "s", "kinetic window length");
+  // The shared friction measurement, its times derived from the FEM's loading time (Eq. 2 with H).
+  derived.measurement = readFrictionMeasurement(comm, record, derived.eq2PeakTime());
   return derived;
 }
 

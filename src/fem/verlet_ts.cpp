@@ -76,7 +76,7 @@ PetscErrorCode TSStep_GFVerlet(TS ts) {
   PetscCheck(bs >= 2 && bs % 2 == 0, PetscObjectComm((PetscObject)ts), PETSC_ERR_ARG_WRONG,
              "gfverlet needs a state of block size 2k [positions, velocities], got %" PetscInt_FMT, bs);
   if (!d->rhs) PetscCall(VecDuplicate(X, &d->rhs));
-  if (!d->haveRhs) {
+  if (!d->haveRhs || ts->steprestart) {  // TSRestartStep: the solution or the forces changed outside
     PetscCall(TSComputeRHSFunction(ts, t, X, d->rhs));
     d->haveRhs = PETSC_TRUE;
   }
@@ -112,12 +112,6 @@ void registerVerletTS() {
   if (done) return;
   GF_CALL(TSRegister(TSGFVERLET, TSCreate_GFVerlet));
   done = true;
-}
-
-void verletInvalidate(TS ts) {
-  PetscBool same = PETSC_FALSE;
-  GF_CALL(PetscObjectTypeCompare(reinterpret_cast<PetscObject>(ts), TSGFVERLET, &same));
-  if (same && ts->data) static_cast<VerletData*>(ts->data)->haveRhs = PETSC_FALSE;
 }
 
 }  // namespace gradfric::fem

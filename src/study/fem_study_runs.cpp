@@ -56,12 +56,12 @@ Outcome runOne(MPI_Comm comm, const fem::FemParameters& q, const Grading& gradin
   try {
     fem::PlateModel model(comm, q, grading);
     const fem::FemRunResult r = fem::runPlateExperiment(model);
-    out.muS = r.muS;
-    out.muK = r.muK;
+    out.muS = r.friction.muStatic;
+    out.muK = r.friction.muKinetic;
     out.steps = double(r.steps);
     out.dt = r.dt;
     out.stableDt = r.stableDt;
-    out.windowComplete = r.windowComplete;
+    out.windowComplete = r.friction.kineticComplete;
   } catch (const InputError&) {
     selectIntegrator("gfverlet");
     throw;

@@ -36,6 +36,10 @@ struct HardCase {
   // more slowly in dt than mu_s (measured dt vs dt/2 on these meshes: up to 4 %).
   double muKTolerance = 0.06;
   double energyTolerance = 0.02;  // relative to the energy put in
+  // false: nodes of a soft band never slip within the run, so the shared peak rule (every site
+  // slipped) never confirms the peak: the run must say so (peak not confirmed, no mu_k), and only
+  // stability, boundedness and the energy balance are checked.
+  bool peakConfirms = true;
 };
 
 inline std::ostream& operator<<(std::ostream& os, const HardCase& c) { return os << c.name; }
@@ -64,7 +68,10 @@ inline Checked runAndCheck(const HardCase& c, FemParameters q, const Grading& g,
   out.run = runPlateExperiment(model);
   const FemRunResult& r = out.run;
   const FemParameters& p = model.params();
-  EXPECT_TRUE(std::isfinite(r.muS) && std::isfinite(r.muK) && std::isfinite(r.settledNormalForce)) << label;
+  EXPECT_TRUE(std::isfinite(r.friction.muStatic) && std::isfinite(r.settledNormalForce)) << label;
+  if (c.peakConfirms) {
+    EXPECT_TRUE(std::isfinite(r.friction.muKinetic)) << label;
+  }
   const double cap = maxLocalStatic(p, g);
   std::size_t nonFinite = 0, aboveCap = 0;
   for (std::size_t i = 0; i < r.mu.size(); ++i) {
@@ -73,8 +80,14 @@ inline Checked runAndCheck(const HardCase& c, FemParameters q, const Grading& g,
   }
   EXPECT_EQ(nonFinite, 0u) << label;
   EXPECT_EQ(aboveCap, 0u) << label << ": mu(t) above max local mu_s x normal force";
-  EXPECT_GT(r.muK, 0.0) << label;
-  EXPECT_LE(r.muS, cap) << label;
+  if (c.peakConfirms) {
+    EXPECT_TRUE(r.friction.peakConfirmed) << label;
+    EXPECT_GT(r.friction.muKinetic, 0.0) << label;
+  } else {
+    EXPECT_FALSE(r.friction.peakConfirmed) << label << ": the front now crosses the plate, restore the checks";
+    EXPECT_FALSE(r.friction.kineticComplete) << label;
+  }
+  EXPECT_LE(r.friction.muStatic, cap) << label;
   const double reference = p.plate.pressure * p.plate.pressure * p.plate.length * p.plate.length * p.plate.thickness / (2 * p.plate.youngsModulus);
   EXPECT_FALSE(r.energy.empty());
   for (std::size_t i = 0; i < r.energy.size(); ++i) {
@@ -98,14 +111,15 @@ inline void checkHardCase(const HardCase& c) {
   q.dt = dt;
   const Checked a = runAndCheck(c, q, g, "dt");
   const Checked b = runAndCheck(c, half, g, "dt/2");
-  const double dmu = a.run.muS / b.run.muS - 1;
+  const double dmu = a.run.friction.muStatic / b.run.friction.muStatic - 1;
   PetscPrintf(PETSC_COMM_WORLD,
               "%-28s dt %.3e s: mu_s %.5f mu_k %.5f peak %.4e s | dt/2: mu_s %.5f mu_k %.5f | mu_s rel. diff %+.2e, "
               "mu_k rel. diff %+.2e | worst energy excess %+.2e, %+.2e (of put in); energy put in at end %.3e J\n",
-              c.name.c_str(), dt, a.run.muS, a.run.muK, a.run.peakTime, b.run.muS, b.run.muK, dmu,
-              a.run.muK / b.run.muK - 1, a.worstEnergyExcess, b.worstEnergyExcess, a.run.energyIn.back());
+              c.name.c_str(), dt, a.run.friction.muStatic, a.run.friction.muKinetic, a.run.friction.peakTime, b.run.friction.muStatic, b.run.friction.muKinetic, dmu,
+              a.run.friction.muKinetic / b.run.friction.muKinetic - 1, a.worstEnergyExcess, b.worstEnergyExcess, a.run.energyIn.back());
+  if (!c.peakConfirms) return;  // mu_s is then the largest of the stick-slip oscillations so far
   EXPECT_LE(std::fabs(dmu), c.muSTolerance) << c.name;
-  EXPECT_LE(std::fabs(a.run.muK / b.run.muK - 1), c.muKTolerance) << c.name;
+  EXPECT_LE(std::fabs(a.run.friction.muKinetic / b.run.friction.muKinetic - 1), c.muKTolerance) << c.name;
 }
 
 }  // namespace gradfric::fem::test

@@ -20,18 +20,16 @@ TEST(FemFriction, PlateSettlesUnderPressureToThePenaltyPenetration) {
   OwnedVec X(model.createState());
   OwnedTS ts(createPlateTS(model, X));
   model.setPhase(Phase::Pressure);
-  PetscReal t = 0;
-  while (t < r.rampTime + r.settleTime) {
-    ASSERT_EQ(TSStep(ts), 0);
-    model.commitContact();
-    TSGetTime(ts, &t);
-  }
+  // Ramp and settle through TSSolve: its post-step commits the contact state of every step.
+  ASSERT_EQ(TSSetMaxTime(ts, r.rampTime + r.settleTime), 0);
+  ASSERT_EQ(TSSetExactFinalTime(ts, TS_EXACTFINALTIME_STEPOVER), 0);
+  solvePlateTS(ts);
   Vec s = nullptr;
   TSGetSolution(ts, &s);
   const ContactTotals totals = model.contactTotals();
   const double force = r.plate.pressure * r.plate.length * r.plate.length;
   double mean = 0, lo = 0, hi = 0;
-  model.bottomPenetration(s, &mean, &lo, &hi);
+  model.contact().penetration(s, &mean, &lo, &hi);
   PetscPrintf(PETSC_COMM_WORLD, "settled: normal force %.6f p L^2, penetration mean %.5f min %.5f max %.5f of p/k_n\n",
               totals.fn / force, mean * r.kn / r.plate.pressure, lo * r.kn / r.plate.pressure, hi * r.kn / r.plate.pressure);
   EXPECT_NEAR(totals.fn / force, 1.0, 0.005);
@@ -55,25 +53,25 @@ TEST(FemFriction, NonGradedPlateStaticFrictionAndPeakTimeOfEquation2) {
   FemParameters q = test::coarse(20, 20, 2);
   const double eq2 = q.eq2PeakTime();
   PetscPrintf(PETSC_COMM_WORLD, "non-graded: mu_s %.5f (local 1.0), peak %.4e s vs Eq. 2 %.4e s (ratio %.4f), mu_k %.4f\n",
-              r.muS, r.peakTime, eq2, r.peakTime / eq2, r.muK);
-  EXPECT_TRUE(r.peakConfirmed);
+              r.friction.muStatic, r.friction.peakTime, eq2, r.friction.peakTime / eq2, r.friction.muKinetic);
+  EXPECT_TRUE(r.friction.peakConfirmed);
   // The global peak never exceeds the local mu_s; the shear concentration at the plate's edges
   // starts a detachment avalanche somewhat below it (see docs/fem.md): 0.89 on this mesh.
-  EXPECT_LE(r.muS, q.plate.muStatic * 1.02);
-  EXPECT_GT(r.muS, q.plate.muStatic * 0.85);
+  EXPECT_LE(r.friction.muStatic, q.plate.muStatic * 1.02);
+  EXPECT_GT(r.friction.muStatic, q.plate.muStatic * 0.85);
   // Paper Eq. 2: Delta t_s = mu_s p H / (G v).
-  EXPECT_NEAR(r.peakTime / eq2, 1.0, 0.15);
-  EXPECT_GT(r.firstSlipTime, 0.0);
+  EXPECT_NEAR(r.friction.peakTime / eq2, 1.0, 0.15);
+  EXPECT_GT(r.friction.firstSlipTime, 0.0);
 }
 
 TEST(FemFriction, FrictionGradientLowersGlobalStaticFriction) {
   const FemRunResult flat = runCoarse(test::noGrading());
   const FemRunResult graded = runCoarse(test::linear(GradedProperty::Friction, 0.3));
-  PetscPrintf(PETSC_COMM_WORLD, "friction gradient Delta 0.3: mu_s %.5f vs non-graded %.5f (%.1f %%)\n", graded.muS,
-              flat.muS, 100 * (graded.muS - flat.muS) / flat.muS);
-  EXPECT_LT(graded.muS, flat.muS * 0.95);
+  PetscPrintf(PETSC_COMM_WORLD, "friction gradient Delta 0.3: mu_s %.5f vs non-graded %.5f (%.1f %%)\n", graded.friction.muStatic,
+              flat.friction.muStatic, 100 * (graded.friction.muStatic - flat.friction.muStatic) / flat.friction.muStatic);
+  EXPECT_LT(graded.friction.muStatic, flat.friction.muStatic * 0.95);
   // The local means are unchanged: the reduction is the detachment starting at the weak side.
-  EXPECT_GT(graded.muS, 0.5);
+  EXPECT_GT(graded.friction.muStatic, 0.5);
 }
 
 TEST(FemFriction, PetscRungeKuttaByOptionAgreesWithVelocityVerlet) {
@@ -84,10 +82,10 @@ TEST(FemFriction, PetscRungeKuttaByOptionAgreesWithVelocityVerlet) {
   const FemRunResult rk4 = runCoarse(test::noGrading());
   PetscOptionsClearValue(nullptr, "-ts_type");
   PetscOptionsClearValue(nullptr, "-ts_rk_type");
-  PetscPrintf(PETSC_COMM_WORLD, "gfverlet mu_s %.5f peak %.4e s; rk4 mu_s %.5f peak %.4e s\n", verlet.muS,
-              verlet.peakTime, rk4.muS, rk4.peakTime);
-  EXPECT_NEAR(rk4.muS, verlet.muS, 0.01 * verlet.muS);
-  EXPECT_NEAR(rk4.peakTime, verlet.peakTime, 0.03 * verlet.peakTime);
+  PetscPrintf(PETSC_COMM_WORLD, "gfverlet mu_s %.5f peak %.4e s; rk4 mu_s %.5f peak %.4e s\n", verlet.friction.muStatic,
+              verlet.friction.peakTime, rk4.friction.muStatic, rk4.friction.peakTime);
+  EXPECT_NEAR(rk4.friction.muStatic, verlet.friction.muStatic, 0.01 * verlet.friction.muStatic);
+  EXPECT_NEAR(rk4.friction.peakTime, verlet.friction.peakTime, 0.03 * verlet.friction.peakTime);
 }
 
 TEST(FemFriction, PaperTrendsYoungsModulusGradientAndSlidingAngle) {
@@ -98,8 +96,8 @@ TEST(FemFriction, PaperTrendsYoungsModulusGradientAndSlidingAngle) {
   const FemRunResult along = runCoarse(test::linear(GradedProperty::Friction, 0.2), 0.0);
   const FemRunResult across = runCoarse(test::linear(GradedProperty::Friction, 0.2), 90.0);
   PetscPrintf(PETSC_COMM_WORLD, "E gradient 0.3: mu_s %.5f vs %.5f; friction gradient 0.2: mu_s %.5f at 0 deg, %.5f at 90 deg\n",
-              modulus.muS, flat.muS, along.muS, across.muS);
-  EXPECT_LT(modulus.muS, flat.muS * 0.95);
-  EXPECT_GT(across.muS, along.muS);
-  EXPECT_LT(across.muS, flat.muS);
+              modulus.friction.muStatic, flat.friction.muStatic, along.friction.muStatic, across.friction.muStatic);
+  EXPECT_LT(modulus.friction.muStatic, flat.friction.muStatic * 0.95);
+  EXPECT_GT(across.friction.muStatic, along.friction.muStatic);
+  EXPECT_LT(across.friction.muStatic, flat.friction.muStatic);
 }

@@ -29,6 +29,13 @@ std::vector<HardCase> gradingCases() {
           g.delta = delta;
           g.bands = 10;
         };
+        // E graded by 0.9 (bands down to 0.1 E0), except the triangular minus profile: the soft
+        // band shears elastically over its bottom nodes, which stay stuck (E linear +0.9: 34 of 289
+        // nodes never slipped in 8 t_load), so the shared peak rule (every site slipped) never
+        // confirms the peak. The FEM's former rule (mu below 95 % of its maximum) did, at mu_s
+        // 0.5687 (E linear +0.9).
+        if (property == GradedProperty::YoungsModulus && !(profile == GradingProfile::Triangular && delta < 0))
+          c.peakConfirms = false;
         if (property != GradedProperty::YoungsModulus) {
           // With local mu_s down to 0.1 on one side, mu(t) after the first slip is a fast, undamped
           // oscillation (hundreds of local maxima within 10 % of the peak) and mu_s is the largest

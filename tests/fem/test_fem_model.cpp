@@ -17,7 +17,7 @@ TEST(FemModel, SpecialisedKernelEqualsGenericResidualOnARandomState) {
   FemParameters q = test::coarse(8, 6, 3);
   const Grading g = test::linear(GradedProperty::YoungsModulus, 0.4);
   PlateModel model(PETSC_COMM_WORLD, q, g);
-  DM dmU = model.displacementDM();
+  DM dmU = model.elastic().displacementDM();
   OwnedVec u, fs, fg;
   ASSERT_EQ(DMCreateGlobalVector(dmU, u.out()), 0);
   ASSERT_EQ(VecDuplicate(u, fs.out()), 0);
@@ -29,8 +29,8 @@ TEST(FemModel, SpecialisedKernelEqualsGenericResidualOnARandomState) {
   VecSetRandom(u, rnd);
   PetscRandomDestroy(&rnd);
   VecScale(u, 1e-7);
-  model.elasticForceSpecialised(u, fs);
-  model.elasticForceGeneric(u, fg);
+  model.elastic().forceSpecialised(u, fs);
+  model.elastic().forceGeneric(u, fg);
   PetscReal ng = 0, nd = 0;
   VecNorm(fg, NORM_2, &ng);
   ASSERT_GT(ng, 0.0) << "the generic residual is all zero (field not marked explicit?)";
@@ -42,7 +42,7 @@ TEST(FemModel, SpecialisedKernelEqualsGenericResidualOnARandomState) {
 TEST(FemModel, PatchTestUniformStrainIsReproducedExactly) {
   FemParameters q = test::coarse(5, 4, 4);
   PlateModel model(PETSC_COMM_WORLD, q, test::noGrading());
-  DM dmU = model.displacementDM();
+  DM dmU = model.elastic().displacementDM();
   OwnedVec u, f;
   ASSERT_EQ(DMCreateGlobalVector(dmU, u.out()), 0);
   ASSERT_EQ(VecDuplicate(u, f.out()), 0);
@@ -59,7 +59,7 @@ TEST(FemModel, PatchTestUniformStrainIsReproducedExactly) {
   for (PetscInt i = 0; i < n; i += 3)
     for (int c = 0; c < 3; ++c) uu[i + c] = A[c][0] * x[i] + A[c][1] * x[i + 1] + A[c][2] * x[i + 2];
   VecRestoreArray(u, &uu);
-  model.elasticForceSpecialised(u, f);
+  model.elastic().forceSpecialised(u, f);
   // Stress of the uniform strain.
   const Lame l = lameFromYoung(q.plate.youngsModulus, q.plate.poissonRatio);
   double eps[3][3], sigma[3][3];
@@ -103,9 +103,9 @@ TEST(FemModel, PatchTestUniformStrainIsReproducedExactly) {
 TEST(FemModel, LumpedMassAndFaceAreas) {
   FemParameters q = test::coarse(6, 5, 2);
   PlateModel model(PETSC_COMM_WORLD, q, test::noGrading());
-  EXPECT_NEAR(model.totalMass(), q.plate.density * q.plate.length * q.plate.length * q.plate.thickness, 1e-12 * q.plate.density * q.plate.length * q.plate.length * q.plate.thickness);
-  EXPECT_NEAR(model.topArea(), q.plate.length * q.plate.length, 1e-12 * q.plate.length * q.plate.length);
-  EXPECT_EQ(model.globalCells(), 6 * 5 * 2);
+  EXPECT_NEAR(model.mass().total(), q.plate.density * q.plate.length * q.plate.length * q.plate.thickness, 1e-12 * q.plate.density * q.plate.length * q.plate.length * q.plate.thickness);
+  EXPECT_NEAR(model.top().area(), q.plate.length * q.plate.length, 1e-12 * q.plate.length * q.plate.length);
+  EXPECT_EQ(model.mesh().globalCells(), 6 * 5 * 2);
   EXPECT_GT(model.stableTimeStep(), 0.0);
   EXPECT_NEAR(model.timeStep(), q.dtSafety * model.stableTimeStep(), 1e-20);
 }

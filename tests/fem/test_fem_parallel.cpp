@@ -38,9 +38,9 @@ TEST(FemParallel, OneAndTwoRanksGiveTheSameFrictionHistory) {
   for (std::size_t i = 0; i < one.mu.size(); ++i)
     worst = std::max(worst, std::fabs(one.mu[i] - two.mu[i]) / std::max(1e-300, std::fabs(one.mu[i])));
   PetscPrintf(PETSC_COMM_WORLD, "1 vs 2 ranks: %zu samples, largest relative difference of mu(t) %.3e; mu_s %.12f vs %.12f\n",
-              one.mu.size(), worst, one.muS, two.muS);
+              one.mu.size(), worst, one.friction.muStatic, two.friction.muStatic);
   EXPECT_LT(worst, 1e-10);
-  EXPECT_NEAR(one.muS, two.muS, 1e-10 * one.muS);
+  EXPECT_NEAR(one.friction.muStatic, two.friction.muStatic, 1e-10 * one.friction.muStatic);
 }
 
 TEST(FemParallel, MetisPartitionIsBalancedAndCutsNoMoreFacesThanSimple) {
@@ -70,8 +70,8 @@ TEST(FemParallel, MetisPartitionIsBalancedAndCutsNoMoreFacesThanSimple) {
   // The distributed mesh really carries METIS's partition: cells per rank balanced.
   FemParameters q = test::coarse(30, 30, 3);
   PlateModel model(PETSC_COMM_WORLD, q, test::noGrading());
-  PetscInt local = model.localCells(), most = 0;
+  PetscInt local = model.mesh().localCells(), most = 0;
   MPI_Allreduce(&local, &most, 1, MPIU_INT, MPI_MAX, PETSC_COMM_WORLD);
-  EXPECT_LT(double(most), 1.05 * 0.5 * model.globalCells());
-  EXPECT_EQ(model.globalCells(), 30 * 30 * 3);
+  EXPECT_LT(double(most), 1.05 * 0.5 * model.mesh().globalCells());
+  EXPECT_EQ(model.mesh().globalCells(), 30 * 30 * 3);
 }

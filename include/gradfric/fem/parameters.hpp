@@ -1,12 +1,16 @@
 #pragma once
 // Parameters of the 3D finite-element plate model (all -fem_ options) and their reader.
 #include "gradfric/core/options.hpp"
+#include "gradfric/physics/friction_history.hpp"
 #include "gradfric/physics/plate.hpp"
 
 #include <string>
 #include <vector>
 
 namespace gradfric::fem {
+
+// A FrictionMeasurement whose times are all derived (negative placeholders, see resolveDerived).
+FrictionMeasurement derivedMeasurement();
 
 struct FemParameters {
   // Mesh and geometry
@@ -34,9 +38,11 @@ struct FemParameters {
   double rampTime = -1;     // < 0: derived 20 H/c_s
   double settleTime = -1;   // < 0: derived 10 H/c_s
   double slideTime = -1;    // < 0: derived 3 * Eq. 2 estimate (upper bound; stops earlier)
-  double windowStart = -1;  // kinetic window start after the peak; < 0: derived 0.5 * Eq. 2 (as the SBM)
-  double windowLength = -1; // < 0: derived 1.0 * Eq. 2 (as the SBM)
-  bool stopWhenKnown = true;
+  // How friction is measured: the shared rule of both models (-friction_ options). Negative
+  // times: derived from the Eq. 2 loading time as readFrictionMeasurement does (for code that
+  // builds parameters without options).
+  FrictionMeasurement measurement = derivedMeasurement();
+  bool stopWhenKnown = true;  // false: slide for slideTime whatever the observer knows
   // Parallel
   std::string partitioner = "metis";
   // Output

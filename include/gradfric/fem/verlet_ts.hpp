@@ -16,7 +16,7 @@ inline constexpr const char* TSGFVERLET = "gfverlet";
 // Registers the type with PETSc (idempotent). Call after PetscInitialize, before TSSetFromOptions.
 void registerVerletTS();
 
-// Forget the cached acceleration (after the solution or the forces were changed outside TS).
-void verletInvalidate(TS ts);
+// The acceleration of the last step is reused as the next step's first; after the solution or the
+// forces were changed outside the integrator, call TSRestartStep (as for PETSc's FSAL methods).
 
 }  // namespace gradfric::fem

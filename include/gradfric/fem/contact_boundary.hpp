@@ -1,0 +1,62 @@
+#pragma once
+// The contact boundary of the plate: the bottom nodes against the rigid plane z = 0, penalty
+// contact with the friction law (one law object per node: its local graded coefficients) through
+// the pointwise penaltyContact. The contact state (stick/slip, slip anchor) of an RHS evaluation
+// is pending until commit(), which the TS post-step calls once per accepted step.
+#include "gradfric/fem/contact_penalty.hpp"
+#include "gradfric/fem/plate_mesh.hpp"
+#include "gradfric/physics/friction_law.hpp"
+#include "gradfric/physics/grading.hpp"
+
+#include <vector>
+
+namespace gradfric::fem {
+
+// The friction law of the contact boundary (paper Eq. 1).
+using ContactLaw = ExponentialVelocityWeakening;
+
+// Totals of one evaluation on this rank (ContactBoundary) or summed over ranks (PlateModel).
+struct ContactTotals {
+  double fx = 0, fy = 0, fn = 0;  // total contact force on the plate [N]
+  double topZ = 0;                // sum over the top nodes of area * u_z [m^3] (pressure work -p dZ)
+  double driveX = 0, driveY = 0;  // force of the slider on the top in step 2 [N] (work: F . v dt)
+  long long stick = 0, slip = 0, open = 0;
+  long long everSlipped = 0;      // nodes that slipped or lost contact since resetSlipRecord
+  long long nodes = 0;            // bottom nodes
+};
+
+class ContactBoundary {
+public:
+  struct Node {
+    PetscInt block;  // owned block in the global state vector
+    double x, y;     // position
+    double area;
+    ContactLaw law;  // the node's local coefficients (area-weighted over its faces' bands)
+    double anchorX = 0, anchorY = 0, pendingX = 0, pendingY = 0;
+    ContactState state = ContactState::Open, pendingState = ContactState::Open;
+    bool everSlipped = false;
+    double pressure = 0, tx = 0, ty = 0;  // of the last evaluation
+  };
+
+  // muStatic, muKinetic: the plate's mean coefficients, graded by grading's friction factor.
+  ContactBoundary(const PlateMesh& mesh, const PenaltyStiffness& stiffness, double muStatic, double muKinetic,
+                  double criticalVelocity, const Grading& grading);
+
+  // Adds the contact force of the state X (global) to the force slots of F and returns the
+  // totals of this rank; the new contact state is pending.
+  ContactTotals addForce(Vec X, Vec F);
+  void commit();  // accept the pending contact state (after a step)
+  void resetSlipRecord();  // from now on, everSlipped counts slips after this point
+
+  const std::vector<Node>& nodes() const { return nodes_; }
+  double largestStaticCoefficient() const;  // over the nodes and ranks
+  // Mean penetration and its spread over the bottom nodes, over ranks (for tests).
+  void penetration(Vec X, double* mean, double* minimum, double* maximum) const;
+
+private:
+  MPI_Comm comm_;
+  PenaltyStiffness stiffness_;
+  std::vector<Node> nodes_;
+};
+
+}  // namespace gradfric::fem

@@ -1,0 +1,59 @@
+#pragma once
+// The elastic operator of the plate: the internal force f = -sum_cells E_c K_hat (u_e + beta v_e)
+// through the specialised kernel (one precomputed 24x24 box-cell stiffness scaled by each cell's
+// graded E), with PETSc's generic PetscFE residual of the same operator kept as its reference
+// (elastic_reference.cpp). Works on a displacement-only DM (3 values per vertex): half the
+// communication of the 6-value state.
+#include "gradfric/fem/hex_element.hpp"
+#include "gradfric/fem/plate_mesh.hpp"
+#include "gradfric/physics/grading.hpp"
+
+#include <array>
+#include <vector>
+
+namespace gradfric::fem {
+
+// The kernel: f += -sum_cells E_c K_hat (u_e + beta v_e), scattered into f. cellOffsets: 8 local
+// offsets per cell (element node order); u, v, f index with them. v may be null (beta ignored).
+// Hot: one clone per instruction set (elastic_kernel.cpp).
+void elasticKernel(PetscInt numCells, const PetscInt* cellOffsets, const double* cellModulus, const double* stiffness,
+                   const double* u, const double* v, double beta, double* f);
+
+class ElasticOperator {
+public:
+  // E of a cell = youngsModulus x grading's modulus factor at the cell centre's x / L.
+  ElasticOperator(const PlateMesh& mesh, double youngsModulus, double poissonRatio, double stiffnessDamping,
+                  const Grading& grading);
+  ElasticOperator(const ElasticOperator&) = delete;
+  ElasticOperator& operator=(const ElasticOperator&) = delete;
+
+  // Sets the force slots (3..5 of each block) of the global state-layout vector F to the internal
+  // force of the global state X (displacement + beta velocity). Slots 0..2 are left alone.
+  void setForce(Vec X, Vec F);
+  double energy(Vec X);  // (1/2) u . K u, summed over ranks [J]
+  // Per local cell the average stress (Voigt) of the state X.
+  void cellStresses(Vec X, std::vector<std::array<double, 6>>* stress);
+
+  // The displacement-only DM and the force on its global vectors, f = -K u: the specialised kernel
+  // and PETSc's generic PetscFE residual (the reference the kernel is tested against).
+  DM displacementDM() const { return dmU_; }
+  void forceSpecialised(Vec u, Vec f);
+  void forceGeneric(Vec u, Vec f);
+
+  const BoxElement& element() const { return element_; }
+  const std::vector<double>& cellModulus() const { return cellModulus_; }
+
+private:
+  void setupReference();  // elastic_reference.cpp
+
+  const PlateMesh& mesh_;
+  BoxElement element_;
+  double beta_;
+  std::vector<double> cellModulus_;
+  std::vector<PetscInt> cellDispOff_;  // 8 offsets into a local displacement vector per cell
+  OwnedDM dmU_, dmAux_;
+  OwnedVec auxLocal_, uGlobal_, fGlobal_, uLocal_, fLocalU_, xLocal_, fLocal_;
+  PetscLogEvent evKernel_ = 0, evGeneric_ = 0;
+};
+
+}  // namespace gradfric::fem

@@ -1,0 +1,78 @@
+#pragma once
+// The plate's mesh: a DMPlex box of nx x ny x nz hexahedra over L x L x H, distributed by the
+// chosen partitioner, with the state layout of the explicit scheme (Q1 fields "displacement" and
+// "velocity", per vertex [u_x u_y u_z v_x v_y v_z]). Geometry only: no material, no loads.
+#include <petscsection.h>  // petsc_handle.hpp names PetscSFDestroy/PetscSectionDestroy without
+#include <petscsf.h>       // including their headers
+#include "gradfric/core/petsc_handle.hpp"
+
+#include <petscdmplex.h>
+
+#include <array>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace gradfric::fem {
+
+struct MeshSize {
+  int nx = 1, ny = 1, nz = 1;
+  double length = 1, thickness = 1;  // L (x and y), H (z) [m]
+};
+
+// An owned vertex of the state vector: its block (6 values) and its position.
+struct OwnedVertex {
+  PetscInt block;
+  double x, y, z;
+};
+
+enum class FaceSet { Bottom = 1, Top = 2 };  // DMPlex "Face Sets" values of the z- and z+ faces
+
+class PlateMesh {
+public:
+  PlateMesh(MPI_Comm comm, const MeshSize& size, const std::string& partitioner);
+  PlateMesh(const PlateMesh&) = delete;
+  PlateMesh& operator=(const PlateMesh&) = delete;
+
+  MPI_Comm comm() const { return comm_; }
+  DM dm() const { return dm_; }  // the state DM
+  const MeshSize& size() const { return size_; }
+  double hx() const { return size_.length / size_.nx; }
+  double hy() const { return size_.length / size_.ny; }
+  double hz() const { return size_.thickness / size_.nz; }
+  PetscInt localCells() const { return numCells_; }
+  PetscInt globalCells() const { return globalCells_; }
+  PetscInt globalVertices() const;
+  PetscInt ownedBlocks() const { return ownedBlocks_; }
+  PetscInt firstVertex() const { return vStart_; }
+
+  // Per local cell, in element node order (a = i + 2 j + 4 k): vertex points minus firstVertex(),
+  // offsets into the local state vector; and the cell centres.
+  const std::vector<PetscInt>& cellVertices() const { return cellVertices_; }
+  const std::vector<PetscInt>& cellStateOffsets() const { return cellStateOff_; }
+  const std::vector<std::array<double, 3>>& cellCentres() const { return cellCentre_; }
+  const std::vector<OwnedVertex>& ownedVertices() const { return owned_; }
+
+  // Per owned block, the sum over the cells around the vertex of cellShare[cell] (each cell adds
+  // its value to its 8 vertices), assembled over ranks.
+  std::vector<double> sumOverCells(const std::vector<double>& cellShare) const;
+  // Per owned block, the sum over the faces of `set` around the vertex of a quarter of the face's
+  // area times weight(x of the face centre) (weight 1 if empty), assembled over ranks.
+  std::vector<double> sumOverFaces(FaceSet set, const std::function<double(double)>& weight = {}) const;
+
+private:
+  void build(const std::string& partitioner);
+  void buildCells();
+  void buildOwnedVertices();
+  std::vector<double> assemble(const std::function<void(PetscScalar*, PetscSection)>& fill) const;
+
+  MPI_Comm comm_;
+  MeshSize size_;
+  OwnedDM dm_;
+  PetscInt numCells_ = 0, globalCells_ = 0, vStart_ = 0, vEnd_ = 0, ownedBlocks_ = 0;
+  std::vector<PetscInt> cellVertices_, cellStateOff_;
+  std::vector<std::array<double, 3>> cellCentre_;
+  std::vector<OwnedVertex> owned_;
+};
+
+}  // namespace gradfric::fem

@@ -1,0 +1,46 @@
+#pragma once
+// The TS of a plate model and the boundary between PETSc's callbacks and C++ exceptions.
+//  - createPlateTS: type gfverlet (unless -ts_type says otherwise), fixed step model.timeStep(),
+//    the model's right-hand side, and a post-step that commits the contact state of the accepted
+//    step (TSSetPostStep: PETSc calls it from TSSolve only, not from a bare TSStep).
+//  - guardedCallback: runs the body of a PETSc callback; an exception becomes a PETSc error code
+//    and is kept, and solvePlateTS rethrows it as it was (a NumericalInstability stays one).
+#include "gradfric/fem/plate_model.hpp"
+
+#include <petscts.h>
+
+#include <exception>
+
+namespace gradfric::fem {
+
+TS createPlateTS(PlateModel& model, Vec state);
+
+// Reads the -ts_ options once on a throwaway TS, before any work: an unknown -ts_type is refused
+// early and the options count as used (checkUnusedOptions runs before the model exists).
+void readPlateTSOptions(MPI_Comm comm);
+
+// The post-step of createPlateTS (commit the contact state): call it first from a post-step that
+// replaces it.
+PetscErrorCode commitContactPostStep(TS ts);
+
+// TSSolve(ts, nullptr); rethrows the exception a guarded callback raised, else throws
+// PetscCallError on a PETSc error.
+void solvePlateTS(TS ts);
+
+namespace detail {
+PetscErrorCode keepCallbackError(std::exception_ptr error, const char* what);
+}
+
+template <class Body>
+PetscErrorCode guardedCallback(Body&& body) {
+  try {
+    body();
+  } catch (const std::exception& e) {
+    return detail::keepCallbackError(std::current_exception(), e.what());
+  } catch (...) {
+    return detail::keepCallbackError(std::current_exception(), "unknown exception");
+  }
+  return 0;
+}
+
+}  // namespace gradfric::fem

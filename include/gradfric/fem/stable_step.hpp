@@ -1,0 +1,20 @@
+#pragma once
+// The stable step of the FEM's explicit scheme and the step a run uses.
+#include "gradfric/core/options.hpp"
+#include "gradfric/fem/parameters.hpp"
+#include "gradfric/physics/grading.hpp"
+
+namespace gradfric::fem {
+
+// The stable step for these parameters (no mesh needed: every cell is the same box): element
+// frequencies with the stiffest graded E, contact penalty, damping.
+double stableTimeStep(const FemParameters& params, const Grading& grading);
+// The step a run uses, by the shared TimeStepPolicy (physics/stability.hpp): params.dt if set
+// (refused above the stable step unless -fem_dt_check false), else dtSafety * stable step.
+// Throws InputError.
+double chooseTimeStep(const FemParameters& params, const Grading& grading);
+// Refuses, before any work, a run of more than 1e9 steps (pressure step + sliding at the chosen
+// dt), naming the option the user set that made it so (see core/run_limits.hpp).
+void requireFemRunLength(const FemParameters& params, const Grading& grading, const RunParameters* record);
+
+}  // namespace gradfric::fem

@@ -1,0 +1,99 @@
+#include "gradfric/fem/contact_boundary.hpp"
+
+#include "gradfric/core/petsc_call.hpp"
+
+#include <algorithm>
+
+namespace gradfric::fem {
+
+ContactBoundary::ContactBoundary(const PlateMesh& mesh, const PenaltyStiffness& stiffness, double muStatic,
+                                 double muKinetic, double criticalVelocity, const Grading& grading)
+    : comm_(mesh.comm()), stiffness_(stiffness) {
+  const double length = mesh.size().length;
+  const std::vector<double> area = mesh.sumOverFaces(FaceSet::Bottom);
+  const std::vector<double> graded =
+      mesh.sumOverFaces(FaceSet::Bottom, [&](double x) { return grading.frictionFactor(x / length); });
+  for (const OwnedVertex& v : mesh.ownedVertices()) {
+    if (!(area[v.block] > 0)) continue;
+    const double factor = graded[v.block] / area[v.block];  // area-weighted band factor
+    Node node{v.block, v.x, v.y, area[v.block], ContactLaw{muStatic * factor, muKinetic * factor, criticalVelocity}};
+    nodes_.push_back(node);
+  }
+}
+
+ContactTotals ContactBoundary::addForce(Vec X, Vec F) {
+  const PetscScalar* x = nullptr;
+  PetscScalar* f = nullptr;
+  GF_CALL(VecGetArrayRead(X, &x));
+  GF_CALL(VecGetArray(F, &f));
+  ContactTotals totals;
+  for (Node& n : nodes_) {
+    const PetscScalar* xb = x + 6 * n.block;
+    const ContactTraction r = penaltyContact(stiffness_, n.law, xb[2], xb[0], xb[1], n.anchorX, n.anchorY, xb[3],
+                                             xb[4], n.state == ContactState::Slip);
+    n.pendingX = r.anchorX;
+    n.pendingY = r.anchorY;
+    n.pendingState = r.state;
+    n.pressure = r.pressure;
+    n.tx = r.tx;
+    n.ty = r.ty;
+    PetscScalar* fb = f + 6 * n.block;
+    fb[3] += n.area * r.tx;
+    fb[4] += n.area * r.ty;
+    fb[5] += n.area * r.pressure;
+    totals.fx += n.area * r.tx;
+    totals.fy += n.area * r.ty;
+    totals.fn += n.area * r.pressure;
+    if (r.state == ContactState::Stick) ++totals.stick;
+    else if (r.state == ContactState::Slip) ++totals.slip;
+    else ++totals.open;
+    if (n.everSlipped || r.state != ContactState::Stick) ++totals.everSlipped;
+  }
+  totals.nodes = static_cast<long long>(nodes_.size());
+  GF_CALL(VecRestoreArrayRead(X, &x));
+  GF_CALL(VecRestoreArray(F, &f));
+  return totals;
+}
+
+double ContactBoundary::largestStaticCoefficient() const {
+  double local = 0, global = 0;
+  for (const Node& n : nodes_) local = std::max(local, n.law.muStatic);
+  GF_CALL_MPI(MPI_Allreduce(&local, &global, 1, MPI_DOUBLE, MPI_MAX, comm_));
+  return global;
+}
+
+void ContactBoundary::commit() {
+  for (Node& n : nodes_) {
+    n.anchorX = n.pendingX;
+    n.anchorY = n.pendingY;
+    n.state = n.pendingState;
+    if (n.state != ContactState::Stick) n.everSlipped = true;  // slipped or lost contact
+  }
+}
+
+void ContactBoundary::resetSlipRecord() {
+  for (Node& n : nodes_) n.everSlipped = false;
+}
+
+void ContactBoundary::penetration(Vec X, double* mean, double* minimum, double* maximum) const {
+  const PetscScalar* x = nullptr;
+  GF_CALL(VecGetArrayRead(X, &x));
+  double s[2] = {0, 0}, lo = 1e300, hi = -1e300;
+  for (const Node& n : nodes_) {
+    const double pen = -x[6 * n.block + 2];
+    s[0] += pen;
+    s[1] += 1;
+    lo = std::min(lo, pen);
+    hi = std::max(hi, pen);
+  }
+  GF_CALL(VecRestoreArrayRead(X, &x));
+  double sum[2];
+  GF_CALL_MPI(MPI_Allreduce(s, sum, 2, MPI_DOUBLE, MPI_SUM, comm_));
+  GF_CALL_MPI(MPI_Allreduce(MPI_IN_PLACE, &lo, 1, MPI_DOUBLE, MPI_MIN, comm_));
+  GF_CALL_MPI(MPI_Allreduce(MPI_IN_PLACE, &hi, 1, MPI_DOUBLE, MPI_MAX, comm_));
+  *mean = sum[0] / sum[1];
+  *minimum = lo;
+  *maximum = hi;
+}
+
+}  // namespace gradfric::fem

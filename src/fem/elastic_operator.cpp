@@ -1,0 +1,157 @@
+#include "gradfric/fem/elastic_operator.hpp"
+
+#include "gradfric/core/petsc_call.hpp"
+#include "gradfric/fem/log_events.hpp"
+
+#include <stdexcept>
+
+namespace gradfric::fem {
+
+const FemLogEvents& femLogEvents() {
+  static FemLogEvents events;
+  static bool registered = false;
+  if (!registered) {
+    PetscClassId classId = 0;
+    GF_CALL(PetscClassIdRegister("gradfric FEM", &classId));
+    GF_CALL(PetscLogEventRegister("GfFemRHS", classId, &events.rhs));
+    GF_CALL(PetscLogEventRegister("GfFemElastic", classId, &events.elastic));
+    GF_CALL(PetscLogEventRegister("GfFemContact", classId, &events.contact));
+    GF_CALL(PetscLogEventRegister("GfFemGeneric", classId, &events.generic));
+    registered = true;
+  }
+  return events;
+}
+
+ElasticOperator::ElasticOperator(const PlateMesh& mesh, double youngsModulus, double poissonRatio,
+                                 double stiffnessDamping, const Grading& grading)
+    : mesh_(mesh), element_(makeBoxElement(mesh.hx(), mesh.hy(), mesh.hz(), poissonRatio)), beta_(stiffnessDamping) {
+  evKernel_ = femLogEvents().elastic;
+  evGeneric_ = femLogEvents().generic;
+  const double length = mesh.size().length;
+  cellModulus_.resize(mesh.localCells());
+  for (PetscInt c = 0; c < mesh.localCells(); ++c)
+    cellModulus_[c] = youngsModulus * grading.modulusFactor(mesh.cellCentres()[c][0] / length);
+  setupReference();
+  GF_CALL(DMCreateGlobalVector(dmU_, uGlobal_.out()));
+  GF_CALL(VecDuplicate(uGlobal_, fGlobal_.out()));
+  GF_CALL(DMCreateLocalVector(dmU_, uLocal_.out()));
+  GF_CALL(VecDuplicate(uLocal_, fLocalU_.out()));
+  GF_CALL(DMCreateLocalVector(mesh.dm(), xLocal_.out()));
+  GF_CALL(VecDuplicate(xLocal_, fLocal_.out()));
+  PetscInt n = 0;
+  GF_CALL(VecGetLocalSize(uGlobal_, &n));
+  if (n != 3 * mesh.ownedBlocks()) throw std::runtime_error("plate mesh: displacement and state layouts differ");
+}
+
+void ElasticOperator::setForce(Vec X, Vec F) {
+  const PetscInt blocks = mesh_.ownedBlocks();
+  {
+    const PetscScalar* x = nullptr;
+    PetscScalar* u = nullptr;
+    GF_CALL(VecGetArrayRead(X, &x));
+    GF_CALL(VecGetArray(uGlobal_, &u));
+    if (beta_ != 0.0) {
+      for (PetscInt b = 0; b < blocks; ++b)
+        for (int d = 0; d < 3; ++d) u[3 * b + d] = x[6 * b + d] + beta_ * x[6 * b + 3 + d];
+    } else {
+      for (PetscInt b = 0; b < blocks; ++b)
+        for (int d = 0; d < 3; ++d) u[3 * b + d] = x[6 * b + d];
+    }
+    GF_CALL(VecRestoreArray(uGlobal_, &u));
+    GF_CALL(VecRestoreArrayRead(X, &x));
+  }
+  GF_CALL(DMGlobalToLocal(dmU_, uGlobal_, INSERT_VALUES, uLocal_));
+  GF_CALL(VecZeroEntries(fLocalU_));
+  {
+    const PetscScalar* ul = nullptr;
+    PetscScalar* fl = nullptr;
+    GF_CALL(VecGetArrayRead(uLocal_, &ul));
+    GF_CALL(VecGetArray(fLocalU_, &fl));
+    GF_CALL(PetscLogEventBegin(evKernel_, 0, 0, 0, 0));
+    elasticKernel(mesh_.localCells(), cellDispOff_.data(), cellModulus_.data(), element_.stiffness.data(), ul, nullptr,
+                  0.0, fl);
+    GF_CALL(PetscLogEventEnd(evKernel_, 0, 0, 0, 0));
+    GF_CALL(PetscLogFlops(2.0 * 576 * mesh_.localCells()));
+    GF_CALL(VecRestoreArrayRead(uLocal_, &ul));
+    GF_CALL(VecRestoreArray(fLocalU_, &fl));
+  }
+  GF_CALL(VecZeroEntries(fGlobal_));
+  GF_CALL(DMLocalToGlobal(dmU_, fLocalU_, ADD_VALUES, fGlobal_));
+  PetscScalar* f = nullptr;
+  const PetscScalar* fe = nullptr;
+  GF_CALL(VecGetArray(F, &f));
+  GF_CALL(VecGetArrayRead(fGlobal_, &fe));
+  for (PetscInt b = 0; b < blocks; ++b)
+    for (int d = 0; d < 3; ++d) f[6 * b + 3 + d] = fe[3 * b + d];
+  GF_CALL(VecRestoreArrayRead(fGlobal_, &fe));
+  GF_CALL(VecRestoreArray(F, &f));
+}
+
+double ElasticOperator::energy(Vec X) {
+  DM dm = mesh_.dm();
+  GF_CALL(DMGlobalToLocal(dm, X, INSERT_VALUES, xLocal_));
+  GF_CALL(VecZeroEntries(fLocal_));
+  const PetscScalar* xl = nullptr;
+  PetscScalar* fl = nullptr;
+  GF_CALL(VecGetArrayRead(xLocal_, &xl));
+  GF_CALL(VecGetArray(fLocal_, &fl));
+  elasticKernel(mesh_.localCells(), mesh_.cellStateOffsets().data(), cellModulus_.data(), element_.stiffness.data(),
+                xl, nullptr, 0.0, fl);
+  GF_CALL(VecRestoreArrayRead(xLocal_, &xl));
+  GF_CALL(VecRestoreArray(fLocal_, &fl));
+  OwnedVec F;
+  GF_CALL(VecDuplicate(X, F.out()));
+  GF_CALL(VecZeroEntries(F));
+  GF_CALL(DMLocalToGlobal(dm, fLocal_, ADD_VALUES, F));
+  const PetscScalar *x = nullptr, *f = nullptr;
+  GF_CALL(VecGetArrayRead(X, &x));
+  GF_CALL(VecGetArrayRead(F, &f));
+  double e = 0;
+  for (PetscInt b = 0; b < mesh_.ownedBlocks(); ++b)
+    for (int d = 0; d < 3; ++d) e -= 0.5 * x[6 * b + d] * f[6 * b + d];
+  GF_CALL(VecRestoreArrayRead(X, &x));
+  GF_CALL(VecRestoreArrayRead(F, &f));
+  double sum = 0;
+  GF_CALL_MPI(MPI_Allreduce(&e, &sum, 1, MPI_DOUBLE, MPI_SUM, mesh_.comm()));
+  return sum;
+}
+
+void ElasticOperator::cellStresses(Vec X, std::vector<std::array<double, 6>>* stress) {
+  GF_CALL(DMGlobalToLocal(mesh_.dm(), X, INSERT_VALUES, xLocal_));
+  const PetscScalar* xl = nullptr;
+  GF_CALL(VecGetArrayRead(xLocal_, &xl));
+  const std::vector<PetscInt>& off = mesh_.cellStateOffsets();
+  stress->resize(mesh_.localCells());
+  for (PetscInt c = 0; c < mesh_.localCells(); ++c) {
+    double ue[24];
+    for (int a = 0; a < 8; ++a)
+      for (int d = 0; d < 3; ++d) ue[3 * a + d] = xl[off[8 * c + a] + d];
+    (*stress)[c] = cellAverageStress(element_, cellModulus_[c], ue);
+  }
+  GF_CALL(VecRestoreArrayRead(xLocal_, &xl));
+}
+
+void ElasticOperator::forceSpecialised(Vec u, Vec f) {
+  OwnedVec uLoc, fLoc;
+  GF_CALL(DMGetLocalVector(dmU_, uLoc.out()));
+  GF_CALL(DMGetLocalVector(dmU_, fLoc.out()));
+  GF_CALL(DMGlobalToLocal(dmU_, u, INSERT_VALUES, uLoc));
+  GF_CALL(VecZeroEntries(fLoc));
+  const PetscScalar* ul = nullptr;
+  PetscScalar* fl = nullptr;
+  GF_CALL(VecGetArrayRead(uLoc, &ul));
+  GF_CALL(VecGetArray(fLoc, &fl));
+  GF_CALL(PetscLogEventBegin(evKernel_, 0, 0, 0, 0));
+  elasticKernel(mesh_.localCells(), cellDispOff_.data(), cellModulus_.data(), element_.stiffness.data(), ul, nullptr,
+                0.0, fl);
+  GF_CALL(PetscLogEventEnd(evKernel_, 0, 0, 0, 0));
+  GF_CALL(VecRestoreArrayRead(uLoc, &ul));
+  GF_CALL(VecRestoreArray(fLoc, &fl));
+  GF_CALL(VecZeroEntries(f));
+  GF_CALL(DMLocalToGlobal(dmU_, fLoc, ADD_VALUES, f));
+  Vec a = uLoc.release(), b = fLoc.release();
+  GF_CALL(DMRestoreLocalVector(dmU_, &a));
+  GF_CALL(DMRestoreLocalVector(dmU_, &b));
+}
+
+}  // namespace gradfric::fem

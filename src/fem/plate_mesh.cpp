@@ -1,0 +1,224 @@
+#include "gradfric/fem/plate_mesh.hpp"
+
+#include "gradfric/core/petsc_call.hpp"
+#include "gradfric/fem/partition.hpp"
+
+#include <petscfe.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace gradfric::fem {
+
+namespace {
+
+struct FE {
+  PetscFE fe = nullptr;
+  ~FE() { PetscFEDestroy(&fe); }
+};
+
+void createQ1(MPI_Comm comm, const char* name, PetscFE* fe) {
+  GF_CALL(PetscFECreateLagrange(comm, 3, 3, PETSC_FALSE, 1, 1, fe));
+  GF_CALL(PetscObjectSetName(reinterpret_cast<PetscObject>(*fe), name));
+}
+
+}  // namespace
+
+PlateMesh::PlateMesh(MPI_Comm comm, const MeshSize& size, const std::string& partitioner)
+    : comm_(comm), size_(size) {
+  build(partitioner);
+  buildCells();
+  buildOwnedVertices();
+}
+
+PetscInt PlateMesh::globalVertices() const {
+  return static_cast<PetscInt>(size_.nx + 1) * (size_.ny + 1) * (size_.nz + 1);
+}
+
+void PlateMesh::build(const std::string& partitioner) {
+  const PetscInt faces[3] = {size_.nx, size_.ny, size_.nz};
+  const PetscReal lower[3] = {0, 0, 0};
+  const PetscReal upper[3] = {size_.length, size_.length, size_.thickness};
+  OwnedDM serial;
+  GF_CALL(DMPlexCreateBoxMesh(comm_, 3, PETSC_FALSE, faces, lower, upper, nullptr, PETSC_TRUE, serial.out()));
+  DM distributed = distributeMesh(serial, partitioner);
+  if (distributed) {
+    dm_ = OwnedDM(distributed);
+  } else {
+    dm_ = std::move(serial);
+  }
+  GF_CALL(PetscObjectSetName(reinterpret_cast<PetscObject>(dm_.get()), "plate"));
+  FE feU, feV;
+  createQ1(comm_, "displacement", &feU.fe);
+  createQ1(comm_, "velocity", &feV.fe);
+  GF_CALL(DMSetField(dm_, 0, nullptr, reinterpret_cast<PetscObject>(feU.fe)));
+  GF_CALL(DMSetField(dm_, 1, nullptr, reinterpret_cast<PetscObject>(feV.fe)));
+  GF_CALL(DMCreateDS(dm_));
+}
+
+// Every cell is an axis-aligned box: its vertices are put in element order by their position
+// relative to the centre.
+void PlateMesh::buildCells() {
+  PetscInt cStart = 0, cEnd = 0;
+  GF_CALL(DMPlexGetHeightStratum(dm_, 0, &cStart, &cEnd));
+  GF_CALL(DMPlexGetDepthStratum(dm_, 0, &vStart_, &vEnd_));
+  numCells_ = cEnd - cStart;
+  PetscInt n = numCells_;
+  GF_CALL_MPI(MPI_Allreduce(&n, &globalCells_, 1, MPIU_INT, MPI_SUM, comm_));
+
+  Vec coords = nullptr;
+  PetscSection coordSection = nullptr, section = nullptr;
+  GF_CALL(DMGetCoordinatesLocal(dm_, &coords));
+  GF_CALL(DMGetCoordinateSection(dm_, &coordSection));
+  GF_CALL(DMGetLocalSection(dm_, &section));
+  const PetscScalar* x = nullptr;
+  GF_CALL(VecGetArrayRead(coords, &x));
+  cellVertices_.assign(8 * numCells_, 0);
+  cellStateOff_.assign(8 * numCells_, 0);
+  cellCentre_.assign(numCells_, {0, 0, 0});
+  for (PetscInt c = cStart; c < cEnd; ++c) {
+    PetscInt np = 0;
+    PetscInt* pts = nullptr;
+    GF_CALL(DMPlexGetTransitiveClosure(dm_, c, PETSC_TRUE, &np, &pts));
+    PetscInt verts[8];
+    int nv = 0;
+    double centre[3] = {0, 0, 0};
+    for (PetscInt i = 0; i < np; ++i) {
+      const PetscInt p = pts[2 * i];
+      if (p < vStart_ || p >= vEnd_) continue;
+      if (nv < 8) verts[nv] = p;
+      ++nv;
+      PetscInt off = 0;
+      GF_CALL(PetscSectionGetOffset(coordSection, p, &off));
+      for (int d = 0; d < 3; ++d) centre[d] += x[off + d] / 8.0;
+    }
+    GF_CALL(DMPlexRestoreTransitiveClosure(dm_, c, PETSC_TRUE, &np, &pts));
+    if (nv != 8) throw std::runtime_error("plate mesh: a cell without 8 vertices");
+    const PetscInt cell = c - cStart;
+    bool seen[8] = {};
+    for (int k = 0; k < 8; ++k) {
+      PetscInt off = 0;
+      GF_CALL(PetscSectionGetOffset(coordSection, verts[k], &off));
+      const int a = (x[off] > centre[0] ? 1 : 0) + (x[off + 1] > centre[1] ? 2 : 0) + (x[off + 2] > centre[2] ? 4 : 0);
+      if (seen[a]) throw std::runtime_error("plate mesh: a cell is not an axis-aligned box");
+      seen[a] = true;
+      cellVertices_[8 * cell + a] = verts[k] - vStart_;
+      PetscInt soff = 0, voff = 0;
+      GF_CALL(PetscSectionGetOffset(section, verts[k], &soff));
+      GF_CALL(PetscSectionGetFieldOffset(section, verts[k], 1, &voff));
+      if (voff != soff + 3) throw std::runtime_error("plate mesh: unexpected state layout");
+      cellStateOff_[8 * cell + a] = soff;
+    }
+    cellCentre_[cell] = {centre[0], centre[1], centre[2]};
+  }
+  GF_CALL(VecRestoreArrayRead(coords, &x));
+}
+
+void PlateMesh::buildOwnedVertices() {
+  PetscSection gsection = nullptr, coordSection = nullptr;
+  GF_CALL(DMGetGlobalSection(dm_, &gsection));
+  GF_CALL(DMGetCoordinateSection(dm_, &coordSection));
+  Vec coords = nullptr;
+  GF_CALL(DMGetCoordinatesLocal(dm_, &coords));
+  OwnedVec global;
+  GF_CALL(DMCreateGlobalVector(dm_, global.out()));
+  PetscInt localSize = 0, rStart = 0, rEnd = 0;
+  GF_CALL(VecGetLocalSize(global, &localSize));
+  GF_CALL(VecGetOwnershipRange(global, &rStart, &rEnd));
+  ownedBlocks_ = localSize / 6;
+  const PetscScalar* x = nullptr;
+  GF_CALL(VecGetArrayRead(coords, &x));
+  for (PetscInt p = vStart_; p < vEnd_; ++p) {
+    PetscInt goff = 0;
+    GF_CALL(PetscSectionGetOffset(gsection, p, &goff));
+    if (goff < 0) continue;  // not owned
+    PetscInt off = 0;
+    GF_CALL(PetscSectionGetOffset(coordSection, p, &off));
+    owned_.push_back({(goff - rStart) / 6, x[off], x[off + 1], x[off + 2]});
+  }
+  GF_CALL(VecRestoreArrayRead(coords, &x));
+}
+
+std::vector<double> PlateMesh::assemble(const std::function<void(PetscScalar*, PetscSection)>& fill) const {
+  OwnedVec local, global;
+  GF_CALL(DMCreateLocalVector(dm_, local.out()));
+  GF_CALL(VecZeroEntries(local));
+  PetscSection section = nullptr;
+  GF_CALL(DMGetLocalSection(dm_, &section));
+  PetscScalar* f = nullptr;
+  GF_CALL(VecGetArray(local, &f));
+  fill(f, section);
+  GF_CALL(VecRestoreArray(local, &f));
+  GF_CALL(DMCreateGlobalVector(dm_, global.out()));
+  GF_CALL(VecZeroEntries(global));
+  GF_CALL(DMLocalToGlobal(dm_, local, ADD_VALUES, global));
+  const PetscScalar* g = nullptr;
+  GF_CALL(VecGetArrayRead(global, &g));
+  std::vector<double> sums(ownedBlocks_);
+  for (PetscInt b = 0; b < ownedBlocks_; ++b) sums[b] = g[6 * b];
+  GF_CALL(VecRestoreArrayRead(global, &g));
+  return sums;
+}
+
+std::vector<double> PlateMesh::sumOverCells(const std::vector<double>& cellShare) const {
+  return assemble([&](PetscScalar* f, PetscSection) {
+    for (PetscInt c = 0; c < numCells_; ++c)
+      for (int a = 0; a < 8; ++a) f[cellStateOff_[8 * c + a]] += cellShare[c];
+  });
+}
+
+std::vector<double> PlateMesh::sumOverFaces(FaceSet set, const std::function<double(double)>& weight) const {
+  return assemble([&](PetscScalar* f, PetscSection section) {
+    PetscSection coordSection = nullptr;
+    Vec coords = nullptr;
+    GF_CALL(DMGetCoordinatesLocal(dm_, &coords));
+    GF_CALL(DMGetCoordinateSection(dm_, &coordSection));
+    DMLabel faceSets = nullptr;
+    GF_CALL(DMGetLabel(dm_, "Face Sets", &faceSets));
+    if (!faceSets) throw std::runtime_error("plate mesh: no Face Sets label");
+    const PetscInt value = static_cast<PetscInt>(set);
+    IS is = nullptr;
+    GF_CALL(DMLabelGetStratumIS(faceSets, value, &is));
+    if (!is) return;
+    const double quarter = hx() * hy() / 4.0;
+    const double zExpected = set == FaceSet::Bottom ? 0.0 : size_.thickness;
+    const PetscScalar* x = nullptr;
+    GF_CALL(VecGetArrayRead(coords, &x));
+    PetscInt n = 0;
+    const PetscInt* faces = nullptr;
+    GF_CALL(ISGetLocalSize(is, &n));
+    GF_CALL(ISGetIndices(is, &faces));
+    for (PetscInt i = 0; i < n; ++i) {
+      PetscInt np = 0;
+      PetscInt* pts = nullptr;
+      GF_CALL(DMPlexGetTransitiveClosure(dm_, faces[i], PETSC_TRUE, &np, &pts));
+      double xc = 0;
+      int nv = 0;
+      PetscInt verts[4];
+      for (PetscInt k = 0; k < np; ++k) {
+        const PetscInt p = pts[2 * k];
+        if (p < vStart_ || p >= vEnd_) continue;
+        PetscInt off = 0;
+        GF_CALL(PetscSectionGetOffset(coordSection, p, &off));
+        if (std::fabs(x[off + 2] - zExpected) > 1e-9 * size_.thickness)
+          throw std::runtime_error("plate mesh: Face Sets value does not match the face position");
+        xc += x[off] / 4.0;
+        if (nv < 4) verts[nv] = p;
+        ++nv;
+      }
+      GF_CALL(DMPlexRestoreTransitiveClosure(dm_, faces[i], PETSC_TRUE, &np, &pts));
+      const double share = weight ? quarter * weight(xc) : quarter;
+      for (int k = 0; k < std::min(nv, 4); ++k) {
+        PetscInt soff = 0;
+        GF_CALL(PetscSectionGetOffset(section, verts[k], &soff));
+        f[soff] += share;
+      }
+    }
+    GF_CALL(ISRestoreIndices(is, &faces));
+    GF_CALL(ISDestroy(&is));
+    GF_CALL(VecRestoreArrayRead(coords, &x));
+  });
+}
+
+}  // namespace gradfric::fem

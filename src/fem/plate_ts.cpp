@@ -1,0 +1,95 @@
+#include "gradfric/fem/plate_ts.hpp"
+
+#include "gradfric/core/input_error.hpp"
+#include "gradfric/core/petsc_call.hpp"
+#include "gradfric/fem/verlet_ts.hpp"
+
+namespace gradfric::fem {
+
+namespace {
+
+std::exception_ptr pendingError;  // from the last failed guarded callback
+
+PlateModel& modelOf(TS ts) {
+  void* ctx = nullptr;
+  GF_CALL(TSGetRHSFunction(ts, nullptr, nullptr, &ctx));
+  return *static_cast<PlateModel*>(ctx);
+}
+
+PetscErrorCode rhsCallback(TS, PetscReal t, Vec X, Vec F, void* ctx) {
+  return guardedCallback([&] { static_cast<PlateModel*>(ctx)->rhs(t, X, F); });
+}
+
+}  // namespace
+
+namespace detail {
+PetscErrorCode keepCallbackError(std::exception_ptr error, const char* what) {
+  pendingError = error;
+  return PetscError(PETSC_COMM_SELF, __LINE__, PETSC_FUNCTION_NAME, __FILE__, PETSC_ERR_LIB, PETSC_ERROR_INITIAL, "%s",
+                    what);
+}
+}  // namespace detail
+
+PetscErrorCode commitContactPostStep(TS ts) {
+  return guardedCallback([&] { modelOf(ts).commitContact(); });
+}
+
+void solvePlateTS(TS ts) {
+  pendingError = nullptr;
+  const PetscErrorCode code = TSSolve(ts, nullptr);
+  if (!code) return;
+  if (pendingError) {
+    std::exception_ptr error = pendingError;
+    pendingError = nullptr;
+    std::rethrow_exception(error);
+  }
+  throwPetscCallError(code, "TSSolve(ts, nullptr)", __FILE__, __LINE__);
+}
+
+void readPlateTSOptions(MPI_Comm comm) {
+  registerVerletTS();
+  OwnedTS ts;
+  GF_CALL(TSCreate(comm, ts.out()));
+  GF_CALL(TSSetType(ts, TSGFVERLET));
+  char type[256] = "";
+  PetscBool typeGiven = PETSC_FALSE;
+  GF_CALL(PetscOptionsGetString(nullptr, nullptr, "-ts_type", type, sizeof type, &typeGiven));
+  const PetscErrorCode code = TSSetFromOptions(ts);
+  if (code == PETSC_ERR_ARG_UNKNOWN_TYPE && typeGiven)
+    throw InputError("-ts_type", type, "gfverlet (the default) or a PETSc TS type (rk, ssp, euler, ...)");
+  GF_CALL(code);
+  // Viewers TSSolve reads at its start and end: they count as used.
+  for (const char* name : {"-ts_view", "-ts_view_pre", "-ts_view_solution"}) {
+    PetscBool given = PETSC_FALSE;
+    GF_CALL(PetscOptionsHasName(nullptr, nullptr, name, &given));
+  }
+}
+
+TS createPlateTS(PlateModel& model, Vec state) {
+  registerVerletTS();
+  TS ts = nullptr;
+  GF_CALL(TSCreate(model.comm(), &ts));
+  try {
+    GF_CALL(TSSetProblemType(ts, TS_NONLINEAR));
+    GF_CALL(TSSetType(ts, TSGFVERLET));
+    GF_CALL(TSSetRHSFunction(ts, nullptr, rhsCallback, &model));
+    GF_CALL(TSSetPostStep(ts, commitContactPostStep));
+    GF_CALL(TSSetTimeStep(ts, model.timeStep()));
+    GF_CALL(TSSetMaxTime(ts, 1e30));  // the experiment stops itself (TS_CONVERGED_USER); -ts_max_time may stop it earlier
+    GF_CALL(TSSetMaxSteps(ts, PETSC_MAX_INT));
+    GF_CALL(TSSetExactFinalTime(ts, TS_EXACTFINALTIME_MATCHSTEP));
+    GF_CALL(TSSetSolution(ts, state));
+    GF_CALL(TSSetFromOptions(ts));
+    TSAdapt adapt = nullptr;
+    GF_CALL(TSGetAdapt(ts, &adapt));
+    GF_CALL(TSAdaptSetType(adapt, TSADAPTNONE));  // fixed step: the stable step is a hard bound
+    GF_CALL(TSSetTimeStep(ts, model.timeStep()));
+    GF_CALL(TSSetUp(ts));
+  } catch (...) {
+    TSDestroy(&ts);
+    throw;
+  }
+  return ts;
+}
+
+}  // namespace gradfric::fem

@@ -1,0 +1,46 @@
+#include "gradfric/fem/stable_step.hpp"
+
+#include "gradfric/core/run_limits.hpp"
+#include "gradfric/fem/hex_element.hpp"
+#include "gradfric/physics/stability.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+namespace gradfric::fem {
+
+double stableTimeStep(const FemParameters& given, const Grading& grading) {
+  FemParameters q = given;
+  q.resolveDerived();
+  const BoxElement element = makeBoxElement(q.plate.length / q.nx, q.plate.length / q.ny, q.plate.thickness / q.nz,
+                                            q.plate.poissonRatio);
+  double factor = 1.0;
+  for (int band = 0; band < grading.bands; ++band)
+    if (grading.gradesModulus()) factor = std::max(factor, grading.bandFactor(band));
+  double omega2 = elementMaxFrequencySquared(element, q.plate.youngsModulus * factor, q.plate.density);
+  // Penalty springs: k * area / nodal mass = 2 k / (rho hz) at every bottom node.
+  if (q.contact) omega2 += 2.0 * std::max(q.kn, q.kt) / (q.plate.density * element.hz);
+  const double omega = std::sqrt(omega2);
+  const double gamma = std::max(q.settleDamping, q.slideDamping);
+  const double xi = 0.5 * q.stiffnessDamping * omega + gamma / (2.0 * omega);
+  return centralDifferenceStableStep(omega2, xi);
+}
+
+double chooseTimeStep(const FemParameters& q, const Grading& grading) {
+  const double stable = stableTimeStep(q, grading);
+  const TimeStepPolicy policy{"-fem_dt", "the stable step (from mesh, wave speed, penalty, damping)", stable,
+                              q.dtCheck};
+  return policy.choose(q.dt > 0 ? std::optional<double>(q.dt) : std::nullopt, q.dtSafety * stable);
+}
+
+void requireFemRunLength(const FemParameters& q, const Grading& grading, const RunParameters* record) {
+  const double duration = q.rampTime + q.settleTime + q.slideTime;
+  requireResolvedTimescale(record, q.eq2PeakTime(), chooseTimeStep(q, grading), "-fem_dt",
+                           {"-fem_", "-plate_", "-grading_"}, "Eq. 2 peak time");
+  requireRunLength(record, duration, chooseTimeStep(q, grading), q.dtSafety * stableTimeStep(q, grading), "-fem_dt",
+                   {"-fem_slide_time", "-fem_settle_time", "-fem_ramp_time"}, {"-fem_", "-plate_", "-grading_"},
+                   "pressure step + sliding");
+}
+
+}  // namespace gradfric::fem

@@ -1,0 +1,70 @@
+#include "gradfric/fem/top_loading.hpp"
+
+#include "gradfric/core/petsc_call.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace gradfric::fem {
+
+TopLoading::TopLoading(const PlateMesh& mesh, double pressure, double rampTime, double velocity, double angleDegrees)
+    : comm_(mesh.comm()), pressure_(pressure), rampTime_(rampTime) {
+  const double theta = angleDegrees * M_PI / 180.0;
+  velocityX_ = velocity * std::cos(theta);
+  velocityY_ = velocity * std::sin(theta);
+  const std::vector<double> area = mesh.sumOverFaces(FaceSet::Top);
+  for (const OwnedVertex& v : mesh.ownedVertices())
+    if (area[v.block] > 0) nodes_.push_back({v.block, area[v.block]});
+}
+
+double TopLoading::pressureAt(double t, bool sliding) const {
+  if (sliding || rampTime_ <= 0) return pressure_;
+  return pressure_ * std::min(1.0, t / rampTime_);
+}
+
+void TopLoading::addPressure(double t, bool sliding, Vec F) const {
+  const double p = pressureAt(t, sliding);
+  PetscScalar* f = nullptr;
+  GF_CALL(VecGetArray(F, &f));
+  for (const Node& n : nodes_) f[6 * n.block + 5] -= p * n.area;
+  GF_CALL(VecRestoreArray(F, &f));
+}
+
+void TopLoading::startSliding(Vec X) const {
+  PetscScalar* x = nullptr;
+  GF_CALL(VecGetArray(X, &x));
+  for (const Node& n : nodes_) {
+    x[6 * n.block + 3] = velocityX_;
+    x[6 * n.block + 4] = velocityY_;
+  }
+  GF_CALL(VecRestoreArray(X, &x));
+}
+
+void TopLoading::constrainTangential(const std::vector<double>& mass, Vec F, double* driveX, double* driveY) const {
+  PetscScalar* f = nullptr;
+  GF_CALL(VecGetArray(F, &f));
+  for (const Node& n : nodes_) {
+    *driveX -= mass[n.block] * f[6 * n.block + 3];
+    *driveY -= mass[n.block] * f[6 * n.block + 4];
+    f[6 * n.block + 3] = f[6 * n.block + 4] = 0.0;
+  }
+  GF_CALL(VecRestoreArray(F, &f));
+}
+
+double TopLoading::areaWeightedLift(Vec X) const {
+  const PetscScalar* x = nullptr;
+  GF_CALL(VecGetArrayRead(X, &x));
+  double z = 0;
+  for (const Node& n : nodes_) z += n.area * x[6 * n.block + 2];
+  GF_CALL(VecRestoreArrayRead(X, &x));
+  return z;
+}
+
+double TopLoading::area() const {
+  double a = 0, sum = 0;
+  for (const Node& n : nodes_) a += n.area;
+  GF_CALL_MPI(MPI_Allreduce(&a, &sum, 1, MPI_DOUBLE, MPI_SUM, comm_));
+  return sum;
+}
+
+}  // namespace gradfric::fem
