@@ -46,12 +46,6 @@ std::vector<std::string> splitList(const std::string& text) {
 
 }  // namespace
 
-std::string formatReal(double value) {
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, "%.10g", value);
-  return buffer;
-}
-
 void RunParameters::add(ResolvedOption option) {
   for (auto& existing : options_)
     if (existing.name == option.name) {

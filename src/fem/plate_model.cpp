@@ -150,6 +150,8 @@ void PlateModel::buildCells() {
 }
 
 void PlateModel::buildNodes() {
+  contactLaw_.sites.layout = SiteLayout::PerSite;  // one site per bottom node, in bottom_ order
+  contactLaw_.criticalVelocity = params_.vC;
   // Assemble nodal quantities through the state layout: slot 0 lumped mass, 1 bottom area,
   // 2 bottom area x friction factor, 3 top area.
   const double rho = params_.plate.density, volume = element_.volume();
@@ -245,8 +247,8 @@ void PlateModel::buildNodes() {
       node.y = x[off + 1];
       node.area = g[6 * b + 1];
       const double factor = g[6 * b + 2] / g[6 * b + 1];  // area-weighted band factor
-      node.muS = params_.plate.muStatic * factor;
-      node.muK = params_.plate.muKinetic * factor;
+      contactLaw_.sites.staticStrength.push_back(params_.plate.muStatic * factor);
+      contactLaw_.sites.kineticStrength.push_back(params_.plate.muKinetic * factor);
       bottom_.push_back(node);
     }
     if (g[6 * b + 3] > 0) top_.push_back({b, g[6 * b + 3]});
@@ -360,11 +362,11 @@ void PlateModel::rhs(double t, Vec X, Vec F) {
   if (params_.contact) {
     GF_CALL(PetscLogEventBegin(evContact_, 0, 0, 0, 0));
     const PenaltyStiffness k{params_.kn, params_.kt};
-    for (BottomNode& n : bottom_) {
+    for (std::size_t i = 0; i < bottom_.size(); ++i) {
+      BottomNode& n = bottom_[i];
       const PetscScalar* xb = x + 6 * n.block;
-      const ExponentialVelocityWeakening law{n.muS, n.muK, params_.vC};
-      const ContactTraction r = penaltyContact(k, law, xb[2], xb[0], xb[1], n.anchorX, n.anchorY, xb[3], xb[4],
-                                                  n.state == ContactState::Slip);
+      const ContactTraction r = penaltyContact(k, contactLaw_, int(i), xb[2], xb[0], xb[1], n.anchorX, n.anchorY,
+                                               xb[3], xb[4], n.state == ContactState::Slip);
       n.pendingX = r.anchorX;
       n.pendingY = r.anchorY;
       n.pendingState = r.state;

@@ -2,6 +2,8 @@
 // Reading PETSc options with one record per option: its value, unit, help line and origin.
 // The same record serves -help, validation messages, the parameter printout at start and the
 // attributes of the results file. Built-in defaults never override what the user set.
+#include "gradfric/core/format.hpp"
+
 #include <mpi.h>
 #include <petscsys.h>
 
@@ -33,8 +35,6 @@ public:
 private:
   std::vector<ResolvedOption> options_;
 };
-
-std::string formatReal(double value);
 
 // Reads the options of one component (one prefix). Library code passes its communicator.
 class OptionReader {

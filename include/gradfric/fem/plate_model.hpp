@@ -89,7 +89,6 @@ public:
     PetscInt block;  // owned block in the global state vector
     double x, y;     // position
     double area;
-    double muS, muK;
     double anchorX = 0, anchorY = 0, pendingX = 0, pendingY = 0;
     ContactState state = ContactState::Open, pendingState = ContactState::Open;
     double pressure = 0, tx = 0, ty = 0;  // of the last rhs evaluation
@@ -121,6 +120,8 @@ private:
   std::vector<double> invMass_;           // per owned block
   std::vector<double> mass_;
   std::vector<BottomNode> bottom_;
+  // The contact's friction law, one site per bottom node (its band's mu_s, mu_k).
+  ExponentialVelocityWeakening contactLaw_;
   struct TopNode {
     PetscInt block;
     double area;
