@@ -1,4 +1,4 @@
-// gradfric-fem: the paper's 3D finite-element experiment (issue 4). All options: -help.
+// gradfric-fem: the paper's 3D finite-element experiment. All options: -help.
 #include <petscsection.h>
 #include <petscsf.h>
 
@@ -45,7 +45,7 @@ int main(int argc, char** argv) {
     }
     if (helpRequested()) return;
     if (compare)
-      checkUnusedOptions(comm, {"plate_", "fem_", "grading_", "sbm_"});
+      checkUnusedOptions(comm, {"plate_", "friction_", "fem_", "grading_", "sbm_"});
     else
       checkUnusedOptions(comm, {"plate_", "fem_", "grading_"});
     chooseTimeStep(params, grading);    // refuses a dt above the stable step before any work
@@ -90,9 +90,9 @@ int main(int argc, char** argv) {
       if (rank == 0) {
         const sbm::Result s = sbm::simulate(sbmParams, grading, sbmRequest,
                                             StreamKey{static_cast<std::uint64_t>(seed), 0, 0});
-        sbmValues[0] = s.muStatic;
-        sbmValues[1] = s.muKinetic;
-        sbmValues[2] = s.peakTime;
+        sbmValues[0] = s.friction.muStatic;
+        sbmValues[1] = s.friction.muKinetic;
+        sbmValues[2] = s.friction.peakTime;
         sbmValues[3] = s.wallSeconds;
       }
       MPI_Bcast(sbmValues, 4, MPI_DOUBLE, 0, comm);

@@ -24,5 +24,6 @@ fi
 # Open MPI refuses to run as root without these; harmless otherwise.
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 
-cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=Release -DGRADFRIC_NATIVE="${GRADFRIC_NATIVE:-OFF}" >/dev/null
+# GRADFRIC_REQUIRE_ALL: everything above is installed, so a missing test dependency is an error.
+cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=Release -DGRADFRIC_NATIVE="${GRADFRIC_NATIVE:-OFF}" -DGRADFRIC_REQUIRE_ALL=ON >/dev/null
 cmake --build "$build" -j "$(nproc)"

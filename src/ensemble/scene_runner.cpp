@@ -184,8 +184,8 @@ int historyCapacity(const sbm::Parameters& p, const sbm::Request& q) {
   const double dt = p.timeStep;
   const double steps = std::ceil(duration / dt) + 2.0;
   double samples = steps;
-  if (q.historyInterval > dt) samples = std::min(samples, std::floor(duration / q.historyInterval) + 3.0);
-  if (samples > 5e7) throw InputError("-sbm_history_interval", formatReal(q.historyInterval),
+  if (q.measurement.historyInterval > dt) samples = std::min(samples, std::floor(duration / q.measurement.historyInterval) + 3.0);
+  if (samples > 5e7) throw InputError("-friction_history_interval", formatReal(q.measurement.historyInterval),
                                       "an interval giving at most 5e7 mu(t) samples per realisation up to t_max");
   return static_cast<int>(samples) + 2;
 }
@@ -307,7 +307,7 @@ void runSpringBlockScene(MPI_Comm comm, RunParameters* record) {
     throw InputError(ens.fullName("property"), "(a list)",
                      "only with a grading profile: set -grading_profile linear or triangular (it is none)");
 
-  checkUnusedOptions(comm, {"ensemble_", "plate_", "sbm_", "grading_", "output"});
+  checkUnusedOptions(comm, {"ensemble_", "plate_", "friction_", "sbm_", "grading_", "output"});
 
   base.theta = parameters.plate.slidingAngle;
   base.sigma = parameters.sigmaStatic;
@@ -322,7 +322,7 @@ void runSpringBlockScene(MPI_Comm comm, RunParameters* record) {
   layout.realisations = R;
   layout.historyCapacity = history ? historyCapacity(parameters, request) : 0;
   layout.mapSide = parameters.blocksPerSide;
-  layout.firstSlipMap = request.firstSlipMap;
+  layout.firstSlipMap = request.measurement.firstSlipMap;
   layout.snapshotTimes = request.snapshotTimes;
   layout.statisticsReal = {"mu_s_mean",      "mu_s_std",     "mu_s_stderr",         "mu_s_ci95_low",
                            "mu_s_ci95_high", "mu_s_relative", "mu_s_relative_error", "mu_k_mean",
@@ -337,8 +337,8 @@ void runSpringBlockScene(MPI_Comm comm, RunParameters* record) {
                          8.0;
     if (bytes > 64e9)
       throw InputError("results file would need " + formatReal(bytes / 1e9) +
-                       " GB: store fewer observables (-sbm_observables, -sbm_snapshot_times), a coarser "
-                       "-sbm_history_interval or -ensemble_history false");
+                       " GB: store fewer observables (-friction_observables, -sbm_snapshot_times), a coarser "
+                       "-friction_history_interval or -ensemble_history false");
   }
 
   io::SweepTable table;
@@ -395,7 +395,7 @@ void runSpringBlockScene(MPI_Comm comm, RunParameters* record) {
       GF_CALL(PetscPrintf(comm, "  - one time step for the whole sweep, from its stiffest band (E x %g)\n",
                           stiffestValue));
     GF_CALL(PetscPrintf(comm, "  - stored: mu_s, mu_k per realisation%s%s%s\n",
-                        history ? ", mu(t) histories" : "", request.firstSlipMap ? ", first-slip maps" : "",
+                        history ? ", mu(t) histories" : "", request.measurement.firstSlipMap ? ", first-slip maps" : "",
                         request.snapshotTimes.empty() ? "" : ", sigma_x/p snapshots"));
   }
 
@@ -506,16 +506,16 @@ void runSpringBlockScene(MPI_Comm comm, RunParameters* record) {
         io::TaskOutput o;
         o.point = task.point;
         o.realisation = task.realisation;
-        o.muStatic = result.muStatic;
-        o.muKinetic = result.muKinetic;
-        o.peakTime = result.peakTime;
+        o.muStatic = result.friction.muStatic;
+        o.muKinetic = result.friction.muKinetic;
+        o.peakTime = result.friction.peakTime;
         o.endTime = result.endTime;
-        o.peakConfirmed = result.peakConfirmed;
+        o.peakConfirmed = result.friction.peakConfirmed;
         o.steps = result.steps;
         o.redrawnBlocks = result.redrawnBlocks;
         if (history) {
-          o.time = std::move(result.time);
-          o.mu = std::move(result.mu);
+          o.time = std::move(result.friction.time);
+          o.mu = std::move(result.friction.mu);
         }
         o.firstSlipTime = std::move(result.firstSlipTime);
         for (auto& s : result.snapshots) {
@@ -619,7 +619,7 @@ void runSpringBlockScene(MPI_Comm comm, RunParameters* record) {
   double taskSecondsAll = 0.0;
   GF_CALL_MPI(MPI_Allreduce(&ranHere, &ranAll, 1, MPI_LONG, MPI_SUM, comm));
   GF_CALL_MPI(MPI_Allreduce(&taskSecondsHere, &taskSecondsAll, 1, MPI_DOUBLE, MPI_SUM, comm));
-  printStatistics(comm, sweep, R, stats, request.kineticFriction, commonStreams);
+  printStatistics(comm, sweep, R, stats, request.measurement.kinetic, commonStreams);
   // busy: the share of rank-seconds spent inside tasks (the rest: start-up, file writes, waiting
   // for the last task, statistics).
   GF_CALL(PetscPrintf(comm,

@@ -3,6 +3,7 @@
 
 #include "gradfric/core/format.hpp"
 #include "gradfric/physics/friction_laws.hpp"
+#include "gradfric/physics/stability.hpp"
 #include "gradfric/sbm/integrator.hpp"
 #include "gradfric/sbm/lattice.hpp"
 
@@ -35,34 +36,15 @@ private:
   Phase phase_;
 };
 
-// The peak of mu(t): the running maximum until it is confirmed, then frozen. Confirmed once
-// every block has slipped (the detachment front has crossed the plate) and mu(t) has fallen by
-// `drop` below the maximum or not exceeded it for `hold` seconds.
-struct PeakTracker {
-  double drop, hold;
-  double maximum = -1.0, time = 0.0;
-  bool confirmed = false;
-  void observe(double t, double mu, bool allSlipped) {
-    if (confirmed) return;
-    if (mu > maximum) {
-      maximum = mu;
-      time = t;
-    }
-    if (allSlipped && (mu < (1.0 - drop) * maximum || t - time >= hold)) confirmed = true;
-  }
-};
-
 std::vector<double> asVector(const double* data, std::size_t n) { return std::vector<double>(data, data + n); }
 std::vector<double> asVector(std::vector<double> data, std::size_t) { return data; }
 
-std::string instabilityMessage(const std::string& what, double t, std::int64_t step, const Parameters& p,
-                               double stable) {
+std::string likelyCause(const Parameters& p, double stable) {
   std::ostringstream m;
-  m << "the spring-block run became unstable at t = " << t << " s (step " << step << "): " << what
-    << ". Likely cause: the time step dt = " << p.timeStep << " s is at or above the stability limit "
-    << stable << " s of this lattice (stiffest band";
+  m << "the time step dt = " << p.timeStep << " s is at or above the stability limit " << stable
+    << " s of this lattice (stiffest band";
   if (p.damping > 0) m << ", damping gamma dt = " << p.damping * p.timeStep;
-  m << "). Lower -sbm_dt or -sbm_dt_safety.";
+  m << "). Lower -sbm_dt or -sbm_dt_safety";
   return m.str();
 }
 
@@ -72,20 +54,22 @@ void integrate(Lattice& lattice, const LatticeStiffness& stiffness, const Fricti
   const int nb = p.blocksPerSide;
   const std::size_t n = std::size_t(nb) * nb;
   const double dt = p.timeStep;
-  const double totalNormal = p.plate.pressure * p.plate.length * p.plate.length;
-  if (q.firstSlipMap) {
+  if (q.measurement.firstSlipMap) {
     result.firstSlipTime.assign(n, std::numeric_limits<double>::quiet_NaN());
     lattice.recordFirstSlips(result.firstSlipTime.data());
   }
-  PeakTracker peak{q.peakDrop, q.peakHold};
-  // The monitor: mu(t) finite at every step; kinetic + elastic energy never above the work done
-  // by the slider (trapezoidal rule) every energyCheckInterval steps.
+  FrictionHistory history(q.measurement, p.plate.normalForce(), dt);
+  // The monitor: mu(t) finite and below twice the largest local mu_s at every step; kinetic +
+  // elastic energy never above the work done by the slider (trapezoidal rule) every
+  // energyCheckInterval steps.
   double work = 0.0, previousFx = 0.0, previousFy = 0.0;
   result.maxLocalStatic = *std::max_element(friction.staticStrength.begin(), friction.staticStrength.end()) /
                           p.normalForcePerBlock();
-  std::vector<double> muPerStep;  // every step, for the kinetic window
+  const EnergyBound energyBound{1.0 + 1e-3, 0.0};
+  auto fail = [&](const std::string& quantity, double t) {
+    throw NumericalInstability("the spring-block", quantity, t, lattice.steps(), likelyCause(p, stable));
+  };
   std::size_t nextSnapshot = 0;
-  double nextSample = 0.0;
   const auto start = std::chrono::steady_clock::now();
   for (;;) {
     const double t = lattice.time();
@@ -102,28 +86,18 @@ void integrate(Lattice& lattice, const LatticeStiffness& stiffness, const Fricti
       PhaseScope timed(Phase::Step);
       return lattice.step();
     }();
-    const double mu = std::hypot(o.sliderForceX, o.sliderForceY) / totalNormal;
+    const double mu = history.observe(t, o.sliderForceX, o.sliderForceY, lattice.slippedBlocks() > 0,
+                                      lattice.slippedBlocks() == int(n));
     // mu(t) cannot exceed the largest local static coefficient but by a dynamic overshoot: twice
     // that is a blow-up, caught at once.
-    if (!std::isfinite(mu) || mu > 2.0 * result.maxLocalStatic)
-      throw NumericalInstability(instabilityMessage(
-          std::isfinite(mu) ? "mu(t) = " + formatReal(mu) + " exceeds twice the largest local mu_s (" +
-                                  formatReal(result.maxLocalStatic) + ")"
-                            : "mu(t) is not finite",
-          t, lattice.steps(), p, stable));
+    const std::string muProblem = frictionViolation(mu, 2.0 * result.maxLocalStatic);
+    if (!muProblem.empty()) fail(muProblem + " (twice the largest local mu_s)", t);
     if (lattice.steps() > 1)
       work += 0.5 * dt * ((previousFx + o.sliderForceX) * motion.sliderVelocityX +
                           (previousFy + o.sliderForceY) * motion.sliderVelocityY);
     previousFx = o.sliderForceX;
     previousFy = o.sliderForceY;
-    peak.observe(t, mu, lattice.slippedBlocks() == int(n));
-    bool done;
-    if (q.endTime > 0) {
-      done = t >= q.endTime;
-    } else {
-      done = peak.confirmed && nextSnapshot == q.snapshotTimes.size() &&
-             (!q.kineticFriction || t >= peak.time + q.kineticDelay + q.kineticWidth);
-    }
+    bool done = q.endTime > 0 ? t >= q.endTime : history.known() && nextSnapshot == q.snapshotTimes.size();
     done = done || t >= q.maxTime;
     if (done || (q.energyCheckInterval > 0 && lattice.steps() % q.energyCheckInterval == 0)) {
       // State at t + dt against the work up to t plus one more step of the current force.
@@ -136,40 +110,15 @@ void integrate(Lattice& lattice, const LatticeStiffness& stiffness, const Fricti
                                             motion.sliderVelocityX * tn, motion.sliderVelocityY * tn);
       result.energy = e.total();
       result.sliderWork = work;
-      if (!std::isfinite(e.total()) || e.total() > bound * (1.0 + 1e-3))
-        throw NumericalInstability(instabilityMessage(
-            "the kinetic + elastic energy " + formatReal(e.total()) + " J exceeds the work done by the slider " +
-                formatReal(bound) + " J",
-            t, lattice.steps(), p, stable));
-    }
-    muPerStep.push_back(mu);
-    if (t >= nextSample - 0.5 * dt) {
-      result.time.push_back(t);
-      result.mu.push_back(mu);
-      nextSample += q.historyInterval > 0 ? q.historyInterval : dt;
+      const std::string energyProblem = energyBound.violation(e.total(), bound, "the work done by the slider");
+      if (!energyProblem.empty()) fail(energyProblem, t);
     }
     if (done) break;
   }
   result.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   result.steps = lattice.steps();
   result.endTime = lattice.time();
-  result.muStatic = peak.maximum;
-  result.peakTime = peak.time;
-  result.peakConfirmed = peak.confirmed;
-  result.muKinetic = std::numeric_limits<double>::quiet_NaN();
-  if (q.kineticFriction && peak.confirmed) {
-    const double from = peak.time + q.kineticDelay, to = from + q.kineticWidth;
-    double sum = 0.0;
-    std::size_t count = 0;
-    for (std::size_t s = 0; s < muPerStep.size(); ++s) {
-      const double t = double(s) * dt;
-      if (t >= from && t <= to) {
-        sum += muPerStep[s];
-        ++count;
-      }
-    }
-    if (count > 0 && double(muPerStep.size() - 1) * dt >= to - dt) result.muKinetic = sum / double(count);
-  }
+  result.friction = history.summary();
 }
 
 }  // namespace
@@ -220,8 +169,8 @@ std::vector<std::string> activeEffects(const Parameters& p, const Grading& g, co
   effects.push_back(p.damping > 0 ? "viscous damping gamma = " + formatReal(p.damping) + " 1/s" : "no damping");
   effects.push_back("sliding angle theta = " + formatReal(p.plate.slidingAngle) + " degree");
   std::string observed = "observables: mu_s";
-  if (q.kineticFriction) observed += ", mu_k";
-  if (q.firstSlipMap) observed += ", first-slip map";
+  if (q.measurement.kinetic) observed += ", mu_k";
+  if (q.measurement.firstSlipMap) observed += ", first-slip map";
   if (!q.snapshotTimes.empty()) observed += ", " + std::to_string(q.snapshotTimes.size()) + " sigma_x/p snapshots";
   else observed += " (no stress field computed)";
   effects.push_back(observed);

@@ -2,6 +2,8 @@
 #include "gradfric/sbm/parameter_options.hpp"
 
 #include "gradfric/core/input_error.hpp"
+#include "gradfric/physics/friction_options.hpp"
+#include "gradfric/physics/stability.hpp"
 #include "gradfric/physics/friction_laws.hpp"
 #include "gradfric/sbm/log_events.hpp"
 
@@ -58,56 +60,34 @@ Parameters readParameters(MPI_Comm comm, RunParameters* record, const Plate& pla
   o.requirePositive("dt_slip", p.timeStepSlip, "");
   const bool check = o.flag("dt_check", true, "refuse a dt above the stability limit (false: only to test the instability monitor)");
   const std::string scheme = p.integrator == Integrator::VelocityVerlet ? "velocity Verlet" : "RK4";
-  if (auto dt = o.realIfSet("dt", "s", "time step (refused above the integrator's stability limit)",
-                            "min(dt_safety x stable step, dt_slip x slip time)")) {
-    p.timeStep = *dt;
-    o.requirePositive("dt", p.timeStep, "s");
-    if (check && p.timeStep > stable)
-      throw InputError(o.fullName("dt"), formatReal(p.timeStep),
-                       "<= " + formatReal(stable) + " s, the " + scheme + " stability limit of this lattice");
-  } else {
-    p.timeStep = defaultTimeStep(p, grading);
+  const TimeStepPolicy policy{o.fullName("dt"), "the " + scheme + " stability limit of this lattice", stable, check};
+  const auto requested = o.realIfSet("dt", "s", "time step (refused above the integrator's stability limit)",
+                                     "min(dt_safety x stable step, dt_slip x slip time)");
+  p.timeStep = policy.choose(requested, defaultTimeStep(p, grading));
+  if (!requested)
     o.recordDerived("dt", p.timeStep, "s",
                     "time step = min(dt_safety x " + scheme + " stability limit " + formatReal(stable) +
                         " s, dt_slip x slip time " + formatReal(slipTime(p, grading)) + " s)");
-  }
   return p;
 }
 
 Request readRequest(MPI_Comm comm, RunParameters* record, const Parameters& p) {
-  OptionReader o(comm, "sbm_", "Spring-block model", record);
   Request q;
-  const auto observables = o.choiceList("observables", {"mu_s", "mu_k", "first_slip"}, {"mu_s", "mu_k", "first_slip"},
-                                        "what the run must determine; it stops once these are known");
-  auto wants = [&](const char* name) { return std::find(observables.begin(), observables.end(), name) != observables.end(); };
-  q.staticFriction = true;  // the peak times everything else
-  q.kineticFriction = wants("mu_k");
-  q.firstSlipMap = wants("first_slip");
+  q.measurement = readFrictionMeasurement(comm, record, p.loadingTime());
+  OptionReader o(comm, "sbm_", "Spring-block model", record);
   q.snapshotTimes = o.realList("snapshot_times", {}, "s", "times of the sigma_x/p snapshots (none: no stress computed)");
   for (double t : q.snapshotTimes) o.requireNonNegative("snapshot_times", t, "s");
   std::sort(q.snapshotTimes.begin(), q.snapshotTimes.end());
-
   const double load = p.loadingTime();
-  auto derived = [&](const char* name, double factor, const char* unit, const char* help, const char* text) {
-    if (auto v = o.realIfSet(name, unit, help, text)) {
-      o.requireNonNegative(name, *v, unit);
-      return *v;
-    }
-    o.recordDerived(name, factor * load, unit, std::string(help) + " = " + text);
-    return factor * load;
-  };
-  q.historyInterval = derived("history_interval", 1e-3, "s", "sampling interval of the stored mu(t) history", "t_load / 1000");
-  q.kineticDelay = derived("muk_delay", 0.5, "s", "start of the mu_k window after the peak", "0.5 t_load");
-  q.kineticWidth = derived("muk_width", 1.0, "s", "width of the mu_k window", "t_load");
-  q.peakHold = derived("peak_hold", 0.25, "s", "peak confirmed once every block slid and no new maximum for this long", "0.25 t_load");
-  q.maxTime = derived("t_max", 20.0, "s", "give up if the peak is not confirmed by then", "20 t_load");
-  q.peakDrop = o.real("peak_drop", q.peakDrop, "1", "relative fall below the maximum that confirms the peak");
-  o.requireRange("peak_drop", q.peakDrop, 0.0, 1.0, "0 <= peak_drop <= 1");
+  if (auto t = o.realIfSet("t_max", "s", "give up if the peak is not confirmed by then", "20 t_load")) {
+    q.maxTime = *t;
+  } else {
+    q.maxTime = 20.0 * load;
+    o.recordDerived("t_max", q.maxTime, "s", "give up if the peak is not confirmed by then = 20 t_load");
+  }
   q.endTime = o.real("t_end", 0.0, "s", "if > 0: run exactly this long, whatever the observables (0: stop when known)");
   o.requireNonNegative("t_end", q.endTime, "s");
-  if (q.kineticWidth <= 0 && q.kineticFriction)
-    throw InputError(o.fullName("muk_width"), formatReal(q.kineticWidth), "> 0 [s] when mu_k is requested");
-  if (q.maxTime <= 0) throw InputError(o.fullName("t_max"), formatReal(q.maxTime), "> 0 [s]");
+  if (!(q.maxTime > 0)) throw InputError(o.fullName("t_max"), formatReal(q.maxTime), "> 0 [s]");
   return q;
 }
 

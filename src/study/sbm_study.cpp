@@ -64,7 +64,7 @@ void runSpringBlockStudy(MPI_Comm comm, RunParameters* record) {
   const sbm::Parameters base = sbm::readParameters(comm, record, plate, grading);
   sbm::Request request = sbm::readRequest(comm, record, base);
   request.endTime = 0.0;
-  request.historyInterval = 1e3;  // the study keeps no histories
+  request.measurement.historyInterval = 1e3;  // the study keeps no histories
   OptionReader o(comm, "study_", "Accuracy-cost study (spring-block model)", record);
   const auto knobs = o.choiceList("knobs", {"dt", "N", "R"}, {"dt", "N", "R"},
                                   "ladders to run: time step per integrator, lattice size, number of realisations");
@@ -88,7 +88,7 @@ void runSpringBlockStudy(MPI_Comm comm, RunParameters* record) {
     if (n < 2 || n != std::floor(n)) throw InputError(o.fullName("N"), formatReal(n), "whole numbers >= 2");
   if (access(output.c_str(), F_OK) == 0 && !overwrite)
     throw InputError("-output", output, "a file that does not exist yet (add -output_overwrite to replace it)");
-  checkUnusedOptions(comm, {"study_", "plate_", "sbm_", "grading_", "output"});
+  checkUnusedOptions(comm, {"study_", "plate_", "friction_", "sbm_", "grading_", "output"});
   std::sort(dts.begin(), dts.end());
 
   // ---- The ladders and their tasks. ----
@@ -145,13 +145,13 @@ void runSpringBlockStudy(MPI_Comm comm, RunParameters* record) {
     const sbm::Result r = sbm::simulate(t.parameters, grading, request,
                                         StreamKey{std::uint64_t(seed), 0, std::uint32_t(t.realisation)});
     double* slot = &flat[4 * order[k]];
-    slot[0] = r.muStatic;
-    slot[1] = r.muKinetic;
+    slot[0] = r.friction.muStatic;
+    slot[1] = r.friction.muKinetic;
     slot[2] = r.wallSeconds;
     slot[3] = double(r.steps);
     std::printf("  [rank %d] %-9s rung %d realisation %d: dt = %.3g s, N_b = %d: mu_s = %.6f, mu_k = %.6f, %.2f s\n", rank,
-                t.ladder.c_str(), t.rung, t.realisation, t.parameters.timeStep, t.parameters.blocksPerSide, r.muStatic,
-                r.muKinetic, r.wallSeconds);
+                t.ladder.c_str(), t.rung, t.realisation, t.parameters.timeStep, t.parameters.blocksPerSide, r.friction.muStatic,
+                r.friction.muKinetic, r.wallSeconds);
     std::fflush(stdout);
   }
   GF_CALL_MPI(MPI_Allreduce(MPI_IN_PLACE, flat.data(), int(flat.size()), MPI_DOUBLE, MPI_SUM, comm));

@@ -1,5 +1,5 @@
 #pragma once
-// Hard cases of the FEM (issue 5): each case runs at its step dt and at dt/2 on a reduced mesh and
+// Hard cases of the FEM (docs/accuracy_fem.md): each case runs at its step dt and at dt/2 on a reduced mesh and
 // must show
 //  * no NaN or Inf (mu(t), normal force, mu_s, mu_k; the blow-up monitor would also stop the run);
 //  * bounded energy: kinetic + elastic energy <= the energy put in (work of the pressure, -int p dZ,

@@ -1,4 +1,4 @@
-// FEM hard cases (issue 5), grading: |Delta| = 0.9 for E, for the friction coefficients and for both,
+// FEM hard cases, grading: |Delta| = 0.9 for E, for the friction coefficients and for both,
 // linear and triangular, both signs; each at the default step (0.9 of the stable step) and at half of
 // it, on 16 x 16 x 2 hexahedra. Checks and their tolerances: fem_hard_cases.hpp.
 #include "fem_hard_cases.hpp"

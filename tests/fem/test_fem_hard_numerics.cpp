@@ -1,4 +1,4 @@
-// FEM hard cases (issue 5), numerics: very stiff and very soft penalties, a tiny v_c (an almost
+// FEM hard cases, numerics: very stiff and very soft penalties, a tiny v_c (an almost
 // discontinuous friction law), one element through the thickness, the thick plate of the paper's
 // Figure 2 (H = 0.1 mm), dt at 0.9 of the stable step, no damping at all; each at its step and at
 // half of it, on reduced meshes. Checks and their tolerances: fem_hard_cases.hpp.
@@ -17,7 +17,7 @@ std::vector<HardCase> numericsCases() {
   // goes unstable after the peak (contact chatter, the plate lifts off; measured on 16 x 16 x 2:
   // k_n x10 stopped by the monitor at t - t0 = 3.4e-4 s, x30 at 2.2e-4 s, x100 at 2.1e-4 s), at 0.7
   // it is stable (mu_s 0.9217 at 0.7 and 0.9217 at 0.5). This case runs at 0.6 (the shipped
-  // default since issue 5); StiffPenaltyAtNinetyPercentIsStoppedByTheMonitor keeps the 0.9 failure.
+  // default, docs/accuracy_fem.md); StiffPenaltyAtNinetyPercentIsStoppedByTheMonitor keeps the 0.9 failure.
   cases.push_back({"penalty_stiff_x100", [](FemParameters& q, Grading&) {
                      q.resolveDerived();
                      q.kn *= 100;

@@ -24,10 +24,10 @@ inline Parameters paperParameters(int blocksPerSide, double sigma, const Grading
 inline Request defaultRequest(const Parameters& p) {
   Request q;
   const double load = p.loadingTime();
-  q.historyInterval = 0.0;
-  q.kineticDelay = 0.5 * load;
-  q.kineticWidth = load;
-  q.peakHold = 0.25 * load;
+  q.measurement.historyInterval = 0.0;
+  q.measurement.kineticDelay = 0.5 * load;
+  q.measurement.kineticWidth = load;
+  q.measurement.peakHold = 0.25 * load;
   q.maxTime = 20 * load;
   return q;
 }
@@ -38,11 +38,11 @@ struct Sample {
 
 inline Sample staticFrictionSample(const Parameters& p, const Grading& g, int realisations, std::uint32_t sweepIndex) {
   Request q = defaultRequest(p);
-  q.kineticFriction = false;
-  q.firstSlipMap = false;
+  q.measurement.kinetic = false;
+  q.measurement.firstSlipMap = false;
   std::vector<double> values;
   for (int r = 0; r < realisations; ++r)
-    values.push_back(simulate(p, g, q, StreamKey{42, sweepIndex, std::uint32_t(r)}).muStatic);
+    values.push_back(simulate(p, g, q, StreamKey{42, sweepIndex, std::uint32_t(r)}).friction.muStatic);
   Sample s;
   for (double v : values) s.mean += v / values.size();
   double var = 0;

@@ -3,6 +3,7 @@
 // throws otherwise), keep mu(t) between 0 and the largest local mu_s, and agree with the same
 // case at half the time step.
 #include "sbm_support.hpp"
+#include "gradfric/physics/stability.hpp"
 
 #include <gtest/gtest.h>
 
@@ -42,7 +43,7 @@ Result run(const HardCase& c, double dtScale, double endTime = 0.0) {
   p.plate.slidingAngle = c.theta;
   p.timeStep = (c.dtSafety > 0 ? c.dtSafety * stableTimeStep(p, c.grading) : defaultTimeStep(p, c.grading)) * dtScale;
   Request q = sbm::testing::defaultRequest(p);
-  q.kineticFriction = !c.peakOnly;
+  q.measurement.kinetic = !c.peakOnly;
   q.energyCheckInterval = 50;
   q.endTime = endTime;
   return simulate(p, c.grading, q, {21, 0, 0});
@@ -54,9 +55,9 @@ double loadingTime() { return Parameters{}.loadingTime(); }
 double windowMean(const Result& r, double from, double to) {
   double sum = 0;
   int count = 0;
-  for (std::size_t i = 0; i < r.time.size(); ++i)
-    if (r.time[i] >= from && r.time[i] <= to) {
-      sum += r.mu[i];
+  for (std::size_t i = 0; i < r.friction.time.size(); ++i)
+    if (r.friction.time[i] >= from && r.friction.time[i] <= to) {
+      sum += r.friction.mu[i];
       ++count;
     }
   return sum / count;
@@ -67,19 +68,19 @@ void checkHardCase(const HardCase& c, double staticTolerance, double kineticTole
   const Result a = run(c, 1.0);
   const Result b = run(c, 0.5);
   for (const Result* r : {&a, &b}) {
-    ASSERT_TRUE(std::isfinite(r->muStatic));
-    EXPECT_TRUE(r->peakConfirmed);
-    for (double mu : r->mu) {
+    ASSERT_TRUE(std::isfinite(r->friction.muStatic));
+    EXPECT_TRUE(r->friction.peakConfirmed);
+    for (double mu : r->friction.mu) {
       ASSERT_TRUE(std::isfinite(mu));
       ASSERT_GE(mu, 0.0);
       ASSERT_LE(mu, r->maxLocalStatic * (1 + 1e-9));
     }
     EXPECT_LE(r->energy, r->sliderWork * 1.001 + 1e-30);
   }
-  EXPECT_NEAR(a.muStatic, b.muStatic, staticTolerance * b.muStatic);
+  EXPECT_NEAR(a.friction.muStatic, b.friction.muStatic, staticTolerance * b.friction.muStatic);
   if (c.peakOnly) return;
-  if (std::fabs(a.peakTime - b.peakTime) < 0.1 * loadingTime()) {
-    EXPECT_NEAR(a.muKinetic, b.muKinetic, kineticTolerance * b.muKinetic);
+  if (std::fabs(a.friction.peakTime - b.friction.peakTime) < 0.1 * loadingTime()) {
+    EXPECT_NEAR(a.friction.muKinetic, b.friction.muKinetic, kineticTolerance * b.friction.muKinetic);
   } else {
     // No static peak (large |Delta|: mu(t) rises to a plateau, as the paper describes): the peak
     // time, and the mu_k window placed after it, are ill-defined. Compare the kinetic level over
@@ -160,10 +161,10 @@ TEST(HardCases, AnUnstableRunIsStoppedByTheMonitor) {
         const Result r = simulate(p, {}, q, {1, 0, 0});
         // Slightly past the limit the unstable modes may not grow within the run: then the
         // result must still be physical.
-        EXPECT_LE(r.muStatic, 2 * r.maxLocalStatic) << factor;
+        EXPECT_LE(r.friction.muStatic, 2 * r.maxLocalStatic) << factor;
         EXPECT_LE(r.energy, r.sliderWork * 1.001) << factor;
         EXPECT_LT(factor, 2.0) << "no instability detected at " << factor << " x the limit";
-      } catch (const NumericalInstability& e) {
+      } catch (const gradfric::NumericalInstability& e) {
         const std::string message = e.what();
         EXPECT_NE(message.find("unstable"), std::string::npos) << message;
         EXPECT_TRUE(message.find("energy") != std::string::npos || message.find("mu(t)") != std::string::npos)

@@ -61,12 +61,12 @@ TEST(Kernels, SameHistoriesForEveryCodePathIntegratorAndLaw) {
         Request q = sbm::testing::defaultRequest(p);
         const Result fast = simulate(p, c.grading, q, {3, 1, 2}, Kernel::Fast);
         const Result plain = simulate(p, c.grading, q, {3, 1, 2}, Kernel::Reference);
-        ASSERT_TRUE(fast.peakConfirmed) << where;
-        ASSERT_EQ(fast.mu.size(), plain.mu.size()) << where;
-        for (std::size_t i = 0; i < fast.mu.size(); ++i)
-          ASSERT_NEAR(fast.mu[i], plain.mu[i], 1e-9 * (1 + plain.mu[i])) << where << " step " << i;
-        EXPECT_NEAR(fast.muStatic, plain.muStatic, 1e-10) << where;
-        EXPECT_NEAR(fast.muKinetic, plain.muKinetic, 1e-9) << where;
+        ASSERT_TRUE(fast.friction.peakConfirmed) << where;
+        ASSERT_EQ(fast.friction.mu.size(), plain.friction.mu.size()) << where;
+        for (std::size_t i = 0; i < fast.friction.mu.size(); ++i)
+          ASSERT_NEAR(fast.friction.mu[i], plain.friction.mu[i], 1e-9 * (1 + plain.friction.mu[i])) << where << " step " << i;
+        EXPECT_NEAR(fast.friction.muStatic, plain.friction.muStatic, 1e-10) << where;
+        EXPECT_NEAR(fast.friction.muKinetic, plain.friction.muKinetic, 1e-9) << where;
         ASSERT_EQ(fast.firstSlipTime.size(), plain.firstSlipTime.size());
         for (std::size_t i = 0; i < fast.firstSlipTime.size(); ++i)
           EXPECT_EQ(fast.firstSlipTime[i], plain.firstSlipTime[i]) << where << " block " << i;
@@ -87,12 +87,12 @@ TEST(Kernels, TheExponentialLawOnAPlate) {
   p.frictionLaw.criticalVelocity = 1e3;
   const Result exponential = simulate(p, g, q, {5, 0, 0});
   // No weakening, no avalanche: the peak is not lower, and sliding stays within 1 % of it.
-  EXPECT_GE(exponential.muStatic, coulomb.muStatic);
-  EXPECT_GT(exponential.muKinetic, 0.99 * exponential.muStatic);
-  EXPECT_LT(coulomb.muKinetic, 0.9 * coulomb.muStatic);
+  EXPECT_GE(exponential.friction.muStatic, coulomb.friction.muStatic);
+  EXPECT_GT(exponential.friction.muKinetic, 0.99 * exponential.friction.muStatic);
+  EXPECT_LT(coulomb.friction.muKinetic, 0.9 * coulomb.friction.muStatic);
   // Before any block slips the laws cannot differ: the loading is elastic.
   const std::size_t loading = std::size_t(0.5 * p.loadingTime() / p.timeStep);
-  for (std::size_t i = 0; i < loading; ++i) ASSERT_EQ(exponential.mu[i], coulomb.mu[i]) << i;
+  for (std::size_t i = 0; i < loading; ++i) ASSERT_EQ(exponential.friction.mu[i], coulomb.friction.mu[i]) << i;
 }
 
 TEST(Kernels, StatesAgreeThroughStickAndSlip) {
@@ -145,8 +145,8 @@ TEST(Kernels, VelocityVerletAgreesWithRK4) {
     const Result a = simulate(rk4, g, q, {2, 0, 0});
     const Result b = simulate(verlet, g, q, {2, 0, 0});
     const double tolerance = 0.002;
-    EXPECT_NEAR(b.muStatic, a.muStatic, tolerance * a.muStatic) << "safety " << safety;
-    EXPECT_NEAR(b.muKinetic, a.muKinetic, tolerance * a.muKinetic) << "safety " << safety;
-    EXPECT_NEAR(b.peakTime, a.peakTime, 0.01 * a.peakTime) << "safety " << safety;
+    EXPECT_NEAR(b.friction.muStatic, a.friction.muStatic, tolerance * a.friction.muStatic) << "safety " << safety;
+    EXPECT_NEAR(b.friction.muKinetic, a.friction.muKinetic, tolerance * a.friction.muKinetic) << "safety " << safety;
+    EXPECT_NEAR(b.friction.peakTime, a.friction.peakTime, 0.01 * a.friction.peakTime) << "safety " << safety;
   }
 }

@@ -49,12 +49,12 @@ TEST(Plate, UniformPlateWithoutDispersionHasTheLocalCoefficients) {
   const double a = (p.plate.muStatic - p.plate.muKinetic) * fn / k;
   const double period = 2 * a / p.plate.velocity + (2 * M_PI - 2 * std::atan(a * omega / p.plate.velocity)) / omega;
   Request q = defaultRequest(p);
-  q.kineticDelay = 0.1 * period;
-  q.kineticWidth = 3 * period;
+  q.measurement.kineticDelay = 0.1 * period;
+  q.measurement.kineticWidth = 3 * period;
   const Result r = simulate(p, {}, q, {});
-  EXPECT_NEAR(r.muStatic, p.plate.muStatic, 0.005 * p.plate.muStatic);
-  EXPECT_NEAR(r.muKinetic, p.plate.muKinetic, 0.005 * p.plate.muKinetic);
-  EXPECT_TRUE(r.peakConfirmed);
+  EXPECT_NEAR(r.friction.muStatic, p.plate.muStatic, 0.005 * p.plate.muStatic);
+  EXPECT_NEAR(r.friction.muKinetic, p.plate.muKinetic, 0.005 * p.plate.muKinetic);
+  EXPECT_TRUE(r.friction.peakConfirmed);
 }
 
 TEST(Plate, DampingRaisesKineticFrictionOfTheUniformPlate) {
@@ -62,8 +62,8 @@ TEST(Plate, DampingRaisesKineticFrictionOfTheUniformPlate) {
   // undispersed plate is then above mu_k (documented; why mu_k depends on gamma).
   Parameters p = paperParameters(20, 0.0, {}, 0.1, 0.1);
   const Result r = simulate(p, {}, defaultRequest(p), {});
-  EXPECT_GT(r.muKinetic, p.plate.muKinetic * 1.01);
-  EXPECT_LT(r.muKinetic, p.plate.muStatic);
+  EXPECT_GT(r.friction.muKinetic, p.plate.muKinetic * 1.01);
+  EXPECT_LT(r.friction.muKinetic, p.plate.muStatic);
 }
 
 TEST(Plate, StaticFrictionFallsAsDispersionGrows) {
@@ -119,7 +119,7 @@ TEST(Plate, DetachmentStartsOnTheWeakSide) {
     const Grading g = linear(GradedProperty::Friction, 0.3);
     const Parameters p = paperParameters(nb, 0.028, g);
     q = defaultRequest(p);
-    q.kineticFriction = false;
+    q.measurement.kinetic = false;
     const Result r = simulate(p, g, q, {7, 0, 0});
     EXPECT_LT(meanFirstSlip(r, nb, 0, nb / 3), meanFirstSlip(r, nb, 2 * nb / 3, nb));
   }
@@ -141,9 +141,9 @@ TEST(Plate, ResultsDoNotDependOnDampingInTheUnderdampedRange) {
   for (double factor : {0.02, 0.05, 0.5}) {
     const Parameters p = paperParameters(30, 0.028, {}, 0.0, factor);
     const Result r = simulate(p, {}, defaultRequest(p), {11, 0, 0});
-    EXPECT_NEAR(r.muStatic, base.muStatic, 0.01 * base.muStatic) << "gamma factor " << factor;
+    EXPECT_NEAR(r.friction.muStatic, base.friction.muStatic, 0.01 * base.friction.muStatic) << "gamma factor " << factor;
     if (factor <= 0.1) {
-      EXPECT_NEAR(r.muKinetic, base.muKinetic, 0.02 * base.muKinetic) << "gamma factor " << factor;
+      EXPECT_NEAR(r.friction.muKinetic, base.friction.muKinetic, 0.02 * base.friction.muKinetic) << "gamma factor " << factor;
     }
   }
 }
@@ -155,16 +155,16 @@ TEST(Plate, StoppingAtThePeakGivesTheSameStaticFriction) {
   const Parameters p = paperParameters(30, 0.028, g);
   Request full = defaultRequest(p);
   Request peakOnly = full;
-  peakOnly.kineticFriction = false;
+  peakOnly.measurement.kinetic = false;
   const Result a = simulate(p, g, full, {5, 0, 0});
   const Result b = simulate(p, g, peakOnly, {5, 0, 0});
-  EXPECT_EQ(a.muStatic, b.muStatic);
-  EXPECT_EQ(a.peakTime, b.peakTime);
+  EXPECT_EQ(a.friction.muStatic, b.friction.muStatic);
+  EXPECT_EQ(a.friction.peakTime, b.friction.peakTime);
   EXPECT_LT(b.steps, a.steps);
   // The confirmed peak is the maximum of the whole history.
-  EXPECT_EQ(*std::max_element(a.mu.begin(), a.mu.end()), a.muStatic);
-  EXPECT_TRUE(std::isfinite(a.muKinetic));
-  EXPECT_TRUE(std::isnan(b.muKinetic));
+  EXPECT_EQ(*std::max_element(a.friction.mu.begin(), a.friction.mu.end()), a.friction.muStatic);
+  EXPECT_TRUE(std::isfinite(a.friction.muKinetic));
+  EXPECT_TRUE(std::isnan(b.friction.muKinetic));
 }
 
 TEST(Plate, PeakTimeFollowsTheLoadingEstimate) {
@@ -172,7 +172,7 @@ TEST(Plate, PeakTimeFollowsTheLoadingEstimate) {
   // t = mu_s p l_z / (G v), the SBM counterpart of the paper's Eq. 2.
   const Parameters p = paperParameters(20, 0.0);
   const Result r = simulate(p, {}, defaultRequest(p), {});
-  EXPECT_NEAR(r.peakTime, p.loadingTime(), 2 * p.timeStep);
+  EXPECT_NEAR(r.friction.peakTime, p.loadingTime(), 2 * p.timeStep);
 }
 
 TEST(Plate, SlidingAtNinetyDegreesIsTheSameProblemRotated) {
@@ -183,8 +183,8 @@ TEST(Plate, SlidingAtNinetyDegreesIsTheSameProblemRotated) {
   const Result x = simulate(p, {}, q, {});
   p.plate.slidingAngle = 90.0;
   const Result y = simulate(p, {}, q, {});
-  ASSERT_EQ(x.mu.size(), y.mu.size());
-  for (std::size_t i = 0; i < x.mu.size(); ++i) EXPECT_NEAR(x.mu[i], y.mu[i], 1e-12) << i;
+  ASSERT_EQ(x.friction.mu.size(), y.friction.mu.size());
+  for (std::size_t i = 0; i < x.friction.mu.size(); ++i) EXPECT_NEAR(x.friction.mu[i], y.friction.mu[i], 1e-12) << i;
 }
 
 TEST(Plate, StressSnapshotsAtTheRequestedTimesOnly) {

@@ -1,9 +1,14 @@
 #pragma once
-// Numbers in messages and records: %.10g (PETSc-free, part of the core).
+// Numbers in messages and option records: 10 significant digits, no PETSc.
+#include <cstdio>
 #include <string>
 
 namespace gradfric {
 
-std::string formatReal(double value);
+inline std::string formatReal(double value) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%.10g", value);
+  return buffer;
+}
 
 }  // namespace gradfric

@@ -25,7 +25,7 @@ struct FemParameters {
   double stiffnessDamping = 0;
   // Time stepping
   double dt = 0;            // 0: safety * stable step
-  double dtSafety = 0.6;  // issue 5 (docs/accuracy_fem.md): 0.9 gave 1 % mu_s error on the paper mesh and instability with stiffer penalties
+  double dtSafety = 0.6;  // docs/accuracy_fem.md: 0.9 gave 1 % mu_s error on the paper mesh and instability with stiffer penalties
   bool dtCheck = true;  // false (testing only): a dt above the stable step is accepted, to test the monitor
   // Blow-up monitor: non-finite mu(t) or normal force any step; every monitorEvery steps, a
   // non-finite state or kinetic + elastic energy above monitorFactor x (energy put in + reference).

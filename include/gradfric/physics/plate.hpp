@@ -21,7 +21,7 @@ struct Plate {
   double shearModulus(double modulus) const { return modulus / (2.0 * (1.0 + poissonRatio)); }
   double shearModulus() const { return shearModulus(youngsModulus); }
   double area() const { return length * length; }
-  double normalForce() const { return pressure * area(); }  // p L^2 [N]
+  double normalForce() const { return pressure * length * length; }  // p L^2 [N] (this order: bitwise as before)
   double angleRadians() const { return slidingAngle * M_PI / 180.0; }
   // Paper Eq. 2: the time for the shear of a layer of height h to reach mu_s p,
   // Delta t_s = mu_s p h / (G v). h = H for the FEM, the lattice's l_z for the SBM.

@@ -3,11 +3,11 @@
 // stream, integrate, and return the observables asked for. No MPI, no PETSc inside (the core
 // library): the ensemble layer spreads realisations over ranks.
 #include "gradfric/core/random_stream.hpp"
+#include "gradfric/physics/friction_history.hpp"
 #include "gradfric/physics/grading.hpp"
 #include "gradfric/sbm/parameters.hpp"
 
 #include <cstdint>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -19,12 +19,7 @@ struct StressSnapshot {
 };
 
 struct Result {
-  double muStatic = 0.0;   // maximum of mu(t) at the static-to-dynamic transition
-  double muKinetic = 0.0;  // mean of mu(t) over the kinetic window (NaN if not requested)
-  double peakTime = 0.0;   // time of the maximum [s]
-  bool peakConfirmed = false;  // false: stopped at maxTime before the peak was confirmed
-  std::vector<double> time;  // mu(t) history, sampled every Request::historyInterval
-  std::vector<double> mu;
+  FrictionSummary friction;  // mu(t) history (with F_x, F_y), mu_s, peak time, mu_k, first slip: the shared observer's
   std::vector<double> firstSlipTime;  // N_b x N_b as above; NaN where a block never slipped; empty if not asked
   std::vector<StressSnapshot> snapshots;
   std::int64_t steps = 0;
@@ -37,13 +32,9 @@ struct Result {
   double maxLocalStatic = 0.0;  // the largest local mu_s,i: mu(t) stays below it (checked)
 };
 
-// Thrown by simulate() when the run blows up (a non-finite mu(t), or kinetic plus elastic energy
-// above the work the slider has done): the message names the quantity, the time and the likely
-// cause. Checked every step (mu) and every Request::energyCheckInterval steps (energy).
-class NumericalInstability : public std::runtime_error {
-public:
-  using std::runtime_error::runtime_error;
-};
+// simulate() throws gradfric::NumericalInstability (physics/stability.hpp) when the run blows up:
+// a non-finite mu(t) or one above twice the largest local mu_s (checked every step), or kinetic plus
+// elastic energy above the work the slider has done (every Request::energyCheckInterval steps).
 
 // Fast: the production kernel. Reference: the plain kernel the tests compare against.
 enum class Kernel { Fast, Reference };

@@ -1,7 +1,8 @@
 #pragma once
-// Parameters of the 2D spring-block model (paper, "2D spring-block model"; shared/notes/model.md).
+// Parameters of the 2D spring-block model (paper, "2D spring-block model"; docs/model.md).
 // SI units throughout. All are PETSc options with the -sbm_ prefix, read by parameter_options.hpp;
 // this header and its pure functions are part of the PETSc-free core.
+#include "gradfric/physics/friction_history.hpp"
 #include "gradfric/physics/friction_laws_settings.hpp"
 #include "gradfric/physics/grading.hpp"
 #include "gradfric/physics/plate.hpp"
@@ -48,20 +49,14 @@ struct Parameters {
   double loadingTime() const { return plate.loadingTime(layerThickness); }
 };
 
-// What a run must determine; it stops as soon as these are known.
+// What a run must determine (the shared friction measurement) and the spring-block run's own
+// limits; it stops as soon as the observables are known.
 struct Request {
-  bool staticFriction = true;   // mu_s (always needed for the others: they are timed from the peak)
-  bool kineticFriction = true;  // mu_k over the window after the peak
-  bool firstSlipMap = true;     // first-slip time of every block
+  FrictionMeasurement measurement;    // -friction_ options: peak rule, kinetic window, history sampling
   std::vector<double> snapshotTimes;  // sigma_x/p maps at these times [s]
-  double historyInterval = 0.0;       // sampling of mu(t) [s]; 0 = every step
-  double kineticDelay = 0.0;          // window start after the peak [s]
-  double kineticWidth = 0.0;          // window width [s]
-  double peakDrop = 0.01;             // relative fall below the maximum that confirms the peak
-  double peakHold = 0.0;              // or this long without a new maximum once all blocks slid [s]
   double endTime = 0.0;               // if > 0: run exactly this long, whatever is known
   double maxTime = 0.0;               // give up (peak unconfirmed) after this long [s]
-  int energyCheckInterval = 500;     // steps between two energy-balance checks (and at the end)
+  int energyCheckInterval = 500;      // steps between two energy-balance checks (and at the end)
 };
 
 // The largest step that is stable for this lattice with the parameters' integrator (stiffest

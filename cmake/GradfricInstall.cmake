@@ -1,0 +1,26 @@
+# `cmake --install build [--prefix P]`: the drivers into P/bin, the scenes, plotting scripts and
+# slurm scripts into P/share/gradfric, the documentation into P/share/doc/gradfric (optional).
+# The library is linked statically into the drivers and is not installed.
+include(GNUInstallDirs)
+option(GRADFRIC_INSTALL_DOCS "Install README.md and docs/ into share/doc/gradfric" ON)
+
+foreach(driver gradfric_driver gradfric_fem_driver gradfric_study_driver)
+  if(TARGET ${driver})
+    install(TARGETS ${driver} RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+  endif()
+endforeach()
+
+set(GRADFRIC_INSTALL_DATADIR ${CMAKE_INSTALL_DATADIR}/gradfric)
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/input/ DESTINATION ${GRADFRIC_INSTALL_DATADIR}/input
+        FILES_MATCHING PATTERN "*.opts" PATTERN "*.yaml")
+# The plotting scripts work on any results file; scripts/setup.sh, run-*.sh and
+# reproduce_paper.sh drive a source tree and stay there.
+install(PROGRAMS ${PROJECT_SOURCE_DIR}/scripts/gradfric_plot.py ${PROJECT_SOURCE_DIR}/scripts/plot_accuracy.py
+        DESTINATION ${GRADFRIC_INSTALL_DATADIR}/scripts)
+install(PROGRAMS ${PROJECT_SOURCE_DIR}/slurm/sbm_ensemble.sbatch ${PROJECT_SOURCE_DIR}/slurm/submit_chain.sh
+        DESTINATION ${GRADFRIC_INSTALL_DATADIR}/slurm)
+
+if(GRADFRIC_INSTALL_DOCS)
+  install(FILES ${PROJECT_SOURCE_DIR}/README.md DESTINATION ${CMAKE_INSTALL_DOCDIR})
+  install(DIRECTORY ${PROJECT_SOURCE_DIR}/docs/ DESTINATION ${CMAKE_INSTALL_DOCDIR}/docs)
+endif()

@@ -1,0 +1,64 @@
+#pragma once
+// One way to measure friction, for both models: an observer of the global friction history
+// mu(t) = |F(t)| / (p L^2), fed once per time step. It finds the static peak and confirms it,
+// averages the kinetic window after it, notes the first slip, keeps the sampled history and says
+// when the observables asked for are known (a run then stops). PETSc-free.
+#include <cstddef>
+#include <limits>
+#include <vector>
+
+namespace gradfric {
+
+// What to measure and the rules that decide it (the -friction_ options, friction_options.hpp).
+struct FrictionMeasurement {
+  bool kinetic = true;           // mu_k over the window after the peak (else: stop at the confirmed peak)
+  bool firstSlipMap = true;      // per-site first-slip times (the models record them; SBM map, FEM nodes)
+  double peakDrop = 0.01;        // the peak is confirmed once mu(t) fell this fraction below it ...
+  double peakHold = 0.0;         // ... or has not been exceeded for this long [s], once every site slipped
+  double kineticDelay = 0.0;     // the kinetic window starts this long after the peak [s]
+  double kineticWidth = 0.0;     // and lasts this long [s]
+  double historyInterval = 0.0;  // sampling of the stored history [s]; 0: every observation
+};
+
+struct FrictionSummary {
+  static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+  double muStatic = kNaN;        // the maximum of mu(t) (the static peak once confirmed)
+  double peakTime = kNaN;        // its time [s]
+  bool peakConfirmed = false;    // false: the run ended before the rule confirmed the peak
+  double muKinetic = kNaN;       // mean of mu(t) over the kinetic window; NaN if not asked or incomplete
+  bool kineticComplete = false;  // the window was observed to its end
+  double firstSlipTime = kNaN;   // first observation at which some site had slipped [s]
+  // The sampled history: time [s], mu, and the tangential force components [N].
+  std::vector<double> time, mu, forceX, forceY;
+};
+
+class FrictionHistory {
+public:
+  // normalForce: p L^2 [N]; timeStep: the models' fixed step [s] (the window's end tolerance).
+  FrictionHistory(const FrictionMeasurement& measurement, double normalForce, double timeStep);
+
+  // One observation per step, at increasing times t: the total tangential force (fx, fy) [N];
+  // anySlipped: some site has slipped by now; allSlipped: every site has (the detachment front
+  // crossed the plate: only then can the peak be confirmed). Returns mu(t).
+  double observe(double t, double fx, double fy, bool anySlipped, bool allSlipped);
+
+  bool peakConfirmed() const { return confirmed_; }
+  double peak() const { return maximum_; }
+  double peakTime() const { return peakTime_; }
+  // Everything asked for is determined: the peak is confirmed and the kinetic window (if asked
+  // for) has been observed to its end.
+  bool known() const;
+  FrictionSummary summary() const;
+
+private:
+  FrictionMeasurement rule_;
+  double normalForce_, timeStep_;
+  double maximum_ = -1.0, peakTime_ = 0.0, lastTime_ = 0.0, firstSlip_ = FrictionSummary::kNaN;
+  bool confirmed_ = false, observed_ = false;
+  double nextSample_ = 0.0;
+  // Observations since the current maximum (the kinetic window lies after it).
+  std::vector<double> sinceTime_, sinceMu_;
+  FrictionSummary history_;
+};
+
+}  // namespace gradfric

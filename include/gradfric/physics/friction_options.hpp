@@ -1,0 +1,13 @@
+#pragma once
+// The -friction_ options: how both models measure friction (friction_history.hpp).
+#include "gradfric/core/options.hpp"
+#include "gradfric/physics/friction_history.hpp"
+
+namespace gradfric {
+
+// loadingTime: the model's time to load the uniform plate to its static threshold (paper Eq. 2;
+// the SBM with its l_z, the FEM with H), the scale of the derived defaults. The names the models
+// used before (-sbm_peak_drop, -fem_kinetic_window_start, ...) are refused with the new spelling.
+FrictionMeasurement readFrictionMeasurement(MPI_Comm comm, RunParameters* record, double loadingTime);
+
+}  // namespace gradfric
