@@ -2,7 +2,7 @@
 //
 //   mpiexec -n 2 gradfric -options_file input/default.opts [-sbm_N 60 ...] [-help]
 //
-// -model sbm (default) runs the spring-block scene: every (sweep point, realisation) task spread
+// -model sbm (the default and only choice; the FEM is gradfric-fem) runs the spring-block scene: every (sweep point, realisation) task spread
 // over the ranks, results in one HDF5 file (-output). -help lists every option with its default
 // and unit. See README.md.
 #include "gradfric/core/driver.hpp"
@@ -38,6 +38,8 @@ void plotResults(MPI_Comm comm, const gradfric::RunParameters& record, const std
 int main(int argc, char** argv) {
   return gradfric::runDriver(argc, argv, help, [](MPI_Comm comm) {
     gradfric::RunParameters record;
+    gradfric::OptionReader model(comm, "", "Model", &record);
+    model.choice("model", "sbm", {"sbm"}, "the spring-block model (the finite-element model is the gradfric-fem driver)");
     gradfric::OptionReader options(comm, "", "Plots", &record);
     const bool plot = options.flag("plot", false, "draw the results (mu(t), relative variation, maps) as PNG when the run completes");
     const std::string folder = options.text("plot_dir", "", "folder of the figures (default: beside the results file)");

@@ -35,7 +35,7 @@ int main(int argc, char** argv) {
     OptionReader driverOptions(comm, "fem_", "gradfric-fem: both models", &record);
     const bool compare = driverOptions.flag(
         "compare_sbm", false, "also run one spring-block realisation (-sbm_ options) on the same grading, side by side");
-    const PetscInt seed = driverOptions.integer("compare_seed", 1, "1", "random stream of that SBM realisation");
+    const PetscInt seed = driverOptions.integer("compare_seed", 1, 0, PETSC_MAX_INT, "1", "random stream of that SBM realisation");
     driverOptions.requireAtLeast("compare_seed", seed, 0);
     sbm::Parameters sbmParams;
     sbm::Request sbmRequest;
@@ -48,7 +48,7 @@ int main(int argc, char** argv) {
       checkUnusedOptions(comm, {"plate_", "friction_", "fem_", "grading_", "sbm_"});
     else
       checkUnusedOptions(comm, {"plate_", "fem_", "grading_"});
-    chooseTimeStep(params, grading);    // refuses a dt above the stable step before any work
+    requireFemRunLength(params, grading, &record);  // refuses a dt above the stable step, an endless run
     OutputFiles output(comm, params);  // refuses an existing file before any work
     PlateModel model(comm, params, grading);
     record.add({"-fem_dt (used)", formatReal(model.timeStep()), "s", "time step", OptionOrigin::Derived});

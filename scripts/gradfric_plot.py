@@ -15,7 +15,7 @@ RESULTS.h5 is a spring-block ensemble file (gradfric) or a finite-element histor
   <name>_detachment.gif     animation of the sigma_x/p snapshots (the Supporting Information videos)
 
 FEM history files given with --fem are added to the mu(t) and variation plots (their Delta is
-read from their /parameters). Needs Debian's python3-h5py, python3-matplotlib (and python3-pil
+read from their /scene). Needs Debian's python3-h5py, python3-matplotlib (and python3-pil
 for the animation), installed by scripts/setup.sh.
 """
 import argparse
@@ -102,7 +102,10 @@ class FemHistory:
         self.time = f["history/time"][:]
         self.mu = f["history/mu"][:]
         self.results = {k: float(v) for k, v in f["results"].attrs.items() if np.ndim(v) == 0 and not isinstance(v, bytes)}
-        self.parameters = {k: text(v).split(" ")[0] for k, v in f["parameters"].attrs.items()} if "parameters" in f else {}
+        if "scene" in f:  # format 2: the option record, values as text
+            self.parameters = {k: text(v) for k, v in f["scene"].attrs.items()}
+        else:  # format 1: "value [unit] (origin)"
+            self.parameters = {k: text(v).split(" ")[0] for k, v in f["parameters"].attrs.items()} if "parameters" in f else {}
         self.delta = float(self.parameters.get("grading_delta", self.parameters.get("-grading_delta", 0.0)))
         self.profile = self.parameters.get("grading_profile", self.parameters.get("-grading_profile", "none"))
         if self.profile == "none":

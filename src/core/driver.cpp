@@ -1,37 +1,38 @@
 #include "gradfric/core/driver.hpp"
 
+#include "gradfric/core/command_line.hpp"
 #include "gradfric/core/input_error.hpp"
 #include "gradfric/core/petsc_call.hpp"
+#include "gradfric/version.hpp"
 
 #include <petscsys.h>
 
 #include <cstdio>
-#include <cstring>
-#include <fstream>
 #include <string>
 
 namespace gradfric {
 
 namespace {
 
-// PETSc would abort with a traceback on a missing -options_file; say it plainly instead.
-bool sceneFilesExist(int argc, char** argv) {
-  for (int i = 1; i + 1 < argc; ++i) {
-    if (std::strcmp(argv[i], "-options_file") == 0 || std::strcmp(argv[i], "-options_file_yaml") == 0) {
-      if (!std::ifstream(argv[i + 1]).good()) {
-        std::fprintf(stderr, "gradfric: error: invalid option %s = %s: allowed a readable scene file (not found)\n",
-                     argv[i], argv[i + 1]);
-        return false;
-      }
-    }
+// Every rank checks the same files and reaches the same verdict; the lowest rank that found a
+// problem prints it (one line in all), and every rank returns 2 together: no rank waits alone.
+bool optionFilesAreSound(MPI_Comm comm, int argc, char** argv) {
+  int rank = 0, size = 1;
+  MPI_Comm_rank(comm, &rank);
+  MPI_Comm_size(comm, &size);
+  const std::string problem = checkOptionFiles(argc, argv);
+  int reporter = problem.empty() ? size : rank;
+  int firstReporter = size;
+  MPI_Allreduce(&reporter, &firstReporter, 1, MPI_INT, MPI_MIN, comm);
+  if (firstReporter == rank) {
+    std::fprintf(stderr, "gradfric: error: %s\n", problem.c_str());
+    std::fflush(stderr);
   }
-  return true;
+  return firstReporter == size;
 }
 
-}  // namespace
-
-int runDriver(int argc, char** argv, const char* help, const std::function<void(MPI_Comm)>& body) {
-  if (!sceneFilesExist(argc, argv)) return 2;
+// Runs the body with PETSc; returns the exit code.
+int runWithPetsc(int argc, char** argv, const char* help, const std::function<void(MPI_Comm)>& body) {
   if (PetscInitialize(&argc, &argv, nullptr, help)) return 3;
   // PETSc errors come back as codes; GF_CALL turns them into exceptions with PETSc's message.
   PetscPushErrorHandler(PetscReturnErrorHandler, nullptr);
@@ -55,6 +56,27 @@ int runDriver(int argc, char** argv, const char* help, const std::function<void(
     MPI_Abort(comm, 1);
   }
   PetscFinalize();
+  return status;
+}
+
+}  // namespace
+
+// MPI starts before PETSc so that the command line (--names, -version, the options files) is
+// settled on every rank before PETSc reads it; PETSc then leaves MPI to us to finalise.
+int runDriver(int argc, char** argv, const char* help, const std::function<void(MPI_Comm)>& body) {
+  normaliseArguments(argc, argv);
+  MPI_Init(&argc, &argv);
+  int rank = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  int status = 0;
+  if (versionRequested(argc, argv)) {
+    if (rank == 0) std::printf("gradfric %s (commit %s)\n", kVersion, kCommit);
+  } else if (!optionFilesAreSound(MPI_COMM_WORLD, argc, argv)) {
+    status = 2;
+  } else {
+    status = runWithPetsc(argc, argv, help, body);
+  }
+  MPI_Finalize();
   return status;
 }
 

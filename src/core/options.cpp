@@ -1,9 +1,14 @@
 #include "gradfric/core/options.hpp"
 
 #include "gradfric/core/input_error.hpp"
+#include "gradfric/core/near_miss.hpp"
 #include "gradfric/core/petsc_call.hpp"
 
 #include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cfloat>
+#include <set>
 #include <cstdio>
 #include <cstdlib>
 #include <sstream>
@@ -44,7 +49,26 @@ std::vector<std::string> splitList(const std::string& text) {
   return items;
 }
 
+std::set<std::string>& knownNames() {
+  static std::set<std::string> names;
+  return names;
+}
+
+// strtod with every way of going wrong refused: junk, inf, nan, overflow, and a non-zero value
+// below the smallest normal double (1e-320 would silently lose its digits).
+bool parseFiniteReal(const std::string& text, double* value) {
+  char* end = nullptr;
+  errno = 0;
+  *value = std::strtod(text.c_str(), &end);
+  if (end == text.c_str() || *end != '\0' || errno == ERANGE) return false;
+  return std::isfinite(*value);
+}
+
+const char* kRealAllowed = "a finite real number (|x| <= 1.8e308; 0 or |x| >= 2.3e-308)";
+
 }  // namespace
+
+std::vector<std::string> knownOptionNames() { return {knownNames().begin(), knownNames().end()}; }
 
 void RunParameters::add(ResolvedOption option) {
   for (auto& existing : options_)
@@ -84,18 +108,23 @@ bool helpRequested() {
 void OptionReader::printHelp(const std::string& name, const std::string& current, const std::string& unit,
                              const std::string& help) {
   if (!help_) return;
-  if (!titlePrinted_) {
-    GF_CALL(PetscPrintf(comm_, "%s (-%s):\n", title_.c_str(), prefix_.c_str()));
-    titlePrinted_ = true;
-  }
+  // Several readers may share a section (the SBM's parameters and its request): its title is
+  // printed once, unless another section came in between.
+  static std::string lastSection;
+  const std::string section = prefix_.empty() ? title_ : title_ + " (-" + prefix_ + ")";
+  if (!titlePrinted_ && section != lastSection) GF_CALL(PetscPrintf(comm_, "%s:\n", section.c_str()));
+  titlePrinted_ = true;
+  lastSection = section;
   std::string unitText = unit.empty() ? "" : " [" + unit + "]";
   GF_CALL(PetscPrintf(comm_, "  %s <%s>%s: %s\n", fullName(name).c_str(), current.c_str(), unitText.c_str(),
                       help.c_str()));
 }
 
 void OptionReader::store(const std::string& name, const std::string& value, const std::string& unit,
-                         const std::string& help, bool userSet) {
-  if (record_) record_->add({fullName(name), value, unit, help, userSet ? OptionOrigin::User : OptionOrigin::Default});
+                         const std::string& help, bool userSet, const std::string& fallback) {
+  knownNames().insert(fullName(name));
+  if (record_)
+    record_->add({fullName(name), value, unit, help, userSet ? OptionOrigin::User : OptionOrigin::Default, fallback});
 }
 
 bool OptionReader::wasSet(const std::string& name) const {
@@ -111,19 +140,17 @@ double OptionReader::real(const std::string& name, double fallback, const std::s
   // Read as text first so that a malformed number is reported by us, with the option's name.
   char raw[256] = "";
   GF_CALL(PetscOptionsGetString(nullptr, prefix_.c_str(), option.c_str(), raw, sizeof raw, &set));
-  if (set) {
-    char* end = nullptr;
-    value = std::strtod(raw, &end);
-    if (end == raw || *end != '\0') throw InputError(fullName(name), raw, "a real number [" + unit + "]");
-  }
+  if (set && !parseFiniteReal(raw, &value))
+    throw InputError(fullName(name), raw, std::string(kRealAllowed) + (unit.empty() ? "" : " [" + unit + "]"));
   printHelp(name, formatReal(value), unit, help);
-  store(name, formatReal(value), unit, help, set);
+  store(name, formatReal(value), unit, help, set, formatReal(fallback));
   return value;
 }
 
 std::optional<double> OptionReader::realIfSet(const std::string& name, const std::string& unit,
                                               const std::string& help, const std::string& defaultText) {
   if (!wasSet(name)) {
+    knownNames().insert(fullName(name));
     printHelp(name, defaultText, unit, help);
     return std::nullopt;
   }
@@ -135,19 +162,22 @@ void OptionReader::recordDerived(const std::string& name, double value, const st
   if (record_) record_->add({fullName(name), formatReal(value), unit, help, OptionOrigin::Derived});
 }
 
-PetscInt OptionReader::integer(const std::string& name, PetscInt fallback, const std::string& unit,
-                               const std::string& help) {
+PetscInt OptionReader::integer(const std::string& name, PetscInt fallback, PetscInt lo, PetscInt hi,
+                               const std::string& unit, const std::string& help) {
   PetscInt value = fallback;
   PetscBool set = PETSC_FALSE;
   char raw[256] = "";
   GF_CALL(PetscOptionsGetString(nullptr, prefix_.c_str(), ("-" + name).c_str(), raw, sizeof raw, &set));
+  const std::string range = std::to_string(lo) + " <= " + name + " <= " + std::to_string(hi);
   if (set) {
     char* end = nullptr;
-    long parsed = std::strtol(raw, &end, 10);
-    if (end == raw || *end != '\0') throw InputError(fullName(name), raw, "an integer");
+    errno = 0;
+    const long long parsed = std::strtoll(raw, &end, 10);
+    if (end == raw || *end != '\0') throw InputError(fullName(name), raw, "an integer, " + range);
+    if (errno == ERANGE || parsed < lo || parsed > hi) throw InputError(fullName(name), raw, range);
     value = static_cast<PetscInt>(parsed);
   }
-  printHelp(name, std::to_string(value), unit, help);
+  printHelp(name, std::to_string(value), unit, help + " (" + range + ")");
   store(name, std::to_string(value), unit, help, set);
   return value;
 }
@@ -195,10 +225,10 @@ std::vector<double> OptionReader::realList(const std::string& name, const std::v
   if (set) {
     values.clear();
     for (const auto& item : splitList(raw)) {
-      char* end = nullptr;
-      double v = std::strtod(item.c_str(), &end);
-      if (end == item.c_str() || *end != '\0')
-        throw InputError(fullName(name), raw, "a comma-separated list of real numbers [" + unit + "]");
+      double v = 0;
+      if (!parseFiniteReal(item, &v))
+        throw InputError(fullName(name), raw,
+                         "a comma-separated list of finite real numbers [" + unit + "] (" + item + " is not one)");
       values.push_back(v);
     }
   }
@@ -244,13 +274,16 @@ void checkUnusedOptions(MPI_Comm comm, const std::vector<std::string>& strictPre
   char** names = nullptr;
   char** values = nullptr;
   GF_CALL(PetscOptionsLeftGet(nullptr, &count, &names, &values));
+  const std::vector<std::string> known = knownOptionNames();
   std::string refused;
   for (PetscInt i = 0; i < count; ++i) {
-    std::string name = names[i];
+    const std::string name = names[i];
     bool strict = false;
     for (const auto& prefix : strictPrefixes) strict = strict || name.rfind(prefix, 0) == 0;
-    if (strict) {
-      refused += (refused.empty() ? "-" : ", -") + name;
+    // "--sbm_N" reaches PETSc as the option "-sbm_N" (a name with a dash): one edit from sbm_N.
+    const std::string suggestion = isPetscOptionName(name) ? "" : nearMiss("-" + name, known);
+    if (strict || !suggestion.empty()) {
+      refused += (refused.empty() ? "-" : ", -") + name + (suggestion.empty() ? "" : " (did you mean " + suggestion + "?)");
     } else if (name != "help" && name != "options_left") {
       PetscPrintf(comm, "WARNING: option -%s was given but nothing in this run uses it\n", names[i]);
     }

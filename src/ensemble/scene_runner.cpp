@@ -11,6 +11,7 @@
 #include "gradfric/io/results_file.hpp"
 #include "gradfric/physics/grading_options.hpp"
 #include "gradfric/physics/plate_options.hpp"
+#include "gradfric/sbm/lattice.hpp"
 #include "gradfric/sbm/model.hpp"
 #include "gradfric/sbm/parameter_options.hpp"
 #include "gradfric/sbm/parameters.hpp"
@@ -237,8 +238,8 @@ void runSpringBlockScene(MPI_Comm comm, RunParameters* record) {
   const Grading baseGrading = readGrading(comm, record);
   OptionReader ens(comm, "ensemble_", "Ensemble of spring-block realisations", record);
   const PetscInt realisations =
-      ens.integer("realisations", 1, "1", "realisations R per sweep point (new local friction draws each)");
-  const PetscInt seed = ens.integer("seed", 1, "1", "scene seed: a task's random stream is (seed, point, realisation)");
+      ens.integer("realisations", 1, 1, 10000000, "1", "realisations R per sweep point (new local friction draws each)");
+  const PetscInt seed = ens.integer("seed", 1, 0, PETSC_MAX_INT, "1", "scene seed: a task's random stream is (seed, point, realisation)");
   SweepLists lists;
   lists.delta = ens.realList("delta", {}, "1", "sweep of the grading amplitude Delta (empty: -grading_delta alone)");
   lists.theta = ens.realList("theta", {}, "degree", "sweep of the sliding angle (empty: -sbm_theta alone)");
@@ -253,6 +254,9 @@ void runSpringBlockScene(MPI_Comm comm, RunParameters* record) {
       "common random numbers: realisation r of every sweep point draws from the stream (seed, 0, r); the "
       "relative variations then use paired errors");
   const bool history = ens.flag("history", true, "store the mu(t) history of every realisation");
+  const bool frictionFields = ens.flag(
+      "friction_fields", false,
+      "store every realisation's local mu_s,i and mu_k,i (2 N_b^2 values a task; they follow from the seed anyway)");
   int interactive = rank == 0 ? isatty(STDOUT_FILENO) : 0;
   GF_CALL_MPI(MPI_Bcast(&interactive, 1, MPI_INT, 0, comm));
   const bool monitor =
@@ -262,7 +266,7 @@ void runSpringBlockScene(MPI_Comm comm, RunParameters* record) {
                                               "task distribution: shared counter (one-sided MPI) or round robin");
   const bool dryRun = ens.flag("dry_run", false, "check the scene and print the plan, run nothing, write nothing");
   const PetscInt abortAfter = ens.integer(
-      "abort_after", 0, "1",
+      "abort_after", 0, 0, PETSC_MAX_INT, "1",
       "testing only: every rank exits abruptly (no close, no finalize) once this many tasks finished (0: never)");
   OptionReader out(comm, "", "Results file", record);
   const std::string output = out.text("output", "gradfric_sbm.h5", "results file (parallel HDF5; see docs/ensemble.md)");
@@ -323,6 +327,7 @@ void runSpringBlockScene(MPI_Comm comm, RunParameters* record) {
   layout.historyCapacity = history ? historyCapacity(parameters, request) : 0;
   layout.mapSide = parameters.blocksPerSide;
   layout.firstSlipMap = request.measurement.firstSlipMap;
+  layout.frictionFields = frictionFields;
   layout.snapshotTimes = request.snapshotTimes;
   layout.statisticsReal = {"mu_s_mean",      "mu_s_std",     "mu_s_stderr",         "mu_s_ci95_low",
                            "mu_s_ci95_high", "mu_s_relative", "mu_s_relative_error", "mu_k_mean",
@@ -331,8 +336,9 @@ void runSpringBlockScene(MPI_Comm comm, RunParameters* record) {
   layout.statisticsInteger = {"finished", "mu_s_count", "mu_k_count", "peaks_unconfirmed"};
   {
     const double bytes = static_cast<double>(P) * R *
-                         (2.0 * layout.historyCapacity +
+                         (4.0 * layout.historyCapacity +  // time, mu, force_x, force_y
                           (layout.firstSlipMap ? 1.0 : 0.0) * layout.mapSide * layout.mapSide +
+                          (layout.frictionFields ? 2.0 : 0.0) * layout.mapSide * layout.mapSide +
                           request.snapshotTimes.size() * (1.0 + layout.mapSide * layout.mapSide)) *
                          8.0;
     if (bytes > 64e9)
@@ -352,6 +358,12 @@ void runSpringBlockScene(MPI_Comm comm, RunParameters* record) {
     table.profile.push_back(q.profile);
   }
   table.referencePoint = sweep.reference;
+  for (const auto& q : sweep.points) {  // the property fields each point uses (results file /properties)
+    const sbm::ColumnProperties c = sbm::columnProperties(parameters, gradingOf(q, baseGrading.bands));
+    table.modulus.insert(table.modulus.end(), c.modulus.begin(), c.modulus.end());
+    table.muStatic.insert(table.muStatic.end(), c.muStatic.begin(), c.muStatic.end());
+    table.muKinetic.insert(table.muKinetic.end(), c.muKinetic.begin(), c.muKinetic.end());
+  }
 
   std::vector<io::Attribute> scene, runAttributes;
   for (const auto& o : record->all()) {
@@ -442,7 +454,7 @@ void runSpringBlockScene(MPI_Comm comm, RunParameters* record) {
     }
     const auto& l = f.layout();
     if (l.points != P || l.realisations != R || l.historyCapacity != layout.historyCapacity ||
-        l.mapSide != layout.mapSide || l.firstSlipMap != layout.firstSlipMap ||
+        l.mapSide != layout.mapSide || l.firstSlipMap != layout.firstSlipMap || l.frictionFields != layout.frictionFields ||
         l.snapshotTimes.size() != layout.snapshotTimes.size())
       differences += "\n  layout (points, realisations, history capacity or maps)";
     if (!differences.empty())
@@ -450,8 +462,8 @@ void runSpringBlockScene(MPI_Comm comm, RunParameters* record) {
                        " (run that scene, or start again with -output_overwrite):" + differences);
     return f;
   }();
-  runAttributes.push_back({"ranks", std::to_string(size), "", ""});
   file.setRunAttributes(runAttributes);
+  file.setProvenance(io::collectProvenance(comm));  // version, command line, options files, date, ranks
 
   std::vector<unsigned char> finished;
   {
@@ -516,8 +528,21 @@ void runSpringBlockScene(MPI_Comm comm, RunParameters* record) {
         if (history) {
           o.time = std::move(result.friction.time);
           o.mu = std::move(result.friction.mu);
+          o.forceX = std::move(result.friction.forceX);
+          o.forceY = std::move(result.friction.forceY);
         }
         o.firstSlipTime = std::move(result.firstSlipTime);
+        if (frictionFields) {  // the same draw as the run's (a pure function of the stream key)
+          const auto& q = pointParameters[task.point];
+          const sbm::FrictionField field = sbm::buildFriction(q, pointGrading[task.point], key);
+          const int nb = q.blocksPerSide;
+          const double normal = q.normalForcePerBlock();
+          for (int row = 0; row < nb; ++row)
+            for (int column = 0; column < nb; ++column) {
+              o.localStatic.push_back(field.staticAt(row, column) / normal);
+              o.localKinetic.push_back(field.kineticAt(row, column) / normal);
+            }
+        }
         for (auto& s : result.snapshots) {
           o.snapshotTime.push_back(s.time);
           o.snapshots.push_back(std::move(s.sigmaXOverP));

@@ -2,6 +2,8 @@
 
 #include "gradfric/core/input_error.hpp"
 #include "gradfric/core/petsc_call.hpp"
+#include "gradfric/fem/xdmf.hpp"
+#include "gradfric/io/hdf5_attributes.hpp"
 
 #include <hdf5.h>
 #include <petscdmplex.h>
@@ -12,6 +14,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <limits>
 #include <stdexcept>
 
 namespace gradfric::fem {
@@ -27,39 +30,6 @@ std::string stem(const std::string& path) {
   return path.substr(0, dot);
 }
 
-void h5check(herr_t status, const char* what) {
-  if (status < 0) throw std::runtime_error(std::string("HDF5 error: ") + what);
-}
-
-void writeDataset(hid_t group, const char* name, const std::vector<double>& data) {
-  hsize_t n = data.size();
-  hid_t space = H5Screate_simple(1, &n, nullptr);
-  hid_t set = H5Dcreate2(group, name, H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-  if (set < 0) throw std::runtime_error(std::string("HDF5: cannot create dataset ") + name);
-  if (n) h5check(H5Dwrite(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()), name);
-  H5Dclose(set);
-  H5Sclose(space);
-}
-
-void writeAttribute(hid_t object, const char* name, double value) {
-  hid_t space = H5Screate(H5S_SCALAR);
-  hid_t attr = H5Acreate2(object, name, H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, H5P_DEFAULT);
-  h5check(H5Awrite(attr, H5T_NATIVE_DOUBLE, &value), name);
-  H5Aclose(attr);
-  H5Sclose(space);
-}
-
-void writeAttribute(hid_t object, const char* name, const std::string& value) {
-  hid_t type = H5Tcopy(H5T_C_S1);
-  H5Tset_size(type, std::max<std::size_t>(1, value.size()));
-  hid_t space = H5Screate(H5S_SCALAR);
-  hid_t attr = H5Acreate2(object, name, type, space, H5P_DEFAULT, H5P_DEFAULT);
-  h5check(H5Awrite(attr, type, value.empty() ? " " : value.c_str()), name);
-  H5Aclose(attr);
-  H5Sclose(space);
-  H5Tclose(type);
-}
-
 const char* originText(OptionOrigin o) {
   return o == OptionOrigin::Default ? "default" : o == OptionOrigin::User ? "set" : "derived";
 }
@@ -73,6 +43,7 @@ OutputFiles::OutputFiles(MPI_Comm comm, const FemParameters& params) : comm_(com
     return;
   }
   path_ = params.output;
+  provenance_ = io::collectProvenance(comm);  // collective: the same record on every rank
   if (!params.snapshotTimes.empty()) {
     fieldsPath_ = stem(path_) + "_fields.h5";
     xmfPath_ = stem(path_) + "_fields.xmf";
@@ -197,8 +168,10 @@ void OutputFiles::writeSnapshot(PlateModel& model, Vec state, double t) {
   GF_CALL(VecGetLocalSize(stress, &n));
   if (n != 6 * static_cast<PetscInt>(cellStress.size())) throw std::runtime_error("stress output: unexpected layout");
   GF_CALL(VecGetArray(stress, &s));
+  // cellStresses gives xx, yy, zz, yz, xz, xy; the file holds XDMF's Tensor6 order xx, xy, xz, yy, yz, zz.
+  constexpr int kTensor6Order[6] = {0, 5, 4, 1, 3, 2};
   for (std::size_t i = 0; i < cellStress.size(); ++i)
-    for (int k = 0; k < 6; ++k) s[6 * i + k] = cellStress[i][k];
+    for (int k = 0; k < 6; ++k) s[6 * i + k] = cellStress[i][kTensor6Order[k]];
   GF_CALL(VecRestoreArray(stress, &s));
   GF_CALL(VecView(stress, viewer_));
   GF_CALL(DMRestoreGlobalVector(stressDM_, &stress));
@@ -210,49 +183,98 @@ void OutputFiles::writeHistory(const PlateModel& model, const FemRunResult& r, c
   int rank = 0;
   MPI_Comm_rank(model.comm(), &rank);
   if (rank == 0) {
+    using namespace io;
     const std::string tmp = path_ + ".tmp";
-    hid_t file = H5Fcreate(tmp.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
-    if (file < 0) throw std::runtime_error("HDF5: cannot create " + tmp);
-    writeAttribute(file, "format", std::string("gradfric-fem-history"));
-    writeAttribute(file, "format_version", 1.0);
-    hid_t history = H5Gcreate2(file, "history", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-    const int every = std::max(1, params_.historyEvery);
-    std::vector<double> t, mu, fn;
-    for (std::size_t i = 0; i < r.time.size(); i += every) {
-      t.push_back(r.time[i]);
-      mu.push_back(r.mu[i]);
-      fn.push_back(r.normalForce[i]);
+    H5File file(GF_H5(H5Fcreate(tmp.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT)));
+    writeStringAttribute(file, "format", "gradfric-fem-history");
+    writeIntAttribute(file, "format_version", 2);  // 2: conventions of the ensemble file (docs/fem.md)
+    writeIntAttribute(file, "complete", 0);
+    auto vector = [](hid_t group, const char* name, const std::vector<double>& data, const char* units,
+                     const char* description) {
+      const hsize_t n = data.size();
+      H5Space space(GF_H5(H5Screate_simple(1, &n, nullptr)));
+      H5Dataset set(GF_H5(H5Dcreate2(group, name, H5T_IEEE_F64LE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT)));
+      if (n) GF_H5(H5Dwrite(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()));
+      describe(set, units, description);
+      return set;
+    };
+    {
+      H5Group history = createGroup(file, "history");
+      const int every = std::max(1, params_.historyEvery);
+      std::vector<double> t, mu, fn, fx, fy;
+      for (std::size_t i = 0; i < r.time.size(); i += every) {
+        t.push_back(r.time[i]);
+        mu.push_back(r.mu[i]);
+        fn.push_back(r.normalForce[i]);
+        fx.push_back(i < r.forceX.size() ? r.forceX[i] : std::numeric_limits<double>::quiet_NaN());
+        fy.push_back(i < r.forceY.size() ? r.forceY[i] : std::numeric_limits<double>::quiet_NaN());
+      }
+      H5Dataset time = vector(history, "time", t, "s", "time since the start of sliding (step 2)");
+      makeDimensionScale(time, "time");
+      const H5Dataset series[] = {
+          vector(history, "mu", mu, "1", "mu(t) = |total tangential contact force| / (p L^2)"),
+          vector(history, "normal_force", fn, "1", "total normal contact force / (p L^2)"),
+          vector(history, "force_x", fx, "N", "x component (grading axis) of the total tangential contact force"),
+          vector(history, "force_y", fy, "N", "y component of the total tangential contact force")};
+      for (const auto& d : series) attachScale(d, time, 0);
     }
-    writeDataset(history, "time", t);
-    writeDataset(history, "mu", mu);
-    writeDataset(history, "normal_force", fn);
-    writeAttribute(history, "time_unit", std::string("s since the start of sliding"));
-    writeAttribute(history, "mu_definition", std::string("|total tangential contact force| / (p L^2)"));
-    H5Gclose(history);
-    hid_t results = H5Gcreate2(file, "results", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-    writeAttribute(results, "mu_s", r.muS);
-    writeAttribute(results, "mu_k", r.muK);
-    writeAttribute(results, "peak_time", r.peakTime);
-    writeAttribute(results, "eq2_peak_time", model.params().eq2PeakTime());
-    writeAttribute(results, "first_slip_time", r.firstSlipTime);
-    writeAttribute(results, "slide_start", r.slideStart);
-    writeAttribute(results, "settled_normal_force", r.settledNormalForce);
-    writeAttribute(results, "peak_confirmed", r.peakConfirmed ? 1.0 : 0.0);
-    writeAttribute(results, "kinetic_window_complete", r.windowComplete ? 1.0 : 0.0);
-    writeAttribute(results, "dt", r.dt);
-    writeAttribute(results, "stable_dt", r.stableDt);
-    writeAttribute(results, "steps", static_cast<double>(r.steps));
-    writeAttribute(results, "wall_seconds", r.wallPressure + r.wallSliding);
-    H5Gclose(results);
-    hid_t parameters = H5Gcreate2(file, "parameters", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-    for (const auto& o : record.all()) {
-      std::string name = o.name;
-      while (!name.empty() && name[0] == '-') name.erase(0, 1);
-      writeAttribute(parameters, name.c_str(), o.value + " [" + o.unit + "] (" + originText(o.origin) + ")");
+    {
+      H5Group results = createGroup(file, "results");
+      writeRealAttribute(results, "mu_s", r.muS);
+      writeRealAttribute(results, "mu_k", r.muK);
+      writeRealAttribute(results, "peak_time", r.peakTime);
+      writeRealAttribute(results, "eq2_peak_time", model.params().eq2PeakTime());
+      writeRealAttribute(results, "first_slip_time", r.firstSlipTime);
+      writeRealAttribute(results, "slide_start", r.slideStart);
+      writeRealAttribute(results, "settled_normal_force", r.settledNormalForce);
+      writeIntAttribute(results, "peak_confirmed", r.peakConfirmed ? 1 : 0);
+      writeIntAttribute(results, "kinetic_window_complete", r.windowComplete ? 1 : 0);
+      writeRealAttribute(results, "dt", r.dt);
+      writeRealAttribute(results, "stable_dt", r.stableDt);
+      writeIntAttribute(results, "steps", static_cast<int>(r.steps));
+      writeRealAttribute(results, "wall_seconds", r.wallPressure + r.wallSliding);
+      H5Group units = createGroup(results, "units");
+      for (const char* name : {"peak_time", "eq2_peak_time", "first_slip_time", "slide_start", "dt", "stable_dt",
+                               "wall_seconds"})
+        writeStringAttribute(units, name, "s");
+      for (const char* name : {"mu_s", "mu_k", "settled_normal_force", "peak_confirmed", "kinetic_window_complete",
+                               "steps"})
+        writeStringAttribute(units, name, "1");
     }
-    H5Gclose(parameters);
-    writeAttribute(file, "complete", 1.0);
-    H5Fclose(file);
+    {  // The property fields used: E per cell column, friction per bottom-face column (both vary along x only).
+      const FemParameters& q = model.params();
+      const Grading& g = model.grading();
+      std::vector<double> x, modulus, muS, muK;
+      for (int i = 0; i < q.nx; ++i) {
+        const double centre = (i + 0.5) / q.nx;
+        x.push_back(centre * q.plate.length);
+        modulus.push_back(q.plate.youngsModulus * g.modulusFactor(centre));
+        muS.push_back(q.plate.muStatic * g.frictionFactor(centre));
+        muK.push_back(q.plate.muKinetic * g.frictionFactor(centre));
+      }
+      H5Group properties = createGroup(file, "properties");
+      H5Dataset column = vector(properties, "x", x, "m", "centre of each cell column along the grading axis x");
+      makeDimensionScale(column, "x");
+      const H5Dataset fields[] = {
+          vector(properties, "E", modulus, "Pa", "Young's modulus of every cell of the column"),
+          vector(properties, "mu_s", muS, "1",
+                 "local static coefficient of the bottom faces of the column (a node takes the area-weighted mean "
+                 "of its faces)"),
+          vector(properties, "mu_k", muK, "1", "local kinetic coefficient of the bottom faces of the column")};
+      for (const auto& d : fields) attachScale(d, column, 0);
+    }
+    {
+      std::vector<Attribute> options;
+      for (const auto& o : record.all()) {
+        std::string name = o.name;
+        while (!name.empty() && name[0] == '-') name.erase(0, 1);
+        options.push_back({name, o.value, o.unit, originText(o.origin)});
+      }
+      writeOptionRecord(file, "scene", options);
+      H5Group provenance = createGroup(file, "provenance");
+      writeProvenance(provenance, provenance_);
+    }
+    writeIntAttribute(file, "complete", 1);
   }
   historyWritten_ = true;
 }
@@ -269,14 +291,11 @@ void OutputFiles::finish() {
     if (!path_.empty() && historyWritten_) std::rename((path_ + ".tmp").c_str(), path_.c_str());
     if (!fieldsPath_.empty() && snapshots_ > 0) {
       std::rename((fieldsPath_ + ".tmp").c_str(), fieldsPath_.c_str());
-      const std::string script = std::string(PETSC_DIR) + "/" + PETSC_ARCH + "/lib/petsc/bin/petsc_gen_xdmf.py";
-      const std::string alt = std::string(PETSC_DIR) + "/lib/petsc/bin/petsc_gen_xdmf.py";
-      const std::string use = exists(script) ? script : alt;
-      // Debian's python3-h5py belongs to the system interpreter (a pyenv python3 may lack it).
-      const std::string python = exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
-      const std::string command = python + " '" + use + "' '" + fieldsPath_ + "' > /dev/null 2>&1";
-      if (std::system(command.c_str()) != 0 || !exists(xmfPath_))
-        std::fprintf(stderr, "gradfric-fem: warning: could not write %s with %s\n", xmfPath_.c_str(), use.c_str());
+      try {
+        describeFieldsAndWriteXdmf(fieldsPath_, xmfPath_);
+      } catch (const std::exception& e) {
+        std::fprintf(stderr, "gradfric-fem: warning: could not write %s: %s\n", xmfPath_.c_str(), e.what());
+      }
     }
   }
   GF_CALL_MPI(MPI_Barrier(comm_));

@@ -28,9 +28,9 @@ FemParameters readFemParameters(MPI_Comm comm, RunParameters* record, const Plat
   OptionReader o(comm, "fem_", "Finite-element plate model (3D, explicit)", record);
   FemParameters q;
   q.plate = plate;
-  q.nx = static_cast<int>(o.integer("nx", q.nx, "1", "hexahedra along x (grading axis)"));
-  q.ny = static_cast<int>(o.integer("ny", q.ny, "1", "hexahedra along y"));
-  q.nz = static_cast<int>(o.integer("nz", q.nz, "1", "hexahedra through the thickness"));
+  q.nx = static_cast<int>(o.integer("nx", q.nx, 1, 100000, "1", "hexahedra along x (grading axis)"));
+  q.ny = static_cast<int>(o.integer("ny", q.ny, 1, 100000, "1", "hexahedra along y"));
+  q.nz = static_cast<int>(o.integer("nz", q.nz, 1, 100000, "1", "hexahedra through the thickness"));
   q.vC = o.real("v_c", q.vC, "m/s", "critical velocity v_c of Eq. 1");
   q.contact = o.flag("contact", true, "contact with the rigid plane (off: free bottom face, for tests)");
   if (auto kn = o.realIfSet("kn", "Pa/m", "normal penalty stiffness k_n", "E0/hz")) q.kn = *kn;
@@ -44,7 +44,7 @@ FemParameters readFemParameters(MPI_Comm comm, RunParameters* record, const Plat
   q.dtCheck = o.flag("dt_check", true,
                      "refuse a -fem_dt above the stable step (false: TESTING ONLY, to exercise the blow-up monitor)");
   q.monitorEvery = static_cast<int>(
-      o.integer("monitor_every", q.monitorEvery, "1", "blow-up monitor: energy and finiteness check every n steps"));
+      o.integer("monitor_every", q.monitorEvery, 1, 1000000000, "1", "blow-up monitor: energy and finiteness check every n steps"));
   q.monitorFactor = o.real("monitor_factor", q.monitorFactor, "1",
                            "blow-up monitor: stop when kinetic + elastic energy exceeds this x (energy put in + p^2 L^2 H / 2E)");
   if (auto t = o.realIfSet("ramp_time", "s", "pressure ramp duration", "20 H/c_s")) q.rampTime = *t;
@@ -58,7 +58,7 @@ FemParameters readFemParameters(MPI_Comm comm, RunParameters* record, const Plat
   q.output = o.text("output", "", "HDF5 results file (empty: none); snapshots go to <name>_fields.h5 + .xmf");
   q.overwrite = o.flag("output_overwrite", false, "replace an existing results file");
   q.snapshotTimes = o.realList("snapshot_times", {}, "s", "field snapshot times after the start of sliding");
-  q.historyEvery = static_cast<int>(o.integer("history_every", 1, "1", "record mu(t) every n steps"));
+  q.historyEvery = static_cast<int>(o.integer("history_every", 1, 1, 1000000000, "1", "record mu(t) every n steps"));
   q.verbose = o.flag("verbose", true, "print progress");
 
   o.requireAtLeast("nx", q.nx, 1);
@@ -76,6 +76,14 @@ FemParameters readFemParameters(MPI_Comm comm, RunParameters* record, const Plat
     if (o.wasSet(name)) o.requireNonNegative(name, name[0] == 'r' ? q.rampTime : name[0] == 's' ? q.settleTime : q.windowStart, "s");
   if (o.wasSet("slide_time")) o.requirePositive("slide_time", q.slideTime, "s");
   if (o.wasSet("kinetic_window_length")) o.requirePositive("kinetic_window_length", q.windowLength, "s");
+  // Memory before any work: a hexahedron costs a few kB (DMPlex, state, element data).
+  const double cells = static_cast<double>(q.nx) * q.ny * q.nz;
+  if (cells > 2e7) {
+    const char* largest = q.nx >= q.ny && q.nx >= q.nz ? "nx" : q.ny >= q.nz ? "ny" : "nz";
+    const int value = largest[1] == 'x' ? q.nx : largest[1] == 'y' ? q.ny : q.nz;
+    throw InputError(o.fullName(largest), std::to_string(value),
+                     "a mesh of at most 2e7 hexahedra (nx ny nz = " + formatReal(cells) + ")");
+  }
   o.requireAtLeast("history_every", q.historyEvery, 1);
   o.requireAtLeast("monitor_every", q.monitorEvery, 1);
   o.requireRange("monitor_factor", q.monitorFactor, 1.0, 1e300, ">= 1");

@@ -3,6 +3,7 @@
 #include "gradfric/core/input_error.hpp"
 #include "gradfric/core/options.hpp"
 #include "gradfric/core/petsc_call.hpp"
+#include "gradfric/core/run_limits.hpp"
 #include "gradfric/fem/partition.hpp"
 
 #include <petscds.h>
@@ -282,6 +283,15 @@ double chooseTimeStep(const FemParameters& q, const Grading& grading) {
     return q.dt;
   }
   return q.dtSafety * stable;
+}
+
+void requireFemRunLength(const FemParameters& q, const Grading& grading, const RunParameters* record) {
+  const double duration = q.rampTime + q.settleTime + q.slideTime;
+  requireResolvedTimescale(record, q.eq2PeakTime(), chooseTimeStep(q, grading), "-fem_dt",
+                           {"-fem_", "-plate_", "-grading_"}, "Eq. 2 peak time");
+  requireRunLength(record, duration, chooseTimeStep(q, grading), q.dtSafety * stableTimeStep(q, grading), "-fem_dt",
+                   {"-fem_slide_time", "-fem_settle_time", "-fem_ramp_time"}, {"-fem_", "-plate_", "-grading_"},
+                   "pressure step + sliding");
 }
 
 void PlateModel::computeStableStep() {

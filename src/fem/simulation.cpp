@@ -193,6 +193,8 @@ FemRunResult runPlateExperiment(PlateModel& model, const StepObserver& observer)
     r.time.push_back(ts_);
     r.mu.push_back(mu);
     r.normalForce.push_back(totals.fn / normal);
+    r.forceX.push_back(totals.fx);
+    r.forceY.push_back(totals.fy);
     monitor.afterStep(r.steps, t, state, totals, mu);
     if (r.firstSlipTime < 0 && totals.slip > 0) r.firstSlipTime = ts_;
     if (mu > muMax) {

@@ -1,6 +1,7 @@
 #include "gradfric/io/results_file.hpp"
 
 #include <H5FDmpio.h>
+#include <hdf5_hl.h>
 
 #include <algorithm>
 #include <cmath>
@@ -21,18 +22,6 @@ H5PropertyList accessList(MPI_Comm comm) {
   H5PropertyList fapl(GF_H5(H5Pcreate(H5P_FILE_ACCESS)));
   GF_H5(H5Pset_fapl_mpio(fapl, comm, MPI_INFO_NULL));
   return fapl;
-}
-
-// Groups and datasets without access/modification times: the file depends on the results only.
-H5PropertyList groupCreation() {
-  H5PropertyList gcpl(GF_H5(H5Pcreate(H5P_GROUP_CREATE)));
-  GF_H5(H5Pset_obj_track_times(gcpl, false));
-  return gcpl;
-}
-
-H5Group createGroup(hid_t parent, const char* name) {
-  H5PropertyList gcpl = groupCreation();
-  return H5Group(GF_H5(H5Gcreate2(parent, name, H5P_DEFAULT, gcpl, H5P_DEFAULT)));
 }
 
 // Contiguous, allocated and filled at creation (collective), so that later raw writes by one
@@ -108,30 +97,6 @@ std::vector<T> readAll(hid_t dataset, hid_t memType) {
   return out;
 }
 
-// Variable-length UTF-8 strings: h5py reads them as str, h5dump prints them plainly.
-void writeStringAttribute(hid_t object, const std::string& name, const std::string& value) {
-  if (GF_H5(H5Aexists(object, name.c_str())) > 0) GF_H5(H5Adelete(object, name.c_str()));
-  H5Type type(GF_H5(H5Tcopy(H5T_C_S1)));
-  GF_H5(H5Tset_size(type, H5T_VARIABLE));
-  GF_H5(H5Tset_cset(type, H5T_CSET_UTF8));
-  H5Space space(GF_H5(H5Screate(H5S_SCALAR)));
-  H5Attribute attribute(GF_H5(H5Acreate2(object, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT)));
-  const char* text = value.c_str();
-  GF_H5(H5Awrite(attribute, type, &text));
-}
-
-template <typename T>
-void writeScalarAttribute(hid_t object, const char* name, hid_t fileType, hid_t memType, T value) {
-  if (GF_H5(H5Aexists(object, name)) > 0) {
-    H5Attribute attribute(GF_H5(H5Aopen(object, name, H5P_DEFAULT)));
-    GF_H5(H5Awrite(attribute, memType, &value));
-    return;
-  }
-  H5Space space(GF_H5(H5Screate(H5S_SCALAR)));
-  H5Attribute attribute(GF_H5(H5Acreate2(object, name, fileType, space, H5P_DEFAULT, H5P_DEFAULT)));
-  GF_H5(H5Awrite(attribute, memType, &value));
-}
-
 template <typename T>
 T readScalarAttribute(hid_t object, const char* name, hid_t memType, T fallback) {
   if (GF_H5(H5Aexists(object, name)) <= 0) return fallback;
@@ -141,39 +106,21 @@ T readScalarAttribute(hid_t object, const char* name, hid_t memType, T fallback)
   return value;
 }
 
-std::string readStringAttribute(hid_t attribute) {
-  H5Type type(GF_H5(H5Aget_type(attribute)));
-  if (H5Tget_class(type) != H5T_STRING) return "";
-  if (H5Tis_variable_str(type) > 0) {
-    char* text = nullptr;
-    H5Type memType(GF_H5(H5Tcopy(H5T_C_S1)));
-    GF_H5(H5Tset_size(memType, H5T_VARIABLE));
-    GF_H5(H5Tset_cset(memType, H5Tget_cset(type)));
-    GF_H5(H5Aread(attribute, memType, &text));
-    std::string out = text ? text : "";
-    H5free_memory(text);
-    return out;
-  }
-  const size_t width = H5Tget_size(type);
-  std::vector<char> buffer(width + 1, '\0');
-  GF_H5(H5Aread(attribute, type, buffer.data()));
-  return std::string(buffer.data(), strnlen(buffer.data(), width));
-}
-
-// All attributes of an object as (name, value) in creation order of the names (sorted by name).
-std::vector<std::pair<std::string, std::string>> readStringAttributes(hid_t object) {
-  std::vector<std::pair<std::string, std::string>> out;
-  H5O_info_t info;
-  GF_H5(H5Oget_info2(object, &info, H5O_INFO_NUM_ATTRS));
-  for (hsize_t i = 0; i < info.num_attrs; ++i) {
-    H5Attribute attribute(GF_H5(H5Aopen_by_idx(object, ".", H5_INDEX_NAME, H5_ITER_INC, i, H5P_DEFAULT, H5P_DEFAULT)));
-    const ssize_t length = GF_H5(H5Aget_name(attribute, 0, nullptr));
-    std::string name(static_cast<size_t>(length) + 1, '\0');
-    GF_H5(H5Aget_name(attribute, name.size(), name.data()));
-    name.resize(static_cast<size_t>(length));
-    out.emplace_back(name, readStringAttribute(attribute));
-  }
-  return out;
+// One line on each statistics column (docs/ensemble.md has the formulas).
+std::string statisticDescription(const std::string& name) {
+  if (name == "finished") return "realisations finished";
+  if (name == "peaks_unconfirmed") return "realisations whose peak was not confirmed before -sbm_t_max";
+  const std::string of = name.substr(0, 4);  // mu_s or mu_k
+  const std::string what = name.size() > 5 ? name.substr(5) : "";
+  if (what == "count") return "finite values of " + of + " used for the statistics";
+  if (what == "mean") return "mean of " + of + " over the finished realisations";
+  if (what == "std") return "sample standard deviation (n - 1) of " + of;
+  if (what == "stderr") return "standard error of the mean of " + of;
+  if (what == "ci95_low") return "lower end of the 95 % confidence interval of the mean of " + of;
+  if (what == "ci95_high") return "upper end of the 95 % confidence interval of the mean of " + of;
+  if (what == "relative") return "(" + of + " - " + of + "_0) / " + of + "_0 against /sweep/reference_point";
+  if (what == "relative_error") return "propagated error of " + of + "_relative";
+  return name;
 }
 
 }  // namespace
@@ -205,94 +152,164 @@ ResultsFile ResultsFile::create(MPI_Comm comm, const std::string& path, const En
 
   const hid_t root = f.file_.get();
   writeStringAttribute(root, "format", kFormatName);
-  writeScalarAttribute<int>(root, "format_version", H5T_STD_I32LE, H5T_NATIVE_INT, kFormatVersion);
-  writeScalarAttribute<int>(root, "complete", H5T_STD_I32LE, H5T_NATIVE_INT, 0);
-  writeScalarAttribute<int>(root, "points", H5T_STD_I32LE, H5T_NATIVE_INT, layout.points);
-  writeScalarAttribute<int>(root, "realisations", H5T_STD_I32LE, H5T_NATIVE_INT, layout.realisations);
-  writeScalarAttribute<int>(root, "history_capacity", H5T_STD_I32LE, H5T_NATIVE_INT, layout.historyCapacity);
-  writeScalarAttribute<int>(root, "map_side", H5T_STD_I32LE, H5T_NATIVE_INT, layout.mapSide);
-  writeScalarAttribute<int>(root, "first_slip_map", H5T_STD_I32LE, H5T_NATIVE_INT, layout.firstSlipMap ? 1 : 0);
+  writeIntAttribute(root, "format_version", kFormatVersion);
+  writeIntAttribute(root, "complete", 0);
+  writeIntAttribute(root, "points", layout.points);
+  writeIntAttribute(root, "realisations", layout.realisations);
+  writeIntAttribute(root, "history_capacity", layout.historyCapacity);
+  writeIntAttribute(root, "map_side", layout.mapSide);
+  writeIntAttribute(root, "first_slip_map", layout.firstSlipMap ? 1 : 0);
+  writeIntAttribute(root, "friction_fields", layout.frictionFields ? 1 : 0);
 
-  {  // The scene: every resolved option as attributes; units and origins in subgroups.
-    H5Group group = createGroup(root, "scene");
-    H5Group units = createGroup(group, "units");
-    H5Group origins = createGroup(group, "origin");
-    for (const auto& a : scene) {
-      writeStringAttribute(group, a.name, a.value);
-      writeStringAttribute(units, a.name, a.unit);
-      writeStringAttribute(origins, a.name, a.origin);
-    }
-  }
+  // The scene: every resolved option as attributes; units and origins in subgroups.
+  writeOptionRecord(root, "scene", scene);
 
   const hsize_t P = static_cast<hsize_t>(layout.points);
   const hsize_t R = static_cast<hsize_t>(layout.realisations);
+  const hsize_t C = static_cast<hsize_t>(layout.historyCapacity);
+  const hsize_t N = static_cast<hsize_t>(layout.mapSide);
+  const hsize_t S = layout.snapshotTimes.size();
+
+  // The axes: dimension scales at the root holding 0, 1, 2, ... (the index along each axis).
+  struct Axis {
+    hid_t scale;
+    hsize_t size;
+  };
+  std::vector<H5Dataset> scales;
+  auto axis = [&](const char* name, hsize_t size, const char* description) {
+    H5Dataset d = createDataset<int>(root, name, H5T_STD_I32LE, H5T_NATIVE_INT, {size}, 0);
+    std::vector<int> index(size);
+    for (hsize_t i = 0; i < size; ++i) index[i] = static_cast<int>(i);
+    if (f.rank_ == 0) writeSlab(d, H5T_NATIVE_INT, {0}, {size}, index.data(), f.independent_);
+    describe(d, "1", description);
+    makeDimensionScale(d, name);
+    scales.push_back(std::move(d));
+    return Axis{scales.back().get(), size};
+  };
+  const Axis point = axis("point", P, "sweep point index (row of /sweep)");
+  const Axis realisation = axis("realisation", R, "realisation index within a sweep point");
+  const Axis row = axis("block_row", N, "block row (y) of the N_b x N_b lattice");
+  const Axis column = axis("block_column", N, "block column (x, the grading axis) of the lattice");
+  const Axis sample = C > 0 ? axis("sample", C, "mu(t) history sample index") : Axis{};
+  const Axis snapshot = S > 0 ? axis("snapshot", S, "index of the requested snapshot time") : Axis{};
+
+  // A dataset with its axes attached and its units and description set.
+  auto make = [&](hid_t group, const char* name, hid_t fileType, hid_t memType, const std::vector<Axis>& axes,
+                  auto fill, const char* units, const char* description) {
+    std::vector<hsize_t> dims;
+    for (const auto& a : axes) dims.push_back(a.size);
+    H5Dataset d = createDataset(group, name, fileType, memType, dims, fill);
+    describe(d, units, description);
+    for (unsigned i = 0; i < axes.size(); ++i) attachScale(d, axes[i].scale, i);
+    return d;
+  };
+  auto real = [&](hid_t group, const char* name, const std::vector<Axis>& axes, const char* units,
+                  const char* description) {
+    return make(group, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, axes, kNaN, units, description);
+  };
+
   {  // The sweep table, one row per point.
     H5Group group = createGroup(root, "sweep");
     std::string axes;
     for (const auto& a : sweep.axes) axes += (axes.empty() ? "" : ",") + a;
     writeStringAttribute(group, "axes", axes);
-    auto real = [&](const char* name, const std::vector<double>& values) {
-      H5Dataset d = createDataset<double>(group, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, {P}, kNaN);
-      if (f.rank_ == 0) writeSlab(d, H5T_NATIVE_DOUBLE, {0}, {P}, values.data(), f.independent_);
+    auto column1 = [&](const char* name, const char* units, const char* description, const std::vector<double>& v) {
+      H5Dataset d = real(group, name, {point}, units, description);
+      if (f.rank_ == 0) writeSlab(d, H5T_NATIVE_DOUBLE, {0}, {P}, v.data(), f.independent_);
     };
-    real("delta", sweep.delta);
-    real("theta", sweep.theta);
-    real("sigma", sweep.sigma);
-    real("sigma_kinetic", sweep.sigmaKinetic);
-    auto strings = [&](const char* name, const std::vector<std::string>& values) {
+    column1("delta", "1", "grading amplitude Delta", sweep.delta);
+    column1("theta", "degree", "sliding angle between the slider velocity and the grading axis x", sweep.theta);
+    column1("sigma", "1", "relative standard deviation of the local mu_s,i", sweep.sigma);
+    column1("sigma_kinetic", "1", "relative standard deviation of the local mu_k,i", sweep.sigmaKinetic);
+    auto strings = [&](const char* name, const char* description, const std::vector<std::string>& values) {
       size_t width = 1;
       for (const auto& v : values) width = std::max(width, v.size());
       H5Dataset d = createStringDataset(group, name, P, width);
+      describe(d, "", description);
+      attachScale(d, point.scale, 0);
       if (f.rank_ == 0) writeStrings(d, values, f.independent_);
     };
-    strings("property", sweep.property);
-    strings("profile", sweep.profile);
-    H5Dataset ref = createDataset<int>(group, "reference_point", H5T_STD_I32LE, H5T_NATIVE_INT, {P}, -1);
+    strings("property", "graded property: E, friction or both", sweep.property);
+    strings("profile", "grading profile: none, linear or triangular", sweep.profile);
+    H5Dataset ref = make(group, "reference_point", H5T_STD_I32LE, H5T_NATIVE_INT, {point}, -1, "1",
+                         "index of the non-graded point the relative variation uses; -1: none");
     if (f.rank_ == 0) writeSlab(ref, H5T_NATIVE_INT, {0}, {P}, sweep.referencePoint.data(), f.independent_);
+  }
+  {  // The property fields each point used (before the random dispersion of the friction).
+    H5Group group = createGroup(root, "properties");
+    auto field = [&](const char* name, const char* units, const char* description, const std::vector<double>& v) {
+      H5Dataset d = real(group, name, {point, column}, units, description);
+      if (f.rank_ == 0 && v.size() == P * N) writeSlab(d, H5T_NATIVE_DOUBLE, {0, 0}, {P, N}, v.data(), f.independent_);
+    };
+    field("E", "Pa", "Young's modulus of each block column (the same in every row)", sweep.modulus);
+    field("mu_s", "1",
+          "mean local static coefficient of each block column; realisation r draws "
+          "mu_s,i = mu_s * (1 + sigma * z) per block (docs/ensemble.md)",
+          sweep.muStatic);
+    field("mu_k", "1",
+          "mean local kinetic coefficient of each block column; realisation r draws "
+          "mu_k,i = mu_k * (1 + sigma_kinetic * z) per block (docs/ensemble.md)",
+          sweep.muKinetic);
   }
   {
     H5Group group = createGroup(root, "realisations");
-    createDataset<double>(group, "mu_s", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, {P, R}, kNaN);
-    createDataset<double>(group, "mu_k", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, {P, R}, kNaN);
-    createDataset<double>(group, "peak_time", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, {P, R}, kNaN);
-    createDataset<double>(group, "end_time", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, {P, R}, kNaN);
-    createDataset<std::int8_t>(group, "peak_confirmed", H5T_STD_I8LE, H5T_NATIVE_INT8, {P, R}, 0);
-    createDataset<std::int64_t>(group, "steps", H5T_STD_I64LE, H5T_NATIVE_INT64, {P, R}, 0);
-    createDataset<int>(group, "redrawn_blocks", H5T_STD_I32LE, H5T_NATIVE_INT, {P, R}, 0);
-    createDataset<std::int8_t>(group, "done", H5T_STD_I8LE, H5T_NATIVE_INT8, {P, R}, 0);
+    const std::vector<Axis> pr{point, realisation};
+    real(group, "mu_s", pr, "1", "global static friction coefficient: the maximum of mu(t) at the transition");
+    real(group, "mu_k", pr, "1", "global kinetic coefficient: mean of mu(t) over the window after the peak; NaN: none");
+    real(group, "peak_time", pr, "s", "time of the peak of mu(t)");
+    real(group, "end_time", pr, "s", "simulated time reached");
+    make(group, "peak_confirmed", H5T_STD_I8LE, H5T_NATIVE_INT8, pr, std::int8_t(0), "1",
+         "1 if the peak was confirmed, 0 if the run stopped at -sbm_t_max first");
+    make(group, "steps", H5T_STD_I64LE, H5T_NATIVE_INT64, pr, std::int64_t(0), "1", "time steps taken");
+    make(group, "redrawn_blocks", H5T_STD_I32LE, H5T_NATIVE_INT, pr, 0, "1",
+         "local coefficients redrawn to keep 0 < mu_k,i <= mu_s,i");
+    make(group, "done", H5T_STD_I8LE, H5T_NATIVE_INT8, pr, std::int8_t(0), "1",
+         "1: the task finished and its results are stored; 0: not run (yet)");
   }
   {
+    // No dimension scales here: a scale's REFERENCE_LIST would then name /run's datasets, and
+    // h5diff --exclude-path /run would still compare them through it.
     H5Group group = createGroup(root, "run");
-    createDataset<double>(group, "wall_seconds", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, {P, R}, kNaN);
-    createDataset<int>(group, "rank", H5T_STD_I32LE, H5T_NATIVE_INT, {P, R}, -1);
+    H5Dataset wall = createDataset<double>(group, "wall_seconds", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, {P, R}, kNaN);
+    describe(wall, "s", "wall time of each task [point, realisation]");
+    H5Dataset rank = createDataset<int>(group, "rank", H5T_STD_I32LE, H5T_NATIVE_INT, {P, R}, -1);
+    describe(rank, "1", "the MPI rank that ran each task [point, realisation]");
   }
-  if (layout.historyCapacity > 0) {
+  if (C > 0) {
     H5Group group = createGroup(root, "history");
-    const hsize_t C = static_cast<hsize_t>(layout.historyCapacity);
-    createDataset<double>(group, "time", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, {P, R, C}, kNaN);
-    createDataset<double>(group, "mu", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, {P, R, C}, kNaN);
-    createDataset<int>(group, "length", H5T_STD_I32LE, H5T_NATIVE_INT, {P, R}, 0);
+    const std::vector<Axis> prc{point, realisation, sample};
+    real(group, "time", prc, "s", "time of each mu(t) sample; NaN after the last sample");
+    real(group, "mu", prc, "1", "mu(t) = |sum of the slider forces| / (p L^2); NaN after the last sample");
+    real(group, "force_x", prc, "N", "x component (grading axis) of the sum of the slider-spring forces on the plate");
+    real(group, "force_y", prc, "N", "y component of the sum of the slider-spring forces on the plate");
+    make(group, "length", H5T_STD_I32LE, H5T_NATIVE_INT, {point, realisation}, 0, "1", "number of samples of each task");
   }
-  const hsize_t N = static_cast<hsize_t>(layout.mapSide);
-  const hsize_t S = layout.snapshotTimes.size();
-  if (layout.firstSlipMap || S > 0) {
+  if (layout.firstSlipMap || layout.frictionFields || S > 0) {
     H5Group group = createGroup(root, "maps");
+    if (layout.frictionFields) {
+      real(group, "mu_s_local", {point, realisation, row, column}, "1",
+           "local static coefficient mu_s,i of each block, as drawn for the realisation");
+      real(group, "mu_k_local", {point, realisation, row, column}, "1",
+           "local kinetic coefficient mu_k,i of each block, as drawn for the realisation");
+    }
     if (layout.firstSlipMap)
-      createDataset<double>(group, "first_slip_time", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, {P, R, N, N}, kNaN);
+      real(group, "first_slip_time", {point, realisation, row, column}, "s",
+           "time of each block's first slip; NaN: never slipped");
     if (S > 0) {
-      H5Dataset requested =
-          createDataset<double>(group, "snapshot_times", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, {S}, kNaN);
+      H5Dataset requested = real(group, "snapshot_times", {snapshot}, "s", "the requested snapshot times");
       if (f.rank_ == 0) writeSlab(requested, H5T_NATIVE_DOUBLE, {0}, {S}, layout.snapshotTimes.data(), f.independent_);
-      createDataset<double>(group, "snapshot_time", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, {P, R, S}, kNaN);
-      createDataset<double>(group, "sigma_x_over_p", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, {P, R, S, N, N}, kNaN);
+      real(group, "snapshot_time", {point, realisation, snapshot}, "s",
+           "the time each snapshot was taken; NaN if the run ended before");
+      real(group, "sigma_x_over_p", {point, realisation, snapshot, row, column}, "1",
+           "longitudinal stress sigma_x / p of each block at each snapshot");
     }
   }
   {
     H5Group group = createGroup(root, "statistics");
     for (const auto& name : layout.statisticsReal)
-      createDataset<double>(group, name.c_str(), H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, {P}, kNaN);
+      real(group, name.c_str(), {point}, "1", statisticDescription(name).c_str());
     for (const auto& name : layout.statisticsInteger)
-      createDataset<int>(group, name.c_str(), H5T_STD_I32LE, H5T_NATIVE_INT, {P}, 0);
+      make(group, name.c_str(), H5T_STD_I32LE, H5T_NATIVE_INT, {point}, 0, "1", statisticDescription(name).c_str());
   }
   f.openDatasets();
   f.flush();
@@ -339,6 +356,7 @@ void ResultsFile::readLayout() {
   layout_.historyCapacity = readScalarAttribute<int>(root, "history_capacity", H5T_NATIVE_INT, 0);
   layout_.mapSide = readScalarAttribute<int>(root, "map_side", H5T_NATIVE_INT, 0);
   layout_.firstSlipMap = readScalarAttribute<int>(root, "first_slip_map", H5T_NATIVE_INT, 0) != 0;
+  layout_.frictionFields = readScalarAttribute<int>(root, "friction_fields", H5T_NATIVE_INT, 0) != 0;
   if (H5Lexists(root, "maps/snapshot_times", H5P_DEFAULT) > 0) {
     H5Dataset d(GF_H5(H5Dopen2(root, "maps/snapshot_times", H5P_DEFAULT)));
     layout_.snapshotTimes = readAll<double>(d, H5T_NATIVE_DOUBLE);
@@ -401,31 +419,22 @@ void ResultsFile::openDatasets() {
   if (layout_.historyCapacity > 0) {
     historyTime_ = open("history/time");
     historyMu_ = open("history/mu");
+    historyForceX_ = open("history/force_x");
+    historyForceY_ = open("history/force_y");
     historyLength_ = open("history/length");
   }
   if (layout_.firstSlipMap) firstSlip_ = open("maps/first_slip_time");
+  if (layout_.frictionFields) {
+    localStatic_ = open("maps/mu_s_local");
+    localKinetic_ = open("maps/mu_k_local");
+  }
   if (!layout_.snapshotTimes.empty()) {
     snapshotTime_ = open("maps/snapshot_time");
     snapshots_ = open("maps/sigma_x_over_p");
   }
 }
 
-std::vector<Attribute> ResultsFile::sceneAttributes() const {
-  H5Group scene(GF_H5(H5Gopen2(file_, "scene", H5P_DEFAULT)));
-  H5Group units(GF_H5(H5Gopen2(scene, "units", H5P_DEFAULT)));
-  H5Group origins(GF_H5(H5Gopen2(scene, "origin", H5P_DEFAULT)));
-  auto values = readStringAttributes(scene);
-  auto unitValues = readStringAttributes(units);
-  auto originValues = readStringAttributes(origins);
-  std::vector<Attribute> out;
-  for (size_t i = 0; i < values.size(); ++i) {
-    Attribute a{values[i].first, values[i].second, "", ""};
-    if (i < unitValues.size() && unitValues[i].first == a.name) a.unit = unitValues[i].second;
-    if (i < originValues.size() && originValues[i].first == a.name) a.origin = originValues[i].second;
-    out.push_back(std::move(a));
-  }
-  return out;
-}
+std::vector<Attribute> ResultsFile::sceneAttributes() const { return readOptionRecord(file_, "scene"); }
 
 bool ResultsFile::complete() const { return readScalarAttribute<int>(file_, "complete", H5T_NATIVE_INT, 0) != 0; }
 
@@ -447,9 +456,14 @@ void ResultsFile::writeTask(const TaskOutput& t) {
     std::vector<double> row(C, kNaN);
     std::copy(t.time.begin(), t.time.begin() + n, row.begin());
     writeSlab(historyTime_, H5T_NATIVE_DOUBLE, {p, r, 0}, {1, 1, C}, row.data(), x);
-    std::fill(row.begin(), row.end(), kNaN);
-    std::copy(t.mu.begin(), t.mu.begin() + n, row.begin());
-    writeSlab(historyMu_, H5T_NATIVE_DOUBLE, {p, r, 0}, {1, 1, C}, row.data(), x);
+    auto writeRow = [&](hid_t dataset, const std::vector<double>& values) {
+      std::fill(row.begin(), row.end(), kNaN);
+      std::copy(values.begin(), values.begin() + std::min(n, values.size()), row.begin());
+      writeSlab(dataset, H5T_NATIVE_DOUBLE, {p, r, 0}, {1, 1, C}, row.data(), x);
+    };
+    writeRow(historyMu_, t.mu);
+    writeRow(historyForceX_, t.forceX);
+    writeRow(historyForceY_, t.forceY);
     const int length = static_cast<int>(n);
     writeSlab(historyLength_, H5T_NATIVE_INT, at, one, &length, x);
   }
@@ -458,6 +472,13 @@ void ResultsFile::writeTask(const TaskOutput& t) {
     std::vector<double> map(N * N, kNaN);
     if (t.firstSlipTime.size() == map.size()) map = t.firstSlipTime;
     writeSlab(firstSlip_, H5T_NATIVE_DOUBLE, {p, r, 0, 0}, {1, 1, N, N}, map.data(), x);
+  }
+  if (layout_.frictionFields) {
+    for (auto [dataset, values] : {std::pair{localStatic_.get(), &t.localStatic}, std::pair{localKinetic_.get(), &t.localKinetic}}) {
+      std::vector<double> map(N * N, kNaN);
+      if (values->size() == map.size()) map = *values;
+      writeSlab(dataset, H5T_NATIVE_DOUBLE, {p, r, 0, 0}, {1, 1, N, N}, map.data(), x);
+    }
   }
   const hsize_t S = layout_.snapshotTimes.size();
   if (S > 0) {
@@ -530,8 +551,14 @@ void ResultsFile::setRunAttributes(const std::vector<Attribute>& attributes) {
   flush();
 }
 
+void ResultsFile::setProvenance(const Provenance& provenance) {
+  H5Group run(GF_H5(H5Gopen2(file_, "run", H5P_DEFAULT)));
+  writeProvenance(run, provenance);
+  flush();
+}
+
 void ResultsFile::markComplete() {
-  writeScalarAttribute<int>(file_, "complete", H5T_STD_I32LE, H5T_NATIVE_INT, 1);
+  writeIntAttribute(file_, "complete", 1);
   flush();
 }
 
@@ -548,8 +575,12 @@ void ResultsFile::close() {
   taskRank_.reset();
   historyTime_.reset();
   historyMu_.reset();
+  historyForceX_.reset();
+  historyForceY_.reset();
   historyLength_.reset();
   firstSlip_.reset();
+  localStatic_.reset();
+  localKinetic_.reset();
   snapshotTime_.reset();
   snapshots_.reset();
   independent_.reset();

@@ -1,6 +1,7 @@
 #include "gradfric/physics/grading_options.hpp"
 
 #include "gradfric/core/input_error.hpp"
+#include "gradfric/core/petsc_call.hpp"
 
 #include <cmath>
 
@@ -14,7 +15,7 @@ Grading readGrading(MPI_Comm comm, RunParameters* record) {
   const std::string property = options.choice("property", "E", {"E", "friction", "both"},
                                               "graded property: Young's modulus, local friction coefficients, or both");
   g.delta = options.real("delta", 0.0, "1", "relative variation Delta (edge for linear, centre for triangular)");
-  g.bands = static_cast<int>(options.integer("bands", 10, "1", "number N of homogeneous bands across the plate"));
+  g.bands = static_cast<int>(options.integer("bands", 10, 2, 4096, "1", "number N of homogeneous bands across the plate"));
   g.profile = profile == "linear" ? GradingProfile::Linear
               : profile == "triangular" ? GradingProfile::Triangular
                                         : GradingProfile::None;
@@ -24,6 +25,14 @@ Grading readGrading(MPI_Comm comm, RunParameters* record) {
   // |Delta| >= 1 makes the property zero or negative somewhere.
   if (!(std::fabs(g.delta) < 1.0)) throw InputError(options.fullName("delta"), formatReal(g.delta), "|Delta| < 1");
   options.requireAtLeast("bands", g.bands, 2);
+  // A Delta without a profile would silently run a uniform plate. An ensemble that sweeps the
+  // profile (-ensemble_profile) applies Delta to its graded points: that is allowed.
+  PetscBool profileSwept = PETSC_FALSE;
+  GF_CALL(PetscOptionsHasName(nullptr, nullptr, "-ensemble_profile", &profileSwept));
+  if (g.profile == GradingProfile::None && g.delta != 0.0 && !profileSwept)
+    throw InputError(options.fullName("profile"), profile,
+                     "linear or triangular when -grading_delta is set (-grading_delta = " + formatReal(g.delta) +
+                         " would be ignored: a uniform plate)");
   return g;
 }
 

@@ -44,6 +44,18 @@ LatticeStiffness buildStiffness(const Parameters& p, const Grading& grading) {
   return s;
 }
 
+ColumnProperties columnProperties(const Parameters& p, const Grading& grading) {
+  const int nb = p.blocksPerSide;
+  ColumnProperties c;
+  for (int column = 0; column < nb; ++column) {
+    const double x = columnCentre(column, nb);
+    c.modulus.push_back(p.plate.youngsModulus * grading.modulusFactor(x));
+    c.muStatic.push_back(p.plate.muStatic * grading.frictionFactor(x));
+    c.muKinetic.push_back(p.plate.muKinetic * grading.frictionFactor(x));
+  }
+  return c;
+}
+
 FrictionField buildFriction(const Parameters& p, const Grading& grading, StreamKey key) {
   const int nb = p.blocksPerSide;
   const double normal = p.normalForcePerBlock();

@@ -2,6 +2,7 @@
 #include "gradfric/sbm/parameter_options.hpp"
 
 #include "gradfric/core/input_error.hpp"
+#include "gradfric/core/run_limits.hpp"
 #include "gradfric/physics/friction_options.hpp"
 #include "gradfric/physics/stability.hpp"
 #include "gradfric/physics/friction_laws.hpp"
@@ -31,7 +32,7 @@ Parameters readParameters(MPI_Comm comm, RunParameters* record, const Plate& pla
   p.frictionLaw.criticalVelocity = o.real("v_c", p.frictionLaw.criticalVelocity, "m/s",
                                           "critical velocity v_c of the exponential law (used with -sbm_friction_law exponential)");
   o.requirePositive("v_c", p.frictionLaw.criticalVelocity, "m/s");
-  p.blocksPerSide = static_cast<int>(o.integer("N", p.blocksPerSide, "1", "blocks per side N_b"));
+  p.blocksPerSide = static_cast<int>(o.integer("N", p.blocksPerSide, 2, 4096, "1", "blocks per side N_b"));
   const std::string integrator = o.choice("integrator", "verlet", {"rk4", "verlet"},
                                           "time integrator, fixed step: classical RK4 (4 force evaluations a step) or velocity Verlet (1)");
   p.integrator = integrator == "verlet" ? Integrator::VelocityVerlet : Integrator::RK4;
@@ -58,6 +59,7 @@ Parameters readParameters(MPI_Comm comm, RunParameters* record, const Plate& pla
   o.requireRange("dt_safety", p.timeStepSafety, 1e-6, 1.0, "0 < dt_safety <= 1");
   p.timeStepSlip = o.real("dt_slip", p.timeStepSlip, "1", "default dt: at most this fraction of the slip time sqrt(m/K_s)");
   o.requirePositive("dt_slip", p.timeStepSlip, "");
+  p.automaticTimeStep = defaultTimeStep(p, grading);
   const bool check = o.flag("dt_check", true, "refuse a dt above the stability limit (false: only to test the instability monitor)");
   const std::string scheme = p.integrator == Integrator::VelocityVerlet ? "velocity Verlet" : "RK4";
   const TimeStepPolicy policy{o.fullName("dt"), "the " + scheme + " stability limit of this lattice", stable, check};
@@ -88,6 +90,14 @@ Request readRequest(MPI_Comm comm, RunParameters* record, const Parameters& p) {
   q.endTime = o.real("t_end", 0.0, "s", "if > 0: run exactly this long, whatever the observables (0: stop when known)");
   o.requireNonNegative("t_end", q.endTime, "s");
   if (!(q.maxTime > 0)) throw InputError(o.fullName("t_max"), formatReal(q.maxTime), "> 0 [s]");
+  // Before any work: a finite but absurd value (-sbm_dt 1e-300, a loading time of 1e300 s) would
+  // otherwise run for ever.
+  requireResolvedTimescale(record, load, p.timeStep, o.fullName("dt"), {"-sbm_", "-plate_", "-grading_"},
+                           "loading time");
+  const bool fixedLength = q.endTime > 0;
+  requireRunLength(record, fixedLength ? q.endTime : q.maxTime, p.timeStep, p.automaticTimeStep, o.fullName("dt"),
+                   {o.fullName(fixedLength ? "t_end" : "t_max")}, {"-sbm_", "-plate_", "-grading_"},
+                   fixedLength ? "t_end" : "t_max");
   return q;
 }
 

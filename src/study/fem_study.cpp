@@ -68,6 +68,8 @@ std::vector<std::array<int, 3>> parseMeshes(const OptionReader& o, const std::st
     std::stringstream s(item);
     if (!(s >> m[0] >> x1 >> m[1] >> x2 >> m[2]) || x1 != 'x' || x2 != 'x' || m[0] < 1 || m[1] < 1 || m[2] < 1)
       throw InputError(o.fullName(name), text, "comma-separated meshes nx x ny x nz, e.g. 25x25x1,50x50x2");
+    if (double(m[0]) * m[1] * m[2] > 2e7)  // as -fem_nx/ny/nz: memory before any work
+      throw InputError(o.fullName(name), item, "meshes of at most 2e7 hexahedra");
     meshes.push_back(m);
   }
   return meshes;
@@ -137,7 +139,7 @@ void runFiniteElementStudy(MPI_Comm comm, RunParameters* record) {
       "mesh_estimate", "", "meshes too big to run through: time a short run and estimate the full cost (e.g. 200x200x10)");
   const double meshSafety = o.real("mesh_dt_safety", 0.3, "1",
                                    "dt safety of the mesh ladder (small, so that the dt error does not mask the mesh error)");
-  const PetscInt estimateSteps = o.integer("mesh_estimate_steps", 40, "1", "steps of that short run");
+  const PetscInt estimateSteps = o.integer("mesh_estimate_steps", 40, 1, 1000000, "1", "steps of that short run");
   const auto integrators = o.choiceList("integrators", {"gfverlet", "rk4", "ssp"}, {"gfverlet", "rk4", "ssp"},
                                         "integrators of the dt ladder (gfverlet first: its finest rung is the reference)");
   auto safeties = o.realList("dt_safety", {0.1, 0.2, 0.3, 0.5, 0.7, 0.9}, "1",
@@ -159,7 +161,7 @@ void runFiniteElementStudy(MPI_Comm comm, RunParameters* record) {
   o.requireAtLeast("mesh_estimate_steps", estimateSteps, 2);
   for (auto* list : {&safeties, &safetiesOther, &paperSafeties})
     for (double s : *list) o.requireRange("dt_safety", s, 1e-6, 1.0, "0 < safety <= 1");
-  for (double f : factors) o.requirePositive("penalty_factors", f, "1");
+  for (double f : factors) o.requireRange("penalty_factors", f, 1e-6, 1e6, "1e-6 <= factor <= 1e6");
   o.requireRange("penalty_dt_safety", penaltySafety, 1e-6, 1.0, "0 < safety <= 1");
   o.requireRange("mesh_dt_safety", meshSafety, 1e-6, 1.0, "0 < safety <= 1");
   if (dtSet) throw InputError("-fem_dt", "(set)", "unset: the study sets the step as a fraction of the stable step");

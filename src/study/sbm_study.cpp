@@ -2,6 +2,7 @@
 #include "gradfric/study/study_file.hpp"
 
 #include "gradfric/core/input_error.hpp"
+#include "gradfric/core/run_limits.hpp"
 #include "gradfric/core/petsc_call.hpp"
 #include "gradfric/io/hdf5_handle.hpp"
 #include "gradfric/physics/grading_options.hpp"
@@ -71,11 +72,11 @@ void runSpringBlockStudy(MPI_Comm comm, RunParameters* record) {
   const auto integrators = o.choiceList("integrators", {"rk4", "verlet"}, {"rk4", "verlet"}, "integrators of the dt ladder");
   auto dts = o.realList("dt", {1e-9, 3e-9, 1e-8, 3e-8, 1e-7, 3e-7, 1e-6}, "s",
                         "time-step ladder (rungs above an integrator's stability limit are replaced by 0.98 x the limit)");
-  const PetscInt dtRealisations = o.integer("dt_realisations", 3, "1", "realisations (same seeds on every rung) of the dt ladder");
+  const PetscInt dtRealisations = o.integer("dt_realisations", 3, 1, 100000, "1", "realisations (same seeds on every rung) of the dt ladder");
   const auto sizes = o.realList("N", {30, 60, 120, 240}, "1", "lattice-size ladder N_b (finest is the reference)");
-  const PetscInt sizeRealisations = o.integer("N_realisations", 8, "1", "realisations per lattice size");
-  const PetscInt maxRealisations = o.integer("R_max", 32, "1", "sample size of the realisations ladder (R = 1, 2, 4, ... R_max)");
-  const PetscInt seed = o.integer("seed", 1, "1", "seed of the realisations' random streams");
+  const PetscInt sizeRealisations = o.integer("N_realisations", 8, 1, 100000, "1", "realisations per lattice size");
+  const PetscInt maxRealisations = o.integer("R_max", 32, 1, 1000000, "1", "sample size of the realisations ladder (R = 1, 2, 4, ... R_max)");
+  const PetscInt seed = o.integer("seed", 1, 0, PETSC_MAX_INT, "1", "seed of the realisations' random streams");
   OptionReader out(comm, "", "Results file", record);
   const std::string output = out.text("output", "gradfric_study.h5", "study results file (HDF5)");
   const bool overwrite = out.flag("output_overwrite", false, "replace an existing results file");
@@ -85,7 +86,9 @@ void runSpringBlockStudy(MPI_Comm comm, RunParameters* record) {
   o.requireAtLeast("R_max", maxRealisations, 2);
   for (double dt : dts) o.requirePositive("dt", dt, "s");
   for (double n : sizes)
-    if (n < 2 || n != std::floor(n)) throw InputError(o.fullName("N"), formatReal(n), "whole numbers >= 2");
+    if (n < 2 || n > 4096 || n != std::floor(n)) throw InputError(o.fullName("N"), formatReal(n), "whole numbers 2 <= N <= 4096");
+  for (double dt : dts)  // before any work: a rung of 1e-300 s would never finish
+    requireRunLength(record, request.maxTime, dt, base.automaticTimeStep, o.fullName("dt"), {}, {}, "t_max");
   if (access(output.c_str(), F_OK) == 0 && !overwrite)
     throw InputError("-output", output, "a file that does not exist yet (add -output_overwrite to replace it)");
   checkUnusedOptions(comm, {"study_", "plate_", "friction_", "sbm_", "grading_", "output"});

@@ -42,7 +42,7 @@ determinism)
   same "$work/np1.h5" "$work/np2.h5"
   same "$work/np1.h5" "$work/np3.h5"
   # Who ran what did change (so the comparison above is not vacuous) ...
-  h5dump -y -d /run/rank "$work/np2.h5" | sed -n '/DATA {/,/}/p' | grep -Eq '(^|[ ,])1(,|$)' ||
+  h5dump -A 0 -y -d /run/rank "$work/np2.h5" | sed -n '/DATA {/,/}/p' | grep -Eq '(^|[ ,])1(,|$)' ||
     fail "rank 1 ran no task on 2 ranks"
   # ... and h5diff does see a different realisation set: another seed must differ.
   run 2 "${scene[@]}" -ensemble_seed 99 -output "$work/seed.h5" >/dev/null
@@ -77,7 +77,7 @@ kill_resume)
   [ ! -e "$work/cut.h5" ] || fail "an interrupted run left a file under the final name"
   [ -f "$work/cut.h5.partial" ] || fail "no .partial file after the interruption"
   # The partial file is readable HDF5 and keeps the finished tasks.
-  done_count=$(h5dump -y -d /realisations/done "$work/cut.h5.partial" | sed -n '/DATA {/,/}/p' | grep -o '[01]' | grep -c 1 || true)
+  done_count=$(h5dump -A 0 -y -d /realisations/done "$work/cut.h5.partial" | sed -n '/DATA {/,/}/p' | grep -o '[01]' | grep -c 1 || true)
   [ "$done_count" -ge 3 ] || fail "only $done_count finished tasks kept after the interruption"
   [ "$done_count" -le 4 ] || fail "the interruption came too late to test anything ($done_count tasks)"
   h5dump -a /complete "$work/cut.h5.partial" | grep -q "(0): 0" || fail "interrupted file not marked incomplete"
@@ -97,7 +97,7 @@ kill_resume)
   for _ in $(seq 1 300); do  # wait until at least one task is in the file
     sleep 0.05
     if [ -f "$work/killed.h5.partial" ]; then
-      finished=$(h5dump -y -d /realisations/done "$work/killed.h5.partial" 2>/dev/null |
+      finished=$(h5dump -A 0 -y -d /realisations/done "$work/killed.h5.partial" 2>/dev/null |
         sed -n '/DATA {/,/}/p' | grep -o '[01]' | grep -c 1 || true)
       [ "$finished" -ge 1 ] && break
     fi
@@ -107,7 +107,7 @@ kill_resume)
   kill -KILL $ranks
   wait "$launcher" && fail "the killed run reported success" || true
   [ -f "$work/killed.h5.partial" ] || fail "no .partial file after SIGKILL"
-  kept=$(h5dump -y -d /realisations/done "$work/killed.h5.partial" | sed -n '/DATA {/,/}/p' | grep -o '[01]' | grep -c 1 || true)
+  kept=$(h5dump -A 0 -y -d /realisations/done "$work/killed.h5.partial" | sed -n '/DATA {/,/}/p' | grep -o '[01]' | grep -c 1 || true)
   [ "$kept" -ge "$finished" ] || fail "SIGKILL lost finished tasks ($kept < $finished)"
   [ "$kept" -lt 15 ] || fail "the kill came too late to test anything"
   run 2 "${big[@]}" -ensemble_resume -output "$work/killed.h5" >"$work/killed_resume.log"
@@ -151,7 +151,7 @@ single)
   grep -q "results in $work/s.h5" "$work/s.log" || fail "where the results went is not printed"
   # The printed mu_s is the one in the file.
   printed=$(sed -n 's/^Result: mu_s = \([0-9.]*\),.*/\1/p' "$work/s.log")
-  stored=$(h5dump -m %.6f -d /statistics/mu_s_mean "$work/s.h5" | sed -n 's/.*(0): \([0-9.]*\).*/\1/p')
+  stored=$(h5dump -A 0 -m %.6f -d /statistics/mu_s_mean "$work/s.h5" | sed -n 's/.*(0): \([0-9.]*\).*/\1/p')
   [ "$printed" = "$stored" ] || fail "printed mu_s $printed, file $stored"
   # More ranks than tasks: two of three ranks find nothing to do; same file.
   run 3 -sbm_N 16 -output "$work/s3.h5" >"$work/s3.log"

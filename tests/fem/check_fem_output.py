@@ -1,6 +1,9 @@
 #!/usr/bin/env python3
-"""Runs gradfric-fem with output on a coarse plate and checks the files: the history with h5py,
-the field snapshots in PETSc's VIZ layout, the .xmf beside them, and the refusal to overwrite."""
+"""Runs gradfric-fem with output on a coarse plate and checks the files: the history with h5py
+(units and descriptions, dimension scales, forces, properties, provenance), the field snapshots in
+PETSc's VIZ layout, the .xmf beside them, and the refusal to overwrite.
+With --paraview, also opens the .xmf in ParaView (pvbatch, under xvfb-run when present) and
+compares what ParaView shows with the file (paraview_open.py); ParaView must then be installed."""
 import os
 import shutil
 import subprocess
@@ -9,8 +12,10 @@ import tempfile
 import xml.etree.ElementTree as ET
 
 import h5py
+import numpy as np
 
 driver = sys.argv[1]
+with_paraview = "--paraview" in sys.argv[2:]
 env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
 work = tempfile.mkdtemp(prefix="gradfric_fem_out_")
 out = os.path.join(work, "run.h5")
@@ -27,7 +32,29 @@ with h5py.File(out, "r") as f:
     res = f["results"].attrs
     assert abs(res["mu_s"] - mu.max()) < 1e-12, (res["mu_s"], mu.max())
     assert 0.5 < res["mu_s"] <= 1.02
-    assert "fem_nx" in f["parameters"].attrs
+    scene = f["scene"].attrs
+    assert "fem_nx" in scene and f["scene/units"].attrs["fem_nx"] == "1", dict(f["scene/units"].attrs)
+    assert f["scene/origin"].attrs["fem_nx"] == "set"
+    # The conventions: strings as str, flags as integers, every dataset with units and description.
+    assert isinstance(f.attrs["format"], str) and f.attrs["format_version"] == 2
+    assert res["peak_confirmed"].dtype.kind == "i", res["peak_confirmed"].dtype
+
+    def described(name, obj):
+        if isinstance(obj, h5py.Dataset):
+            assert isinstance(obj.attrs.get("units"), str) and obj.attrs.get("description"), name
+
+    f.visititems(described)
+    # Axes as dimension scales.
+    assert f["history/mu"].dims[0].keys() == ["time"] and f["properties/E"].dims[0].keys() == ["x"]
+    # The force components give mu: |(Fx, Fy)| / (p L^2).
+    p = float(scene["plate_p"])
+    side = float(scene["plate_L"])
+    fx, fy = f["history/force_x"][:], f["history/force_y"][:]
+    assert np.allclose(np.hypot(fx, fy) / (p * side**2), mu, rtol=1e-12, atol=1e-15)
+    assert np.allclose(f["properties/E"][:], float(scene["plate_E"]))
+    prov = f["provenance"].attrs
+    assert prov["ranks"] == 2 and prov["software_version"] and prov["software_commit"], dict(prov)
+    assert "-fem_output" in prov["command_line"] and prov["date"].endswith("Z"), dict(prov)
 fields = os.path.join(work, "run_fields.h5")
 with h5py.File(fields, "r") as f:
     for name in ("state_displacement", "state_velocity", "bottom_contact"):
@@ -47,13 +74,21 @@ with h5py.File(fields, "r") as f:
     assert pressure.max() > 0.5 * 1e4, pressure.max()  # contact pressure near p on the bottom
 xmf = os.path.join(work, "run_fields.xmf")
 ET.parse(xmf)  # well-formed XML
-# ParaView itself, when installed (Debian's paraview + python3-paraview provide pvbatch).
-pvbatch = "/usr/bin/pvbatch"
-if os.path.exists(pvbatch):
+# The fields: units, description and component names.
+with h5py.File(fields, "r") as f:
+    assert f["cell_fields/cell_stress"].attrs["components"] == "xx,xy,xz,yy,yz,zz"
+    assert f["vertex_fields/bottom_contact"].attrs["components"] == "pressure,tx,ty,state"
+    assert f["vertex_fields/state_displacement"].attrs["units"] == "m"
+if with_paraview:  # ParaView itself (Debian's paraview + python3-paraview provide pvbatch)
+    pvbatch = shutil.which("pvbatch")
+    assert pvbatch, "pvbatch not found: install paraview, python3-paraview and xvfb (scripts/setup.sh --tests)"
     script = os.path.join(os.path.dirname(os.path.abspath(__file__)), "paraview_open.py")
-    r = subprocess.run([pvbatch, script, xmf, str(8 * 8 * 2)], env=env, capture_output=True, text=True)
+    command = [pvbatch, script, xmf, fields, str(8 * 8 * 2)]
+    if shutil.which("xvfb-run"):
+        command = ["xvfb-run", "-a"] + command
+    r = subprocess.run(command, env=env, capture_output=True, text=True)
     assert r.returncode == 0 and "paraview OK" in r.stdout, r.stdout + r.stderr
-    print(r.stdout.strip())
+    print(r.stdout.strip().splitlines()[-1])
 # No overwrite without the flag; nothing half-written left behind.
 r = subprocess.run(mpi + base, env=env, capture_output=True, text=True)
 assert r.returncode == 2 and "-fem_output_overwrite" in r.stderr, r.stdout + r.stderr

@@ -21,6 +21,7 @@ struct ResolvedOption {
   std::string unit;
   std::string help;
   OptionOrigin origin;
+  std::string fallback = "";  // the built-in default of a real option, for blaming the option a bad run comes from
 };
 
 // Every option a run resolved, in the order read.
@@ -41,13 +42,17 @@ class OptionReader {
 public:
   OptionReader(MPI_Comm comm, std::string prefix, std::string title, RunParameters* record);
 
+  // Reals must be finite and representable (no inf, nan, 1e999 or 1e-999): refused naming the option.
   double real(const std::string& name, double fallback, const std::string& unit, const std::string& help);
   // For defaults derived from other parameters: returns the user's value if set, else nullopt;
   // the component then computes the default and calls recordDerived().
   std::optional<double> realIfSet(const std::string& name, const std::string& unit, const std::string& help,
                                   const std::string& defaultText);
   void recordDerived(const std::string& name, double value, const std::string& unit, const std::string& help);
-  PetscInt integer(const std::string& name, PetscInt fallback, const std::string& unit, const std::string& help);
+  // Integers are read as text and refused outside [lo, hi] (no wrap-around: 4294967304 is not 8);
+  // -help shows the range.
+  PetscInt integer(const std::string& name, PetscInt fallback, PetscInt lo, PetscInt hi, const std::string& unit,
+                   const std::string& help);
   bool flag(const std::string& name, bool fallback, const std::string& help);
   // One of `allowed`; anything else is refused with the list.
   std::string choice(const std::string& name, const std::string& fallback, const std::vector<std::string>& allowed,
@@ -73,7 +78,7 @@ private:
   void printHelp(const std::string& name, const std::string& current, const std::string& unit,
                  const std::string& help);
   void store(const std::string& name, const std::string& value, const std::string& unit, const std::string& help,
-             bool userSet);
+             bool userSet, const std::string& fallback = "");
 
   MPI_Comm comm_;
   std::string prefix_;
@@ -86,8 +91,12 @@ private:
 // True when -help was given: drivers print the option lists, then stop before any work.
 bool helpRequested();
 
-// Options the user set that nothing has read so far. Those under one of `strictPrefixes` (the
-// components this run uses) are refused as likely misspellings; the rest are reported as unused.
+// Every option name any OptionReader of this process has read (with its dash), for near misses.
+std::vector<std::string> knownOptionNames();
+
+// Options the user set that nothing has read so far. Refused as misspellings: those under one of
+// `strictPrefixes` (the components this run uses) and near misses of a known option (within an
+// edit or two: -ouput, --sbm_N) that are not PETSc's own; the rest are reported as unused.
 void checkUnusedOptions(MPI_Comm comm, const std::vector<std::string>& strictPrefixes);
 
 }  // namespace gradfric

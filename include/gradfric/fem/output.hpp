@@ -10,6 +10,7 @@
 // and renamed at the end, so a failed run leaves no half-written result.
 #include "gradfric/core/options.hpp"
 #include "gradfric/fem/simulation.hpp"
+#include "gradfric/io/provenance.hpp"
 
 #include <string>
 
@@ -37,6 +38,7 @@ private:
   void createFieldDMs(PlateModel& model);
   MPI_Comm comm_;
   FemParameters params_;
+  io::Provenance provenance_;
   std::string path_, fieldsPath_, xmfPath_;
   std::vector<double> pending_;  // snapshot times not yet written
   int snapshots_ = 0;

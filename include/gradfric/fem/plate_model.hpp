@@ -8,6 +8,7 @@
 // "velocity"); the right-hand side is [v ; M^-1 (f_int + f_pressure + f_contact) - gamma v].
 #include <petscsection.h>  // petsc_handle.hpp names PetscSFDestroy/PetscSectionDestroy without
 #include <petscsf.h>       // including their headers
+#include "gradfric/core/options.hpp"
 #include "gradfric/core/petsc_handle.hpp"
 #include "gradfric/fem/contact_penalty.hpp"
 #include "gradfric/fem/hex_element.hpp"
@@ -36,6 +37,9 @@ double stableTimeStep(const FemParameters& params, const Grading& grading);
 // The step a run uses: params.dt if set (refused with the limit in the message if above the
 // stable step), else dtSafety * stable step. Throws InputError.
 double chooseTimeStep(const FemParameters& params, const Grading& grading);
+// Refuses, before any work, a run of more than 1e9 steps (pressure step + sliding at the chosen
+// dt), naming the option the user set that made it so (see core/run_limits.hpp).
+void requireFemRunLength(const FemParameters& params, const Grading& grading, const RunParameters* record);
 
 struct ContactTotals {
   double fx = 0, fy = 0, fn = 0;  // total contact force on the plate [N]

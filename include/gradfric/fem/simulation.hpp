@@ -11,7 +11,8 @@ namespace gradfric::fem {
 
 struct FemRunResult {
   // mu(t) = |total tangential contact force| / (p L^2), time measured from the start of sliding.
-  std::vector<double> time, mu, normalForce;  // every step of step 2
+  std::vector<double> time, mu, normalForce;  // every step of step 2; normalForce is F_n / (p L^2)
+  std::vector<double> forceX, forceY;          // total tangential contact force components [N]
   double muS = 0;            // global static coefficient: max of mu(t)
   double peakTime = 0;       // time of the peak after the start of sliding [s]
   double firstSlipTime = -1; // first node slipping after the start of sliding [s]

@@ -8,7 +8,9 @@
 // moment leaves a readable file in which every task flagged done is complete. The statistics
 // are written, and the `complete` attribute set, collectively at the end.
 // The layout is documented field by field in docs/ensemble.md.
+#include "gradfric/io/hdf5_attributes.hpp"
 #include "gradfric/io/hdf5_handle.hpp"
+#include "gradfric/io/provenance.hpp"
 
 #include <mpi.h>
 
@@ -18,7 +20,7 @@
 
 namespace gradfric::io {
 
-inline constexpr int kFormatVersion = 1;
+inline constexpr int kFormatVersion = 2;  // 2: units, dimension scales, forces, properties, provenance
 inline constexpr const char* kFormatName = "gradfric-sbm-ensemble";
 
 struct EnsembleLayout {
@@ -27,6 +29,7 @@ struct EnsembleLayout {
   int historyCapacity = 0;  // C: mu(t) samples kept per task (0: no histories)
   int mapSide = 0;          // N_b: side of the first-slip and stress maps
   bool firstSlipMap = false;
+  bool frictionFields = false;  // /maps/mu_s_local, mu_k_local: each realisation's local coefficients
   std::vector<double> snapshotTimes;  // requested sigma_x/p snapshot times [s] (S of them)
   // Names of the per-point statistics columns (/statistics/<name>), real and integer.
   std::vector<std::string> statisticsReal;
@@ -43,13 +46,9 @@ struct SweepTable {
   std::vector<std::string> property;  // E, friction, both
   std::vector<std::string> profile;   // none, linear, triangular
   std::vector<int> referencePoint;    // the non-graded point of the same (theta, sigma, ...) or -1
-};
-
-struct Attribute {
-  std::string name;  // without the leading dash: "sbm_E"
-  std::string value;
-  std::string unit;
-  std::string origin;  // default, set, derived
+  // The property fields each point used before random dispersion, P x N_b row-major (point,
+  // block column; every row of a column is the same): E [Pa], mean mu_s and mu_k.
+  std::vector<double> modulus, muStatic, muKinetic;
 };
 
 struct TaskOutput {
@@ -64,7 +63,9 @@ struct TaskOutput {
   int redrawnBlocks = 0;
   std::vector<double> time;           // mu(t) history (at most historyCapacity samples)
   std::vector<double> mu;
+  std::vector<double> forceX, forceY;  // slider force components [N] at the same samples
   std::vector<double> firstSlipTime;  // N_b x N_b or empty
+  std::vector<double> localStatic, localKinetic;  // mu_s,i and mu_k,i, N_b x N_b (frictionFields)
   std::vector<double> snapshotTime;   // actual time of each snapshot taken (<= S)
   std::vector<std::vector<double>> snapshots;  // sigma_x/p maps, N_b x N_b each
   double wallSeconds = 0.0;
@@ -107,6 +108,8 @@ public:
   // Collective: attributes of /run (ranks, sessions, the run-control options): not part of the
   // results, they differ between runs of the same scene.
   void setRunAttributes(const std::vector<Attribute>& attributes);
+  // Collective: software version and commit, command line, options files, date, ranks in /run.
+  void setProvenance(const Provenance& provenance);
   // Collective: sets the root attribute complete = 1.
   void markComplete();
   // Collective.
@@ -124,8 +127,8 @@ private:
   SweepTable sweep_;
   H5Dataset muStatic_, muKinetic_, peakTime_, endTime_, peakConfirmed_, steps_, redrawn_, done_;
   H5Dataset wallSeconds_, taskRank_;
-  H5Dataset historyTime_, historyMu_, historyLength_;
-  H5Dataset firstSlip_, snapshotTime_, snapshots_;
+  H5Dataset historyTime_, historyMu_, historyForceX_, historyForceY_, historyLength_;
+  H5Dataset firstSlip_, localStatic_, localKinetic_, snapshotTime_, snapshots_;
   H5PropertyList independent_;
 };
 

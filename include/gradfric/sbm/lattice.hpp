@@ -39,6 +39,13 @@ struct FrictionField : FrictionSites {
 // until 0 < mu_k,i <= mu_s,i. With sigma = 0 nothing is drawn.
 FrictionField buildFriction(const Parameters& parameters, const Grading& grading, StreamKey key);
 
+// The property fields of a grading before random dispersion, one value per block column (every
+// row of a column is the same): E [Pa], mean mu_s and mu_k. Stored in the results file per point.
+struct ColumnProperties {
+  std::vector<double> modulus, muStatic, muKinetic;
+};
+ColumnProperties columnProperties(const Parameters& parameters, const Grading& grading);
+
 // Energies of a lattice state [J]: kinetic, elastic in the internal springs, elastic in the
 // slider springs (slider at sliderX, sliderY, the displacement of the slider's end).
 struct LatticeEnergy {

@@ -29,6 +29,7 @@ struct Parameters {
   int blocksPerSide = 120;  // N_b
   double damping = 0.0;     // gamma [1/s]; default 0.1 sqrt(K_int/m)
   double timeStep = 0.0;    // dt [s]; default: defaultTimeStep()
+  double automaticTimeStep = 0.0;  // what defaultTimeStep() gives, also when the user set dt
   // Defaults from the accuracy study (docs/accuracy.md): velocity Verlet at 0.03 of the slip time
   // keeps the time-integration error of mu_s below the statistical error of a 20-realisation
   // ensemble, at about a tenth of the cost of the paper's RK4 at 1e-8 s.
