@@ -9,7 +9,6 @@
 #include "gradfric/sbm/lattice.hpp"
 
 #include <benchmark/benchmark.h>
-#include <petscsys.h>
 
 #include <cstdio>
 #include <cstdlib>
@@ -42,11 +41,11 @@ Setup makeSetup() {
   return s;
 }
 
-template <class Lattice, Integrator scheme = Integrator::RK4>
+template <template <class> class Lattice, Integrator scheme = Integrator::RK4, class Law = CoulombStickSlip>
 void benchmarkStep(benchmark::State& state) {
   Setup s = makeSetup();
   s.motion.integrator = scheme;
-  Lattice lattice(s.stiffness, s.friction, s.motion);
+  Lattice<Law> lattice(s.stiffness, Law::make(s.friction, FrictionLawSettings{}), s.motion);
   // Warm up into the sliding phase: just past the loading time, most blocks slip.
   while (lattice.time() < 1.05 * s.parameters.loadingTime()) lattice.step();
   for (auto _ : state) benchmark::DoNotOptimize(lattice.step());
@@ -59,7 +58,11 @@ void benchmarkStep(benchmark::State& state) {
 void BM_FastLattice(benchmark::State& state) { benchmarkStep<FastLattice>(state); }
 void BM_ReferenceLattice(benchmark::State& state) { benchmarkStep<ReferenceLattice>(state); }
 void BM_FastLatticeVerlet(benchmark::State& state) { benchmarkStep<FastLattice, Integrator::VelocityVerlet>(state); }
+void BM_FastLatticeExponential(benchmark::State& state) {
+  benchmarkStep<FastLattice, Integrator::RK4, ExponentialVelocityWeakening>(state);
+}
 BENCHMARK(BM_FastLattice)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_FastLatticeExponential)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FastLatticeVerlet)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ReferenceLattice)->Unit(benchmark::kMillisecond);
 
@@ -82,7 +85,6 @@ public:
 int main(int argc, char** argv) {
   benchmark::Initialize(&argc, argv);
   for (int i = 1; i < argc; ++i) blocksPerSide = std::atoi(argv[i]) > 1 ? std::atoi(argv[i]) : blocksPerSide;
-  PetscInitializeNoArguments();
   RatioReporter reporter;
   benchmark::RunSpecifiedBenchmarks(&reporter);
   const double fast = reporter.nsPerBlockStep["BM_FastLattice"];
@@ -94,6 +96,5 @@ int main(int argc, char** argv) {
   if (verlet > 0 && fast > 0)
     std::printf("N_b = %d: velocity Verlet %.1f ns per block per step, %.2fx cheaper per step than fast RK4\n",
                 blocksPerSide, verlet, fast / verlet);
-  PetscFinalize();
   return 0;
 }

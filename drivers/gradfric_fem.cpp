@@ -14,6 +14,7 @@
 #include "gradfric/physics/grading_options.hpp"
 #include "gradfric/physics/plate_options.hpp"
 #include "gradfric/sbm/model.hpp"
+#include "gradfric/sbm/parameter_options.hpp"
 #include "gradfric/sbm/parameters.hpp"
 
 #include <petscsys.h>

@@ -8,6 +8,7 @@
 #include "gradfric/physics/plate_options.hpp"
 #include "gradfric/sbm/lattice.hpp"
 #include "gradfric/sbm/model.hpp"
+#include "gradfric/sbm/parameter_options.hpp"
 
 #include <unistd.h>
 

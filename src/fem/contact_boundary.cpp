@@ -3,6 +3,7 @@
 #include "gradfric/core/petsc_call.hpp"
 
 #include <algorithm>
+#include <utility>
 
 namespace gradfric::fem {
 
@@ -13,12 +14,19 @@ ContactBoundary::ContactBoundary(const PlateMesh& mesh, const PenaltyStiffness& 
   const std::vector<double> area = mesh.sumOverFaces(FaceSet::Bottom);
   const std::vector<double> graded =
       mesh.sumOverFaces(FaceSet::Bottom, [&](double x) { return grading.frictionFactor(x / length); });
+  FrictionSites sites;
+  sites.layout = SiteLayout::PerSite;
   for (const OwnedVertex& v : mesh.ownedVertices()) {
     if (!(area[v.block] > 0)) continue;
     const double factor = graded[v.block] / area[v.block];  // area-weighted band factor
-    Node node{v.block, v.x, v.y, area[v.block], ContactLaw{muStatic * factor, muKinetic * factor, criticalVelocity}};
-    nodes_.push_back(node);
+    nodes_.push_back(Node{v.block, v.x, v.y, area[v.block]});
+    sites.staticStrength.push_back(muStatic * factor);
+    sites.kineticStrength.push_back(muKinetic * factor);
   }
+  sites.columns = static_cast<int>(nodes_.size());
+  FrictionLawSettings settings;
+  settings.criticalVelocity = criticalVelocity;
+  law_ = ContactLaw::make(std::move(sites), settings);
 }
 
 ContactTotals ContactBoundary::addForce(Vec X, Vec F) {
@@ -27,10 +35,11 @@ ContactTotals ContactBoundary::addForce(Vec X, Vec F) {
   GF_CALL(VecGetArrayRead(X, &x));
   GF_CALL(VecGetArray(F, &f));
   ContactTotals totals;
-  for (Node& n : nodes_) {
+  for (std::size_t site = 0; site < nodes_.size(); ++site) {
+    Node& n = nodes_[site];
     const PetscScalar* xb = x + 6 * n.block;
-    const ContactTraction r = penaltyContact(stiffness_, n.law, xb[2], xb[0], xb[1], n.anchorX, n.anchorY, xb[3],
-                                             xb[4], n.state == ContactState::Slip);
+    const ContactTraction r = penaltyContact(stiffness_, law_, static_cast<int>(site), xb[2], xb[0], xb[1], n.anchorX,
+                                             n.anchorY, xb[3], xb[4], n.state == ContactState::Slip);
     n.pendingX = r.anchorX;
     n.pendingY = r.anchorY;
     n.pendingState = r.state;
@@ -57,7 +66,7 @@ ContactTotals ContactBoundary::addForce(Vec X, Vec F) {
 
 double ContactBoundary::largestStaticCoefficient() const {
   double local = 0, global = 0;
-  for (const Node& n : nodes_) local = std::max(local, n.law.muStatic);
+  for (double s : law_.sites.staticStrength) local = std::max(local, s);
   GF_CALL_MPI(MPI_Allreduce(&local, &global, 1, MPI_DOUBLE, MPI_MAX, comm_));
   return global;
 }

@@ -43,8 +43,9 @@ Motion motionOf(const Parameters& p, double timeStep, double damping) {
   return {timeStep, damping, p.blockMass(), p.plate.velocity * cx, p.plate.velocity * cy, p.integrator};
 }
 
-FastLattice::FastLattice(const LatticeStiffness& stiffness, const FrictionField& friction, const Motion& motion)
-    : stiffness_(stiffness), friction_(friction), motion_(motion), nb_(stiffness.blocksPerSide) {
+template <class Law>
+FastLattice<Law>::FastLattice(const LatticeStiffness& stiffness, Law law, const Motion& motion)
+    : stiffness_(stiffness), law_(std::move(law)), motion_(motion), nb_(stiffness.blocksPerSide) {
   const std::size_t n = std::size_t(nb_) * nb_;
   for (auto* v : {&ux_, &uy_, &vx_, &vy_, &sx_, &sy_, &svx_, &svy_, &accUx_, &accUy_, &accVx_, &accVy_, &mobile_,
                  &frictionX_, &frictionY_})
@@ -197,8 +198,9 @@ GF_ALWAYS_INLINE void openKickAndDrift(int nb, double half, double h, double inv
 // Forces F_mot on row r at positions (px, py) and time t into fx_, fy_: slider springs, the
 // reactions carried from the row below, the row's horizontal springs and the springs to the row
 // above (whose reactions go to next*). With WantSum, adds the slider forces to (sumX, sumY).
+template <class Law>
 template <bool Graded, bool WantSum>
-GF_ALWAYS_INLINE void FastLattice::rowForces(int r, const double* px, const double* py, double t, const double* carryX,
+GF_ALWAYS_INLINE void FastLattice<Law>::rowForces(int r, const double* px, const double* py, double t, const double* carryX,
                                              const double* carryY, double* nextX, double* nextY, double& sumX,
                                              double& sumY) {
   const int nb = nb_;
@@ -247,64 +249,69 @@ GF_ALWAYS_INLINE void FastLattice::rowForces(int r, const double* px, const doub
 
 // Stick/slip transitions of row r with its driving forces at t_n (see integrator.hpp). Branches,
 // so it runs as a short scalar loop of its own.
-template <FrictionField::Layout L>
-GF_ALWAYS_INLINE void FastLattice::transitions(int r, double t) {
+template <class Law>
+template <SiteLayout L>
+GF_ALWAYS_INLINE void FastLattice<Law>::transitions(int r, double t) {
   const int nb = nb_, base = r * nb;
   const double* fx = fx_.data();
   const double* fy = fy_.data();
-  const double* staticForce = friction_.staticForce.data() + (L == FrictionField::Layout::PerBlock ? base : 0);
+  const double* staticStrength = law_.sites.staticStrength.data() + (L == SiteLayout::PerSite ? base : 0);
   std::uint8_t* state = state_.data() + base;
   double* mobile = mobile_.data() + base;
   double* vx = vx_.data() + base;
   double* vy = vy_.data() + base;
   for (int c = 0; c < nb; ++c) {
     if (state[c] == Slipping) continue;
-    const double threshold = L == FrictionField::Layout::Uniform ? staticForce[0] : staticForce[c];
-    const bool holds = fx[c] * fx[c] + fy[c] * fy[c] <= threshold * threshold;
-    if (state[c] == Stuck) {
-      if (holds) continue;
-      state[c] = Slipping;
-      mobile[c] = 1.0;
-      if (!everSlipped_[base + c]) {
-        everSlipped_[base + c] = 1;
-        ++slipped_;
-        if (firstSlip_) firstSlip_[base + c] = t;
-      }
-    } else if (holds) {  // reversed during the last step and held by static friction
-      state[c] = Stuck;
-      mobile[c] = 0.0;
-      vx[c] = 0.0;
-      vy[c] = 0.0;
-    } else {
-      state[c] = Slipping;
+    const double threshold = L == SiteLayout::Uniform ? staticStrength[0] : staticStrength[c];
+    switch (stickSlipChange(state[c], Law::holds(fx[c] * fx[c] + fy[c] * fy[c], threshold))) {
+      case StickSlipChange::StartsToSlip:
+        state[c] = Slipping;
+        mobile[c] = 1.0;
+        if (!everSlipped_[base + c]) {
+          everSlipped_[base + c] = 1;
+          ++slipped_;
+          if (firstSlip_) firstSlip_[base + c] = t;
+        }
+        break;
+      case StickSlipChange::Resticks:  // reversed during the last step and held by static friction
+        state[c] = Stuck;
+        mobile[c] = 0.0;
+        vx[c] = 0.0;
+        vy[c] = 0.0;
+        break;
+      case StickSlipChange::SlidesOn: state[c] = Slipping; break;
+      case StickSlipChange::None: break;
     }
   }
 }
 
-// The kinetic friction vector of this step for row r: mu_k,i F_n along the velocity at t_n, or
-// along F_mot for a block starting from rest; zero for a stuck block. Frozen for the step, like
+// The friction vector of this step for row r: the law's sliding force along the velocity at t_n,
+// or along F_mot for a block starting from rest; zero for a stuck block. Frozen for the step, like
 // the stick state, so that a velocity crossing zero inside the step is seen as a reversal.
-template <FrictionField::Layout L>
-GF_ALWAYS_INLINE void FastLattice::frictionVector(int r) {
+template <class Law>
+template <SiteLayout L>
+GF_ALWAYS_INLINE void FastLattice<Law>::frictionVector(int r) {
   const int nb = nb_, base = r * nb;
   const double* __restrict fx = fx_.data();
   const double* __restrict fy = fy_.data();
-  const double* __restrict kineticForce =
-      friction_.kineticForce.data() + (L == FrictionField::Layout::PerBlock ? base : 0);
+  const double* __restrict staticStrength =
+      law_.sites.staticStrength.data() + (L == SiteLayout::PerSite ? base : 0);
+  const double* __restrict kineticStrength =
+      law_.sites.kineticStrength.data() + (L == SiteLayout::PerSite ? base : 0);
   const double* __restrict mobile = mobile_.data() + base;
   const double* __restrict vx = vx_.data() + base;
   const double* __restrict vy = vy_.data() + base;
   double* __restrict kfx = frictionX_.data() + base;
   double* __restrict kfy = frictionY_.data() + base;
   for (int c = 0; c < nb; ++c) {
-    const double kinetic = L == FrictionField::Layout::Uniform ? kineticForce[0] : kineticForce[c];
+    const double strength = L == SiteLayout::Uniform ? staticStrength[0] : staticStrength[c];
+    const double kinetic = L == SiteLayout::Uniform ? kineticStrength[0] : kineticStrength[c];
     const double speed2 = vx[c] * vx[c] + vy[c] * vy[c];
     const double force2 = fx[c] * fx[c] + fy[c] * fy[c];
     const bool moving = speed2 > 0.0;
     const double dirX = moving ? vx[c] : fx[c];
     const double dirY = moving ? vy[c] : fy[c];
-    const double norm2 = moving ? speed2 : force2;
-    const double frictionPerNorm = norm2 > 0.0 ? mobile[c] * kinetic / std::sqrt(norm2) : 0.0;
+    const double frictionPerNorm = frictionPerDirection(law_, strength, kinetic, mobile[c], speed2, force2);
     kfx[c] = frictionPerNorm * dirX;
     kfy[c] = frictionPerNorm * dirY;
   }
@@ -312,7 +319,8 @@ GF_ALWAYS_INLINE void FastLattice::frictionVector(int r) {
 
 // A slipping block whose new velocity points against this step's friction reversed: it may
 // re-stick at the next step.
-GF_ALWAYS_INLINE void FastLattice::markReversals(int r) {
+template <class Law>
+GF_ALWAYS_INLINE void FastLattice<Law>::markReversals(int r) {
   const int nb = nb_, base = r * nb;
   const double* kfx = frictionX_.data() + base;
   const double* kfy = frictionY_.data() + base;
@@ -326,8 +334,9 @@ GF_ALWAYS_INLINE void FastLattice::markReversals(int r) {
 // One sweep over the rows at positions (px, py): once row r's forces are complete (fx_, fy_),
 // update(r) advances that row while it is in cache; the springs to the next row leave their
 // reactions in a carry buffer.
+template <class Law>
 template <bool Graded, bool WantSum, class RowUpdate>
-GF_ALWAYS_INLINE void FastLattice::sweepRows(const double* px, const double* py, double t, double& sumX, double& sumY,
+GF_ALWAYS_INLINE void FastLattice<Law>::sweepRows(const double* px, const double* py, double t, double& sumX, double& sumY,
                                              RowUpdate update) {
   const int nb = nb_;
   double* carryX = carryX_.data();
@@ -337,15 +346,16 @@ GF_ALWAYS_INLINE void FastLattice::sweepRows(const double* px, const double* py,
   std::fill(carryX, carryX + nb, 0.0);
   std::fill(carryY, carryY + nb, 0.0);
   for (int r = 0; r < nb; ++r) {
-    rowForces<Graded, WantSum>(r, px, py, t, carryX, carryY, nextX, nextY, sumX, sumY);
+    this->template rowForces<Graded, WantSum>(r, px, py, t, carryX, carryY, nextX, nextY, sumX, sumY);
     update(r);
     std::swap(carryX, nextX);
     std::swap(carryY, nextY);
   }
 }
 
-template <bool Graded, FrictionField::Layout L, int Stage>
-GF_ALWAYS_INLINE void FastLattice::rk4Stage(double t, double& sumX, double& sumY) {
+template <class Law>
+template <bool Graded, SiteLayout L, int Stage>
+GF_ALWAYS_INLINE void FastLattice<Law>::rk4Stage(double t, double& sumX, double& sumY) {
   const int nb = nb_;
   const double h = motion_.timeStep;
   const double toNext = Stage == 3 ? h : 0.5 * h;  // from u_n to the next stage's point
@@ -356,11 +366,11 @@ GF_ALWAYS_INLINE void FastLattice::rk4Stage(double t, double& sumX, double& sumY
   // A row's stage point is overwritten once its forces are complete: no later row reads it.
   const double* px = Stage == 1 ? ux_.data() : sx_.data();
   const double* py = Stage == 1 ? uy_.data() : sy_.data();
-  sweepRows<Graded, Stage == 1>(px, py, t, sumX, sumY, [&](int r) {
+  this->template sweepRows<Graded, Stage == 1>(px, py, t, sumX, sumY, [&](int r) {
     const int base = r * nb;
     if (Stage == 1) {
-      transitions<L>(r, t);
-      frictionVector<L>(r);
+      this->template transitions<L>(r, t);
+      this->template frictionVector<L>(r);
     }
     updateRow<Stage>(nb, toNext, sixth, invMass, gamma,
                      RowArrays{fx_.data(), fy_.data(), frictionX_.data() + base, frictionY_.data() + base,
@@ -377,20 +387,21 @@ GF_ALWAYS_INLINE void FastLattice::rk4Stage(double t, double& sumX, double& sumY
 // that step), decide the stick/slip transitions at t_n, open this step's kick
 // (v_{n+1/2} = v_n + h/2 a_n) and drift (u_{n+1} = u_n + h v_{n+1/2}). Damping is evaluated with
 // the velocity at hand (explicit). vx_, vy_ hold the half-step velocity between steps.
-template <bool Graded, FrictionField::Layout L>
-GF_ALWAYS_INLINE void FastLattice::verletStep(double t, double& sumX, double& sumY) {
+template <class Law>
+template <bool Graded, SiteLayout L>
+GF_ALWAYS_INLINE void FastLattice<Law>::verletStep(double t, double& sumX, double& sumY) {
   const int nb = nb_;
   const double half = 0.5 * motion_.timeStep;
   const double h = motion_.timeStep;
   const double invMass = 1.0 / motion_.mass;
   const double gamma = motion_.damping;
-  sweepRows<Graded, true>(ux_.data(), uy_.data(), t, sumX, sumY, [&](int r) {
+  this->template sweepRows<Graded, true>(ux_.data(), uy_.data(), t, sumX, sumY, [&](int r) {
     const int base = r * nb;
     closeKick(nb, half, invMass, gamma, fx_.data(), fy_.data(), frictionX_.data() + base, frictionY_.data() + base,
               mobile_.data() + base, vx_.data() + base, vy_.data() + base);
     markReversals(r);
-    transitions<L>(r, t);
-    frictionVector<L>(r);
+    this->template transitions<L>(r, t);
+    this->template frictionVector<L>(r);
     openKickAndDrift(nb, half, h, invMass, gamma, fx_.data(), fy_.data(), frictionX_.data() + base,
                      frictionY_.data() + base, mobile_.data() + base, vx_.data() + base, vy_.data() + base,
                      ux_.data() + base, uy_.data() + base);
@@ -399,56 +410,57 @@ GF_ALWAYS_INLINE void FastLattice::verletStep(double t, double& sumX, double& su
 
 namespace {
 
-template <bool Graded, FrictionField::Layout L>
-GF_ALWAYS_INLINE void fullStep(FastLattice& lattice, bool verlet, double t, double h, double& sumX, double& sumY) {
+template <class Law, bool Graded, SiteLayout L>
+GF_ALWAYS_INLINE void fullStep(FastLattice<Law>& lattice, bool verlet, double t, double h, double& sumX,
+                               double& sumY) {
   if (verlet) {
-    lattice.verletStep<Graded, L>(t, sumX, sumY);
+    lattice.template verletStep<Graded, L>(t, sumX, sumY);
     return;
   }
-  lattice.rk4Stage<Graded, L, 1>(t, sumX, sumY);
-  lattice.rk4Stage<Graded, L, 2>(t + 0.5 * h, sumX, sumY);
-  lattice.rk4Stage<Graded, L, 3>(t + 0.5 * h, sumX, sumY);
-  lattice.rk4Stage<Graded, L, 4>(t + h, sumX, sumY);
+  lattice.template rk4Stage<Graded, L, 1>(t, sumX, sumY);
+  lattice.template rk4Stage<Graded, L, 2>(t + 0.5 * h, sumX, sumY);
+  lattice.template rk4Stage<Graded, L, 3>(t + 0.5 * h, sumX, sumY);
+  lattice.template rk4Stage<Graded, L, 4>(t + h, sumX, sumY);
 }
 
-// One compiled entry per (uniform|graded stiffness) x (friction layout), each cloned for
+// One compiled entry per law x (uniform|graded stiffness) x (friction layout), each cloned for
 // AVX-512, AVX2 and baseline x86-64 and chosen at load time: portable and fast.
-#define GF_STEP_VARIANT(name, graded, layout)                                                        \
-  GF_KERNEL_CLONES void name(FastLattice& lattice, bool verlet, double t, double h, double& sx, double& sy) { \
-    fullStep<graded, FrictionField::Layout::layout>(lattice, verlet, t, h, sx, sy);                              \
-  }
-GF_STEP_VARIANT(stepUniformUniform, false, Uniform)
-GF_STEP_VARIANT(stepUniformColumn, false, PerColumn)
-GF_STEP_VARIANT(stepUniformBlock, false, PerBlock)
-GF_STEP_VARIANT(stepGradedUniform, true, Uniform)
-GF_STEP_VARIANT(stepGradedColumn, true, PerColumn)
-GF_STEP_VARIANT(stepGradedBlock, true, PerBlock)
-#undef GF_STEP_VARIANT
+template <class Law, bool Graded, SiteLayout L>
+GF_KERNEL_CLONES void stepVariant(FastLattice<Law>& lattice, bool verlet, double t, double h, double& sumX,
+                                  double& sumY) {
+  fullStep<Law, Graded, L>(lattice, verlet, t, h, sumX, sumY);
+}
+
+template <class Law, bool Graded>
+void stepLayout(FastLattice<Law>& lattice, SiteLayout layout, bool verlet, double t, double h, double& sumX,
+                double& sumY) {
+  if (layout == SiteLayout::Uniform) stepVariant<Law, Graded, SiteLayout::Uniform>(lattice, verlet, t, h, sumX, sumY);
+  else if (layout == SiteLayout::PerColumn)
+    stepVariant<Law, Graded, SiteLayout::PerColumn>(lattice, verlet, t, h, sumX, sumY);
+  else stepVariant<Law, Graded, SiteLayout::PerSite>(lattice, verlet, t, h, sumX, sumY);
+}
 
 }  // namespace
 
-void FastLattice::dispatch(double& sumX, double& sumY) {
+template <class Law>
+void FastLattice<Law>::dispatch(double& sumX, double& sumY) {
   const double t = time();
   const double h = motion_.timeStep;
   const bool verlet = motion_.integrator == Integrator::VelocityVerlet;
-  using Layout = FrictionField::Layout;
-  const Layout layout = friction_.layout;
-  if (!stiffness_.graded) {
-    if (layout == Layout::Uniform) stepUniformUniform(*this, verlet, t, h, sumX, sumY);
-    else if (layout == Layout::PerColumn) stepUniformColumn(*this, verlet, t, h, sumX, sumY);
-    else stepUniformBlock(*this, verlet, t, h, sumX, sumY);
-  } else {
-    if (layout == Layout::Uniform) stepGradedUniform(*this, verlet, t, h, sumX, sumY);
-    else if (layout == Layout::PerColumn) stepGradedColumn(*this, verlet, t, h, sumX, sumY);
-    else stepGradedBlock(*this, verlet, t, h, sumX, sumY);
-  }
+  if (stiffness_.graded) stepLayout<Law, true>(*this, law_.sites.layout, verlet, t, h, sumX, sumY);
+  else stepLayout<Law, false>(*this, law_.sites.layout, verlet, t, h, sumX, sumY);
 }
 
-StepObservation FastLattice::step() {
+template <class Law>
+StepObservation FastLattice<Law>::step() {
   StepObservation observation{time(), 0.0, 0.0};
   dispatch(observation.sliderForceX, observation.sliderForceY);
   ++steps_;
   return observation;
 }
+
+#define GF_INSTANTIATE_FAST_LATTICE(Law) template class FastLattice<Law>;
+GF_FRICTION_LAWS(GF_INSTANTIATE_FAST_LATTICE)
+#undef GF_INSTANTIATE_FAST_LATTICE
 
 }  // namespace gradfric::sbm

@@ -60,16 +60,16 @@ FrictionField buildFriction(const Parameters& p, const Grading& grading, StreamK
   const int nb = p.blocksPerSide;
   const double normal = p.normalForcePerBlock();
   FrictionField f;
-  f.blocksPerSide = nb;
+  f.columns = nb;
   const bool dispersed = p.sigmaStatic > 0.0 || p.sigmaKinetic > 0.0;
   if (dispersed) {
-    f.layout = FrictionField::Layout::PerBlock;
+    f.layout = SiteLayout::PerSite;
   } else if (grading.gradesFriction()) {
-    f.layout = FrictionField::Layout::PerColumn;
+    f.layout = SiteLayout::PerColumn;
   } else {
-    f.layout = FrictionField::Layout::Uniform;
+    f.layout = SiteLayout::Uniform;
   }
-  const int columns = f.layout == FrictionField::Layout::Uniform ? 1 : nb;
+  const int columns = f.layout == SiteLayout::Uniform ? 1 : nb;
   std::vector<double> meanStatic(columns), meanKinetic(columns);
   for (int c = 0; c < columns; ++c) {
     const double factor = grading.frictionFactor(columnCentre(c, nb));
@@ -78,18 +78,18 @@ FrictionField buildFriction(const Parameters& p, const Grading& grading, StreamK
   }
   if (!dispersed) {
     for (int c = 0; c < columns; ++c) {
-      f.staticForce.push_back(meanStatic[c] * normal);
-      f.kineticForce.push_back(meanKinetic[c] * normal);
+      f.staticStrength.push_back(meanStatic[c] * normal);
+      f.kineticStrength.push_back(meanKinetic[c] * normal);
     }
     return f;
   }
   const RandomStream stream(key);
-  f.staticForce.resize(std::size_t(nb) * nb);
-  f.kineticForce.resize(std::size_t(nb) * nb);
+  f.staticStrength.resize(std::size_t(nb) * nb);
+  f.kineticStrength.resize(std::size_t(nb) * nb);
   for (int r = 0; r < nb; ++r) {
     for (int c = 0; c < nb; ++c) {
       const int i = r * nb + c;
-      const int col = f.layout == FrictionField::Layout::PerBlock ? c : 0;
+      const int col = f.layout == SiteLayout::PerSite ? c : 0;
       double muS = 0.0, muK = 0.0;
       for (std::uint32_t attempt = 0;; ++attempt) {
         const auto [zs, zk] = stream.normalPair(std::uint64_t(i), 0, attempt);
@@ -98,8 +98,8 @@ FrictionField buildFriction(const Parameters& p, const Grading& grading, StreamK
         if (muK > 0.0 && muK <= muS) break;
         if (attempt == 0) ++f.redrawnBlocks;
       }
-      f.staticForce[i] = muS * normal;
-      f.kineticForce[i] = muK * normal;
+      f.staticStrength[i] = muS * normal;
+      f.kineticStrength[i] = muK * normal;
     }
   }
   return f;

@@ -1,40 +1,40 @@
 // One realisation: build the lattice, integrate, watch the observables, stop once they are known.
 #include "gradfric/sbm/model.hpp"
 
-#include "gradfric/core/options.hpp"
-#include "gradfric/core/petsc_call.hpp"
+#include "gradfric/core/format.hpp"
+#include "gradfric/physics/friction_laws.hpp"
 #include "gradfric/physics/stability.hpp"
 #include "gradfric/sbm/integrator.hpp"
 #include "gradfric/sbm/lattice.hpp"
-
-#include <petsclog.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <sstream>
 
 namespace gradfric::sbm {
 
 namespace {
 
-struct LogEvents {
-  PetscLogEvent setup = 0, step = 0, snapshot = 0;
-};
+PhaseTimer phaseTimer;
 
-const LogEvents& logEvents() {
-  static LogEvents events = [] {
-    LogEvents e;
-    PetscClassId id;
-    GF_CALL(PetscClassIdRegister("SpringBlock", &id));
-    GF_CALL(PetscLogEventRegister("SbmSetup", id, &e.setup));
-    GF_CALL(PetscLogEventRegister("SbmStep", id, &e.step));
-    GF_CALL(PetscLogEventRegister("SbmSnapshot", id, &e.snapshot));
-    return e;
-  }();
-  return events;
-}
+// Times one phase with the installed hooks (if any) for the scope's life.
+class PhaseScope {
+public:
+  explicit PhaseScope(Phase phase) : phase_(phase) {
+    if (phaseTimer.begin) phaseTimer.begin(phase_);
+  }
+  ~PhaseScope() noexcept(false) {
+    if (phaseTimer.end) phaseTimer.end(phase_);
+  }
+  PhaseScope(const PhaseScope&) = delete;
+  PhaseScope& operator=(const PhaseScope&) = delete;
+
+private:
+  Phase phase_;
+};
 
 std::vector<double> asVector(const double* data, std::size_t n) { return std::vector<double>(data, data + n); }
 std::vector<double> asVector(std::vector<double> data, std::size_t) { return data; }
@@ -51,7 +51,6 @@ std::string likelyCause(const Parameters& p, double stable) {
 template <class Lattice>
 void integrate(Lattice& lattice, const LatticeStiffness& stiffness, const FrictionField& friction, const Motion& motion,
                const Parameters& p, const Request& q, double stable, Result& result) {
-  const auto& events = logEvents();
   const int nb = p.blocksPerSide;
   const std::size_t n = std::size_t(nb) * nb;
   const double dt = p.timeStep;
@@ -64,7 +63,7 @@ void integrate(Lattice& lattice, const LatticeStiffness& stiffness, const Fricti
   // elastic energy never above the work done by the slider (trapezoidal rule) every
   // energyCheckInterval steps.
   double work = 0.0, previousFx = 0.0, previousFy = 0.0;
-  result.maxLocalStatic = *std::max_element(friction.staticForce.begin(), friction.staticForce.end()) /
+  result.maxLocalStatic = *std::max_element(friction.staticStrength.begin(), friction.staticStrength.end()) /
                           p.normalForcePerBlock();
   const EnergyBound energyBound{1.0 + 1e-3, 0.0};
   auto fail = [&](const std::string& quantity, double t) {
@@ -75,18 +74,18 @@ void integrate(Lattice& lattice, const LatticeStiffness& stiffness, const Fricti
   for (;;) {
     const double t = lattice.time();
     while (nextSnapshot < q.snapshotTimes.size() && q.snapshotTimes[nextSnapshot] <= t + 0.5 * dt) {
-      GF_CALL(PetscLogEventBegin(events.snapshot, 0, 0, 0, 0));
+      PhaseScope timed(Phase::Snapshot);
       StressSnapshot snapshot{t, std::vector<double>(n)};
       const auto ux = asVector(lattice.displacementX(), n);
       const auto uy = asVector(lattice.displacementY(), n);
       longitudinalStress(stiffness, p.layerThickness, p.plate.pressure, ux.data(), uy.data(), snapshot.sigmaXOverP.data());
       result.snapshots.push_back(std::move(snapshot));
       ++nextSnapshot;
-      GF_CALL(PetscLogEventEnd(events.snapshot, 0, 0, 0, 0));
     }
-    GF_CALL(PetscLogEventBegin(events.step, 0, 0, 0, 0));
-    const StepObservation o = lattice.step();
-    GF_CALL(PetscLogEventEnd(events.step, 0, 0, 0, 0));
+    const StepObservation o = [&] {
+      PhaseScope timed(Phase::Step);
+      return lattice.step();
+    }();
     const double mu = history.observe(t, o.sliderForceX, o.sliderForceY, lattice.slippedBlocks() > 0,
                                       lattice.slippedBlocks() == int(n));
     // mu(t) cannot exceed the largest local static coefficient but by a dynamic overshoot: twice
@@ -124,23 +123,28 @@ void integrate(Lattice& lattice, const LatticeStiffness& stiffness, const Fricti
 
 }  // namespace
 
+void setPhaseTimer(PhaseTimer timer) { phaseTimer = timer; }
+
 Result simulate(const Parameters& p, const Grading& grading, const Request& q, StreamKey key, Kernel kernel) {
-  const auto& events = logEvents();
-  GF_CALL(PetscLogEventBegin(events.setup, 0, 0, 0, 0));
+  std::optional<PhaseScope> setup(std::in_place, Phase::Setup);
   const LatticeStiffness stiffness = buildStiffness(p, grading);
   const FrictionField friction = buildFriction(p, grading, key);
   const Motion motion = motionOf(p, p.timeStep, p.damping);
-  GF_CALL(PetscLogEventEnd(events.setup, 0, 0, 0, 0));
+  setup.reset();
   Result result;
   result.redrawnBlocks = friction.redrawnBlocks;
   const double stable = stableTimeStep(p, grading);
-  if (kernel == Kernel::Fast) {
-    FastLattice lattice(stiffness, friction, motion);
-    integrate(lattice, stiffness, friction, motion, p, q, stable, result);
-  } else {
-    ReferenceLattice lattice(stiffness, friction, motion);
-    integrate(lattice, stiffness, friction, motion, p, q, stable, result);
-  }
+  // The law's template parameter selects the compiled kernels (friction_laws.hpp).
+  withFrictionLaw(p.frictionLaw, friction, [&](auto law) {
+    using Law = decltype(law);
+    if (kernel == Kernel::Fast) {
+      FastLattice<Law> lattice(stiffness, std::move(law), motion);
+      integrate(lattice, stiffness, friction, motion, p, q, stable, result);
+    } else {
+      ReferenceLattice<Law> lattice(stiffness, std::move(law), motion);
+      integrate(lattice, stiffness, friction, motion, p, q, stable, result);
+    }
+  });
   return result;
 }
 
@@ -161,6 +165,7 @@ std::vector<std::string> activeEffects(const Parameters& p, const Grading& g, co
   } else {
     effects.push_back("no dispersion: no random draws, no per-block coefficients");
   }
+  effects.push_back("friction law: " + describeFrictionLaw(p.frictionLaw));
   effects.push_back(p.damping > 0 ? "viscous damping gamma = " + formatReal(p.damping) + " 1/s" : "no damping");
   effects.push_back("sliding angle theta = " + formatReal(p.plate.slidingAngle) + " degree");
   std::string observed = "observables: mu_s";

@@ -1,9 +1,6 @@
+// The pure functions of the spring-block parameters (PETSc-free core).
 #include "gradfric/sbm/parameters.hpp"
 
-#include "gradfric/core/input_error.hpp"
-#include "gradfric/core/run_limits.hpp"
-#include "gradfric/physics/friction_options.hpp"
-#include "gradfric/physics/stability.hpp"
 #include "gradfric/sbm/lattice.hpp"
 
 #include <algorithm>
@@ -34,87 +31,6 @@ double slipTime(const Parameters& p, const Grading& grading) {
 
 double defaultTimeStep(const Parameters& p, const Grading& grading) {
   return std::min(p.timeStepSafety * stableTimeStep(p, grading), p.timeStepSlip * slipTime(p, grading));
-}
-
-Parameters readParameters(MPI_Comm comm, RunParameters* record, const Plate& plate, const Grading& grading) {
-  OptionReader o(comm, "sbm_", "Spring-block model", record);
-  Parameters p;
-  p.plate = plate;
-  // The lattice's springs (axial k, diagonal k/2) fix Poisson's ratio at 1/3.
-  if (std::fabs(plate.poissonRatio - 1.0 / 3.0) > 1e-12)
-    throw InputError("-plate_nu", formatReal(plate.poissonRatio),
-                     "1/3 with the spring-block model (its lattice has Poisson's ratio 1/3)");
-  p.layerThickness = o.real("lz", p.layerThickness, "m",
-                            "mass layer thickness l_z: block mass rho l_z l^2, slider K_s = G l^2/l_z (paper: 0.057 mm)");
-  p.sigmaStatic = o.real("sigma_s", p.sigmaStatic, "1", "relative standard deviation of the local mu_s (0: no dispersion)");
-  p.sigmaKinetic = o.real("sigma_k", p.sigmaKinetic, "1", "relative standard deviation of the local mu_k (0: no dispersion)");
-  p.blocksPerSide = static_cast<int>(o.integer("N", p.blocksPerSide, 2, 4096, "1", "blocks per side N_b"));
-  const std::string integrator = o.choice("integrator", "verlet", {"rk4", "verlet"},
-                                          "time integrator, fixed step: classical RK4 (4 force evaluations a step) or velocity Verlet (1)");
-  p.integrator = integrator == "verlet" ? Integrator::VelocityVerlet : Integrator::RK4;
-
-  o.requirePositive("lz", p.layerThickness, "m");
-  o.requireRange("sigma_s", p.sigmaStatic, 0.0, 0.5, "0 <= sigma_s <= 0.5");
-  o.requireRange("sigma_k", p.sigmaKinetic, 0.0, 0.5, "0 <= sigma_k <= 0.5");
-  o.requireAtLeast("N", p.blocksPerSide, 2);
-  if (p.blocksPerSide > 4096) throw InputError(o.fullName("N"), std::to_string(p.blocksPerSide), "2 <= N <= 4096");
-
-  const double kInt = p.axialStiffness(p.plate.youngsModulus);
-  const double omega = std::sqrt(kInt / p.blockMass());
-  if (auto gamma = o.realIfSet("gamma", "1/s", "damping coefficient gamma (underdamped: gamma < sqrt(K_int/m))",
-                               "0.1 sqrt(K_int/m)")) {
-    p.damping = *gamma;
-    o.requireNonNegative("gamma", p.damping, "1/s");
-  } else {
-    p.damping = 0.1 * omega;
-    o.recordDerived("gamma", p.damping, "1/s", "damping coefficient gamma = 0.1 sqrt(K_int/m)");
-  }
-
-  const double stable = stableTimeStep(p, grading);
-  p.timeStepSafety = o.real("dt_safety", p.timeStepSafety, "1", "default dt: at most this fraction of the integrator's stability limit");
-  o.requireRange("dt_safety", p.timeStepSafety, 1e-6, 1.0, "0 < dt_safety <= 1");
-  p.timeStepSlip = o.real("dt_slip", p.timeStepSlip, "1", "default dt: at most this fraction of the slip time sqrt(m/K_s)");
-  o.requirePositive("dt_slip", p.timeStepSlip, "");
-  p.automaticTimeStep = defaultTimeStep(p, grading);
-  const bool check = o.flag("dt_check", true, "refuse a dt above the stability limit (false: only to test the instability monitor)");
-  const std::string scheme = p.integrator == Integrator::VelocityVerlet ? "velocity Verlet" : "RK4";
-  const TimeStepPolicy policy{o.fullName("dt"), "the " + scheme + " stability limit of this lattice", stable, check};
-  const auto requested = o.realIfSet("dt", "s", "time step (refused above the integrator's stability limit)",
-                                     "min(dt_safety x stable step, dt_slip x slip time)");
-  p.timeStep = policy.choose(requested, defaultTimeStep(p, grading));
-  if (!requested)
-    o.recordDerived("dt", p.timeStep, "s",
-                    "time step = min(dt_safety x " + scheme + " stability limit " + formatReal(stable) +
-                        " s, dt_slip x slip time " + formatReal(slipTime(p, grading)) + " s)");
-  return p;
-}
-
-Request readRequest(MPI_Comm comm, RunParameters* record, const Parameters& p) {
-  Request q;
-  q.measurement = readFrictionMeasurement(comm, record, p.loadingTime());
-  OptionReader o(comm, "sbm_", "Spring-block model", record);
-  q.snapshotTimes = o.realList("snapshot_times", {}, "s", "times of the sigma_x/p snapshots (none: no stress computed)");
-  for (double t : q.snapshotTimes) o.requireNonNegative("snapshot_times", t, "s");
-  std::sort(q.snapshotTimes.begin(), q.snapshotTimes.end());
-  const double load = p.loadingTime();
-  if (auto t = o.realIfSet("t_max", "s", "give up if the peak is not confirmed by then", "20 t_load")) {
-    q.maxTime = *t;
-  } else {
-    q.maxTime = 20.0 * load;
-    o.recordDerived("t_max", q.maxTime, "s", "give up if the peak is not confirmed by then = 20 t_load");
-  }
-  q.endTime = o.real("t_end", 0.0, "s", "if > 0: run exactly this long, whatever the observables (0: stop when known)");
-  o.requireNonNegative("t_end", q.endTime, "s");
-  if (!(q.maxTime > 0)) throw InputError(o.fullName("t_max"), formatReal(q.maxTime), "> 0 [s]");
-  // Before any work: a finite but absurd value (-sbm_dt 1e-300, a loading time of 1e300 s) would
-  // otherwise run for ever.
-  requireResolvedTimescale(record, load, p.timeStep, o.fullName("dt"), {"-sbm_", "-plate_", "-grading_"},
-                           "loading time");
-  const bool fixedLength = q.endTime > 0;
-  requireRunLength(record, fixedLength ? q.endTime : q.maxTime, p.timeStep, p.automaticTimeStep, o.fullName("dt"),
-                   {o.fullName(fixedLength ? "t_end" : "t_max")}, {"-sbm_", "-plate_", "-grading_"},
-                   fixedLength ? "t_end" : "t_max");
-  return q;
 }
 
 }  // namespace gradfric::sbm

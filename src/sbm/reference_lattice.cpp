@@ -1,22 +1,28 @@
 // The plain reference: an array of blocks, each summing the forces of its 8 neighbours (every
-// spring evaluated twice), and textbook RK4 on the whole state vector. Same physics and the same
-// stick/slip rule as FastLattice; the tests compare the two.
+// spring evaluated twice), and textbook RK4 or velocity Verlet on the whole state vector. Same
+// physics, the same friction law and the same stick/slip rule as FastLattice; the tests compare
+// the two.
 #include "gradfric/sbm/integrator.hpp"
 #include "gradfric/sbm/spring.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace gradfric::sbm {
 
-ReferenceLattice::ReferenceLattice(const LatticeStiffness& stiffness, const FrictionField& friction,
-                                   const Motion& motion)
-    : stiffness_(stiffness), friction_(friction), motion_(motion), nb_(stiffness.blocksPerSide) {
+template <class Law>
+ReferenceLattice<Law>::ReferenceLattice(const LatticeStiffness& stiffness, Law law, const Motion& motion)
+    : stiffness_(stiffness), law_(std::move(law)), motion_(motion), nb_(stiffness.blocksPerSide) {
   blocks_.assign(std::size_t(nb_) * nb_, Block{0, 0, 0, 0});
+  frictionX_.assign(blocks_.size(), 0.0);
+  frictionY_.assign(blocks_.size(), 0.0);
   state_.assign(blocks_.size(), Stuck);
   everSlipped_.assign(blocks_.size(), 0);
 }
 
-void ReferenceLattice::forces(const std::vector<Block>& y, double t, std::vector<double>& fx,
+template <class Law>
+void ReferenceLattice<Law>::forces(const std::vector<Block>& y, double t, std::vector<double>& fx,
                               std::vector<double>& fy) const {
   const int nb = nb_;
   const double l = stiffness_.spacing;
@@ -58,11 +64,13 @@ void ReferenceLattice::forces(const std::vector<Block>& y, double t, std::vector
   }
 }
 
-void ReferenceLattice::drivingForces(std::vector<double>& fx, std::vector<double>& fy) const {
+template <class Law>
+void ReferenceLattice<Law>::drivingForces(std::vector<double>& fx, std::vector<double>& fy) const {
   forces(blocks_, time(), fx, fy);
 }
 
-void ReferenceLattice::derivative(const std::vector<Block>& y, double t, std::vector<Block>& dy) const {
+template <class Law>
+void ReferenceLattice<Law>::derivative(const std::vector<Block>& y, double t, std::vector<Block>& dy) const {
   std::vector<double> fx, fy;
   forces(y, t, fx, fy);
   dy.resize(y.size());
@@ -81,60 +89,97 @@ void ReferenceLattice::derivative(const std::vector<Block>& y, double t, std::ve
   }
 }
 
-StepObservation ReferenceLattice::step() {
+// Velocity Verlet half kick with the friction of the step: v += h/2 (F - F_f) / m - h/2 gamma v
+// (damping with the velocity at hand, as FastLattice).
+template <class Law>
+void ReferenceLattice<Law>::kick(const std::vector<double>& fx, const std::vector<double>& fy) {
+  const double half = 0.5 * motion_.timeStep;
+  for (std::size_t i = 0; i < blocks_.size(); ++i) {
+    if (state_[i] == Stuck) continue;
+    Block& b = blocks_[i];
+    b.vx += half * ((fx[i] - frictionX_[i]) / motion_.mass - motion_.damping * b.vx);
+    b.vy += half * ((fy[i] - frictionY_[i]) / motion_.mass - motion_.damping * b.vy);
+  }
+}
+
+// A moving block whose velocity points against the step's friction reversed.
+template <class Law>
+void ReferenceLattice<Law>::markReversals() {
+  for (std::size_t i = 0; i < blocks_.size(); ++i) {
+    const Block& b = blocks_[i];
+    if (state_[i] != Stuck && b.vx * frictionX_[i] + b.vy * frictionY_[i] < 0.0) state_[i] = Reversed;
+  }
+}
+
+template <class Law>
+StepObservation ReferenceLattice<Law>::step() {
   const double t = time();
-  const double h = motion_.timeStep;
+  const bool verlet = motion_.integrator == Integrator::VelocityVerlet;
   StepObservation observation{t, 0.0, 0.0};
-  // Stick/slip transitions with the driving forces of the state at t_n.
   std::vector<double> fx, fy;
   forces(blocks_, t, fx, fy);
+  if (verlet) {  // close the previous step: v_n = v_{n-1/2} + h/2 a_n, that step's friction
+    kick(fx, fy);
+    markReversals();
+  }
+  // Stick/slip transitions with the driving forces of the state at t_n.
   for (int r = 0; r < nb_; ++r) {
     for (int c = 0; c < nb_; ++c) {
       const int i = r * nb_ + c;
       observation.sliderForceX += stiffness_.slider[c] * (motion_.sliderVelocityX * t - blocks_[i].ux);
       observation.sliderForceY += stiffness_.slider[c] * (motion_.sliderVelocityY * t - blocks_[i].uy);
-      if (state_[i] == Slipping) continue;
-      const double threshold = friction_.staticAt(r, c);
-      const bool holds = fx[i] * fx[i] + fy[i] * fy[i] <= threshold * threshold;
-      if (state_[i] == Stuck && !holds) {
-        state_[i] = Slipping;
-        if (!everSlipped_[i]) {
-          everSlipped_[i] = 1;
-          ++slipped_;
-          if (firstSlip_) firstSlip_[i] = t;
-        }
-      } else if (state_[i] == Reversed) {
-        if (holds) {
+      const double threshold = law_.sites.staticAt(law_.sites.slot(r, c));
+      switch (stickSlipChange(state_[i], Law::holds(fx[i] * fx[i] + fy[i] * fy[i], threshold))) {
+        case StickSlipChange::StartsToSlip:
+          state_[i] = Slipping;
+          if (!everSlipped_[i]) {
+            everSlipped_[i] = 1;
+            ++slipped_;
+            if (firstSlip_) firstSlip_[i] = t;
+          }
+          break;
+        case StickSlipChange::Resticks:
           state_[i] = Stuck;
           blocks_[i].vx = blocks_[i].vy = 0.0;
-        } else {
-          state_[i] = Slipping;
-        }
+          break;
+        case StickSlipChange::SlidesOn: state_[i] = Slipping; break;
+        case StickSlipChange::None: break;
       }
     }
   }
-  // The kinetic friction of this step, frozen for the four stages (see integrator.hpp).
-  const std::size_t n = blocks_.size();
-  frictionX_.assign(n, 0.0);
-  frictionY_.assign(n, 0.0);
+  // The friction force of this step, frozen for the step (see integrator.hpp).
   for (int r = 0; r < nb_; ++r) {
     for (int c = 0; c < nb_; ++c) {
       const int i = r * nb_ + c;
-      if (state_[i] == Stuck) continue;
       const Block& b = blocks_[i];
-      const double speed = std::sqrt(b.vx * b.vx + b.vy * b.vy);
-      const double force = std::sqrt(fx[i] * fx[i] + fy[i] * fy[i]);
-      const double kinetic = friction_.kineticAt(r, c);
-      if (speed > 0) {
-        frictionX_[i] = kinetic * b.vx / speed;
-        frictionY_[i] = kinetic * b.vy / speed;
-      } else if (force > 0) {
-        frictionX_[i] = kinetic * fx[i] / force;
-        frictionY_[i] = kinetic * fy[i] / force;
-      }
+      const int slot = law_.sites.slot(r, c);
+      const double speed2 = b.vx * b.vx + b.vy * b.vy;
+      const double perDirection =
+          frictionPerDirection(law_, law_.sites.staticAt(slot), law_.sites.kineticAt(slot),
+                               state_[i] == Stuck ? 0.0 : 1.0, speed2, fx[i] * fx[i] + fy[i] * fy[i]);
+      frictionX_[i] = perDirection * (speed2 > 0 ? b.vx : fx[i]);
+      frictionY_[i] = perDirection * (speed2 > 0 ? b.vy : fy[i]);
     }
   }
-  // Classical RK4.
+  if (verlet) {  // open this step: v_{n+1/2} = v_n + h/2 a_n, u_{n+1} = u_n + h v_{n+1/2}
+    kick(fx, fy);
+    for (auto& b : blocks_) {
+      b.ux += motion_.timeStep * b.vx;
+      b.uy += motion_.timeStep * b.vy;
+    }
+  } else {
+    rk4(t);
+    markReversals();
+  }
+  ++steps_;
+  return observation;
+}
+
+// Classical RK4 on the whole state, the friction and stick states frozen.
+template <class Law>
+void ReferenceLattice<Law>::rk4(double t) {
+  const double h = motion_.timeStep;
+  const std::size_t n = blocks_.size();
   std::vector<Block> k1, k2, k3, k4, y(n);
   auto axpy = [&](const std::vector<Block>& k, double a) {
     for (std::size_t i = 0; i < n; ++i)
@@ -154,34 +199,36 @@ StepObservation ReferenceLattice::step() {
     b.uy += h / 6.0 * (((k1[i].uy + 2.0 * k2[i].uy) + 2.0 * k3[i].uy) + k4[i].uy);
     b.vx += h / 6.0 * (((k1[i].vx + 2.0 * k2[i].vx) + 2.0 * k3[i].vx) + k4[i].vx);
     b.vy += h / 6.0 * (((k1[i].vy + 2.0 * k2[i].vy) + 2.0 * k3[i].vy) + k4[i].vy);
-    if (state_[i] != Stuck && b.vx * frictionX_[i] + b.vy * frictionY_[i] < 0.0) state_[i] = Reversed;
   }
-  ++steps_;
-  return observation;
 }
 
-std::vector<double> ReferenceLattice::displacementX() const {
+template <class Law>
+std::vector<double> ReferenceLattice<Law>::displacementX() const {
   std::vector<double> out;
   for (const auto& b : blocks_) out.push_back(b.ux);
   return out;
 }
-std::vector<double> ReferenceLattice::displacementY() const {
+template <class Law>
+std::vector<double> ReferenceLattice<Law>::displacementY() const {
   std::vector<double> out;
   for (const auto& b : blocks_) out.push_back(b.uy);
   return out;
 }
-std::vector<double> ReferenceLattice::velocityX() const {
+template <class Law>
+std::vector<double> ReferenceLattice<Law>::velocityX() const {
   std::vector<double> out;
   for (const auto& b : blocks_) out.push_back(b.vx);
   return out;
 }
-
-}  // namespace gradfric::sbm
-
-namespace gradfric::sbm {
-std::vector<double> ReferenceLattice::velocityY() const {
+template <class Law>
+std::vector<double> ReferenceLattice<Law>::velocityY() const {
   std::vector<double> out;
   for (const auto& b : blocks_) out.push_back(b.vy);
   return out;
 }
+
+#define GF_INSTANTIATE_REFERENCE_LATTICE(Law) template class ReferenceLattice<Law>;
+GF_FRICTION_LAWS(GF_INSTANTIATE_REFERENCE_LATTICE)
+#undef GF_INSTANTIATE_REFERENCE_LATTICE
+
 }  // namespace gradfric::sbm

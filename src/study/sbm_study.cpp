@@ -10,6 +10,7 @@
 #include "gradfric/physics/grading_options.hpp"
 #include "gradfric/physics/plate_options.hpp"
 #include "gradfric/sbm/model.hpp"
+#include "gradfric/sbm/parameter_options.hpp"
 
 #include <petscsys.h>
 

@@ -81,32 +81,32 @@ TEST(FemElement, HighestFrequencyMatchesTheOneDimensionalLimit) {
 
 TEST(FemContact, OpenStickAndSlip) {
   const PenaltyStiffness k{1e12, 2e12};
-  const ExponentialVelocityWeakening law{1.0, 0.6, 1e-4};
+  const ExponentialVelocityWeakening law{{}, {SiteLayout::Uniform, 1, {1.0}, {0.6}}, 1e-4};
   // Open: no traction, anchor follows.
-  auto r = penaltyContact(k, law, 1e-9, 3e-9, 0, 0, 0, 0, 0, false);
+  auto r = penaltyContact(k, law, 0, 1e-9, 3e-9, 0, 0, 0, 0, 0, false);
   EXPECT_EQ(r.state, ContactState::Open);
   EXPECT_EQ(r.pressure, 0.0);
   EXPECT_EQ(r.anchorX, 3e-9);
   // Penetration 1e-8: pressure 1e4; small elastic slip sticks.
-  r = penaltyContact(k, law, -1e-8, 1e-9, 0, 0, 0, 0, 0, false);
+  r = penaltyContact(k, law, 0, -1e-8, 1e-9, 0, 0, 0, 0, 0, false);
   EXPECT_EQ(r.state, ContactState::Stick);
   EXPECT_DOUBLE_EQ(r.pressure, 1e4);
   EXPECT_DOUBLE_EQ(r.tx, -2e3);
   // Beyond mu_s p at rest: slips, traction on the cone opposite the displacement, anchor moved.
-  r = penaltyContact(k, law, -1e-8, 1e-8, 0, 0, 0, 0, 0, false);
+  r = penaltyContact(k, law, 0, -1e-8, 1e-8, 0, 0, 0, 0, 0, false);
   EXPECT_EQ(r.state, ContactState::Slip);
   EXPECT_NEAR(r.tx, -1e4, 1e-9);
   EXPECT_NEAR(-k.tangential * (1e-8 - r.anchorX), r.tx, 1e-9);
   // A sticking node moving fast (elastic motion) still holds up to mu_s p: slip rate zero.
-  r = penaltyContact(k, law, -1e-8, 0, 4.9e-9, 0, 0, 0, 1.0, false);
+  r = penaltyContact(k, law, 0, -1e-8, 0, 4.9e-9, 0, 0, 0, 1.0, false);
   EXPECT_EQ(r.state, ContactState::Stick);
   // Fast sliding: the cap falls to mu_k p (Eq. 1).
-  r = penaltyContact(k, law, -1e-8, 0, 1e-8, 0, 0, 0, 1.0, true);
+  r = penaltyContact(k, law, 0, -1e-8, 0, 1e-8, 0, 0, 0, 1.0, true);
   EXPECT_NEAR(r.ty, -0.6e4, 1e-6);
   // At v = v_c: mu = mu_k + (mu_s - mu_k)/e.
-  r = penaltyContact(k, law, -1e-8, 1e-8, 0, 0, 0, 1e-4, 0, true);
+  r = penaltyContact(k, law, 0, -1e-8, 1e-8, 0, 0, 0, 1e-4, 0, true);
   EXPECT_NEAR(-r.tx, (0.6 + 0.4 * std::exp(-1.0)) * 1e4, 1e-6);
   // Returned state sticks on re-evaluation with the new anchor.
-  auto again = penaltyContact(k, law, -1e-8, 1e-8, 0, r.anchorX, r.anchorY, 0, 0, true);
+  auto again = penaltyContact(k, law, 0, -1e-8, 1e-8, 0, r.anchorX, r.anchorY, 0, 0, true);
   EXPECT_EQ(again.state, ContactState::Stick);
 }

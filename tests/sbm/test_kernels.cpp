@@ -5,64 +5,129 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <string>
 
 using namespace gradfric;
 using namespace gradfric::sbm;
 
 namespace {
 
-Grading both(double delta) {
+Grading graded(GradedProperty property, double delta) {
   Grading g;
   g.profile = GradingProfile::Triangular;
-  g.property = GradedProperty::Both;
+  g.property = property;
   g.delta = delta;
   g.bands = 4;
   return g;
 }
+Grading both(double delta) { return graded(GradedProperty::Both, delta); }
+
+const char* name(Integrator integrator) { return integrator == Integrator::RK4 ? "rk4" : "verlet"; }
 
 }  // namespace
 
-TEST(Kernels, SameHistoriesForEveryCodePath) {
-  // Uniform and graded stiffness, no dispersion / per-column / per-block friction.
+TEST(Kernels, SameHistoriesForEveryCodePathIntegratorAndLaw) {
+  // Every compiled variant: uniform / graded stiffness x uniform / per-column / per-block
+  // friction, for RK4 and velocity Verlet, with the Coulomb and the exponential law.
   struct Case {
     Grading grading;
     double sigma;
     double theta;
   };
-  const Case cases[] = {{{}, 0.0, 0.0}, {both(0.3), 0.0, 30.0}, {both(-0.4), 0.05, 60.0}, {{}, 0.05, 0.0}};
-  for (const auto& c : cases) {
-    Parameters p = sbm::testing::paperParameters(10, c.sigma, c.grading);
-    p.integrator = Integrator::RK4;  // the plain reference implements RK4
-    p.plate.slidingAngle = c.theta;
-    Request q = sbm::testing::defaultRequest(p);
-    const Result fast = simulate(p, c.grading, q, {3, 1, 2}, Kernel::Fast);
-    const Result plain = simulate(p, c.grading, q, {3, 1, 2}, Kernel::Reference);
-    ASSERT_EQ(fast.friction.mu.size(), plain.friction.mu.size());
-    for (std::size_t i = 0; i < fast.friction.mu.size(); ++i) ASSERT_NEAR(fast.friction.mu[i], plain.friction.mu[i], 1e-9 * (1 + plain.friction.mu[i])) << i;
-    EXPECT_NEAR(fast.friction.muStatic, plain.friction.muStatic, 1e-10);
-    EXPECT_NEAR(fast.friction.muKinetic, plain.friction.muKinetic, 1e-9);
-    ASSERT_EQ(fast.firstSlipTime.size(), plain.firstSlipTime.size());
-    for (std::size_t i = 0; i < fast.firstSlipTime.size(); ++i) EXPECT_EQ(fast.firstSlipTime[i], plain.firstSlipTime[i]);
+  const Case cases[] = {{{}, 0.0, 0.0},
+                        {graded(GradedProperty::Friction, 0.3), 0.0, 0.0},
+                        {{}, 0.05, 45.0},
+                        {graded(GradedProperty::YoungsModulus, 0.4), 0.0, 90.0},
+                        {both(0.3), 0.0, 30.0},
+                        {both(-0.4), 0.05, 60.0}};
+  for (const char* law : {"coulomb", "exponential"}) {
+    for (Integrator integrator : {Integrator::RK4, Integrator::VelocityVerlet}) {
+      for (const auto& c : cases) {
+        Parameters p = sbm::testing::paperParameters(10, c.sigma, c.grading);
+        p.integrator = integrator;
+        p.timeStep = defaultTimeStep(p, c.grading);
+        p.plate.slidingAngle = c.theta;
+        p.frictionLaw.name = law;
+        const auto stiffness = buildStiffness(p, c.grading);
+        const auto friction = buildFriction(p, c.grading, {3, 1, 2});
+        ASSERT_EQ(stiffness.graded, c.grading.gradesModulus());
+        ASSERT_EQ(friction.layout, c.sigma > 0 ? SiteLayout::PerSite
+                                               : c.grading.gradesFriction() ? SiteLayout::PerColumn
+                                                                            : SiteLayout::Uniform);
+        const std::string where = std::string(law) + " " + name(integrator) + " theta " + std::to_string(c.theta) +
+                                  " sigma " + std::to_string(c.sigma);
+        Request q = sbm::testing::defaultRequest(p);
+        const Result fast = simulate(p, c.grading, q, {3, 1, 2}, Kernel::Fast);
+        const Result plain = simulate(p, c.grading, q, {3, 1, 2}, Kernel::Reference);
+        ASSERT_TRUE(fast.friction.peakConfirmed) << where;
+        ASSERT_EQ(fast.friction.mu.size(), plain.friction.mu.size()) << where;
+        for (std::size_t i = 0; i < fast.friction.mu.size(); ++i)
+          ASSERT_NEAR(fast.friction.mu[i], plain.friction.mu[i], 1e-9 * (1 + plain.friction.mu[i])) << where << " step " << i;
+        EXPECT_NEAR(fast.friction.muStatic, plain.friction.muStatic, 1e-10) << where;
+        EXPECT_NEAR(fast.friction.muKinetic, plain.friction.muKinetic, 1e-9) << where;
+        ASSERT_EQ(fast.firstSlipTime.size(), plain.firstSlipTime.size());
+        for (std::size_t i = 0; i < fast.firstSlipTime.size(); ++i)
+          EXPECT_EQ(fast.firstSlipTime[i], plain.firstSlipTime[i]) << where << " block " << i;
+      }
+    }
   }
 }
 
+TEST(Kernels, TheExponentialLawOnAPlate) {
+  // Same plate, same draws. The loading is elastic: until the first block slips the laws cannot
+  // differ. With v_c far above every slip speed the sliding friction stays at mu_s: the plate
+  // keeps sliding at its static peak, far above Coulomb's mu_k.
+  const Grading g = both(0.2);
+  Parameters p = sbm::testing::paperParameters(12, 0.028, g);
+  const Request q = sbm::testing::defaultRequest(p);
+  const Result coulomb = simulate(p, g, q, {5, 0, 0});
+  p.frictionLaw.name = "exponential";
+  p.frictionLaw.criticalVelocity = 1e3;
+  const Result exponential = simulate(p, g, q, {5, 0, 0});
+  // No weakening, no avalanche: the peak is not lower, and sliding stays within 1 % of it.
+  EXPECT_GE(exponential.friction.muStatic, coulomb.friction.muStatic);
+  EXPECT_GT(exponential.friction.muKinetic, 0.99 * exponential.friction.muStatic);
+  EXPECT_LT(coulomb.friction.muKinetic, 0.9 * coulomb.friction.muStatic);
+  // Before any block slips the laws cannot differ: the loading is elastic.
+  const std::size_t loading = std::size_t(0.5 * p.loadingTime() / p.timeStep);
+  for (std::size_t i = 0; i < loading; ++i) ASSERT_EQ(exponential.friction.mu[i], coulomb.friction.mu[i]) << i;
+}
+
 TEST(Kernels, StatesAgreeThroughStickAndSlip) {
-  // Graded stiffness and friction, 3000 steps through loading, the peak and sliding: the
-  // displacements of both kernels stay equal to round-off.
+  // Graded stiffness and friction, through loading, the peak and sliding: the
+  // displacements of both kernels stay equal to round-off, for both integrators and laws.
   const Grading g = both(0.5);
-  Parameters p = sbm::testing::paperParameters(9, 0.0, g);
-  p.integrator = Integrator::RK4;  // the plain reference implements RK4
-  const auto stiffness = buildStiffness(p, g);
-  const auto friction = buildFriction(p, g, {});
-  FastLattice fast(stiffness, friction, motionOf(p, p.timeStep, p.damping));
-  ReferenceLattice plain(stiffness, friction, motionOf(p, p.timeStep, p.damping));
-  for (int step = 0; step < 3000; ++step) {
-    fast.step();
-    plain.step();
+  for (Integrator integrator : {Integrator::RK4, Integrator::VelocityVerlet}) {
+    Parameters p = sbm::testing::paperParameters(9, 0.0, g);
+    p.integrator = integrator;
+    p.timeStep = defaultTimeStep(p, g);
+    const int steps = int(1.3 * p.loadingTime() / p.timeStep);
+    const auto stiffness = buildStiffness(p, g);
+    const auto friction = buildFriction(p, g, {});
+    auto compare = [&](auto law) {
+      using Law = decltype(law);
+      FastLattice<Law> fast(stiffness, law, motionOf(p, p.timeStep, p.damping));
+      ReferenceLattice<Law> plain(stiffness, law, motionOf(p, p.timeStep, p.damping));
+      for (int step = 0; step < steps; ++step) {
+        fast.step();
+        plain.step();
+      }
+      EXPECT_GT(fast.slippedBlocks(), 0);
+      EXPECT_EQ(fast.slippedBlocks(), plain.slippedBlocks());
+      const auto ux = plain.displacementX();
+      const auto vx = plain.velocityX();
+      double fastest = p.plate.velocity;
+      for (double v : vx) fastest = std::max(fastest, std::fabs(v));
+      for (std::size_t i = 0; i < ux.size(); ++i) {
+        EXPECT_NEAR(fast.displacementX()[i], ux[i], 1e-9 * p.spacing()) << Law::name << " " << name(integrator) << i;
+        EXPECT_NEAR(fast.velocityX()[i], vx[i], 1e-9 * fastest) << Law::name << " " << name(integrator) << i;
+      }
+    };
+    compare(CoulombStickSlip::make(friction, p.frictionLaw));
+    compare(ExponentialVelocityWeakening::make(friction, p.frictionLaw));
   }
-  const auto ux = plain.displacementX();
-  for (std::size_t i = 0; i < ux.size(); ++i) EXPECT_NEAR(fast.displacementX()[i], ux[i], 1e-9 * p.spacing()) << i;
 }
 
 TEST(Kernels, VelocityVerletAgreesWithRK4) {

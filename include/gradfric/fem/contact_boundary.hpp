@@ -1,11 +1,11 @@
 #pragma once
 // The contact boundary of the plate: the bottom nodes against the rigid plane z = 0, penalty
-// contact with the friction law (one law object per node: its local graded coefficients) through
+// contact with the friction law (one law object, a site per node: its local graded coefficients) through
 // the pointwise penaltyContact. The contact state (stick/slip, slip anchor) of an RHS evaluation
 // is pending until commit(), which the TS post-step calls once per accepted step.
 #include "gradfric/fem/contact_penalty.hpp"
 #include "gradfric/fem/plate_mesh.hpp"
-#include "gradfric/physics/friction_law.hpp"
+#include "gradfric/physics/exponential_law.hpp"
 #include "gradfric/physics/grading.hpp"
 
 #include <vector>
@@ -31,7 +31,6 @@ public:
     PetscInt block;  // owned block in the global state vector
     double x, y;     // position
     double area;
-    ContactLaw law;  // the node's local coefficients (area-weighted over its faces' bands)
     double anchorX = 0, anchorY = 0, pendingX = 0, pendingY = 0;
     ContactState state = ContactState::Open, pendingState = ContactState::Open;
     bool everSlipped = false;
@@ -57,6 +56,7 @@ private:
   MPI_Comm comm_;
   PenaltyStiffness stiffness_;
   std::vector<Node> nodes_;
+  ContactLaw law_;  // one site per node: its local coefficients (area-weighted over its faces' bands)
 };
 
 }  // namespace gradfric::fem

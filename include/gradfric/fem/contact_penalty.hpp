@@ -1,8 +1,10 @@
 #pragma once
 // Pointwise contact physics of the FEM, pure arithmetic, no PETSc: a node of the bottom face
 // against the rigid plane z = 0. Normal penalty; tangential penalty (elastic slip) capped by the
-// paper's Eq. 1, mu(v) times the contact pressure (return map onto the friction cone).
-#include "gradfric/physics/friction_law.hpp"
+// friction law (the paper's Eq. 1 by default) times the contact pressure (return map onto the
+// friction cone). The law is the one the spring-block kernels use (physics/friction_laws.hpp),
+// its sites the bottom nodes, its strengths the nodes' coefficients mu_s,i, mu_k,i.
+#include "gradfric/physics/friction_laws.hpp"
 
 #include <cmath>
 
@@ -23,13 +25,14 @@ struct ContactTraction {
   ContactState state = ContactState::Open;
 };
 
-// gap: z of the node (negative = penetration); ux, uy: tangential displacement; anchor: the
-// committed anchor; vx, vy: tangential velocity of the node (the plane is at rest).
-// The sliding velocity of Eq. 1 is the slip rate: zero for a node that was sticking (its velocity
-// is only elastic motion of the penalty spring, so the threshold to start slipping is mu_s p
-// exactly, Eq. 1 at v = 0), the node's tangential speed for a node that was slipping.
-inline ContactTraction penaltyContact(const PenaltyStiffness& k, const ExponentialVelocityWeakening& law, double gap,
-                                      double ux, double uy, double anchorX, double anchorY, double vx, double vy,
+// site: the node's index among the law's sites; gap: z of the node (negative = penetration);
+// ux, uy: tangential displacement; anchor: the committed anchor; vx, vy: tangential velocity of
+// the node (the plane is at rest). A node that was sticking holds up to the law's static
+// threshold mu_s p (its velocity is only elastic motion of the penalty spring); a node that was
+// slipping feels the law's sliding strength at its tangential speed, the slip rate.
+template <class Law>
+inline ContactTraction penaltyContact(const PenaltyStiffness& k, const Law& law, int site, double gap, double ux,
+                                      double uy, double anchorX, double anchorY, double vx, double vy,
                                       bool wasSlipping) {
   ContactTraction r;
   if (gap >= 0.0) {  // open: no traction, the elastic slip is released
@@ -41,8 +44,12 @@ inline ContactTraction penaltyContact(const PenaltyStiffness& k, const Exponenti
   const double trialX = -k.tangential * (ux - anchorX);
   const double trialY = -k.tangential * (uy - anchorY);
   const double trial = std::sqrt(trialX * trialX + trialY * trialY);
-  const double slipRate = wasSlipping ? std::sqrt(vx * vx + vy * vy) : 0.0;
-  const double cap = law.coefficient(slipRate) * r.pressure;
+  const int slot = law.sites.slotOfSite(site);
+  const double staticStrength = law.sites.staticAt(slot);
+  const double strength =
+      wasSlipping ? law.slidingStrength(staticStrength, law.sites.kineticAt(slot), std::sqrt(vx * vx + vy * vy))
+                  : staticStrength;
+  const double cap = strength * r.pressure;
   if (trial <= cap) {
     r.tx = trialX;
     r.ty = trialY;

@@ -1,29 +1,52 @@
 #pragma once
-// Friction laws as small policy objects, pure arithmetic, no PETSc.
-#include <cmath>
+// Friction laws as policy types: pure arithmetic, no PETSc. A law owns its per-site parameters
+// (FrictionSites, structure of arrays) and answers two questions, once, for every model built
+// on it (the spring-block kernels, fast and reference, and the FEM contact):
+//   holds(F^2, s)             static threshold: does a site at rest, static strength s, hold
+//                             against a driving force of squared magnitude F^2?
+//   slidingStrength(s, k, v)  the friction force (or coefficient) of a site sliding at speed v,
+//                             from its static and kinetic strengths s, k.
+// "Strength" is in the model's units: the SBM stores forces (mu_s,i F_n, mu_k,i F_n [N]), the
+// FEM coefficients (multiplied by the contact pressure). The laws: coulomb_law.hpp,
+// exponential_law.hpp; the list the option -sbm_friction_law chooses from: friction_laws.hpp.
+#include <vector>
 
 namespace gradfric {
 
-// Amontons-Coulomb with distinct static and kinetic coefficients (the SBM's law): a block at rest
-// holds while |F_mot| <= mu_s F_n; a sliding block feels mu_k F_n against its velocity.
-struct CoulombStickSlip {
-  double muStatic;
-  double muKinetic;
-  double staticThreshold(double normalForce) const { return muStatic * normalForce; }
-  double kineticForce(double normalForce) const { return muKinetic * normalForce; }
-  bool holds(double drivingForceSquared, double normalForce) const {
-    const double threshold = staticThreshold(normalForce);
-    return drivingForceSquared <= threshold * threshold;
+// Where a law's per-site parameters live: one value for all sites, one per column of a grid
+// (rows share it: the SBM's graded means), or one per site. The uniform and per-column layouts
+// let the kernels keep a parameter in a register or stream one row of it.
+enum class SiteLayout { Uniform, PerColumn, PerSite };
+
+struct FrictionSites {
+  SiteLayout layout = SiteLayout::Uniform;
+  int columns = 0;                      // sites per row of the grid (PerColumn, PerSite)
+  std::vector<double> staticStrength;   // mu_s,i (x F_n for the SBM)
+  std::vector<double> kineticStrength;  // mu_k,i (x F_n for the SBM)
+
+  int slot(int row, int column) const {
+    switch (layout) {
+      case SiteLayout::PerSite: return row * columns + column;
+      case SiteLayout::PerColumn: return column;
+      default: return 0;
+    }
   }
+  int slotOfSite(int site) const {  // site = row * columns + column
+    switch (layout) {
+      case SiteLayout::PerSite: return site;
+      case SiteLayout::PerColumn: return site % columns;
+      default: return 0;
+    }
+  }
+  double staticAt(int slot) const { return staticStrength[slot]; }
+  double kineticAt(int slot) const { return kineticStrength[slot]; }
 };
 
-// The paper's Eq. 1 (the FEM's law): mu(v) = mu_k + (mu_s - mu_k) exp(-v / v_c).
-struct ExponentialVelocityWeakening {
-  double muStatic;
-  double muKinetic;
-  double criticalVelocity;  // v_c > 0
-  double coefficient(double slipSpeed) const {
-    return muKinetic + (muStatic - muKinetic) * std::exp(-slipSpeed / criticalVelocity);
+// The static threshold shared by the laws: a site at rest holds while |F| <= s (compared in
+// squares: no square root in the kernels' stick test).
+struct StaticThreshold {
+  static bool holds(double drivingForceSquared, double staticStrength) {
+    return drivingForceSquared <= staticStrength * staticStrength;
   }
 };
 

@@ -1,6 +1,7 @@
 #pragma once
-// Time integration of the spring-block lattice with classical RK4 at a fixed step, and
-// Amontons-Coulomb stick/slip. Two implementations with the same semantics:
+// Time integration of the spring-block lattice at a fixed step (classical RK4 or velocity
+// Verlet) with stick/slip under a friction law (physics/friction_laws.hpp; Coulomb by default).
+// Two implementations, both templated on the law, with the same semantics:
 //   FastLattice      structure of arrays, each spring evaluated once, the four RK stages fused
 //                    with the force sweep row by row (the production kernel);
 //   ReferenceLattice a plain array of blocks, each block summing its 8 neighbours (every spring
@@ -8,18 +9,21 @@
 //
 // Stick/slip and the RK stages (documented in README, "Spring-block model"):
 //  - the stick state is frozen during a step: a stuck block has zero velocity and acceleration
-//    in every stage; a slipping block feels the damping -m gamma v and a kinetic friction force
-//    mu_k,i F_n that is also frozen for the step: against the velocity at t_n, or against F_mot
-//    when the block starts from rest. (Re-evaluating its direction in every stage makes a
+//    in every stage; a slipping block feels the damping -m gamma v and the law's sliding force
+//    (Coulomb: mu_k,i F_n; exponential: F_n mu(|v|)) that is also frozen for the step, direction
+//    and magnitude: against the velocity at t_n and at its speed, or against F_mot and at speed
+//    zero when the block starts from rest. (Re-evaluating its direction in every stage makes a
 //    velocity that crosses zero inside a step chatter around zero instead of re-sticking.)
 //  - at the start of each step, with F_mot of the new state: a stuck block with
 //    |F_mot| > mu_s,i F_n starts to slip; a slipping block whose velocity reversed during the
 //    last step (it points against that step's friction force) re-sticks (velocity set to zero)
-//    if |F_mot| <= mu_s,i F_n, and slides on otherwise.
-// FastLattice also offers velocity Verlet (Parameters::integrator), one force evaluation per step
-// instead of four, with the same stick/slip rule.
+//    if |F_mot| <= mu_s,i F_n, and slides on otherwise (the law's static threshold).
+// Velocity Verlet (Parameters::integrator) needs one force evaluation per step instead of four,
+// with the same stick/slip rule; between steps the velocities are the half-step ones.
+#include "gradfric/physics/friction_laws.hpp"
 #include "gradfric/sbm/lattice.hpp"
 
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -44,9 +48,32 @@ Motion motionOf(const Parameters& parameters, double timeStep, double damping);
 
 enum BlockState : std::uint8_t { Stuck = 0, Slipping = 1, Reversed = 2 };
 
+// The stick/slip rule at the start of a step (see above), for both kernels: what happens to a
+// block in `state` whose driving force the law's static threshold holds (or not).
+enum class StickSlipChange { None, StartsToSlip, Resticks, SlidesOn };
+inline StickSlipChange stickSlipChange(std::uint8_t state, bool holds) {
+  if (state == Stuck) return holds ? StickSlipChange::None : StickSlipChange::StartsToSlip;
+  if (state == Reversed) return holds ? StickSlipChange::Resticks : StickSlipChange::SlidesOn;
+  return StickSlipChange::None;
+}
+
+// The friction force of the step per unit of the direction vector (velocity at t_n when moving,
+// F_mot when starting from rest): the law's sliding strength at the block's speed, frozen for
+// the step; zero for a stuck block (mobile = 0) or without a direction.
+template <class Law>
+inline double frictionPerDirection(const Law& law, double staticStrength, double kineticStrength, double mobile,
+                                   double speed2, double force2) {
+  const bool moving = speed2 > 0.0;
+  const double norm2 = moving ? speed2 : force2;
+  const double speed = Law::weakensWithSpeed && moving ? std::sqrt(speed2) : 0.0;
+  const double sliding = law.slidingStrength(staticStrength, kineticStrength, speed);
+  return norm2 > 0.0 ? mobile * sliding / std::sqrt(norm2) : 0.0;
+}
+
+template <class Law>
 class FastLattice {
 public:
-  FastLattice(const LatticeStiffness& stiffness, const FrictionField& friction, const Motion& motion);
+  FastLattice(const LatticeStiffness& stiffness, Law law, const Motion& motion);
   // Observes the state at t_n (slider force, new slips), then advances it to t_{n+1}.
   StepObservation step();
   double time() const { return double(steps_) * motion_.timeStep; }
@@ -61,9 +88,9 @@ public:
   const std::uint8_t* blockStates() const { return state_.data(); }
 
   // The kernel's parts (public so that the per-ISA entry points can reach them).
-  template <bool Graded, FrictionField::Layout L, int Stage>
+  template <bool Graded, SiteLayout L, int Stage>
   void rk4Stage(double time, double& sumX, double& sumY);
-  template <bool Graded, FrictionField::Layout L>
+  template <bool Graded, SiteLayout L>
   void verletStep(double time, double& sumX, double& sumY);
 
 private:
@@ -73,13 +100,13 @@ private:
   template <bool Graded, bool WantSum>
   void rowForces(int r, const double* px, const double* py, double t, const double* carryX, const double* carryY,
                  double* nextX, double* nextY, double& sumX, double& sumY);
-  template <FrictionField::Layout L>
+  template <SiteLayout L>
   void transitions(int r, double t);
-  template <FrictionField::Layout L>
+  template <SiteLayout L>
   void frictionVector(int r);
   void markReversals(int r);
   LatticeStiffness stiffness_;
-  FrictionField friction_;
+  Law law_;  // owns the per-block friction strengths
   Motion motion_;
   int nb_;
   std::int64_t steps_ = 0;
@@ -91,16 +118,17 @@ private:
   std::vector<double> sx_, sy_, svx_, svy_;
   std::vector<double> accUx_, accUy_, accVx_, accVy_;
   std::vector<double> mobile_;
-  std::vector<double> frictionX_, frictionY_;  // kinetic friction force of the step [N]
+  std::vector<double> frictionX_, frictionY_;  // friction force of the step [N]
   std::vector<std::uint8_t> state_;
   std::vector<std::uint8_t> everSlipped_;
   // Row work space: forces on the current row, carried forces for the next row, spring forces.
   std::vector<double> fx_, fy_, carryX_, carryY_, nextX_, nextY_, springX_, springY_;
 };
 
+template <class Law>
 class ReferenceLattice {
 public:
-  ReferenceLattice(const LatticeStiffness& stiffness, const FrictionField& friction, const Motion& motion);
+  ReferenceLattice(const LatticeStiffness& stiffness, Law law, const Motion& motion);
   StepObservation step();
   double time() const { return double(steps_) * motion_.timeStep; }
   std::int64_t steps() const { return steps_; }
@@ -109,7 +137,7 @@ public:
   std::vector<double> displacementX() const;
   std::vector<double> displacementY() const;
   std::vector<double> velocityX() const;
-  std::vector<double> velocityY() const;
+  std::vector<double> velocityY() const;  // half-step velocity with Verlet
   // Driving force F_mot (springs + slider) on every block at the current state (for tests).
   void drivingForces(std::vector<double>& fx, std::vector<double>& fy) const;
 
@@ -120,9 +148,12 @@ public:
 private:
   void forces(const std::vector<Block>& y, double t, std::vector<double>& fx, std::vector<double>& fy) const;
   void derivative(const std::vector<Block>& y, double t, std::vector<Block>& dy) const;
-  std::vector<double> frictionX_, frictionY_;  // kinetic friction force of the step [N]
+  void kick(const std::vector<double>& fx, const std::vector<double>& fy);  // Verlet half kick
+  void markReversals();
+  void rk4(double t);
+  std::vector<double> frictionX_, frictionY_;  // friction force of the step [N]
   LatticeStiffness stiffness_;
-  FrictionField friction_;
+  Law law_;
   Motion motion_;
   int nb_;
   std::int64_t steps_ = 0;

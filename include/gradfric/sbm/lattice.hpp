@@ -3,6 +3,7 @@
 // random stream. Blocks are indexed row-major, i = row * N_b + column, the column running along
 // the grading axis x. Grading is along x only, so every stiffness depends on columns alone.
 #include "gradfric/core/random_stream.hpp"
+#include "gradfric/physics/friction_law.hpp"
 #include "gradfric/physics/grading.hpp"
 #include "gradfric/sbm/parameters.hpp"
 
@@ -25,25 +26,13 @@ struct LatticeStiffness {
 // series (harmonic-mean) stiffness 2 k_i k_j / (k_i + k_j). Slider K_s = G l^2 / l_z.
 LatticeStiffness buildStiffness(const Parameters& parameters, const Grading& grading);
 
-// Local friction as forces: static threshold mu_s,i F_n and kinetic force mu_k,i F_n [N].
-// Stored as one value, one per column or one per block, whichever the scene needs.
-struct FrictionField {
-  enum class Layout { Uniform, PerColumn, PerBlock };
-  Layout layout = Layout::Uniform;
-  int blocksPerSide = 0;
-  std::vector<double> staticForce;
-  std::vector<double> kineticForce;
+// Local friction as forces, the per-site parameters of the friction law: static strength
+// mu_s,i F_n and kinetic strength mu_k,i F_n [N], stored as one value, one per column or one per
+// block (SiteLayout), whichever the scene needs.
+struct FrictionField : FrictionSites {
   int redrawnBlocks = 0;  // blocks whose draw was repeated to keep 0 < mu_k,i <= mu_s,i
-
-  int slot(int row, int column) const {
-    switch (layout) {
-      case Layout::PerBlock: return row * blocksPerSide + column;
-      case Layout::PerColumn: return column;
-      default: return 0;
-    }
-  }
-  double staticAt(int row, int column) const { return staticForce[slot(row, column)]; }
-  double kineticAt(int row, int column) const { return kineticForce[slot(row, column)]; }
+  double staticAt(int row, int column) const { return staticStrength[slot(row, column)]; }
+  double kineticAt(int row, int column) const { return kineticStrength[slot(row, column)]; }
 };
 
 // Means from the grading; Gaussian dispersion (relative sigma) drawn from the stream, redrawn

@@ -1,7 +1,7 @@
 #pragma once
 // One realisation of the spring-block model: build the lattice for a grading and a random
-// stream, integrate, and return the observables asked for. No MPI inside: the ensemble layer
-// spreads realisations over ranks.
+// stream, integrate, and return the observables asked for. No MPI, no PETSc inside (the core
+// library): the ensemble layer spreads realisations over ranks.
 #include "gradfric/core/random_stream.hpp"
 #include "gradfric/physics/friction_history.hpp"
 #include "gradfric/physics/grading.hpp"
@@ -38,6 +38,15 @@ struct Result {
 
 // Fast: the production kernel. Reference: the plain kernel the tests compare against.
 enum class Kernel { Fast, Reference };
+
+// Timing hooks around simulate()'s phases; none by default (the core has no PETSc). The PETSc
+// library installs its log events (log_events.hpp) so that -log_view shows them.
+enum class Phase { Setup = 0, Step = 1, Snapshot = 2 };
+struct PhaseTimer {
+  void (*begin)(Phase) = nullptr;
+  void (*end)(Phase) = nullptr;
+};
+void setPhaseTimer(PhaseTimer timer);
 
 Result simulate(const Parameters& parameters, const Grading& grading, const Request& request, StreamKey key,
                 Kernel kernel = Kernel::Fast);

@@ -1,8 +1,9 @@
 #pragma once
 // Parameters of the 2D spring-block model (paper, "2D spring-block model"; docs/model.md).
-// SI units throughout. All are PETSc options with the -sbm_ prefix.
-#include "gradfric/core/options.hpp"
+// SI units throughout. All are PETSc options with the -sbm_ prefix, read by parameter_options.hpp;
+// this header and its pure functions are part of the PETSc-free core.
 #include "gradfric/physics/friction_history.hpp"
+#include "gradfric/physics/friction_laws_settings.hpp"
 #include "gradfric/physics/grading.hpp"
 #include "gradfric/physics/plate.hpp"
 
@@ -21,6 +22,9 @@ struct Parameters {
   // Relative dispersion of the local friction around the plate's (graded) means
   double sigmaStatic = 0.028;   // relative standard deviation of mu_s,i
   double sigmaKinetic = 0.028;  // relative standard deviation of mu_k,i
+  // The friction law of every block (-sbm_friction_law, -sbm_v_c): Coulomb, the paper's SBM, or
+  // the paper's Eq. 1, the FEM's law (physics/friction_laws.hpp).
+  FrictionLawSettings frictionLaw;
   // Lattice and numerics
   int blocksPerSide = 120;  // N_b
   double damping = 0.0;     // gamma [1/s]; default 0.1 sqrt(K_int/m)
@@ -55,11 +59,6 @@ struct Request {
   double maxTime = 0.0;               // give up (peak unconfirmed) after this long [s]
   int energyCheckInterval = 500;      // steps between two energy-balance checks (and at the end)
 };
-
-// Reads -sbm_* (physics, numerics) and the observable options; validates before any work.
-// The grading is needed for the stability limit (the stiffest band).
-Parameters readParameters(MPI_Comm comm, RunParameters* record, const Plate& plate, const Grading& grading);
-Request readRequest(MPI_Comm comm, RunParameters* record, const Parameters& parameters);
 
 // The largest step that is stable for this lattice with the parameters' integrator (stiffest
 // band, undamped): |omega_max dt| <= 2 sqrt(2) for RK4, 2 for velocity Verlet.

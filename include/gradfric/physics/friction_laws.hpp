@@ -1,0 +1,46 @@
+#pragma once
+// The registry of friction laws. A new law is one header (see coulomb_law.hpp) and one entry in
+// GF_FRICTION_LAWS: the option's list of choices, the dispatch to the templated kernels and
+// their explicit instantiations all follow from this list.
+#include "gradfric/physics/coulomb_law.hpp"
+#include "gradfric/physics/exponential_law.hpp"
+#include "gradfric/physics/friction_laws_settings.hpp"
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#define GF_FRICTION_LAWS(X) \
+  X(CoulombStickSlip)       \
+  X(ExponentialVelocityWeakening)
+
+namespace gradfric {
+
+inline std::vector<std::string> frictionLawNames() {
+  std::vector<std::string> names;
+#define GF_LAW_NAME(Law) names.push_back(Law::name);
+  GF_FRICTION_LAWS(GF_LAW_NAME)
+#undef GF_LAW_NAME
+  return names;
+}
+
+// Calls visit(law) with the law named in the settings, built on these sites.
+template <class Visitor>
+decltype(auto) withFrictionLaw(const FrictionLawSettings& settings, FrictionSites sites, Visitor&& visit) {
+#define GF_LAW_VISIT(Law) \
+  if (settings.name == Law::name) return visit(Law::make(std::move(sites), settings));
+  GF_FRICTION_LAWS(GF_LAW_VISIT)
+#undef GF_LAW_VISIT
+  throw std::invalid_argument("unknown friction law '" + settings.name + "'");
+}
+
+// The law in words, with its parameters (printed among a run's active effects).
+inline std::string describeFrictionLaw(const FrictionLawSettings& settings) {
+#define GF_LAW_DESCRIBE(Law) \
+  if (settings.name == Law::name) return Law::describe(settings);
+  GF_FRICTION_LAWS(GF_LAW_DESCRIBE)
+#undef GF_LAW_DESCRIBE
+  throw std::invalid_argument("unknown friction law '" + settings.name + "'");
+}
+
+}  // namespace gradfric

@@ -1,0 +1,16 @@
+#pragma once
+// Reading the spring-block parameters and the observables from PETSc options (-sbm_*), with
+// validation before any work. Part of the PETSc library (the structs are in parameters.hpp).
+#include "gradfric/core/options.hpp"
+#include "gradfric/physics/plate.hpp"
+#include "gradfric/sbm/parameters.hpp"
+
+namespace gradfric::sbm {
+
+// Reads -sbm_* (physics, numerics) and the observable options; validates before any work.
+// The grading is needed for the stability limit (the stiffest band). Also routes simulate()'s
+// timing hooks to the PETSc log events SbmSetup, SbmStep, SbmSnapshot (-log_view).
+Parameters readParameters(MPI_Comm comm, RunParameters* record, const Plate& plate, const Grading& grading);
+Request readRequest(MPI_Comm comm, RunParameters* record, const Parameters& parameters);
+
+}  // namespace gradfric::sbm
