@@ -61,20 +61,7 @@ void ElasticOperator::setForce(Vec X, Vec F) {
     GF_CALL(VecRestoreArrayRead(X, &x));
   }
   GF_CALL(DMGlobalToLocal(dmU_, uGlobal_, INSERT_VALUES, uLocal_));
-  GF_CALL(VecZeroEntries(fLocalU_));
-  {
-    const PetscScalar* ul = nullptr;
-    PetscScalar* fl = nullptr;
-    GF_CALL(VecGetArrayRead(uLocal_, &ul));
-    GF_CALL(VecGetArray(fLocalU_, &fl));
-    GF_CALL(PetscLogEventBegin(evKernel_, 0, 0, 0, 0));
-    elasticKernel(mesh_.localCells(), cellDispOff_.data(), cellModulus_.data(), element_.stiffness.data(), ul, nullptr,
-                  0.0, fl);
-    GF_CALL(PetscLogEventEnd(evKernel_, 0, 0, 0, 0));
-    GF_CALL(PetscLogFlops(2.0 * 576 * mesh_.localCells()));
-    GF_CALL(VecRestoreArrayRead(uLocal_, &ul));
-    GF_CALL(VecRestoreArray(fLocalU_, &fl));
-  }
+  kernelForce(uLocal_, fLocalU_);
   GF_CALL(VecZeroEntries(fGlobal_));
   GF_CALL(DMLocalToGlobal(dmU_, fLocalU_, ADD_VALUES, fGlobal_));
   PetscScalar* f = nullptr;
@@ -131,22 +118,28 @@ void ElasticOperator::cellStresses(Vec X, std::vector<std::array<double, 6>>* st
   GF_CALL(VecRestoreArrayRead(xLocal_, &xl));
 }
 
+// fLocal = -K uLocal on this rank's cells (local vectors of the displacement DM).
+void ElasticOperator::kernelForce(Vec uLocal, Vec fLocal) {
+  GF_CALL(VecZeroEntries(fLocal));
+  const PetscScalar* ul = nullptr;
+  PetscScalar* fl = nullptr;
+  GF_CALL(VecGetArrayRead(uLocal, &ul));
+  GF_CALL(VecGetArray(fLocal, &fl));
+  GF_CALL(PetscLogEventBegin(evKernel_, 0, 0, 0, 0));
+  elasticKernel(mesh_.localCells(), cellDispOff_.data(), cellModulus_.data(), element_.stiffness.data(), ul, nullptr,
+                0.0, fl);
+  GF_CALL(PetscLogEventEnd(evKernel_, 0, 0, 0, 0));
+  GF_CALL(PetscLogFlops(2.0 * 576 * mesh_.localCells()));
+  GF_CALL(VecRestoreArrayRead(uLocal, &ul));
+  GF_CALL(VecRestoreArray(fLocal, &fl));
+}
+
 void ElasticOperator::forceSpecialised(Vec u, Vec f) {
   OwnedVec uLoc, fLoc;
   GF_CALL(DMGetLocalVector(dmU_, uLoc.out()));
   GF_CALL(DMGetLocalVector(dmU_, fLoc.out()));
   GF_CALL(DMGlobalToLocal(dmU_, u, INSERT_VALUES, uLoc));
-  GF_CALL(VecZeroEntries(fLoc));
-  const PetscScalar* ul = nullptr;
-  PetscScalar* fl = nullptr;
-  GF_CALL(VecGetArrayRead(uLoc, &ul));
-  GF_CALL(VecGetArray(fLoc, &fl));
-  GF_CALL(PetscLogEventBegin(evKernel_, 0, 0, 0, 0));
-  elasticKernel(mesh_.localCells(), cellDispOff_.data(), cellModulus_.data(), element_.stiffness.data(), ul, nullptr,
-                0.0, fl);
-  GF_CALL(PetscLogEventEnd(evKernel_, 0, 0, 0, 0));
-  GF_CALL(VecRestoreArrayRead(uLoc, &ul));
-  GF_CALL(VecRestoreArray(fLoc, &fl));
+  kernelForce(uLoc, fLoc);
   GF_CALL(VecZeroEntries(f));
   GF_CALL(DMLocalToGlobal(dmU_, fLoc, ADD_VALUES, f));
   Vec a = uLoc.release(), b = fLoc.release();

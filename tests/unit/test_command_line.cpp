@@ -6,6 +6,8 @@
 #include "gradfric/core/options.hpp"
 #include "gradfric/core/run_limits.hpp"
 
+#include "../common/scoped_option.hpp"
+
 #include <gtest/gtest.h>
 #include <petscsys.h>
 
@@ -18,11 +20,7 @@
 using namespace gradfric;
 
 namespace {
-struct ScopedOption {
-  std::string name;
-  ScopedOption(const char* n, const char* value) : name(n) { PetscOptionsSetValue(nullptr, n, value); }
-  ~ScopedOption() { PetscOptionsClearValue(nullptr, name.c_str()); }
-};
+using gradfric::testing::ScopedOption;
 
 std::string messageOf(const std::function<void()>& f) {
   try {

@@ -3,17 +3,15 @@
 #include "gradfric/core/options.hpp"
 #include "gradfric/physics/grading_options.hpp"
 
+#include "../common/scoped_option.hpp"
+
 #include <gtest/gtest.h>
 #include <petscsys.h>
 
 using namespace gradfric;
 
 namespace {
-struct ScopedOption {
-  std::string name;
-  ScopedOption(const char* n, const char* value) : name(n) { PetscOptionsSetValue(nullptr, n, value); }
-  ~ScopedOption() { PetscOptionsClearValue(nullptr, name.c_str()); }
-};
+using gradfric::testing::ScopedOption;
 }  // namespace
 
 TEST(Options, DefaultsUserValuesAndTheRecord) {

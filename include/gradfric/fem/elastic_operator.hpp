@@ -45,6 +45,7 @@ public:
 
 private:
   void setupReference();  // elastic_reference.cpp
+  void kernelForce(Vec uLocal, Vec fLocal);
 
   const PlateMesh& mesh_;
   BoxElement element_;
