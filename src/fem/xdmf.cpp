@@ -49,19 +49,9 @@ std::vector<hsize_t> shapeOf(hid_t file, const std::string& path) {
 }
 
 std::vector<std::string> datasetsIn(hid_t file, const char* group) {
-  std::vector<std::string> names;
-  if (GF_H5(H5Lexists(file, group, H5P_DEFAULT)) <= 0) return names;
+  if (GF_H5(H5Lexists(file, group, H5P_DEFAULT)) <= 0) return {};
   io::H5Group g(GF_H5(H5Gopen2(file, group, H5P_DEFAULT)));
-  H5G_info_t info;
-  GF_H5(H5Gget_info(g, &info));
-  for (hsize_t i = 0; i < info.nlinks; ++i) {
-    const ssize_t length = GF_H5(H5Lget_name_by_idx(g, ".", H5_INDEX_NAME, H5_ITER_INC, i, nullptr, 0, H5P_DEFAULT));
-    std::string name(static_cast<size_t>(length) + 1, '\0');
-    GF_H5(H5Lget_name_by_idx(g, ".", H5_INDEX_NAME, H5_ITER_INC, i, name.data(), name.size(), H5P_DEFAULT));
-    name.resize(static_cast<size_t>(length));
-    names.push_back(name);
-  }
-  return names;
+  return io::linkNames(g);
 }
 
 // A hyperslab of a [T, n, width] dataset: step t, components [first, first + count).

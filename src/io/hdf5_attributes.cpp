@@ -14,6 +14,20 @@ H5Group createGroup(hid_t parent, const char* name) {
   return H5Group(GF_H5(H5Gcreate2(parent, name, H5P_DEFAULT, gcpl, H5P_DEFAULT)));
 }
 
+std::vector<std::string> linkNames(hid_t group) {
+  H5G_info_t info;
+  GF_H5(H5Gget_info(group, &info));
+  std::vector<std::string> names;
+  for (hsize_t i = 0; i < info.nlinks; ++i) {
+    const ssize_t length = GF_H5(H5Lget_name_by_idx(group, ".", H5_INDEX_NAME, H5_ITER_INC, i, nullptr, 0, H5P_DEFAULT));
+    std::string name(static_cast<size_t>(length) + 1, '\0');
+    GF_H5(H5Lget_name_by_idx(group, ".", H5_INDEX_NAME, H5_ITER_INC, i, name.data(), name.size(), H5P_DEFAULT));
+    name.resize(static_cast<size_t>(length));
+    names.push_back(name);
+  }
+  return names;
+}
+
 void writeStringAttribute(hid_t object, const std::string& name, const std::string& value) {
   if (GF_H5(H5Aexists(object, name.c_str())) > 0) GF_H5(H5Adelete(object, name.c_str()));
   H5Type type(GF_H5(H5Tcopy(H5T_C_S1)));

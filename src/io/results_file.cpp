@@ -359,13 +359,7 @@ void ResultsFile::readLayout() {
   }
   {
     H5Group stats(GF_H5(H5Gopen2(root, "statistics", H5P_DEFAULT)));
-    H5G_info_t info;
-    GF_H5(H5Gget_info(stats, &info));
-    for (hsize_t i = 0; i < info.nlinks; ++i) {
-      const ssize_t length = GF_H5(H5Lget_name_by_idx(stats, ".", H5_INDEX_NAME, H5_ITER_INC, i, nullptr, 0, H5P_DEFAULT));
-      std::string name(static_cast<size_t>(length) + 1, '\0');
-      GF_H5(H5Lget_name_by_idx(stats, ".", H5_INDEX_NAME, H5_ITER_INC, i, name.data(), name.size(), H5P_DEFAULT));
-      name.resize(static_cast<size_t>(length));
+    for (const std::string& name : linkNames(stats)) {
       H5Dataset d(GF_H5(H5Dopen2(stats, name.c_str(), H5P_DEFAULT)));
       H5Type type(GF_H5(H5Dget_type(d)));
       (H5Tget_class(type) == H5T_FLOAT ? layout_.statisticsReal : layout_.statisticsInteger).push_back(name);

@@ -24,6 +24,8 @@ struct Attribute {
 
 // A group without access/modification times (the file depends on the results only).
 H5Group createGroup(hid_t parent, const char* name);
+// The names of the links (datasets, groups) of a group, in name order.
+std::vector<std::string> linkNames(hid_t group);
 
 void writeStringAttribute(hid_t object, const std::string& name, const std::string& value);
 void writeIntAttribute(hid_t object, const std::string& name, int value);
