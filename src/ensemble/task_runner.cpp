@@ -29,19 +29,16 @@ io::TaskOutput toTaskOutput(const Task& task, sbm::Result&& result, bool history
   io::TaskOutput o;
   o.point = task.point;
   o.realisation = task.realisation;
-  o.muStatic = result.friction.muStatic;
-  o.muKinetic = result.friction.muKinetic;
-  o.peakTime = result.friction.peakTime;
+  o.friction = std::move(result.friction);
+  if (!history) {  // -ensemble_history false: the scalars only
+    o.friction.time.clear();
+    o.friction.mu.clear();
+    o.friction.forceX.clear();
+    o.friction.forceY.clear();
+  }
   o.endTime = result.endTime;
-  o.peakConfirmed = result.friction.peakConfirmed;
   o.steps = result.steps;
   o.redrawnBlocks = result.redrawnBlocks;
-  if (history) {
-    o.time = std::move(result.friction.time);
-    o.mu = std::move(result.friction.mu);
-    o.forceX = std::move(result.friction.forceX);
-    o.forceY = std::move(result.friction.forceY);
-  }
   o.firstSlipTime = std::move(result.firstSlipTime);
   for (auto& s : result.snapshots) {
     o.snapshotTime.push_back(s.time);
@@ -78,9 +75,9 @@ double runTask(const Scene& scene, const Task& task, io::ResultsFile& file, int 
   GF_CALL(PetscLogEventBegin(events.write, 0, 0, 0, 0));
   file.writeTask(o);
   GF_CALL(PetscLogEventEnd(events.write, 0, 0, 0, 0));
-  summary->muStatic = o.muStatic;
-  summary->muKinetic = o.muKinetic;
-  summary->peakConfirmed = o.peakConfirmed;
+  summary->friction.muStatic = o.friction.muStatic;
+  summary->friction.muKinetic = o.friction.muKinetic;
+  summary->friction.peakConfirmed = o.friction.peakConfirmed;
   return wall;
 }
 
@@ -91,7 +88,7 @@ void printProgress(const Scene& scene, const Task& task, const io::TaskOutput& o
   std::printf("[%ld/%d] point %d (%s) realisation %d: mu_s = %.6f, mu_k = %.6f%s  task %.2f s on rank %d;"
               " elapsed %s, left ~%s\n",
               finishedAll + alreadyDone, scene.tasks(), task.point, pointLabel(scene.sweep, task.point).c_str(),
-              task.realisation, o.muStatic, o.muKinetic, o.peakConfirmed ? "" : " (peak unconfirmed)", wall, rank,
+              task.realisation, o.friction.muStatic, o.friction.muKinetic, o.friction.peakConfirmed ? "" : " (peak unconfirmed)", wall, rank,
               hms(elapsed).c_str(), left > 0 ? hms(eta).c_str() : "0:00:00");
   std::fflush(stdout);
 }

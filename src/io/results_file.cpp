@@ -435,7 +435,7 @@ void ResultsFile::writeTask(const TaskOutput& t) {
   const std::vector<hsize_t> at{p, r}, one{1, 1};
   const hid_t x = independent_;
   if (layout_.historyCapacity > 0) {
-    const size_t n = std::min(t.time.size(), t.mu.size());
+    const size_t n = std::min(t.friction.time.size(), t.friction.mu.size());
     if (n > static_cast<size_t>(layout_.historyCapacity))
       throw Hdf5Error("mu(t) history of task (" + std::to_string(t.point) + ", " + std::to_string(t.realisation) +
                       ") has " + std::to_string(n) + " samples, more than the file's capacity " +
@@ -444,16 +444,16 @@ void ResultsFile::writeTask(const TaskOutput& t) {
     // whatever a torn earlier write left.
     const hsize_t C = static_cast<hsize_t>(layout_.historyCapacity);
     std::vector<double> row(C, kNaN);
-    std::copy(t.time.begin(), t.time.begin() + n, row.begin());
+    std::copy(t.friction.time.begin(), t.friction.time.begin() + n, row.begin());
     writeSlab(historyTime_, H5T_NATIVE_DOUBLE, {p, r, 0}, {1, 1, C}, row.data(), x);
     auto writeRow = [&](hid_t dataset, const std::vector<double>& values) {
       std::fill(row.begin(), row.end(), kNaN);
       std::copy(values.begin(), values.begin() + std::min(n, values.size()), row.begin());
       writeSlab(dataset, H5T_NATIVE_DOUBLE, {p, r, 0}, {1, 1, C}, row.data(), x);
     };
-    writeRow(historyMu_, t.mu);
-    writeRow(historyForceX_, t.forceX);
-    writeRow(historyForceY_, t.forceY);
+    writeRow(historyMu_, t.friction.mu);
+    writeRow(historyForceX_, t.friction.forceX);
+    writeRow(historyForceY_, t.friction.forceY);
     const int length = static_cast<int>(n);
     writeSlab(historyLength_, H5T_NATIVE_INT, at, one, &length, x);
   }
@@ -481,11 +481,11 @@ void ResultsFile::writeTask(const TaskOutput& t) {
     writeSlab(snapshotTime_, H5T_NATIVE_DOUBLE, {p, r, 0}, {1, 1, S}, times.data(), x);
     writeSlab(snapshots_, H5T_NATIVE_DOUBLE, {p, r, 0, 0, 0}, {1, 1, S, N, N}, maps.data(), x);
   }
-  writeSlab(muStatic_, H5T_NATIVE_DOUBLE, at, one, &t.muStatic, x);
-  writeSlab(muKinetic_, H5T_NATIVE_DOUBLE, at, one, &t.muKinetic, x);
-  writeSlab(peakTime_, H5T_NATIVE_DOUBLE, at, one, &t.peakTime, x);
+  writeSlab(muStatic_, H5T_NATIVE_DOUBLE, at, one, &t.friction.muStatic, x);
+  writeSlab(muKinetic_, H5T_NATIVE_DOUBLE, at, one, &t.friction.muKinetic, x);
+  writeSlab(peakTime_, H5T_NATIVE_DOUBLE, at, one, &t.friction.peakTime, x);
   writeSlab(endTime_, H5T_NATIVE_DOUBLE, at, one, &t.endTime, x);
-  const std::int8_t confirmed = t.peakConfirmed ? 1 : 0;
+  const std::int8_t confirmed = t.friction.peakConfirmed ? 1 : 0;
   writeSlab(peakConfirmed_, H5T_NATIVE_INT8, at, one, &confirmed, x);
   writeSlab(steps_, H5T_NATIVE_INT64, at, one, &t.steps, x);
   writeSlab(redrawn_, H5T_NATIVE_INT, at, one, &t.redrawnBlocks, x);

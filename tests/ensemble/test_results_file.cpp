@@ -56,15 +56,15 @@ TaskOutput taskOf(int p, int r, int rank) {
   TaskOutput t;
   t.point = p;
   t.realisation = r;
-  t.muStatic = 1.0 + 0.01 * p + 0.001 * r;
-  t.muKinetic = 0.6 + 0.01 * p;
-  t.peakTime = 1e-4 * (p + 1);
+  t.friction.muStatic = 1.0 + 0.01 * p + 0.001 * r;
+  t.friction.muKinetic = 0.6 + 0.01 * p;
+  t.friction.peakTime = 1e-4 * (p + 1);
   t.endTime = 3e-4;
-  t.peakConfirmed = (r % 2) == 0;
+  t.friction.peakConfirmed = (r % 2) == 0;
   t.steps = 1000 + p * 10 + r;
   t.redrawnBlocks = r;
-  t.time = {0.0, 1e-5, 2e-5};
-  t.mu = {0.0, 0.5 + p, 0.9 + r};
+  t.friction.time = {0.0, 1e-5, 2e-5};
+  t.friction.mu = {0.0, 0.5 + p, 0.9 + r};
   t.firstSlipTime = {1.0 * p, 2.0, 3.0, 4.0 * r};
   t.snapshotTime = {1e-5};  // only the first snapshot was reached
   t.snapshots = {{0.1, 0.2, 0.3, 0.4 + p}};
@@ -177,8 +177,8 @@ TEST(ResultsFile, HistoryLongerThanTheCapacityIsRefused) {
   ResultsFile f = ResultsFile::create(comm(), path, smallLayout(), smallSweep(), {});
   if (rank == 0) {
     TaskOutput t = taskOf(0, 0, 0);
-    t.time.assign(6, 0.0);
-    t.mu.assign(6, 0.0);
+    t.friction.time.assign(6, 0.0);
+    t.friction.mu.assign(6, 0.0);
     EXPECT_THROW(f.writeTask(t), Hdf5Error);
     t = taskOf(5, 0, 0);
     EXPECT_THROW(f.writeTask(t), Hdf5Error);

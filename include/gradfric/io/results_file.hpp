@@ -10,6 +10,7 @@
 // The layout is documented field by field in docs/ensemble.md.
 #include "gradfric/io/hdf5_attributes.hpp"
 #include "gradfric/io/hdf5_handle.hpp"
+#include "gradfric/physics/friction_history.hpp"
 #include "gradfric/io/provenance.hpp"
 
 #include <mpi.h>
@@ -54,16 +55,12 @@ struct SweepTable {
 struct TaskOutput {
   int point = 0;
   int realisation = 0;
-  double muStatic = 0.0;
-  double muKinetic = 0.0;
-  double peakTime = 0.0;
+  // The shared observer's measurement (mu_s, peak time and confirmation, mu_k) and its sampled
+  // history (time, mu, force_x, force_y: at most historyCapacity samples; empty if not stored).
+  FrictionSummary friction;
   double endTime = 0.0;
-  bool peakConfirmed = false;
   std::int64_t steps = 0;
   int redrawnBlocks = 0;
-  std::vector<double> time;           // mu(t) history (at most historyCapacity samples)
-  std::vector<double> mu;
-  std::vector<double> forceX, forceY;  // slider force components [N] at the same samples
   std::vector<double> firstSlipTime;  // N_b x N_b or empty
   std::vector<double> localStatic, localKinetic;  // mu_s,i and mu_k,i, N_b x N_b (frictionFields)
   std::vector<double> snapshotTime;   // actual time of each snapshot taken (<= S)
