@@ -269,6 +269,13 @@ void OptionReader::requireAtLeast(const std::string& name, PetscInt value, Petsc
   if (value < minimum) throw InputError(fullName(name), std::to_string(value), ">= " + std::to_string(minimum));
 }
 
+void refuseRenamedOption(const std::string& old, const std::string& now, const std::string& why) {
+  char value[256] = "";
+  PetscBool set = PETSC_FALSE;
+  GF_CALL(PetscOptionsGetString(nullptr, nullptr, old.c_str(), value, sizeof value, &set));
+  if (set) throw InputError("invalid option " + old + " = " + value + ": " + why + "; use " + now + " = " + value);
+}
+
 void checkUnusedOptions(MPI_Comm comm, const std::vector<std::string>& strictPrefixes) {
   PetscInt count = 0;
   char** names = nullptr;

@@ -18,14 +18,7 @@ void refuseOldNames() {
       {"-sbm_peak_hold", "-friction_peak_hold"},       {"-sbm_muk_delay", "-friction_muk_delay"},
       {"-sbm_muk_width", "-friction_muk_width"},       {"-sbm_history_interval", "-friction_history_interval"},
       {"-fem_kinetic_window_start", "-friction_muk_delay"}, {"-fem_kinetic_window_length", "-friction_muk_width"}};
-  for (const auto& [old, now] : renamed) {
-    char value[256] = "";
-    PetscBool set = PETSC_FALSE;
-    PetscOptionsGetString(nullptr, nullptr, old, value, sizeof value, &set);
-    if (set)
-      throw InputError("invalid option " + std::string(old) + " = " + value +
-                       ": both models measure friction by one rule; use " + now + " = " + value);
-  }
+  for (const auto& [old, now] : renamed) refuseRenamedOption(old, now, "both models measure friction by one rule");
 }
 
 }  // namespace

@@ -17,15 +17,9 @@ const char* const kPlateNames[] = {"L", "H", "E", "nu", "rho", "p", "v", "theta"
 // with a silently ignored value.
 void refuseOldNames() {
   for (const char* model : {"sbm_", "fem_"}) {
-    for (const char* name : kPlateNames) {
-      const std::string old = std::string("-") + model + name;
-      char value[256] = "";
-      PetscBool set = PETSC_FALSE;
-      PetscOptionsGetString(nullptr, nullptr, old.c_str(), value, sizeof value, &set);
-      if (set)
-        throw InputError("invalid option " + old + " = " + value + ": the plate's properties are shared by both " +
-                         "models; use -plate_" + name + " = " + value);
-    }
+    for (const char* name : kPlateNames)
+      refuseRenamedOption(std::string("-") + model + name, std::string("-plate_") + name,
+                          "the plate's properties are shared by both models");
   }
 }
 

@@ -99,4 +99,9 @@ std::vector<std::string> knownOptionNames();
 // edit or two: -ouput, --sbm_N) that are not PETSc's own; the rest are reported as unused.
 void checkUnusedOptions(MPI_Comm comm, const std::vector<std::string>& strictPrefixes);
 
+// An option a scene may still carry from before it was renamed: if `old` is set, throws
+// InputError "invalid option <old> = <value>: <why>; use <now> = <value>" instead of running with
+// a silently ignored value.
+void refuseRenamedOption(const std::string& old, const std::string& now, const std::string& why);
+
 }  // namespace gradfric
