@@ -46,6 +46,7 @@ ContactTotals ContactBoundary::addForce(Vec X, Vec F) {
     n.pressure = r.pressure;
     n.tx = r.tx;
     n.ty = r.ty;
+    recordPending(n, xb, n.area * r.tx, n.area * r.ty, n.area * r.pressure);
     PetscScalar* fb = f + 6 * n.block;
     fb[3] += n.area * r.tx;
     fb[4] += n.area * r.ty;
@@ -64,6 +65,56 @@ ContactTotals ContactBoundary::addForce(Vec X, Vec F) {
   return totals;
 }
 
+ContactTotals ContactBoundary::addKinematicForce(Vec X, Vec F, const std::vector<double>& mass, double gamma,
+                                                 double dt) {
+  const PetscScalar* x = nullptr;
+  PetscScalar* f = nullptr;
+  GF_CALL(VecGetArrayRead(X, &x));
+  GF_CALL(VecGetArray(F, &f));
+  ContactTotals totals;
+  for (std::size_t site = 0; site < nodes_.size(); ++site) {
+    Node& n = nodes_[site];
+    const PetscScalar* xb = x + 6 * n.block;
+    PetscScalar* fb = f + 6 * n.block;
+    const double m = mass[n.block];
+    const double v[3] = {xb[3], xb[4], xb[5]};
+    const double aFree[3] = {fb[3] / m - gamma * v[0], fb[4] / m - gamma * v[1], fb[5] / m - gamma * v[2]};
+    const KinematicContactForce r = kinematicContact(law_, static_cast<int>(site), m, dt, xb[2], v, aFree);
+    n.pendingState = r.state;
+    n.pressure = r.fn / n.area;
+    n.tx = r.fx / n.area;
+    n.ty = r.fy / n.area;
+    recordPending(n, xb, r.fx, r.fy, r.fn);
+    fb[3] += r.fx;
+    fb[4] += r.fy;
+    fb[5] += r.fn;
+    totals.fx += r.fx;
+    totals.fy += r.fy;
+    totals.fn += r.fn;
+    if (r.state == ContactState::Stick) ++totals.stick;
+    else if (r.state == ContactState::Slip) ++totals.slip;
+    else ++totals.open;
+    if (n.everSlipped || r.state != ContactState::Stick) ++totals.everSlipped;
+  }
+  totals.nodes = static_cast<long long>(nodes_.size());
+  GF_CALL(VecRestoreArrayRead(X, &x));
+  GF_CALL(VecRestoreArray(F, &f));
+  return totals;
+}
+
+void ContactBoundary::recordPending(Node& n, const PetscScalar* xb, double fx, double fy, double fz) {
+  n.pendingForce[0] = fx;
+  n.pendingForce[1] = fy;
+  n.pendingForce[2] = fz;
+  for (int d = 0; d < 3; ++d) n.pendingU[d] = xb[d];
+}
+
+double ContactBoundary::work() const {
+  double total = 0;
+  GF_CALL_MPI(MPI_Allreduce(&work_, &total, 1, MPI_DOUBLE, MPI_SUM, comm_));
+  return total;
+}
+
 double ContactBoundary::largestStaticCoefficient() const {
   double local = 0, global = 0;
   for (double s : law_.sites.staticStrength) local = std::max(local, s);
@@ -76,6 +127,11 @@ void ContactBoundary::commit() {
     n.anchorX = n.pendingX;
     n.anchorY = n.pendingY;
     n.state = n.pendingState;
+    for (int d = 0; d < 3; ++d) {
+      work_ += 0.5 * (n.force[d] + n.pendingForce[d]) * (n.pendingU[d] - n.u[d]);
+      n.force[d] = n.pendingForce[d];
+      n.u[d] = n.pendingU[d];
+    }
     if (n.state != ContactState::Stick) n.everSlipped = true;  // slipped or lost contact
   }
 }

@@ -47,6 +47,7 @@ void EnergyMonitor::check(long step, double t, Vec state) {
   record_->time.push_back(t);
   record_->energy.push_back(energy);
   record_->energyIn.push_back(in);
+  record_->dissipated.push_back(model_.dissipatedEnergy());
   const std::string energyProblem =
       bound_.violation(energy, in, "the energy put in");
   if (!energyProblem.empty()) fail(step, t, energyProblem);

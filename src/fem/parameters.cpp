@@ -1,19 +1,73 @@
 #include "gradfric/fem/parameters.hpp"
 
 #include "gradfric/core/input_error.hpp"
+#include "gradfric/core/petsc_call.hpp"
 #include "gradfric/physics/friction_options.hpp"
 
 
 #include <cmath>
+#include <cstdio>
 
 namespace gradfric::fem {
+
+const char* contactMethodName(ContactMethod method) {
+  return method == ContactMethod::Kinematic ? "kinematic" : "penalty";
+}
+
+double FemParameters::penaltySlopeError() const {
+  if (!contact || contactMethod != ContactMethod::Penalty) return 0.0;
+  FemParameters q = *this;
+  q.resolveDerived();
+  const double G = shearModulus(), H = plate.thickness, L = plate.length;
+  const double compliance = G / (H * q.kt) + 12.0 * G * H / (q.kn * L * L);
+  return compliance / (1.0 + compliance);
+}
+
+std::string describeContact(const FemParameters& given) {
+  FemParameters q = given;
+  q.resolveDerived();
+  if (!q.contact) return "none (free bottom face)";
+  if (q.contactMethod == ContactMethod::Kinematic)
+    return "kinematic (exact: no penetration, exact stick within mu_s p_c A)";
+  char text[200];
+  std::snprintf(text, sizeof text, "penalty k_n %.3g, k_t %.3g Pa/m (loading slope %.2f %% low)", q.kn, q.kt,
+                100.0 * q.penaltySlopeError());
+  return text;
+}
+
+std::string describeDamping(const FemParameters& q) {
+  std::string text;
+  auto add = [&](const std::string& part) { text += (text.empty() ? "" : ", ") + part; };
+  char buffer[160];
+  if (q.bulkLinear > 0 || q.bulkQuadratic > 0) {
+    std::snprintf(buffer, sizeof buffer, "bulk viscosity b1 %.3g, b2 %.3g", q.bulkLinear, q.bulkQuadratic);
+    add(buffer);
+  }
+  if (q.slideDamping > 0) {
+    std::snprintf(buffer, sizeof buffer, "mass-proportional %.3g 1/s", q.slideDamping);
+    add(buffer);
+  }
+  if (q.stiffnessDamping > 0) {
+    std::snprintf(buffer, sizeof buffer, "stiffness-proportional %.3g s", q.stiffnessDamping);
+    add(buffer);
+  }
+  return text.empty() ? "none" : text;
+}
+
+double FemParameters::dilatationalWaveSpeed() const {
+  const double nu = plate.poissonRatio;
+  return std::sqrt(plate.youngsModulus * (1 - nu) / ((1 + nu) * (1 - 2 * nu) * plate.density));
+}
+
+double FemParameters::thicknessModeStiffnessDamping(double dampingRatio) const {
+  return 2.0 * dampingRatio * plate.thickness / (M_PI * dilatationalWaveSpeed());
+}
 
 double FemParameters::shearWaveSpeed() const { return std::sqrt(shearModulus() / plate.density); }
 
 void FemParameters::resolveDerived() {
   const double H = plate.thickness;
-  const double hz = H / nz;
-  if (kn <= 0) kn = plate.youngsModulus / hz;
+  if (kn <= 0) kn = penaltyFactor * shearModulus() / H;
   if (kt <= 0) kt = kn;
   const double cs = shearWaveSpeed();
   if (settleDamping < 0) settleDamping = cs / H;
@@ -43,13 +97,28 @@ FemParameters readFemParameters(MPI_Comm comm, RunParameters* record, const Plat
   q.ny = static_cast<int>(o.integer("ny", q.ny, 1, 100000, "1", "hexahedra along y"));
   q.nz = static_cast<int>(o.integer("nz", q.nz, 1, 100000, "1", "hexahedra through the thickness"));
   q.vC = o.real("v_c", q.vC, "m/s", "critical velocity v_c of Eq. 1");
-  q.contact = o.flag("contact", true, "contact with the rigid plane (off: free bottom face, for tests)");
-  if (auto kn = o.realIfSet("kn", "Pa/m", "normal penalty stiffness k_n", "E0/hz")) q.kn = *kn;
+  const std::string contact =
+      o.choice("contact", "penalty", {"penalty", "kinematic", "none"},
+               "contact with the rigid plane: penalty springs, kinematic (exact, predictor-corrector; gfverlet only), "
+               "none (free bottom face, for tests)");
+  q.contact = contact != "none";
+  q.contactMethod = contact == "kinematic" ? ContactMethod::Kinematic : ContactMethod::Penalty;
+  if (auto kn = o.realIfSet("kn", "Pa/m", "normal penalty stiffness k_n", "250 G/H")) q.kn = *kn;
   if (auto kt = o.realIfSet("kt", "Pa/m", "tangential penalty stiffness k_t", "k_n")) q.kt = *kt;
   if (auto g = o.realIfSet("settle_damping", "1/s", "mass-proportional damping during the pressure step", "c_s/H"))
     q.settleDamping = *g;
+  q.bulkLinear = o.real("bulk_b1", q.bulkLinear, "1",
+                        "linear bulk viscosity b1 (0.06 with -fem_bulk_viscosity, as Abaqus/Explicit; 0: off)");
+  q.bulkQuadratic = o.real("bulk_b2", q.bulkQuadratic, "1",
+                           "quadratic bulk viscosity b2, in compression (1.2 with -fem_bulk_viscosity; 0: off)");
   q.slideDamping = o.real("slide_damping", 0.0, "1/s", "mass-proportional damping during sliding");
-  q.stiffnessDamping = o.real("stiffness_damping", 0.0, "s", "stiffness-proportional (Rayleigh beta) damping");
+  q.stiffnessDamping = o.real("stiffness_damping", 0.0, "s",
+                              "stiffness-proportional (Rayleigh beta) damping (0.2 H/(pi c_p): steady sliding, see "
+                              "docs/accuracy_fem.md)");
+  if (o.flag("bulk_viscosity", false, "bulk viscosity of Abaqus/Explicit (-fem_bulk_b1, -fem_bulk_b2)")) {
+    q.bulkLinear = 0.06;
+    q.bulkQuadratic = 1.2;
+  }
   if (auto dt = o.realIfSet("dt", "s", "time step", "dt_safety * stable step")) q.dt = *dt;
   q.dtSafety = o.real("dt_safety", q.dtSafety, "1", "time step as a fraction of the stable step");
   q.dtCheck = o.flag("dt_check", true,
@@ -76,6 +145,15 @@ FemParameters readFemParameters(MPI_Comm comm, RunParameters* record, const Plat
   if (o.wasSet("kn")) o.requirePositive("kn", q.kn, "Pa/m");
   if (o.wasSet("kt")) o.requirePositive("kt", q.kt, "Pa/m");
   if (o.wasSet("settle_damping")) o.requireNonNegative("settle_damping", q.settleDamping, "1/s");
+  if (q.contact && q.contactMethod == ContactMethod::Kinematic) {  // it predicts gfverlet's next step
+    char type[256] = "";
+    PetscBool given = PETSC_FALSE;
+    GF_CALL(PetscOptionsGetString(nullptr, nullptr, "-ts_type", type, sizeof type, &given));
+    if (given && std::string(type) != "gfverlet")
+      throw InputError("-ts_type", type, "gfverlet with -fem_contact kinematic (it predicts gfverlet's next step)");
+  }
+  o.requireRange("bulk_b1", q.bulkLinear, 0.0, 1.0, "0 <= b1 <= 1");
+  o.requireRange("bulk_b2", q.bulkQuadratic, 0.0, 10.0, "0 <= b2 <= 10");
   o.requireNonNegative("slide_damping", q.slideDamping, "1/s");
   o.requireNonNegative("stiffness_damping", q.stiffnessDamping, "s");
   if (o.wasSet("dt")) o.requirePositive("dt", q.dt, "s");

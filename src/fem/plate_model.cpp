@@ -22,6 +22,8 @@ PlateModel::PlateModel(MPI_Comm comm, const FemParameters& params, const Grading
       mesh_(comm, meshSize(params_), params_.partitioner),
       mass_(mesh_, params_.plate.density),
       elastic_(mesh_, params_.plate.youngsModulus, params_.plate.poissonRatio, params_.stiffnessDamping, grading),
+      bulk_(mesh_, params_.plate.youngsModulus, params_.plate.poissonRatio, params_.plate.density, params_.bulkLinear,
+            params_.bulkQuadratic, grading),
       contact_(mesh_, PenaltyStiffness{params_.kn, params_.kt}, params_.plate.muStatic, params_.plate.muKinetic,
                params_.vC, grading),
       top_(mesh_, params_.plate.pressure, params_.rampTime, params_.plate.velocity, params_.plate.slidingAngle) {
@@ -50,14 +52,20 @@ void PlateModel::rhs(double t, Vec X, Vec F) {
   const bool sliding = phase_ == Phase::Sliding;
   elastic_.setForce(X, F);
   top_.addPressure(t, sliding, F);
+  dampingPower_ = bulk_.addForce(X, F);
+  if (params_.energyAudit && params_.stiffnessDamping > 0) stiffnessPower_ = stiffnessDampingPower(X);
+  const double gamma = sliding ? params_.slideDamping : params_.settleDamping;
   ContactTotals totals;
   if (params_.contact) {
     GF_CALL(PetscLogEventBegin(events.contact, 0, 0, 0, 0));
-    totals = contact_.addForce(X, F);
+    if (params_.contactMethod == ContactMethod::Kinematic)
+      totals = contact_.addKinematicForce(X, F, mass_.perBlock(), gamma, dt_);
+    else
+      totals = contact_.addForce(X, F);
     GF_CALL(PetscLogEventEnd(events.contact, 0, 0, 0, 0));
   }
-  const double gamma = sliding ? params_.slideDamping : params_.settleDamping;
   const std::vector<double>& inverseMass = mass_.inversePerBlock();
+  const std::vector<double>& blockMass = mass_.perBlock();
   const PetscScalar* x = nullptr;
   PetscScalar* f = nullptr;
   GF_CALL(VecGetArrayRead(X, &x));
@@ -68,6 +76,7 @@ void PlateModel::rhs(double t, Vec X, Vec F) {
     for (int d = 0; d < 3; ++d) {
       fb[d] = xb[3 + d];
       fb[3 + d] = fb[3 + d] * inverseMass[b] - gamma * xb[3 + d];
+      dampingPower_ += gamma * blockMass[b] * xb[3 + d] * xb[3 + d];
     }
   }
   GF_CALL(VecRestoreArray(F, &f));
@@ -76,6 +85,37 @@ void PlateModel::rhs(double t, Vec X, Vec F) {
   if (sliding) top_.constrainTangential(mass_.perBlock(), F, &totals.driveX, &totals.driveY);
   lastTotals_ = totals;
   GF_CALL(PetscLogEventEnd(events.rhs, 0, 0, 0, 0));
+}
+
+void PlateModel::commitContact() {
+  contact_.commit();
+  dampingWork_ += dampingPower_ * dt_;  // the rhs of the step saw the mid-step velocities
+  stiffnessWork_ += stiffnessPower_ * dt_;
+}
+
+double PlateModel::dissipatedEnergy() const {
+  double damping = 0;
+  GF_CALL_MPI(MPI_Allreduce(&dampingWork_, &damping, 1, MPI_DOUBLE, MPI_SUM, comm()));
+  return damping + stiffnessWork_ - contact_.work();
+}
+
+// beta v . K v = 2 beta x (the elastic energy of the velocity field taken as a displacement).
+double PlateModel::stiffnessDampingPower(Vec X) {
+  if (!velocityAsDisplacement_) GF_CALL(VecDuplicate(X, velocityAsDisplacement_.out()));
+  const PetscScalar* x = nullptr;
+  PetscScalar* w = nullptr;
+  PetscInt n = 0;
+  GF_CALL(VecGetLocalSize(X, &n));
+  GF_CALL(VecGetArrayRead(X, &x));
+  GF_CALL(VecGetArray(velocityAsDisplacement_, &w));
+  for (PetscInt b = 0; b < n; b += 6)
+    for (int d = 0; d < 3; ++d) {
+      w[b + d] = x[b + 3 + d];
+      w[b + 3 + d] = 0;
+    }
+  GF_CALL(VecRestoreArray(velocityAsDisplacement_, &w));
+  GF_CALL(VecRestoreArrayRead(X, &x));
+  return 2.0 * params_.stiffnessDamping * elastic_.energy(velocityAsDisplacement_);
 }
 
 void PlateModel::startSliding(Vec X) {

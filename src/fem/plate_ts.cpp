@@ -4,6 +4,8 @@
 #include "gradfric/core/petsc_call.hpp"
 #include "gradfric/fem/verlet_ts.hpp"
 
+#include <string>
+
 namespace gradfric::fem {
 
 namespace {
@@ -84,6 +86,12 @@ TS createPlateTS(PlateModel& model, Vec state) {
     GF_CALL(TSGetAdapt(ts, &adapt));
     GF_CALL(TSAdaptSetType(adapt, TSADAPTNONE));  // fixed step: the stable step is a hard bound
     GF_CALL(TSSetTimeStep(ts, model.timeStep()));
+    TSType type = nullptr;
+    GF_CALL(TSGetType(ts, &type));
+    // The kinematic contact predicts the next position from gfverlet's half-step velocity.
+    if (model.params().contact && model.params().contactMethod == ContactMethod::Kinematic &&
+        std::string(type) != TSGFVERLET)
+      throw InputError("-ts_type", type, "gfverlet with -fem_contact kinematic (it predicts gfverlet's next step)");
     GF_CALL(TSSetUp(ts));
   } catch (...) {
     TSDestroy(&ts);

@@ -65,6 +65,7 @@ public:
     r_.energyTime = std::move(energyRecord.time);
     r_.energy = std::move(energyRecord.energy);
     r_.energyIn = std::move(energyRecord.energyIn);
+    r_.energyDissipated = std::move(energyRecord.dissipated);
     return std::move(r_);
   }
 

@@ -18,12 +18,18 @@ double stableTimeStep(const FemParameters& given, const Grading& grading) {
   double factor = 1.0;
   for (int band = 0; band < grading.bands; ++band)
     if (grading.gradesModulus()) factor = std::max(factor, grading.bandFactor(band));
-  double omega2 = elementMaxFrequencySquared(element, q.plate.youngsModulus * factor, q.plate.density);
+  const double elementOmega2 = elementMaxFrequencySquared(element, q.plate.youngsModulus * factor, q.plate.density);
+  double omega2 = elementOmega2;
   // Penalty springs: k * area / nodal mass = 2 k / (rho hz) at every bottom node.
-  if (q.contact) omega2 += 2.0 * std::max(q.kn, q.kt) / (q.plate.density * element.hz);
+  // Kinematic contact adds no spring: the element alone sets the step.
+  if (q.contact && q.contactMethod == ContactMethod::Penalty)
+    omega2 += 2.0 * std::max(q.kn, q.kt) / (q.plate.density * element.hz);
   const double omega = std::sqrt(omega2);
   const double gamma = std::max(q.settleDamping, q.slideDamping);
-  const double xi = 0.5 * q.stiffnessDamping * omega + gamma / (2.0 * omega);
+  // Linear bulk viscosity: b1 is the damping ratio of the highest (dilatational) mode (Abaqus).
+  // Stiffness-proportional damping acts on the element's stiffness, not on the penalty springs:
+  // damping ratio beta omega_e^2 / (2 omega) of the combined mode.
+  const double xi = 0.5 * q.stiffnessDamping * elementOmega2 / omega + gamma / (2.0 * omega) + q.bulkLinear;
   return centralDifferenceStableStep(omega2, xi);
 }
 

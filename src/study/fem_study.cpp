@@ -83,7 +83,7 @@ std::optional<Study> readStudy(MPI_Comm comm, RunParameters* record) {
   s.safetiesOther = o.realList("dt_safety_other", {0.3, 0.6, 0.9}, "1",
                                "dt ladder of the other integrators (same fractions of the same stable step)");
   s.factors = o.realList("penalty_factors", {0.1, 0.3, 1, 3, 10, 30}, "1",
-                         "k_n and k_t ladders: factor on the default E0/hz (largest is the reference)");
+                         "k_n and k_t ladders: factor on the default 250 G/H (largest is the reference)");
   s.penaltySafety = o.real("penalty_dt_safety", 0.5, "1", "dt safety of the penalty ladders");
   s.fineSafeties = o.realList("fine_dt_safety", {}, "1",
                               "optional dt ladder (gfverlet) on the mesh ladder's finest mesh (empty: none)");
@@ -134,7 +134,7 @@ std::vector<Ladder> buildLadders(const Study& s) {
   }
   for (const char* which : {"kn", "kt"}) {
     if (!want(which)) continue;
-    Ladder l{which, std::string(which) == "kn" ? "k_n factor" : "k_t factor", "1 (x the default E0/hz)",
+    Ladder l{which, std::string(which) == "kn" ? "k_n factor" : "k_t factor", "1 (x the default 250 G/H)",
              "|mu/mu_ref - 1|, reference: the stiffest penalty", {}, {}, {}, {}, int(s.factors.size()) - 1};
     for (double f : s.factors) {
       fem::FemParameters q = s.base;

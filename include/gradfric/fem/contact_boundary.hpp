@@ -1,8 +1,11 @@
 #pragma once
-// The contact boundary of the plate: the bottom nodes against the rigid plane z = 0, penalty
-// contact with the friction law (one law object, a site per node: its local graded coefficients) through
-// the pointwise penaltyContact. The contact state (stick/slip, slip anchor) of an RHS evaluation
-// is pending until commit(), which the TS post-step calls once per accepted step.
+// The contact boundary of the plate: the bottom nodes against the rigid plane z = 0 with the
+// friction law (one law object, a site per node: its local graded coefficients), by penalty
+// (pointwise penaltyContact, addForce) or exactly (pointwise kinematicContact, addKinematicForce).
+// The contact state (stick/slip, slip anchor) of an RHS evaluation is pending until commit(),
+// which the TS post-step calls once per accepted step; commit() also adds the work the contact
+// forces did on the plate over the step (trapezoidal in the displacement), for the energy balance.
+#include "gradfric/fem/contact_kinematic.hpp"
 #include "gradfric/fem/contact_penalty.hpp"
 #include "gradfric/fem/plate_mesh.hpp"
 #include "gradfric/physics/exponential_law.hpp"
@@ -35,6 +38,8 @@ public:
     ContactState state = ContactState::Open, pendingState = ContactState::Open;
     bool everSlipped = false;
     double pressure = 0, tx = 0, ty = 0;  // of the last evaluation
+    double force[3] = {0, 0, 0}, u[3] = {0, 0, 0};  // committed contact force and displacement
+    double pendingForce[3] = {0, 0, 0}, pendingU[3] = {0, 0, 0};
   };
 
   // muStatic, muKinetic: the plate's mean coefficients, graded by grading's friction factor.
@@ -44,8 +49,15 @@ public:
   // Adds the contact force of the state X (global) to the force slots of F and returns the
   // totals of this rank; the new contact state is pending.
   ContactTotals addForce(Vec X, Vec F);
+  // Kinematic contact (gfverlet): F's force slots hold every other force; the acceleration the
+  // RHS will return is F / m - gamma v (mass per block, mass damping gamma); dt the step.
+  ContactTotals addKinematicForce(Vec X, Vec F, const std::vector<double>& mass, double gamma, double dt);
   void commit();  // accept the pending contact state (after a step)
   void resetSlipRecord();  // from now on, everSlipped counts slips after this point
+  // Work of the contact forces on the plate over the committed steps, summed over ranks [J]
+  // (negative: friction and the inelastic normal impacts dissipate; with penalties it includes
+  // the energy the springs store).
+  double work() const;
 
   const std::vector<Node>& nodes() const { return nodes_; }
   double largestStaticCoefficient() const;  // over the nodes and ranks
@@ -56,7 +68,10 @@ private:
   MPI_Comm comm_;
   PenaltyStiffness stiffness_;
   std::vector<Node> nodes_;
-  ContactLaw law_;  // one site per node: its local coefficients (area-weighted over its faces' bands)
+  ContactLaw law_;
+  double work_ = 0;  // this rank's share of work()
+  // Records the evaluation's force on node n at displacement xb (pending until commit).
+  void recordPending(Node& n, const PetscScalar* xb, double fx, double fy, double fz);  // one site per node: its local coefficients (area-weighted over its faces' bands)
 };
 
 }  // namespace gradfric::fem

@@ -15,7 +15,7 @@
 namespace gradfric::fem {
 
 struct EnergyRecord {
-  std::vector<double> time, energy, energyIn;  // see FemRunResult
+  std::vector<double> time, energy, energyIn, dissipated;  // see FemRunResult
 };
 
 class EnergyMonitor {

@@ -12,6 +12,11 @@ namespace gradfric::fem {
 // A FrictionMeasurement whose times are all derived (negative placeholders, see resolveDerived).
 FrictionMeasurement derivedMeasurement();
 
+// How the bottom face meets the rigid plane (-fem_contact): penalty springs (the paper's and the
+// default), exact predictor-corrector contact (kinematic, the reference), or none (free face).
+enum class ContactMethod { Penalty, Kinematic };
+const char* contactMethodName(ContactMethod method);
+
 struct FemParameters {
   // Mesh and geometry
   int nx = 100, ny = 100, nz = 5;
@@ -20,13 +25,27 @@ struct FemParameters {
   Plate plate;
   // Friction law (paper Eq. 1)
   double vC = 1e-4;      // critical velocity v_c [m/s]
-  bool contact = true;   // false: free bottom face (testing)
-  double kn = 0, kt = 0;  // penalty stiffnesses [Pa/m]; 0 = derived E/hz
+  bool contact = true;   // false: free bottom face (-fem_contact none, testing)
+  ContactMethod contactMethod = ContactMethod::Penalty;
+  // Penalty stiffnesses [Pa/m]; 0 = derived penaltyFactor G/H (docs/accuracy_fem.md, "Contact"):
+  // the tangential springs add the compliance 1/(k_t L^2) to the plate's shear compliance
+  // H/(G L^2), so the loading slope carries -G/(H k_t); 250 G/H keeps it at 0.4 %.
+  double kn = 0, kt = 0;
+  static constexpr double penaltyFactor = 250.0;
+  // Bulk viscosity (Abaqus/Explicit's form, bulk_viscosity.hpp): pressure b1 rho c_d L_e eps_v'
+  // plus rho (b2 L_e eps_v')^2 in compression; b1 = b2 = 0: off.
+  double bulkLinear = 0.0, bulkQuadratic = 0.0;
   // Damping (mass-proportional, [1/s]) in the pressure phase and in the sliding phase;
   // stiffness-proportional (Rayleigh beta, [s]) in both.
   double settleDamping = -1;  // < 0: derived c_s/H
   double slideDamping = 0;
+  // Stiffness-proportional (Rayleigh beta) damping [s], off by default: it ends the ringing after
+  // the first slip (a plateau with constant friction at beta = 0.2 H/(pi c_p), 0.1 of critical in
+  // the fundamental thickness mode) but moves mu_s by 4 % there (docs/accuracy_fem.md,
+  // "Steady sliding"): thicknessModeStiffnessDamping(0.1) gives that value.
   double stiffnessDamping = 0;
+  double thicknessModeStiffnessDamping(double dampingRatio) const;  // 2 xi H / (pi c_p)
+  bool energyAudit = false;  // also integrate the stiffness-proportional dissipation (one more operator pass per step)
   // Time stepping
   double dt = 0;            // 0: safety * stable step
   double dtSafety = 0.6;  // docs/accuracy_fem.md: 0.9 gave 1 % mu_s error on the paper mesh and instability with stiffer penalties
@@ -54,11 +73,21 @@ struct FemParameters {
 
   double shearModulus() const { return plate.shearModulus(); }
   double shearWaveSpeed() const;
+  double dilatationalWaveSpeed() const;  // c_p = sqrt((lambda + 2 mu) / rho) of E0
   // Paper Eq. 2: Delta t_s = mu_s p H / (G v).
   double eq2PeakTime() const { return plate.loadingTime(plate.thickness); }
+  // Relative loss of loading slope (dF/dx of the top against G L^2/H) that the penalty springs'
+  // compliance causes: tangential G/(H k_t) plus the rocking of the plate on the normal springs
+  // under the moment H F, 12 G H/(k_n L^2) (kinematic contact or no contact: 0).
+  double penaltySlopeError() const;
   // Fill the derived defaults (negative or zero placeholders) from the others.
   void resolveDerived();
 };
+
+// One line each for the active effects and the results file: the contact (method, penalties and
+// the slope error they carry) and the damping of the sliding step.
+std::string describeContact(const FemParameters& q);
+std::string describeDamping(const FemParameters& q);
 
 // Reads and validates every -fem_ option (derived defaults recorded as such).
 FemParameters readFemParameters(MPI_Comm comm, RunParameters* record, const Plate& plate);

@@ -1,11 +1,14 @@
 #pragma once
 // The FEM model of the plate as a composition of its layers (PyLith-like): the mesh
-// (plate_mesh), the lumped mass (lumped_mass), the elastic operator (elastic_operator), the
-// contact boundary (contact_boundary) and the top loading (top_loading). rhs() sums their
+// (plate_mesh), the lumped mass (lumped_mass), the elastic operator (elastic_operator), the bulk
+// viscosity (bulk_viscosity, optional), the contact boundary (contact_boundary, penalty or
+// kinematic: the kinematic contact comes last, it needs every other force) and the top loading
+// (top_loading). rhs() sums their
 // contributions into the one right-hand side the TS calls:
 //   state per vertex [u_x u_y u_z v_x v_y v_z] (fields "displacement", "velocity");
 //   RHS = [v ; M^-1 (f_int + f_pressure + f_contact) - gamma v], the top's tangential
 //   acceleration held at zero while it slides.
+#include "gradfric/fem/bulk_viscosity.hpp"
 #include "gradfric/fem/contact_boundary.hpp"
 #include "gradfric/fem/elastic_operator.hpp"
 #include "gradfric/fem/lumped_mass.hpp"
@@ -45,7 +48,7 @@ public:
   // Time integration.
   Vec createState() const;  // zero state (global)
   void rhs(double t, Vec X, Vec F);
-  void commitContact() { contact_.commit(); }  // the TS post-step, after each accepted step
+  void commitContact();  // the TS post-step, after each accepted step: contact state, damping work
   Phase phase() const { return phase_; }
   void setPhase(Phase phase) { phase_ = phase; }
   void startSliding(Vec X);  // phase Sliding; the top's tangential velocity set to the slider's
@@ -53,18 +56,29 @@ public:
   ContactTotals contactTotals() const;  // of the last rhs evaluation, summed over ranks
   double kineticEnergy(Vec X) const { return mass_.kineticEnergy(X); }
   double elasticEnergy(Vec X) { return elastic_.energy(X); }
+  // Energy the contact forces and the damping (mass-proportional, bulk viscosity, and the
+  // stiffness-proportional term with params.energyAudit) took from the plate since the start of
+  // the run, summed over ranks [J]: friction, inelastic impacts, damping, and with penalties the
+  // energy the springs hold.
+  double dissipatedEnergy() const;
 
 private:
+  double stiffnessDampingPower(Vec X);  // over ranks [W]
+
   FemParameters params_;
   Grading grading_;
   PlateMesh mesh_;
   LumpedMass mass_;
   ElasticOperator elastic_;
+  BulkViscosity bulk_;
   ContactBoundary contact_;
   TopLoading top_;
   double stableDt_ = 0, dt_ = 0;
   Phase phase_ = Phase::Pressure;
   ContactTotals lastTotals_;
+  double dampingPower_ = 0, dampingWork_ = 0;  // this rank's: of the last rhs, and committed
+  double stiffnessPower_ = 0, stiffnessWork_ = 0;  // over ranks (params.energyAudit only)
+  OwnedVec velocityAsDisplacement_;             // for the audit: v in the displacement slots
 };
 
 }  // namespace gradfric::fem

@@ -34,6 +34,9 @@ struct FemRunResult {
   // Friction, damping and the penalty springs' own energy make the difference (energy <= put in,
   // up to the integrator's O(dt^2) energy error).
   std::vector<double> energyTime, energy, energyIn;
+  // At the same samples: the energy the contact forces and the damping took from the plate [J]
+  // (PlateModel::dissipatedEnergy); energy + dissipated = energy put in closes the balance.
+  std::vector<double> energyDissipated;
 };
 
 // Called after each step of step 2 with the time since the start of sliding and the state.

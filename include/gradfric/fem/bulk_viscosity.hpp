@@ -1,0 +1,46 @@
+#pragma once
+// Bulk viscosity of the plate (Abaqus/Explicit's form, on by default there with b1 = 0.06,
+// b2 = 1.2): an isotropic viscous stress on each cell from its volumetric strain rate eps_v',
+//   sigma_bv = b1 rho c_d L_e eps_v' + rho (b2 L_e)^2 eps_v' |eps_v'| (second term in compression only),
+// c_d the cell's dilatational wave speed, L_e its smallest edge. It damps the ringing of the
+// thickness (dilatational) modes that a sudden load excites, and leaves shear (the loading of the
+// contact, the plate's friction) untouched. One-point (cell-average) evaluation: for the box cell
+// the mean shape-function gradient is exact for eps_v', and the nodal force f_a = -V sigma_bv
+// grad N_a is its work conjugate, so the dissipated power is exactly V sigma_bv eps_v' >= 0.
+#include "gradfric/fem/plate_mesh.hpp"
+#include "gradfric/physics/grading.hpp"
+
+#include <array>
+#include <vector>
+
+namespace gradfric::fem {
+
+// Mean gradient of the 8 shape functions over a box cell hx x hy x hz (element node order
+// a = i + 2 j + 4 k): d N_a / dx = (2 i - 1) / (4 hx), and likewise in y, z.
+std::array<std::array<double, 3>, 8> boxMeanShapeGradients(double hx, double hy, double hz);
+
+// The viscous stress of the formula above for one cell (rate eps_v' [1/s]).
+double bulkViscousStress(double linear, double quadratic, double density, double dilatationalSpeed,
+                         double length, double volumetricRate);
+
+class BulkViscosity {
+public:
+  BulkViscosity(const PlateMesh& mesh, double youngsModulus, double poissonRatio, double density, double linear,
+                double quadratic, const Grading& grading);
+  BulkViscosity(const BulkViscosity&) = delete;
+  BulkViscosity& operator=(const BulkViscosity&) = delete;
+
+  bool active() const { return linear_ > 0 || quadratic_ > 0; }
+  // Adds the viscous force of the velocities of X (global state) to the force slots of F; returns
+  // this rank's dissipated power (>= 0) [W].
+  double addForce(Vec X, Vec F);
+
+private:
+  const PlateMesh& mesh_;
+  double linear_, quadratic_, density_, length_, volume_;
+  std::array<std::array<double, 3>, 8> gradient_;
+  std::vector<double> cellSpeed_;  // c_d of each local cell (graded E)
+  OwnedVec xLocal_, fLocal_, fGlobal_;
+};
+
+}  // namespace gradfric::fem
