@@ -67,6 +67,16 @@ TEST(FemContact, KinematicNodePressedAndPulledSticksOrSlidesExactlyAtMuS) {
   ASSERT_EQ(s.state, ContactState::Slip);
   EXPECT_NEAR(s.fx, -law.slidingStrength(muS, muK, 1e-3) * press, 1e-12 * press);
   EXPECT_NEAR(-s.fx / press, muK + (muS - muK) * std::exp(-10.0), 1e-12);
+  // Sliding and driven by less than mu_s f_n but more than its sliding friction: it slides on (a
+  // moving node stops only if the friction it feels can stop it within the step).
+  const double aDriven[3] = {0.7 * muS * press / m, 0, -press / m};
+  const KinematicContactForce on = kinematicContact(law, 0, m, dt, 0.0, vs, aDriven);
+  EXPECT_EQ(on.state, ContactState::Slip);
+  EXPECT_NEAR(on.fx, -law.slidingStrength(muS, muK, 1e-3) * press, 1e-12 * press);
+  // Sliding slowly with a small drive: its friction stops it, and it sticks.
+  const double slow[3] = {1e-6, 0, 0};
+  const double aSmall[3] = {0.1 * muS * press / m, 0, -press / m};
+  EXPECT_EQ(kinematicContact(law, 0, m, dt, 0.0, slow, aSmall).state, ContactState::Stick);
   // Above the plane and not reaching it within the step: no force.
   const double aFree[3] = {0, 0, -press / m};
   const KinematicContactForce open = kinematicContact(law, 0, m, dt, 1e-6, v, aFree);

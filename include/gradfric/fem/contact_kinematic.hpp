@@ -9,8 +9,9 @@
 // z* = z + dt (v + dt a_free). If z* < 0 the node would penetrate: the normal force
 // f_n = -m z* / dt^2 puts it exactly on the plane. In contact, the tangential force that stops
 // the node (tangential velocity zero after the step) is f_stick = -m (v_t + dt a_free,t) / dt; the
-// node sticks while the law's static threshold holds (|f_stick| <= mu_s f_n), else it slides
-// with mu(|v_t|) f_n of the same law against its trial motion. No spring: no penetration, no
+// node sticks while the law's threshold holds (|f_stick| <= mu(|v_t|) f_n: mu_s f_n for a node at
+// rest, the sliding friction for a moving node, which stops only if that friction can stop it),
+// else it slides with mu(|v_t|) f_n of the same law against its trial motion. No spring: no penetration, no
 // elastic slip, no penalty frequency in the stable step.
 #include "gradfric/fem/contact_penalty.hpp"
 
@@ -37,14 +38,17 @@ inline KinematicContactForce kinematicContact(const Law& law, int site, double m
   const double stickSquared = stickX * stickX + stickY * stickY;
   const int slot = law.sites.slotOfSite(site);
   const double staticStrength = law.sites.staticAt(slot);
-  if (law.holds(stickSquared, staticStrength * r.fn)) {
+  // The friction available: mu(|v_t|) f_n, mu_s f_n at rest (Eq. 1 at v = 0). A node at rest
+  // sticks while the static threshold holds; a sliding node stops (sticks) only if the friction it
+  // feels can stop it within the step, else it slides on.
+  const double slipSpeed = std::sqrt(v[0] * v[0] + v[1] * v[1]);
+  const double strength = law.slidingStrength(staticStrength, law.sites.kineticAt(slot), slipSpeed) * r.fn;
+  if (law.holds(stickSquared, strength)) {
     r.fx = stickX;
     r.fy = stickY;
     r.state = ContactState::Stick;
     return r;
   }
-  const double slipSpeed = std::sqrt(v[0] * v[0] + v[1] * v[1]);
-  const double strength = law.slidingStrength(staticStrength, law.sites.kineticAt(slot), slipSpeed) * r.fn;
   const double scale = strength / std::sqrt(stickSquared);
   r.fx = stickX * scale;
   r.fy = stickY * scale;
