@@ -93,6 +93,16 @@ std::vector<PointStatistics> writeStatistics(io::ResultsFile& file, const Scene&
       {"mu_s_count", integerColumn(stats, [](S s) { return s.muStatic.count; })},
       {"mu_k_count", integerColumn(stats, [](S s) { return s.muKinetic.count; })},
       {"peaks_unconfirmed", integerColumn(stats, [](S s) { return s.peaksUnconfirmed; })}};
+  if (scene.target.active()) {  // the half-width each point reached and whether it met the target
+    std::vector<double> reached;
+    std::vector<int> met;
+    for (int p = 0; p < scene.points(); ++p) {
+      reached.push_back(achievedHalfWidth(scene.target, stats, scene.sweep.reference, p));
+      met.push_back(reached.back() <= scene.target.halfWidth ? 1 : 0);
+    }
+    real.emplace_back("target_half_width", reached);
+    integer.emplace_back("target_met", met);
+  }
   file.writeStatistics(real, integer);
   return stats;
 }

@@ -105,6 +105,9 @@ T readScalarAttribute(hid_t object, const char* name, hid_t memType, T fallback)
 // One line on each statistics column (docs/ensemble.md has the formulas).
 std::string statisticDescription(const std::string& name) {
   if (name == "finished") return "realisations finished";
+  if (name == "target_half_width")
+    return "95 % CI half-width reached of the quantity -ensemble_target bounds (-ensemble_target_type)";
+  if (name == "target_met") return "1 if the point met -ensemble_target, 0 if it stopped at -ensemble_target_max";
   if (name == "peaks_unconfirmed") return "realisations whose peak was not confirmed before -sbm_t_max";
   const std::string of = name.substr(0, 4);  // mu_s or mu_k
   const std::string what = name.size() > 5 ? name.substr(5) : "";
