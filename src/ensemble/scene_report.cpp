@@ -149,8 +149,14 @@ void printScene(MPI_Comm comm, const Scene& scene, const RunParameters& record) 
 }
 
 void printDryRun(MPI_Comm comm, const Scene& scene) {
-  GF_CALL(PetscPrintf(comm, "Dry run (-ensemble_dry_run): scene checked, %d task(s) planned, nothing run or written\n",
-                      scene.tasks()));
+  if (scene.target.active())  // the count follows from the results: the first batch and the cap
+    GF_CALL(PetscPrintf(comm,
+                        "Dry run (-ensemble_dry_run): scene checked, %d task(s) in the first batch, at most %d, "
+                        "nothing run or written\n",
+                        scene.points() * scene.target.first, scene.tasks()));
+  else
+    GF_CALL(PetscPrintf(comm, "Dry run (-ensemble_dry_run): scene checked, %d task(s) planned, nothing run or written\n",
+                        scene.tasks()));
 }
 
 void printResults(MPI_Comm comm, const Scene& scene, const std::vector<PointStatistics>& statistics,
