@@ -221,7 +221,8 @@ io::EnsembleLayout layoutOf(const Scene& s) {
   if (bytes > 64e9)
     throw InputError("results file would need " + formatReal(bytes / 1e9) +
                      " GB: store fewer observables (-friction_observables, -sbm_snapshot_times), a coarser "
-                     "-friction_history_interval or -ensemble_history false");
+                     "-friction_history_interval or -ensemble_history false" +
+                     std::string(s.target.active() ? " (the file is laid out for -ensemble_target_max realisations)" : ""));
   return layout;
 }
 
