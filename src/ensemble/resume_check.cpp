@@ -172,8 +172,8 @@ void checkFile(MPI_Comm comm, const Scene& scene, const std::string& path, bool 
   problem.resize(length);
   if (length > 0) MPI_Bcast(problem.data(), length, MPI_CHAR, 0, comm);
   if (!problem.empty())
-    throw InputError(std::string("invalid option ") + (extension ? "-ensemble_extend (extend " : "-ensemble_resume (continue ") +
-                     path + "): " + problem);
+    throw InputError(std::string("invalid option ") +
+                     (extension ? "-ensemble_extend (extend " : "-ensemble_resume (continue ") + path + "): " + problem);
 }
 
 }  // namespace

@@ -112,9 +112,11 @@ SweepLists readEnsembleOptions(MPI_Comm comm, RunParameters* record, Scene* s) {
       "what -ensemble_target bounds: the CI of mean mu_s, that CI over |mean mu_s|, or the CI of the relative "
       "variation (mu_s - mu_s,0) / mu_s,0 against the non-graded point");
   const PetscInt targetMin =
-      ens.integer("target_min", 8, 2, 10000000, "1", "with -ensemble_target: realisations per point of the first batch (-ensemble_realisations if set)");
+      ens.integer("target_min", 8, 2, 10000000, "1",
+                  "with -ensemble_target: realisations per point of the first batch (-ensemble_realisations if set)");
   const PetscInt targetMax =
-      ens.integer("target_max", 200, 2, 10000000, "1", "with -ensemble_target: at most this many realisations per point");
+      ens.integer("target_max", 200, 2, 10000000, "1",
+                  "with -ensemble_target: at most this many realisations per point");
   const PetscInt seed = ens.integer("seed", 1, 0, PETSC_MAX_INT, "1", "scene seed: a task's random stream is (seed, point, realisation)");
   SweepLists lists;
   lists.delta = ens.realList("delta", {}, "1", "sweep of the grading amplitude Delta (empty: -grading_delta alone)");
@@ -222,7 +224,8 @@ io::EnsembleLayout layoutOf(const Scene& s) {
     throw InputError("results file would need " + formatReal(bytes / 1e9) +
                      " GB: store fewer observables (-friction_observables, -sbm_snapshot_times), a coarser "
                      "-friction_history_interval or -ensemble_history false" +
-                     std::string(s.target.active() ? " (the file is laid out for -ensemble_target_max realisations)" : ""));
+                     std::string(s.target.active() ? " (the file is laid out for -ensemble_target_max realisations)"
+                                                   : ""));
   return layout;
 }
 
