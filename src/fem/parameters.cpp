@@ -96,6 +96,10 @@ FemParameters readFemParameters(MPI_Comm comm, RunParameters* record, const Plat
   q.nx = static_cast<int>(o.integer("nx", q.nx, 1, 100000, "1", "hexahedra along x (grading axis)"));
   q.ny = static_cast<int>(o.integer("ny", q.ny, 1, 100000, "1", "hexahedra along y"));
   q.nz = static_cast<int>(o.integer("nz", q.nz, 1, 100000, "1", "hexahedra through the thickness"));
+  q.element = o.choice("element", elementTypeName(q.element), {"q1", "q1i"},
+                       "hexahedron: q1 trilinear, q1i with incompatible bending modes (C3D8I-like, condensed)") == "q1"
+                  ? ElementType::Trilinear
+                  : ElementType::IncompatibleModes;
   q.vC = o.real("v_c", q.vC, "m/s", "critical velocity v_c of Eq. 1");
   const std::string contact =
       o.choice("contact", "penalty", {"penalty", "kinematic", "none"},
