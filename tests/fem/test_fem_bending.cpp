@@ -73,6 +73,10 @@ std::vector<MomentSample> momentDuringLoading(ElementType element, double* muSta
   FemParameters q = test::coarse(16, 16, 4);
   q.element = element;
   q.measurement.kinetic = false;  // stop at the confirmed peak
+  // The penalty this balance was measured with (E0/hz, before the penalty study): with the stiff
+  // default 250 G/H the plate's undamped rocking on the normal springs puts +-7 % of ringing on an
+  // instantaneous sample of the moment (ratio 0.93-1.07 on this mesh).
+  q.kn = q.kt = q.plate.youngsModulus * q.nz / q.plate.thickness;
   PlateModel model(PETSC_COMM_WORLD, q, test::noGrading());
   const double H = q.plate.thickness, peak = q.eq2PeakTime();
   std::vector<MomentSample> samples;
