@@ -17,7 +17,7 @@ namespace gradfric::ensemble {
 namespace {
 
 // "" if the scene and layout match; else the differences, "; "-separated.
-std::string sceneDifferences(const Scene& scene, const io::ResultsFile& file) {
+std::string sceneDifferences(const ResumeTarget& scene, const io::ResultsFile& file) {
   std::string differences;
   auto add = [&](const std::string& text) { differences += (differences.empty() ? "" : "; ") + text; };
   const std::vector<io::Attribute> stored = file.sceneAttributes();
@@ -38,6 +38,7 @@ std::string sceneDifferences(const Scene& scene, const io::ResultsFile& file) {
   }
   const auto& l = file.layout();
   const auto& want = scene.layout;
+  if (l.format != want.format) add("format: file " + l.format + ", now " + want.format);
   if (l.points != want.points || l.realisations != want.realisations || l.historyCapacity != want.historyCapacity ||
       l.mapSide != want.mapSide || l.firstSlipMap != want.firstSlipMap || l.frictionFields != want.frictionFields ||
       l.snapshotTimes.size() != want.snapshotTimes.size())
@@ -46,9 +47,9 @@ std::string sceneDifferences(const Scene& scene, const io::ResultsFile& file) {
 }
 
 // Rank 0: what is wrong with the file, or "".
-std::string problemWith(const Scene& scene, const std::string& path) {
-  const char* again = " (start again with -output_overwrite)";
-  if (!io::isHdf5File(path)) return "it is not an HDF5 file" + std::string(again);
+std::string problemWith(const ResumeTarget& scene, const std::string& path) {
+  const std::string again = " (start again with " + scene.overwriteOption + ")";
+  if (!io::isHdf5File(path)) return "it is not an HDF5 file" + again;
   {
     io::H5File raw(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT));
     if (!raw.valid()) {
@@ -61,7 +62,7 @@ std::string problemWith(const Scene& scene, const std::string& path) {
       return "it is damaged: its root group cannot be read" + (reason.empty() ? "" : " (" + reason + ")") + again;
     }
     if (hasFormat == 0)
-      return "it is not a gradfric ensemble results file (no attribute format = " + std::string(io::kFormatName) +
+      return "it is not a gradfric ensemble results file (no attribute format = " + scene.layout.format +
              ": a file of another program, or a damaged one)" + again;
   }
   try {
@@ -74,12 +75,12 @@ std::string problemWith(const Scene& scene, const std::string& path) {
     const std::string differences = sceneDifferences(scene, file);
     file.close();
     if (!differences.empty())
-      return "it was started with another scene (run that scene, or start again with -output_overwrite): " +
+      return "it was started with another scene (run that scene, or start again with " + scene.overwriteOption + "): " +
              differences;
   } catch (const io::Hdf5Error& e) {
     // Format and version problems come as sentences; a failed HDF5 call means a damaged file.
     if (e.reason().empty() && std::string(e.what()).rfind("HDF5 call failed", 0) != 0)
-      return e.what() + std::string(again);
+      return e.what() + again;
     return "it is damaged: a part of it cannot be read" + (e.reason().empty() ? "" : " (" + e.reason() + ")") + again;
   }
   return "";
@@ -99,11 +100,11 @@ void onTimeout(int) {
   _exit(2);
 }
 
-std::string problemWithin(const Scene& scene, const std::string& path, unsigned seconds) {
+std::string problemWithin(const ResumeTarget& scene, const std::string& path, unsigned seconds) {
   std::snprintf(timeoutMessage, sizeof timeoutMessage,
-                "gradfric: error: invalid option -ensemble_resume (continue %s): it is damaged: HDF5 did not finish "
-                "reading it within %u s (start again with -output_overwrite)\n",
-                path.c_str(), seconds);
+                "gradfric: error: invalid option %s (continue %s): it is damaged: HDF5 did not finish "
+                "reading it within %u s (start again with %s)\n",
+                scene.resumeOption.c_str(), path.c_str(), seconds, scene.overwriteOption.c_str());
   struct sigaction action {}, previous{};
   action.sa_handler = onTimeout;
   sigaction(SIGALRM, &action, &previous);
@@ -117,6 +118,10 @@ std::string problemWithin(const Scene& scene, const std::string& path, unsigned 
 }  // namespace
 
 void checkResumable(MPI_Comm comm, const Scene& scene, const std::string& path) {
+  checkResumable(comm, ResumeTarget{scene.sceneAttributes, scene.layout, "-ensemble_resume", "-output_overwrite"}, path);
+}
+
+void checkResumable(MPI_Comm comm, const ResumeTarget& scene, const std::string& path) {
   int rank = 0;
   MPI_Comm_rank(comm, &rank);
   std::string problem;
@@ -125,7 +130,7 @@ void checkResumable(MPI_Comm comm, const Scene& scene, const std::string& path) 
   MPI_Bcast(&length, 1, MPI_INT, 0, comm);
   problem.resize(length);
   if (length > 0) MPI_Bcast(problem.data(), length, MPI_CHAR, 0, comm);
-  if (!problem.empty()) throw InputError("invalid option -ensemble_resume (continue " + path + "): " + problem);
+  if (!problem.empty()) throw InputError("invalid option " + scene.resumeOption + " (continue " + path + "): " + problem);
 }
 
 }  // namespace gradfric::ensemble

@@ -65,13 +65,18 @@ std::vector<int> integerColumn(const std::vector<PointStatistics>& stats, Get ge
 }  // namespace
 
 std::vector<PointStatistics> writeStatistics(io::ResultsFile& file, const Scene& scene) {
+  return writeStatistics(file, scene.realisations, scene.sweep.reference, scene.commonStreams);
+}
+
+std::vector<PointStatistics> writeStatistics(io::ResultsFile& file, int realisations,
+                                             const std::vector<int>& reference, bool commonStreams) {
   // Every rank reads the small P x R tables and computes the same numbers; rank 0 writes them.
   GF_CALL(PetscLogEventBegin(logEvents().statistics, 0, 0, 0, 0));
   const auto flags = file.finishedTasks();
   const std::vector<unsigned char> done(flags.begin(), flags.end());
-  const auto stats = pointStatistics(scene.realisations, scene.sweep.reference, file.readRealisationReal("mu_s"),
+  const auto stats = pointStatistics(realisations, reference, file.readRealisationReal("mu_s"),
                                      file.readRealisationReal("mu_k"), file.readPeakConfirmed(), done,
-                                     scene.commonStreams);
+                                     commonStreams);
   using S = const PointStatistics&;
   std::vector<std::pair<std::string, std::vector<double>>> real = {
       {"mu_s_mean", realColumn(stats, [](S s) { return s.muStatic.mean; })},
