@@ -129,10 +129,10 @@ void printTable(MPI_Comm comm, const FemSweep& s, const std::vector<ensemble::Po
 void runFemSweep(MPI_Comm comm, const FemSweep& s, const RunParameters& record) {
   int rank = 0;
   GF_CALL_MPI(MPI_Comm_rank(comm, &rank));
-  record.print(comm, "gradfric-fem: resolved parameters (FEM sweep)");
   const io::OutputPlan plan = planSweepFile(comm, s);  // before any work
   io::CollectiveFileScope writing(comm, plan.workPath());  // an I/O failure ends every rank
-  io::ResultsFile file = openSweepFile(comm, s, plan);
+  io::ResultsFile file = openSweepFile(comm, s, plan);    // a file to resume is checked first
+  record.print(comm, "gradfric-fem: resolved parameters (FEM sweep)");
   const auto flags = file.finishedTasks();
   const std::vector<ensemble::Task> pending =
       ensemble::pendingTasks(s.sweep, 1, std::vector<unsigned char>(flags.begin(), flags.end()));
