@@ -12,7 +12,7 @@ namespace gradfric::ensemble {
 SweepLists readSweepLists(OptionReader& ens) {
   SweepLists lists;
   lists.delta = ens.realList("delta", {}, "1", "sweep of the grading amplitude Delta (empty: -grading_delta alone)");
-  lists.theta = ens.realList("theta", {}, "degree", "sweep of the sliding angle (empty: -sbm_theta alone)");
+  lists.theta = ens.realList("theta", {}, "degree", "sweep of the sliding angle (empty: -plate_theta alone)");
   lists.sigma = ens.realList("sigma", {}, "1",
                              "sweep of the relative dispersion, sets sigma_s and sigma_k (empty: -sbm_sigma_s/_k)");
   lists.property = ens.choiceList("property", {}, {"E", "friction", "both"},
