@@ -143,17 +143,7 @@ io::EnsembleLayout layoutOf(const Scene& s) {
 }
 
 io::SweepTable tableOf(const Sweep& sweep, const sbm::Parameters& parameters, int bands) {
-  io::SweepTable table;
-  table.axes = sweep.axes;
-  for (const auto& q : sweep.points) {
-    table.delta.push_back(q.delta);
-    table.theta.push_back(q.theta);
-    table.sigma.push_back(q.sigma);
-    table.sigmaKinetic.push_back(q.sigmaKinetic);
-    table.property.push_back(q.property);
-    table.profile.push_back(q.profile);
-  }
-  table.referencePoint = sweep.reference;
+  io::SweepTable table = sweepColumns(sweep);  // shared with the FEM sweep
   for (const auto& q : sweep.points) {  // the property fields each point uses (results file /properties)
     const sbm::ColumnProperties c = sbm::columnProperties(parameters, gradingOf(q, bands));
     table.modulus.insert(table.modulus.end(), c.modulus.begin(), c.modulus.end());

@@ -42,4 +42,19 @@ bool anySwept(const SweepLists& lists) {
          !lists.profile.empty();
 }
 
+io::SweepTable sweepColumns(const Sweep& sweep) {
+  io::SweepTable table;
+  table.axes = sweep.axes;
+  for (const auto& q : sweep.points) {
+    table.delta.push_back(q.delta);
+    table.theta.push_back(q.theta);
+    table.sigma.push_back(q.sigma);
+    table.sigmaKinetic.push_back(q.sigmaKinetic);
+    table.property.push_back(q.property);
+    table.profile.push_back(q.profile);
+  }
+  table.referencePoint = sweep.reference;
+  return table;
+}
+
 }  // namespace gradfric::ensemble

@@ -56,17 +56,7 @@ io::EnsembleLayout layoutOf(const FemSweep& s) {
 }
 
 io::SweepTable tableOf(const FemSweep& s) {
-  io::SweepTable table;
-  table.axes = s.sweep.axes;
-  for (const auto& q : s.sweep.points) {
-    table.delta.push_back(q.delta);
-    table.theta.push_back(q.theta);
-    table.sigma.push_back(q.sigma);
-    table.sigmaKinetic.push_back(q.sigmaKinetic);
-    table.property.push_back(q.property);
-    table.profile.push_back(q.profile);
-  }
-  table.referencePoint = s.sweep.reference;
+  io::SweepTable table = ensemble::sweepColumns(s.sweep);  // the ensemble's /sweep columns
   const Plate& plate = s.params.plate;
   for (int p = 0; p < s.points(); ++p) {  // the properties at each hexahedron column's centre
     const Grading g = s.pointGrading(p);

@@ -4,6 +4,7 @@
 // that a scene line means the same in both and their results files have the same axes.
 #include "gradfric/core/options.hpp"
 #include "gradfric/ensemble/sweep.hpp"
+#include "gradfric/io/results_file.hpp"
 #include "gradfric/physics/grading.hpp"
 
 namespace gradfric::ensemble {
@@ -18,5 +19,9 @@ void checkSweepLists(const SweepLists& lists, const Grading& base);
 
 // True if any list is given (the scene is a sweep).
 bool anySwept(const SweepLists& lists);
+
+// The /sweep columns of a results file (axes, one row per point, reference points), the same for
+// both writers; the model fills the /properties fields.
+io::SweepTable sweepColumns(const Sweep& sweep);
 
 }  // namespace gradfric::ensemble
