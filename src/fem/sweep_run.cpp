@@ -145,6 +145,7 @@ void runFemSweep(MPI_Comm comm, const FemSweep& s, const RunParameters& record) 
   // same groups whatever the timing, and no number in the file depends on which group ran it.
   for (size_t i = groups.group(); i < pending.size(); i += groups.groups()) {
     const int point = pending[i].point;
+    std::string local;  // this rank's error in this point, if any
     try {
       const io::TaskOutput o = runPoint(s, point, groups.comm(), rank);
       if (groups.leader()) {
@@ -155,13 +156,21 @@ void runFemSweep(MPI_Comm comm, const FemSweep& s, const RunParameters& record) 
                     static_cast<long long>(o.steps));
         std::fflush(stdout);
       }
-      ++ranHere;
-      abortIfDue(s, ranHere, rank);
     } catch (const std::exception& e) {
-      failure = "FEM sweep point " + std::to_string(point) + " (" + ensemble::pointLabel(s.sweep, point) +
-                ") failed in group " + std::to_string(groups.group()) + ": " + e.what();
-      break;  // the other groups finish their runs; everything finished stays in the file
+      local = "FEM sweep point " + std::to_string(point) + " (" + ensemble::pointLabel(s.sweep, point) +
+              ") failed in group " + std::to_string(groups.group()) + ": " + e.what();
     }
+    // The group agrees before its next run (a collective on its communicator): an error on one
+    // member, e.g. the leader's write, ends the loop on all of them instead of leaving the others
+    // waiting in the next run. The other groups finish their runs; what finished stays in the file.
+    int failed = local.empty() ? 0 : 1, anyFailed = 0;
+    GF_CALL_MPI(MPI_Allreduce(&failed, &anyFailed, 1, MPI_INT, MPI_MAX, groups.comm()));
+    if (anyFailed) {
+      failure = local;
+      break;
+    }
+    ++ranHere;
+    abortIfDue(s, ranHere, rank);
   }
   file.flush();
   try {
