@@ -33,6 +33,11 @@ struct ResumeTarget {
 };
 void checkResumable(MPI_Comm comm, const ResumeTarget& target, const std::string& path);
 
+// Collective: the same for a finished file to extend (-ensemble_extend): complete, of this scene
+// apart from the count, the target and appended sweep values, its points the first of the
+// scene's sweep and its realisations the first of each point.
+void checkExtendable(MPI_Comm comm, const Scene& scene, const std::string& path);
+
 // Collective: a new file (every dataset allocated) or the checked file to resume; the run's
 // attributes (/run) are set.
 io::ResultsFile openResultsFile(MPI_Comm comm, const Scene& scene, const io::OutputPlan& plan);
@@ -40,8 +45,10 @@ io::ResultsFile openResultsFile(MPI_Comm comm, const Scene& scene, const io::Out
 // Collective: the statistics of every point from the file's P x R tables, written to /statistics.
 std::vector<PointStatistics> writeStatistics(io::ResultsFile& file, const Scene& scene);
 // The same from what the statistics depend on (the FEM sweep: one realisation per point).
+// `target`: the scene's precision target, if any (adds its columns).
 std::vector<PointStatistics> writeStatistics(io::ResultsFile& file, int realisations,
-                                             const std::vector<int>& reference, bool commonStreams);
+                                             const std::vector<int>& reference, bool commonStreams,
+                                             const PrecisionTarget* target = nullptr);
 
 // Collective: marks the file complete, closes it and renames it into place.
 void finishResultsFile(MPI_Comm comm, io::ResultsFile& file, const io::OutputPlan& plan);
