@@ -19,7 +19,10 @@ python=/usr/bin/python3
 rm -rf "$scratch"; mkdir -p "$scratch"; cd "$scratch"
 fail() { echo "FAILED: $*" >&2; exit 1; }
 grading=(-grading_profile linear -grading_property friction -ensemble_delta 0,0.2,-0.2)
-sweep=("${grading[@]}" -fem_nx 10 -fem_ny 10 -fem_nz 2)
+# The penalty before the penalty study (E0/hz on nz = 2): at the default 250 G/H the undamped
+# stick-slip after the peak amplifies the 2-rank summation order into a 2 % different mu_k
+# (Delta = 0.2; mu_s and mu(t) to the peak agree to 1e-9), which the rounding check below refuses.
+sweep=("${grading[@]}" -fem_nx 10 -fem_ny 10 -fem_nz 2 -fem_kn 4e11)
 fem() {  # name, ranks, expected exit, options...
   local name=$1 ranks=$2 code=$3; shift 3
   timeout 300 mpiexec -n "$ranks" "$driver" "$@" >"$name.out" 2>"$name.err"
