@@ -4,6 +4,7 @@
 // spring is evaluated once per stage. Loops run along a row over structure-of-arrays data and
 // vectorise; the stick/slip transitions, which branch, sit in a short scalar loop of their own.
 #include "gradfric/sbm/integrator.hpp"
+#include "gradfric/sbm/quiet_phase.hpp"
 #include "gradfric/sbm/spring.hpp"
 
 #include <algorithm>
@@ -40,7 +41,7 @@ void directionOf(double degrees, double& cx, double& cy) {
 Motion motionOf(const Parameters& p, double timeStep, double damping) {
   double cx, cy;
   directionOf(p.plate.slidingAngle, cx, cy);
-  return {timeStep, damping, p.blockMass(), p.plate.velocity * cx, p.plate.velocity * cy, p.integrator};
+  return {timeStep, damping, p.blockMass(), p.plate.velocity * cx, p.plate.velocity * cy, p.integrator, p.skipIdle};
 }
 
 template <class Law>
@@ -54,6 +55,11 @@ FastLattice<Law>::FastLattice(const LatticeStiffness& stiffness, Law law, const 
   everSlipped_.assign(n, 0);
   for (auto* v : {&fx_, &fy_, &carryX_, &carryY_, &nextX_, &nextY_, &springX_, &springY_})
     v->assign(nb_, 0.0);
+  if (motion_.skipIdle) {
+    quietUntil_ = firstSlipStepAtRest(stiffness_, law_, motion_, std::int64_t(1) << 52);
+    quietSumX_.assign(kQuietBatch, 0.0);
+    quietSumY_.assign(kQuietBatch, 0.0);
+  }
 }
 
 namespace {
@@ -454,6 +460,16 @@ void FastLattice<Law>::dispatch(double& sumX, double& sumY) {
 template <class Law>
 StepObservation FastLattice<Law>::step() {
   StepObservation observation{time(), 0.0, 0.0};
+  if (steps_ < quietUntil_) {  // at rest: nothing to integrate, the sums are known
+    if (quietBatchStart_ < 0 || steps_ >= quietBatchStart_ + kQuietBatch) {
+      quietBatchStart_ = steps_;
+      restSliderForceSums(stiffness_, motion_, steps_, quietSumX_.data(), quietSumY_.data());
+    }
+    observation.sliderForceX = quietSumX_[steps_ - quietBatchStart_];
+    observation.sliderForceY = quietSumY_[steps_ - quietBatchStart_];
+    ++steps_;
+    return observation;
+  }
   dispatch(observation.sliderForceX, observation.sliderForceY);
   ++steps_;
   return observation;

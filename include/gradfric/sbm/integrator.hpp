@@ -42,6 +42,9 @@ struct Motion {
   double sliderVelocityX;   // v cos(theta) [m/s]
   double sliderVelocityY;   // v sin(theta)
   Integrator integrator = Integrator::RK4;
+  // Skip work that cannot change the result (Parameters::skipIdle): FastLattice jumps over the
+  // quiet phase before the first slip (quiet_phase.hpp). Off for a load that is not linear in t.
+  bool skipIdle = true;
 };
 
 Motion motionOf(const Parameters& parameters, double timeStep, double damping);
@@ -86,6 +89,8 @@ public:
   const double* velocityX() const { return vx_.data(); }
   const double* velocityY() const { return vy_.data(); }  // half-step velocity with Verlet
   const std::uint8_t* blockStates() const { return state_.data(); }
+  // The first step the kernel integrates: 0, or with Motion::skipIdle the step of the first slip.
+  std::int64_t quietSteps() const { return quietUntil_; }
 
   // The kernel's parts (public so that the per-ISA entry points can reach them).
   template <bool Graded, SiteLayout L, int Stage>
@@ -112,6 +117,11 @@ private:
   std::int64_t steps_ = 0;
   int slipped_ = 0;
   double* firstSlip_ = nullptr;
+  // The quiet phase (quiet_phase.hpp): steps before quietUntil_ are known in closed form; their
+  // slider-force sums are computed kQuietBatch at a time from step quietBatchStart_.
+  std::int64_t quietUntil_ = 0;
+  std::int64_t quietBatchStart_ = -1;
+  std::vector<double> quietSumX_, quietSumY_;
   // State at t_n, stage evaluation point, RK accumulators (sum of weighted stage velocities and
   // accelerations); mobile_ is 1.0 for a slipping block, 0.0 for a stuck one.
   std::vector<double> ux_, uy_, vx_, vy_;
