@@ -162,3 +162,37 @@ TEST(SkipIdle, OneWeakBlockSlipsFirstAndAlone) {
   EXPECT_EQ(lattice.blockStates()[weak], Slipping);
   EXPECT_EQ(firstSlip[weak], double(lattice.quietSteps()) * p.timeStep);
 }
+
+TEST(SkipIdle, TheActiveSetIsTheFullSweepBitForBit) {
+  // Velocity Verlet on a graded, dispersed plate wider than a few tiles: the active set runs
+  // while the detachment front crosses, the full sweep once most tiles move, and the states and
+  // slider forces stay those of the full sweep at every step, bit for bit.
+  for (GradedProperty property : {GradedProperty::Friction, GradedProperty::YoungsModulus}) {
+    const Grading g = graded(GradingProfile::Linear, property, 0.4);
+    Parameters p = sbm::testing::paperParameters(30, 0.028, g);
+    const auto stiffness = buildStiffness(p, g);
+    const auto law = CoulombStickSlip::make(buildFriction(p, g, {4, 4, 4}), p.frictionLaw);
+    FastLattice<CoulombStickSlip> skipping(stiffness, law, motionOf(p, p.timeStep, p.damping));
+    Motion full = motionOf(p, p.timeStep, p.damping);
+    full.skipIdle = false;
+    FastLattice<CoulombStickSlip> stepped(stiffness, law, full);
+    const std::int64_t steps = std::int64_t(1.5 * p.loadingTime() / p.timeStep);
+    for (std::int64_t n = 0; n < steps; ++n) {
+      const StepObservation a = skipping.step(), b = stepped.step();
+      ASSERT_TRUE(sameBits(a.sliderForceX, b.sliderForceX) && sameBits(a.sliderForceY, b.sliderForceY)) << n;
+      ASSERT_EQ(skipping.slippedBlocks(), stepped.slippedBlocks()) << n;
+    }
+    const std::size_t blocks = 30 * 30;
+    const auto same = [&](const double* x, const double* y) {
+      return std::vector<double>(x, x + blocks) == std::vector<double>(y, y + blocks);
+    };
+    EXPECT_TRUE(same(skipping.displacementX(), stepped.displacementX()));
+    EXPECT_TRUE(same(skipping.displacementY(), stepped.displacementY()));
+    EXPECT_TRUE(same(skipping.velocityX(), stepped.velocityX()));
+    EXPECT_TRUE(same(skipping.velocityY(), stepped.velocityY()));
+    EXPECT_EQ(stepped.activeSetSteps(), 0);
+    // Both sweeps were used: the active set after the first slip, the full sweep once most move.
+    EXPECT_GT(skipping.activeSetSteps(), 10);
+    EXPECT_LT(skipping.activeSetSteps(), steps - skipping.quietSteps());
+  }
+}

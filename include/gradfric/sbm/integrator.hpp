@@ -97,6 +97,12 @@ public:
   void rk4Stage(double time, double& sumX, double& sumY);
   template <bool Graded, SiteLayout L>
   void verletStep(double time, double& sumX, double& sumY);
+  template <bool Graded, SiteLayout L>
+  void verletStepActive(double time, double& sumX, double& sumY);
+  // Velocity Verlet steps taken on the active set (tiles of blocks that move or whose neighbours
+  // moved), not the full sweep: for tests and benchmarks.
+  std::int64_t activeSetSteps() const { return activeSetSteps_; }
+  bool useActiveSet();  // decides, before a Verlet step, which of the two sweeps it takes
 
 private:
   void dispatch(double& sumX, double& sumY);
@@ -109,6 +115,8 @@ private:
   void transitions(int r, double t);
   template <SiteLayout L>
   void frictionVector(int r);
+  template <SiteLayout L>
+  void frictionVectorRange(int r, int c0, int c1);
   void markReversals(int r);
   LatticeStiffness stiffness_;
   Law law_;  // owns the per-block friction strengths
@@ -122,6 +130,20 @@ private:
   std::int64_t quietUntil_ = 0;
   std::int64_t quietBatchStart_ = -1;
   std::vector<double> quietSumX_, quietSumY_;
+  // The active set (Verlet, Motion::skipIdle; fast_lattice.cpp): each row is cut into tiles of
+  // kTile columns. The springs a tile owns (its horizontal springs and those to the row above,
+  // "pieces") are kept from the step they were evaluated at (pieceStep_) while no block of the
+  // tile, of the tile to its right or of the two tiles above moved since (mobileStep_: the last
+  // step a tile held a slipping block). Only tiles whose pieces are stale are evaluated; the
+  // forces are assembled from the pieces in the kernel's order, so the results are the full
+  // sweep's bit for bit. Most tiles stale: back to the full sweep, checked every few steps.
+  static constexpr int kTile = 8;
+  int tiles_ = 0;
+  bool activeMode_ = false;
+  std::int64_t activeSetSteps_ = 0, nextModeCheck_ = 0;
+  int staleTiles_ = 0;  // tiles evaluated in the last active step
+  std::vector<double> pieceHx_, pieceHy_, pieceVx_, pieceVy_, pieceDx_, pieceDy_, pieceAx_, pieceAy_;
+  std::vector<std::int64_t> pieceStep_, mobileStep_;
   // State at t_n, stage evaluation point, RK accumulators (sum of weighted stage velocities and
   // accelerations); mobile_ is 1.0 for a slipping block, 0.0 for a stuck one.
   std::vector<double> ux_, uy_, vx_, vy_;
