@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <utility>
 
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
@@ -265,6 +266,14 @@ GF_ALWAYS_INLINE void FastLattice<Law>::rowForces(int r, const double* px, const
 template <class Law>
 template <SiteLayout L>
 GF_ALWAYS_INLINE void FastLattice<Law>::transitions(int r, double t) {
+  this->template transitionsWith<L>(r, t, [](int) {});
+}
+
+// The same, calling each(c) first for every block c of the row in order: the active set adds
+// the slider-force sum here, where its chain of dependent additions overlaps the branches.
+template <class Law>
+template <SiteLayout L, class PerBlock>
+GF_ALWAYS_INLINE void FastLattice<Law>::transitionsWith(int r, double t, PerBlock each) {
   const int nb = nb_, base = r * nb;
   const double* fx = fx_.data();
   const double* fy = fy_.data();
@@ -274,6 +283,7 @@ GF_ALWAYS_INLINE void FastLattice<Law>::transitions(int r, double t) {
   double* vx = vx_.data() + base;
   double* vy = vy_.data() + base;
   for (int c = 0; c < nb; ++c) {
+    each(c);
     if (state[c] == Slipping) continue;
     const double threshold = L == SiteLayout::Uniform ? staticStrength[0] : staticStrength[c];
     switch (stickSlipChange(state[c], Law::holds(fx[c] * fx[c] + fy[c] * fy[c], threshold))) {
@@ -341,13 +351,18 @@ GF_ALWAYS_INLINE void FastLattice<Law>::frictionVectorRange(int r, int c0, int c
 // re-stick at the next step.
 template <class Law>
 GF_ALWAYS_INLINE void FastLattice<Law>::markReversals(int r) {
-  const int nb = nb_, base = r * nb;
+  markReversalsRange(r, 0, nb_);
+}
+
+template <class Law>
+GF_ALWAYS_INLINE void FastLattice<Law>::markReversalsRange(int r, int c0, int c1) {
+  const int base = r * nb_;
   const double* kfx = frictionX_.data() + base;
   const double* kfy = frictionY_.data() + base;
   const double* vx = vx_.data() + base;
   const double* vy = vy_.data() + base;
   std::uint8_t* state = state_.data() + base;
-  for (int c = 0; c < nb; ++c)
+  for (int c = c0; c < c1; ++c)
     if (vx[c] * kfx[c] + vy[c] * kfy[c] < 0.0) state[c] = Reversed;
 }
 
@@ -517,11 +532,6 @@ GF_ALWAYS_INLINE void FastLattice<Law>::verletStepActive(double t, double& sumX,
       fx[c] = k * (drivenX - rx[c]) + carryX[c];
       fy[c] = k * (drivenY - ry[c]) + carryY[c];
     }
-    for (int c = 0; c < nb; ++c) {
-      const double k = Graded ? kS[c] : kS0;
-      sumX += k * (drivenX - rx[c]);
-      sumY += k * (drivenY - ry[c]);
-    }
     for (int c = 0; c + 1 < nb; ++c) {
       fx[c] += hx[c];
       fy[c] += hy[c];
@@ -558,14 +568,27 @@ GF_ALWAYS_INLINE void FastLattice<Law>::verletStepActive(double t, double& sumX,
       closeKick(w, half, invMass, gamma, fx + c0, fy + c0, frictionX_.data() + base + c0,
                 frictionY_.data() + base + c0, mobile_.data() + base + c0, vx_.data() + base + c0,
                 vy_.data() + base + c0);
+      markReversalsRange(r, c0, c0 + w);
     }
-    markReversals(r);
-    this->template transitions<L>(r, t);
-    const double* mobile = mobile_.data() + base;
+    // The transitions, with the slider-force sum in the kernel's order (the positions are u_n
+    // until the drift below).
+    this->template transitionsWith<L>(r, t, [&](int c) {
+      const double k = Graded ? kS[c] : kS0;
+      sumX += k * (drivenX - rx[c]);
+      sumY += k * (drivenY - ry[c]);
+    });
+    const std::uint8_t* state = state_.data() + base;  // Stuck = 0: mobile where non-zero
     for (int tile = 0; tile < tiles; ++tile) {
       const int c0 = tile * kTile, c1 = std::min(c0 + kTile, nb);
       bool slips = false;
-      for (int c = c0; c < c1; ++c) slips |= mobile[c] != 0.0;
+      if (c1 - c0 == kTile) {
+        std::uint64_t word;
+        static_assert(kTile == sizeof word, "one tile of states in one word");
+        std::memcpy(&word, state + c0, sizeof word);
+        slips = word != 0;
+      } else {
+        for (int c = c0; c < c1; ++c) slips |= state[c] != Stuck;
+      }
       if (!slips) continue;
       mobileRow[tile] = n;
       const int w = c1 - c0;

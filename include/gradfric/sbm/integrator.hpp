@@ -113,11 +113,14 @@ private:
                  double* nextX, double* nextY, double& sumX, double& sumY);
   template <SiteLayout L>
   void transitions(int r, double t);
+  template <SiteLayout L, class PerBlock>
+  void transitionsWith(int r, double t, PerBlock each);
   template <SiteLayout L>
   void frictionVector(int r);
   template <SiteLayout L>
   void frictionVectorRange(int r, int c0, int c1);
   void markReversals(int r);
+  void markReversalsRange(int r, int c0, int c1);
   LatticeStiffness stiffness_;
   Law law_;  // owns the per-block friction strengths
   Motion motion_;
