@@ -21,7 +21,8 @@ PlateModel::PlateModel(MPI_Comm comm, const FemParameters& params, const Grading
       grading_(grading),
       mesh_(comm, meshSize(params_), params_.partitioner),
       mass_(mesh_, params_.plate.density),
-      elastic_(mesh_, params_.plate.youngsModulus, params_.plate.poissonRatio, params_.stiffnessDamping, grading),
+      elastic_(mesh_, params_.plate.youngsModulus, params_.plate.poissonRatio, params_.stiffnessDamping, grading,
+                params_.element),
       contact_(mesh_, PenaltyStiffness{params_.kn, params_.kt}, params_.plate.muStatic, params_.plate.muKinetic,
                params_.vC, grading),
       top_(mesh_, params_.plate.pressure, params_.rampTime, params_.plate.velocity, params_.plate.slidingAngle) {

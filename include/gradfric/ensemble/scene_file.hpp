@@ -22,6 +22,11 @@ io::OutputPlan planResultsFile(MPI_Comm comm, const Scene& scene);
 // what is wrong with the file on every rank otherwise.
 void checkResumable(MPI_Comm comm, const Scene& scene, const std::string& path);
 
+// Collective: the same for a finished file to extend (-ensemble_extend): complete, of this scene
+// apart from the count, the target and appended sweep values, its points the first of the
+// scene's sweep and its realisations the first of each point.
+void checkExtendable(MPI_Comm comm, const Scene& scene, const std::string& path);
+
 // Collective: a new file (every dataset allocated) or the checked file to resume; the run's
 // attributes (/run) are set.
 io::ResultsFile openResultsFile(MPI_Comm comm, const Scene& scene, const io::OutputPlan& plan);

@@ -92,6 +92,10 @@ public:
   void writeTask(const TaskOutput& task);
   // Collective: pushes everything written so far to the file (MPI_File_sync).
   void flush();
+  // Collective: copies every task of the results file at `path` (P' x R' with P' <= P, R' <= R:
+  // a finished file being extended) into the same (point, realisation) slots of this file, raw
+  // bytes, done flags last. Rank 0 reads and writes; nothing is run again.
+  void copyTasksFrom(const std::string& path);
 
   // Every rank reads the whole P x R table (small scalars only).
   std::vector<std::uint8_t> finishedTasks() const;
