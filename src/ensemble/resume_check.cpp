@@ -50,7 +50,7 @@ std::string extensionMismatch(const Scene& scene, const io::ResultsFile& file) {
 
 // "" if the scene and layout match; else the differences, "; "-separated. An extension may
 // change the options extensionMayChange names and grow the sweep and the count.
-std::string sceneDifferences(const Scene& scene, const io::ResultsFile& file, bool extension = false) {
+std::string sceneDifferences(const ResumeTarget& scene, const io::ResultsFile& file, bool extension = false) {
   std::string differences;
   auto add = [&](const std::string& text) { differences += (differences.empty() ? "" : "; ") + text; };
   const std::vector<io::Attribute> stored = file.sceneAttributes();
@@ -72,6 +72,7 @@ std::string sceneDifferences(const Scene& scene, const io::ResultsFile& file, bo
   }
   const auto& l = file.layout();
   const auto& want = scene.layout;
+  if (l.format != want.format) add("format: file " + l.format + ", now " + want.format);
   const bool sameCount = extension || (l.points == want.points && l.realisations == want.realisations);
   if (!sameCount || l.historyCapacity != want.historyCapacity ||
       l.mapSide != want.mapSide || l.firstSlipMap != want.firstSlipMap || l.frictionFields != want.frictionFields ||
@@ -81,9 +82,10 @@ std::string sceneDifferences(const Scene& scene, const io::ResultsFile& file, bo
 }
 
 // Rank 0: what is wrong with the file, or "".
-std::string problemWith(const Scene& scene, const std::string& path, bool extension) {
-  const char* again = " (start again with -output_overwrite)";
-  if (!io::isHdf5File(path)) return "it is not an HDF5 file" + std::string(again);
+// `scene` (the spring-block scene) is needed for an extension only.
+std::string problemWith(const ResumeTarget& target, const Scene* scene, const std::string& path, bool extension) {
+  const std::string again = " (start again with " + target.overwriteOption + ")";
+  if (!io::isHdf5File(path)) return "it is not an HDF5 file" + again;
   {
     io::H5File raw(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT));
     if (!raw.valid()) {
@@ -96,7 +98,7 @@ std::string problemWith(const Scene& scene, const std::string& path, bool extens
       return "it is damaged: its root group cannot be read" + (reason.empty() ? "" : " (" + reason + ")") + again;
     }
     if (hasFormat == 0)
-      return "it is not a gradfric ensemble results file (no attribute format = " + std::string(io::kFormatName) +
+      return "it is not a gradfric ensemble results file (no attribute format = " + target.layout.format +
              ": a file of another program, or a damaged one)" + again;
   }
   try {
@@ -106,8 +108,8 @@ std::string problemWith(const Scene& scene, const std::string& path, bool extens
     file.readRealisationReal("mu_s");
     file.readRealisationReal("mu_k");
     file.readPeakConfirmed();
-    const std::string differences = sceneDifferences(scene, file, extension);
-    const std::string mismatch = extension && differences.empty() ? extensionMismatch(scene, file) : "";
+    const std::string differences = sceneDifferences(target, file, extension);
+    const std::string mismatch = extension && scene && differences.empty() ? extensionMismatch(*scene, file) : "";
     const bool complete = file.complete();
     file.close();
     if (extension && !differences.empty())
@@ -117,7 +119,7 @@ std::string problemWith(const Scene& scene, const std::string& path, bool extens
     if (extension && !complete)
       return "it is not finished (attribute complete = 0): finish it with -ensemble_resume first";
     if (!differences.empty())
-      return "it was started with another scene (run that scene, or start again with -output_overwrite): " +
+      return "it was started with another scene (run that scene, or start again with " + target.overwriteOption + "): " +
              differences;
   } catch (const io::Hdf5Error& e) {
     // Format and version problems come as sentences; a failed HDF5 call means a damaged file.
@@ -142,16 +144,18 @@ void onTimeout(int) {
   _exit(2);
 }
 
-std::string problemWithin(const Scene& scene, const std::string& path, unsigned seconds, bool extension) {
+std::string problemWithin(const ResumeTarget& target, const Scene* scene, const std::string& path,
+                          unsigned seconds, bool extension) {
   std::snprintf(timeoutMessage, sizeof timeoutMessage,
                 "gradfric: error: invalid option %s (continue %s): it is damaged: HDF5 did not finish "
-                "reading it within %u s (start again with -output_overwrite)\n",
-                extension ? "-ensemble_extend" : "-ensemble_resume", path.c_str(), seconds);
+                "reading it within %u s (start again with %s)\n",
+                extension ? "-ensemble_extend" : target.resumeOption.c_str(), path.c_str(), seconds,
+                target.overwriteOption.c_str());
   struct sigaction action {}, previous{};
   action.sa_handler = onTimeout;
   sigaction(SIGALRM, &action, &previous);
   alarm(seconds);
-  const std::string problem = io::withoutHdf5Printing([&] { return problemWith(scene, path, extension); });
+  const std::string problem = io::withoutHdf5Printing([&] { return problemWith(target, scene, path, extension); });
   alarm(0);
   sigaction(SIGALRM, &previous, nullptr);
   return problem;
@@ -161,25 +165,38 @@ std::string problemWithin(const Scene& scene, const std::string& path, unsigned 
 
 namespace {
 
-// Rank 0 checks, every rank throws the same InputError.
-void checkFile(MPI_Comm comm, const Scene& scene, const std::string& path, bool extension) {
+ResumeTarget targetOf(const Scene& scene) {
+  return ResumeTarget{scene.sceneAttributes, scene.layout, "-ensemble_resume", "-output_overwrite"};
+}
+
+// Rank 0 checks, every rank throws the same InputError. `scene`: for an extension only.
+void checkFile(MPI_Comm comm, const ResumeTarget& target, const Scene* scene, const std::string& path,
+               bool extension) {
   int rank = 0;
   MPI_Comm_rank(comm, &rank);
   std::string problem;
-  if (rank == 0) problem = problemWithin(scene, path, 60, extension);
+  if (rank == 0) problem = problemWithin(target, scene, path, 60, extension);
   int length = static_cast<int>(problem.size());
   MPI_Bcast(&length, 1, MPI_INT, 0, comm);
   problem.resize(length);
   if (length > 0) MPI_Bcast(problem.data(), length, MPI_CHAR, 0, comm);
   if (!problem.empty())
-    throw InputError(std::string("invalid option ") +
-                     (extension ? "-ensemble_extend (extend " : "-ensemble_resume (continue ") + path + "): " + problem);
+    throw InputError("invalid option " + (extension ? std::string("-ensemble_extend (extend ") : target.resumeOption + " (continue ") +
+                     path + "): " + problem);
 }
 
 }  // namespace
 
-void checkResumable(MPI_Comm comm, const Scene& scene, const std::string& path) { checkFile(comm, scene, path, false); }
+void checkResumable(MPI_Comm comm, const Scene& scene, const std::string& path) {
+  checkFile(comm, targetOf(scene), &scene, path, false);
+}
 
-void checkExtendable(MPI_Comm comm, const Scene& scene, const std::string& path) { checkFile(comm, scene, path, true); }
+void checkResumable(MPI_Comm comm, const ResumeTarget& target, const std::string& path) {
+  checkFile(comm, target, nullptr, path, false);
+}
+
+void checkExtendable(MPI_Comm comm, const Scene& scene, const std::string& path) {
+  checkFile(comm, targetOf(scene), &scene, path, true);
+}
 
 }  // namespace gradfric::ensemble

@@ -4,6 +4,7 @@
 
 #include "gradfric/core/input_error.hpp"
 #include "gradfric/core/petsc_call.hpp"
+#include "gradfric/ensemble/sweep_options.hpp"
 #include "gradfric/physics/grading_options.hpp"
 #include "gradfric/physics/plate_options.hpp"
 #include "gradfric/sbm/lattice.hpp"
@@ -118,15 +119,7 @@ SweepLists readEnsembleOptions(MPI_Comm comm, RunParameters* record, Scene* s) {
       ens.integer("target_max", 200, 2, 10000000, "1",
                   "with -ensemble_target: at most this many realisations per point");
   const PetscInt seed = ens.integer("seed", 1, 0, PETSC_MAX_INT, "1", "scene seed: a task's random stream is (seed, point, realisation)");
-  SweepLists lists;
-  lists.delta = ens.realList("delta", {}, "1", "sweep of the grading amplitude Delta (empty: -grading_delta alone)");
-  lists.theta = ens.realList("theta", {}, "degree", "sweep of the sliding angle (empty: -sbm_theta alone)");
-  lists.sigma = ens.realList("sigma", {}, "1",
-                             "sweep of the relative dispersion, sets sigma_s and sigma_k (empty: -sbm_sigma_s/_k)");
-  lists.property = ens.choiceList("property", {}, {"E", "friction", "both"},
-                                  "sweep of the graded property (empty: -grading_property alone)");
-  lists.profile = ens.choiceList("profile", {}, {"none", "linear", "triangular"},
-                                 "sweep of the grading profile (empty: -grading_profile alone)");
+  const SweepLists lists = readSweepLists(ens);  // shared with the FEM sweep
   s->commonStreams = ens.flag(
       "common_streams", target > 0.0 && targetType == "variation",
       "common random numbers: realisation r of every sweep point draws from the stream (seed, 0, r); the "
@@ -154,8 +147,6 @@ SweepLists readEnsembleOptions(MPI_Comm comm, RunParameters* record, Scene* s) {
   OptionReader out(comm, "", "Results file", record);
   s->output = out.text("output", "gradfric_sbm.h5", "results file (parallel HDF5; see docs/ensemble.md)");
   s->overwrite = out.flag("output_overwrite", false, "replace an existing results file");
-  for (double d : lists.delta)  // before the stable time step is computed from the sweep
-    if (!(std::fabs(d) < 1.0)) throw InputError(ens.fullName("delta"), formatReal(d), "values with |Delta| < 1");
   if (helpRequested()) return lists;
   ens.requireAtLeast("realisations", realisations, 1);
   ens.requireAtLeast("seed", seed, 0);
@@ -166,20 +157,6 @@ SweepLists readEnsembleOptions(MPI_Comm comm, RunParameters* record, Scene* s) {
   s->seed = static_cast<std::uint64_t>(seed);
   s->abortAfter = static_cast<long>(abortAfter);
   return lists;
-}
-
-// The lists make sense together with the base grading.
-void checkSweepLists(const SweepLists& lists, const Grading& base) {
-  auto name = [](const char* n) { return std::string("-ensemble_") + n; };
-  for (double t : lists.theta)
-    if (!std::isfinite(t)) throw InputError(name("theta"), formatReal(t), "finite angles [degree]");
-  for (double s : lists.sigma)
-    if (!(s >= 0.0 && s <= 0.5)) throw InputError(name("sigma"), formatReal(s), "values with 0 <= sigma <= 0.5");
-  const bool anyProfile = base.profile != GradingProfile::None ||
-                          std::any_of(lists.profile.begin(), lists.profile.end(), [](auto& p) { return p != "none"; });
-  const char* needProfile = "only with a grading profile: set -grading_profile linear or triangular (it is none)";
-  if (!lists.delta.empty() && !anyProfile) throw InputError(name("delta"), "(a list)", needProfile);
-  if (!lists.property.empty() && !anyProfile) throw InputError(name("property"), "(a list)", needProfile);
 }
 
 // The stiffest point of the sweep sets the stable time step: one dt for the whole sweep.
@@ -230,17 +207,7 @@ io::EnsembleLayout layoutOf(const Scene& s) {
 }
 
 io::SweepTable tableOf(const Sweep& sweep, const sbm::Parameters& parameters, int bands) {
-  io::SweepTable table;
-  table.axes = sweep.axes;
-  for (const auto& q : sweep.points) {
-    table.delta.push_back(q.delta);
-    table.theta.push_back(q.theta);
-    table.sigma.push_back(q.sigma);
-    table.sigmaKinetic.push_back(q.sigmaKinetic);
-    table.property.push_back(q.property);
-    table.profile.push_back(q.profile);
-  }
-  table.referencePoint = sweep.reference;
+  io::SweepTable table = sweepColumns(sweep);  // shared with the FEM sweep
   for (const auto& q : sweep.points) {  // the property fields each point uses (results file /properties)
     const sbm::ColumnProperties c = sbm::columnProperties(parameters, gradingOf(q, bands));
     table.modulus.insert(table.modulus.end(), c.modulus.begin(), c.modulus.end());

@@ -79,13 +79,20 @@ std::vector<int> integerColumn(const std::vector<PointStatistics>& stats, Get ge
 }  // namespace
 
 std::vector<PointStatistics> writeStatistics(io::ResultsFile& file, const Scene& scene) {
+  return writeStatistics(file, scene.realisations, scene.sweep.reference, scene.commonStreams,
+                         scene.target.active() ? &scene.target : nullptr);
+}
+
+std::vector<PointStatistics> writeStatistics(io::ResultsFile& file, int realisations,
+                                             const std::vector<int>& reference, bool commonStreams,
+                                             const PrecisionTarget* target) {
   // Every rank reads the small P x R tables and computes the same numbers; rank 0 writes them.
   GF_CALL(PetscLogEventBegin(logEvents().statistics, 0, 0, 0, 0));
   const auto flags = file.finishedTasks();
   const std::vector<unsigned char> done(flags.begin(), flags.end());
-  const auto stats = pointStatistics(scene.realisations, scene.sweep.reference, file.readRealisationReal("mu_s"),
+  const auto stats = pointStatistics(realisations, reference, file.readRealisationReal("mu_s"),
                                      file.readRealisationReal("mu_k"), file.readPeakConfirmed(), done,
-                                     scene.commonStreams);
+                                     commonStreams);
   using S = const PointStatistics&;
   std::vector<std::pair<std::string, std::vector<double>>> real = {
       {"mu_s_mean", realColumn(stats, [](S s) { return s.muStatic.mean; })},
@@ -107,12 +114,12 @@ std::vector<PointStatistics> writeStatistics(io::ResultsFile& file, const Scene&
       {"mu_s_count", integerColumn(stats, [](S s) { return s.muStatic.count; })},
       {"mu_k_count", integerColumn(stats, [](S s) { return s.muKinetic.count; })},
       {"peaks_unconfirmed", integerColumn(stats, [](S s) { return s.peaksUnconfirmed; })}};
-  if (scene.target.active()) {  // the half-width each point reached and whether it met the target
+  if (target) {  // the half-width each point reached and whether it met the target
     std::vector<double> reached;
     std::vector<int> met;
-    for (int p = 0; p < scene.points(); ++p) {
-      reached.push_back(achievedHalfWidth(scene.target, stats, scene.sweep.reference, p));
-      met.push_back(reached.back() <= scene.target.halfWidth ? 1 : 0);
+    for (int p = 0; p < static_cast<int>(reference.size()); ++p) {
+      reached.push_back(achievedHalfWidth(*target, stats, reference, p));
+      met.push_back(reached.back() <= target->halfWidth ? 1 : 0);
     }
     real.emplace_back("target_half_width", reached);
     integer.emplace_back("target_met", met);

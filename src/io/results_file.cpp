@@ -150,7 +150,7 @@ ResultsFile ResultsFile::create(MPI_Comm comm, const std::string& path, const En
   GF_H5(H5Pset_dxpl_mpio(f.independent_, H5FD_MPIO_INDEPENDENT));
 
   const hid_t root = f.file_.get();
-  writeStringAttribute(root, "format", kFormatName);
+  writeStringAttribute(root, "format", layout.format);
   writeIntAttribute(root, "format_version", kFormatVersion);
   writeIntAttribute(root, "complete", 0);
   writeIntAttribute(root, "points", layout.points);
@@ -344,8 +344,10 @@ ResultsFile ResultsFile::openReadOnly(MPI_Comm comm, const std::string& path) {
 void ResultsFile::readLayout() {
   const hid_t root = file_.get();
   H5Attribute format(GF_H5(H5Aopen(root, "format", H5P_DEFAULT)));
-  if (readStringAttribute(format) != kFormatName)
-    throw Hdf5Error("not a gradfric ensemble results file (attribute format is not " + std::string(kFormatName) + ")");
+  layout_.format = readStringAttribute(format);
+  if (layout_.format != kFormatName && layout_.format != kFemSweepFormatName)
+    throw Hdf5Error("not a gradfric ensemble results file (attribute format is not " + std::string(kFormatName) +
+                    " or " + kFemSweepFormatName + ")");
   const int version = readScalarAttribute<int>(root, "format_version", H5T_NATIVE_INT, 0);
   if (version != kFormatVersion)
     throw Hdf5Error("results file format version " + std::to_string(version) + ", this build writes " +

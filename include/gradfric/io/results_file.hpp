@@ -23,8 +23,11 @@ namespace gradfric::io {
 
 inline constexpr int kFormatVersion = 2;  // 2: units, dimension scales, forces, properties, provenance
 inline constexpr const char* kFormatName = "gradfric-sbm-ensemble";
+// The same layout filled by a sweep of finite-element runs (gradfric-fem, one run per point).
+inline constexpr const char* kFemSweepFormatName = "gradfric-fem-sweep";
 
 struct EnsembleLayout {
+  std::string format = kFormatName;  // the root attribute `format`: kFormatName or kFemSweepFormatName
   int points = 0;        // P sweep points
   int realisations = 0;  // R realisations per point
   int historyCapacity = 0;  // C: mu(t) samples kept per task (0: no histories)
