@@ -1,5 +1,5 @@
-// Nanoseconds per block per RK4 step of the spring-block kernels, fast and plain reference, in
-// one run (the machines are shared and noisy: compare the ratio, not the absolute figures).
+// Nanoseconds per block per RK4 step of the spring-block kernels, fast and plain reference, and
+// whole realisations stepped from t = 0 against idle work skipped, in one run (the machines are shared and noisy: compare the ratio, not the absolute figures).
 //
 //   build/bench/bench_sbm_kernel [--benchmark_min_time=2] [-- N]
 //
@@ -7,6 +7,7 @@
 // static peak so that blocks stick and slip as in a real run; then whole RK4 steps are timed.
 #include "gradfric/sbm/integrator.hpp"
 #include "gradfric/sbm/lattice.hpp"
+#include "gradfric/sbm/model.hpp"
 
 #include <benchmark/benchmark.h>
 
@@ -41,10 +42,12 @@ Setup makeSetup() {
   return s;
 }
 
-template <template <class> class Lattice, Integrator scheme = Integrator::RK4, class Law = CoulombStickSlip>
+template <template <class> class Lattice, Integrator scheme = Integrator::RK4, class Law = CoulombStickSlip,
+          bool SkipIdle = false>
 void benchmarkStep(benchmark::State& state) {
   Setup s = makeSetup();
   s.motion.integrator = scheme;
+  s.motion.skipIdle = SkipIdle;  // false: the full sweep every step
   Lattice<Law> lattice(s.stiffness, Law::make(s.friction, FrictionLawSettings{}), s.motion);
   // Warm up into the sliding phase: just past the loading time, most blocks slip.
   while (lattice.time() < 1.05 * s.parameters.loadingTime()) lattice.step();
@@ -58,20 +61,72 @@ void benchmarkStep(benchmark::State& state) {
 void BM_FastLattice(benchmark::State& state) { benchmarkStep<FastLattice>(state); }
 void BM_ReferenceLattice(benchmark::State& state) { benchmarkStep<ReferenceLattice>(state); }
 void BM_FastLatticeVerlet(benchmark::State& state) { benchmarkStep<FastLattice, Integrator::VelocityVerlet>(state); }
+// The same sliding lattice with idle work skipped: Verlet on the active set of tiles.
+void BM_FastLatticeVerletSkipIdle(benchmark::State& state) {
+  benchmarkStep<FastLattice, Integrator::VelocityVerlet, CoulombStickSlip, true>(state);
+}
 void BM_FastLatticeExponential(benchmark::State& state) {
   benchmarkStep<FastLattice, Integrator::RK4, ExponentialVelocityWeakening>(state);
 }
 BENCHMARK(BM_FastLattice)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FastLatticeExponential)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FastLatticeVerlet)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_FastLatticeVerletSkipIdle)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ReferenceLattice)->Unit(benchmark::kMillisecond);
+
+// Whole realisations of the default scene's graded plate (friction, linear, Delta = 0.2, the
+// driver's derived defaults), stepped from t = 0 (the old path) and with idle work skipped (the
+// new one): mu_s only (stops at the confirmed peak), and full (through the mu_k window).
+template <bool Kinetic, bool SkipIdle>
+void benchmarkRealisation(benchmark::State& state) {
+  Grading grading;
+  grading.profile = GradingProfile::Linear;
+  grading.property = GradedProperty::Friction;
+  grading.delta = 0.2;
+  grading.bands = 10;
+  Parameters p;
+  p.blocksPerSide = blocksPerSide;
+  p.damping = 0.1 * std::sqrt(p.axialStiffness(p.plate.youngsModulus) / p.blockMass());
+  p.timeStep = defaultTimeStep(p, grading);
+  p.skipIdle = SkipIdle;
+  Request q;
+  const double load = p.loadingTime();
+  q.measurement.kinetic = Kinetic;
+  q.measurement.historyInterval = 1e-3 * load;
+  q.measurement.kineticDelay = 0.5 * load;
+  q.measurement.kineticWidth = load;
+  q.measurement.peakHold = 0.25 * load;
+  q.maxTime = 20 * load;
+  std::uint32_t realisation = 0;
+  double steps = 0, quiet = 0, muStatic = 0;
+  for (auto _ : state) {
+    const Result r = simulate(p, grading, q, StreamKey{1, 1, realisation++});
+    steps += double(r.steps);
+    quiet += r.friction.firstSlipTime / p.timeStep;
+    muStatic += r.friction.muStatic;
+  }
+  state.counters["steps"] = steps / double(state.iterations());
+  state.counters["steps_before_first_slip"] = quiet / double(state.iterations());
+  state.counters["mu_s"] = muStatic / double(state.iterations());
+}
+void BM_RealisationMuStaticStepped(benchmark::State& s) { benchmarkRealisation<false, false>(s); }
+void BM_RealisationMuStaticSkipIdle(benchmark::State& s) { benchmarkRealisation<false, true>(s); }
+void BM_RealisationFullStepped(benchmark::State& s) { benchmarkRealisation<true, false>(s); }
+void BM_RealisationFullSkipIdle(benchmark::State& s) { benchmarkRealisation<true, true>(s); }
+BENCHMARK(BM_RealisationMuStaticStepped)->Unit(benchmark::kSecond)->Iterations(2);
+BENCHMARK(BM_RealisationMuStaticSkipIdle)->Unit(benchmark::kSecond)->Iterations(2);
+BENCHMARK(BM_RealisationFullStepped)->Unit(benchmark::kSecond)->Iterations(2);
+BENCHMARK(BM_RealisationFullSkipIdle)->Unit(benchmark::kSecond)->Iterations(2);
 
 // Keeps each benchmark's ns per block-step to print the ratio at the end.
 class RatioReporter : public benchmark::ConsoleReporter {
 public:
   std::map<std::string, double> nsPerBlockStep;
+  std::map<std::string, double> cpuSeconds;  // per iteration
   void ReportRuns(const std::vector<Run>& runs) override {
     for (const auto& run : runs) {
+      if (run.run_type == Run::RT_Iteration && run.iterations > 0)
+        cpuSeconds[run.benchmark_name()] = run.cpu_accumulated_time / double(run.iterations);
       auto it = run.counters.find("ns_per_block_step");
       if (it != run.counters.end() && run.run_type == Run::RT_Iteration)
         nsPerBlockStep[run.benchmark_name()] = it->second.value;
@@ -93,6 +148,21 @@ int main(int argc, char** argv) {
   if (fast > 0 && plain > 0)
     std::printf("\nN_b = %d: fast %.1f ns, reference %.1f ns per block per RK4 step; speed-up %.2fx\n", blocksPerSide,
                 fast, plain, plain / fast);
+  const auto& t = reporter.cpuSeconds;
+  auto ratio = [&](const char* what, const char* old, const char* now) {
+    if (t.count(old) && t.count(now) && t.at(now) > 0)
+      std::printf("%s realisation: stepped %.2f s, idle work skipped %.2f s (CPU): %.2fx faster\n", what, t.at(old),
+                  t.at(now), t.at(old) / t.at(now));
+  };
+  ratio("mu_s-only", "BM_RealisationMuStaticStepped/iterations:2", "BM_RealisationMuStaticSkipIdle/iterations:2");
+  ratio("full", "BM_RealisationFullStepped/iterations:2", "BM_RealisationFullSkipIdle/iterations:2");
+  const double active = reporter.nsPerBlockStep["BM_FastLatticeVerletSkipIdle"];
+  if (verlet > 0 && active > 0)
+    std::printf("N_b = %d: velocity Verlet, sliding plate: full sweep %.1f ns, active set %.1f ns per block per step\n",
+                blocksPerSide, verlet, active);
+  if (verlet > 0 && plain > 0)
+    std::printf("N_b = %d: velocity Verlet full sweep %.1f ns per block per step, plain reference (RK4) %.1f ns\n",
+                blocksPerSide, verlet, plain);
   if (verlet > 0 && fast > 0)
     std::printf("N_b = %d: velocity Verlet %.1f ns per block per step, %.2fx cheaper per step than fast RK4\n",
                 blocksPerSide, verlet, fast / verlet);

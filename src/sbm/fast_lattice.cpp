@@ -4,10 +4,12 @@
 // spring is evaluated once per stage. Loops run along a row over structure-of-arrays data and
 // vectorise; the stick/slip transitions, which branch, sit in a short scalar loop of their own.
 #include "gradfric/sbm/integrator.hpp"
+#include "gradfric/sbm/quiet_phase.hpp"
 #include "gradfric/sbm/spring.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <utility>
 
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
@@ -40,7 +42,7 @@ void directionOf(double degrees, double& cx, double& cy) {
 Motion motionOf(const Parameters& p, double timeStep, double damping) {
   double cx, cy;
   directionOf(p.plate.slidingAngle, cx, cy);
-  return {timeStep, damping, p.blockMass(), p.plate.velocity * cx, p.plate.velocity * cy, p.integrator};
+  return {timeStep, damping, p.blockMass(), p.plate.velocity * cx, p.plate.velocity * cy, p.integrator, p.skipIdle};
 }
 
 template <class Law>
@@ -54,6 +56,18 @@ FastLattice<Law>::FastLattice(const LatticeStiffness& stiffness, Law law, const 
   everSlipped_.assign(n, 0);
   for (auto* v : {&fx_, &fy_, &carryX_, &carryY_, &nextX_, &nextY_, &springX_, &springY_})
     v->assign(nb_, 0.0);
+  if (motion_.skipIdle) {
+    quietUntil_ = firstSlipStepAtRest(stiffness_, law_, motion_, std::int64_t(1) << 52);
+    quietSumX_.assign(kQuietBatch, 0.0);
+    quietSumY_.assign(kQuietBatch, 0.0);
+    if (motion_.integrator == Integrator::VelocityVerlet) {
+      tiles_ = (nb_ + kTile - 1) / kTile;
+      for (auto* v : {&pieceHx_, &pieceHy_, &pieceVx_, &pieceVy_, &pieceDx_, &pieceDy_, &pieceAx_, &pieceAy_})
+        v->assign(n, 0.0);
+      pieceStep_.assign(std::size_t(nb_) * tiles_, -1);
+      mobileStep_.assign(std::size_t(nb_) * tiles_, -1);
+    }
+  }
 }
 
 namespace {
@@ -252,6 +266,14 @@ GF_ALWAYS_INLINE void FastLattice<Law>::rowForces(int r, const double* px, const
 template <class Law>
 template <SiteLayout L>
 GF_ALWAYS_INLINE void FastLattice<Law>::transitions(int r, double t) {
+  this->template transitionsWith<L>(r, t, [](int) {});
+}
+
+// The same, calling each(c) first for every block c of the row in order: the active set adds
+// the slider-force sum here, where its chain of dependent additions overlaps the branches.
+template <class Law>
+template <SiteLayout L, class PerBlock>
+GF_ALWAYS_INLINE void FastLattice<Law>::transitionsWith(int r, double t, PerBlock each) {
   const int nb = nb_, base = r * nb;
   const double* fx = fx_.data();
   const double* fy = fy_.data();
@@ -261,6 +283,7 @@ GF_ALWAYS_INLINE void FastLattice<Law>::transitions(int r, double t) {
   double* vx = vx_.data() + base;
   double* vy = vy_.data() + base;
   for (int c = 0; c < nb; ++c) {
+    each(c);
     if (state[c] == Slipping) continue;
     const double threshold = L == SiteLayout::Uniform ? staticStrength[0] : staticStrength[c];
     switch (stickSlipChange(state[c], Law::holds(fx[c] * fx[c] + fy[c] * fy[c], threshold))) {
@@ -291,19 +314,26 @@ GF_ALWAYS_INLINE void FastLattice<Law>::transitions(int r, double t) {
 template <class Law>
 template <SiteLayout L>
 GF_ALWAYS_INLINE void FastLattice<Law>::frictionVector(int r) {
-  const int nb = nb_, base = r * nb;
-  const double* __restrict fx = fx_.data();
-  const double* __restrict fy = fy_.data();
+  this->template frictionVectorRange<L>(r, 0, nb_);
+}
+
+// The same for columns c0 <= c < c1 of row r (the active set's tiles).
+template <class Law>
+template <SiteLayout L>
+GF_ALWAYS_INLINE void FastLattice<Law>::frictionVectorRange(int r, int c0, int c1) {
+  const int nb = nb_, base = r * nb + c0;
+  const double* __restrict fx = fx_.data() + c0;
+  const double* __restrict fy = fy_.data() + c0;
   const double* __restrict staticStrength =
-      law_.sites.staticStrength.data() + (L == SiteLayout::PerSite ? base : 0);
+      law_.sites.staticStrength.data() + (L == SiteLayout::PerSite ? base : L == SiteLayout::PerColumn ? c0 : 0);
   const double* __restrict kineticStrength =
-      law_.sites.kineticStrength.data() + (L == SiteLayout::PerSite ? base : 0);
+      law_.sites.kineticStrength.data() + (L == SiteLayout::PerSite ? base : L == SiteLayout::PerColumn ? c0 : 0);
   const double* __restrict mobile = mobile_.data() + base;
   const double* __restrict vx = vx_.data() + base;
   const double* __restrict vy = vy_.data() + base;
   double* __restrict kfx = frictionX_.data() + base;
   double* __restrict kfy = frictionY_.data() + base;
-  for (int c = 0; c < nb; ++c) {
+  for (int c = 0; c < c1 - c0; ++c) {
     const double strength = L == SiteLayout::Uniform ? staticStrength[0] : staticStrength[c];
     const double kinetic = L == SiteLayout::Uniform ? kineticStrength[0] : kineticStrength[c];
     const double speed2 = vx[c] * vx[c] + vy[c] * vy[c];
@@ -321,13 +351,18 @@ GF_ALWAYS_INLINE void FastLattice<Law>::frictionVector(int r) {
 // re-stick at the next step.
 template <class Law>
 GF_ALWAYS_INLINE void FastLattice<Law>::markReversals(int r) {
-  const int nb = nb_, base = r * nb;
+  markReversalsRange(r, 0, nb_);
+}
+
+template <class Law>
+GF_ALWAYS_INLINE void FastLattice<Law>::markReversalsRange(int r, int c0, int c1) {
+  const int base = r * nb_;
   const double* kfx = frictionX_.data() + base;
   const double* kfy = frictionY_.data() + base;
   const double* vx = vx_.data() + base;
   const double* vy = vy_.data() + base;
   std::uint8_t* state = state_.data() + base;
-  for (int c = 0; c < nb; ++c)
+  for (int c = c0; c < c1; ++c)
     if (vx[c] * kfx[c] + vy[c] * kfy[c] < 0.0) state[c] = Reversed;
 }
 
@@ -408,11 +443,175 @@ GF_ALWAYS_INLINE void FastLattice<Law>::verletStep(double t, double& sumX, doubl
   });
 }
 
+// Velocity Verlet on the active set (see integrator.hpp): the same step as verletStep, with the
+// springs of still tiles taken from where they were last evaluated and the kicks, the reversal
+// test and the friction vector skipped in tiles without a slipping block (on a stuck block,
+// velocity zero and mobile zero, they change nothing). Every force is assembled from the same
+// spring values in the same order as rowForces: bit for bit the full sweep.
+template <class Law>
+template <bool Graded, SiteLayout L>
+GF_ALWAYS_INLINE void FastLattice<Law>::verletStepActive(double t, double& sumX, double& sumY) {
+  const int nb = nb_, tiles = tiles_;
+  const std::int64_t n = steps_;
+  const double half = 0.5 * motion_.timeStep;
+  const double h = motion_.timeStep;
+  const double invMass = 1.0 / motion_.mass;
+  const double gamma = motion_.damping;
+  const double l = stiffness_.spacing;
+  const double diagonalLength = std::sqrt(2.0) * l;
+  const double drivenX = motion_.sliderVelocityX * t;
+  const double drivenY = motion_.sliderVelocityY * t;
+  const double* kH = stiffness_.horizontal.data();
+  const double* kV = stiffness_.vertical.data();
+  const double* kD = stiffness_.diagonal.data();
+  const double* kS = stiffness_.slider.data();
+  const double kH0 = kH[0], kV0 = kV[0], kD0 = kD[0], kS0 = kS[0];
+  double* carryX = carryX_.data();
+  double* carryY = carryY_.data();
+  double* nextX = nextX_.data();
+  double* nextY = nextY_.data();
+  std::fill(carryX, carryX + nb, 0.0);
+  std::fill(carryY, carryY + nb, 0.0);
+  double* __restrict fx = fx_.data();
+  double* __restrict fy = fy_.data();
+  int stale = 0;
+  for (int r = 0; r < nb; ++r) {
+    const int base = r * nb;
+    const bool above = r + 1 < nb;
+    const double* __restrict rx = ux_.data() + base;
+    const double* __restrict ry = uy_.data() + base;
+    const double* __restrict qx = rx + nb;
+    const double* __restrict qy = ry + nb;
+    double* __restrict hx = pieceHx_.data() + base;
+    double* __restrict hy = pieceHy_.data() + base;
+    double* __restrict vx = pieceVx_.data() + base;
+    double* __restrict vy = pieceVy_.data() + base;
+    double* __restrict dx = pieceDx_.data() + base;
+    double* __restrict dy = pieceDy_.data() + base;
+    double* __restrict ax = pieceAx_.data() + base;
+    double* __restrict ay = pieceAy_.data() + base;
+    const std::int64_t* mobileHere = mobileStep_.data() + r * tiles;
+    const std::int64_t* mobileAbove = above ? mobileHere + tiles : mobileHere;
+    // Re-evaluate the springs of the tiles whose pieces are stale.
+    for (int tile = 0; tile < tiles; ++tile) {
+      std::int64_t& evaluated = pieceStep_[r * tiles + tile];
+      const int right = std::min(tile + 1, tiles - 1);
+      const std::int64_t moved = std::max(std::max(mobileHere[tile], mobileHere[right]),
+                                          std::max(mobileAbove[tile], mobileAbove[right]));
+      if (evaluated >= 0 && moved < evaluated) continue;
+      evaluated = n;
+      ++stale;
+      const int c0 = tile * kTile, c1 = std::min(c0 + kTile, nb), springEnd = std::min(c1, nb - 1);
+      for (int c = c0; c < springEnd; ++c) {
+        const Force2 f = springForce(Graded ? kH[c] : kH0, l, 0.0, l, rx[c + 1] - rx[c], ry[c + 1] - ry[c]);
+        hx[c] = f.x;
+        hy[c] = f.y;
+      }
+      if (!above) continue;
+      for (int c = c0; c < c1; ++c) {
+        const Force2 f = springForce(Graded ? kV[c] : kV0, 0.0, l, l, qx[c] - rx[c], qy[c] - ry[c]);
+        vx[c] = f.x;
+        vy[c] = f.y;
+      }
+      for (int c = c0; c < springEnd; ++c) {
+        const Force2 f =
+            springForce(Graded ? kD[c] : kD0, l, l, diagonalLength, qx[c + 1] - rx[c], qy[c + 1] - ry[c]);
+        dx[c] = f.x;
+        dy[c] = f.y;
+      }
+      for (int c = c0; c < springEnd; ++c) {
+        const Force2 f =
+            springForce(Graded ? kD[c] : kD0, -l, l, diagonalLength, qx[c] - rx[c + 1], qy[c] - ry[c + 1]);
+        ax[c] = f.x;
+        ay[c] = f.y;
+      }
+    }
+    // Assemble F_mot of the row and the reactions on the row above as rowForces does.
+    for (int c = 0; c < nb; ++c) {
+      const double k = Graded ? kS[c] : kS0;
+      fx[c] = k * (drivenX - rx[c]) + carryX[c];
+      fy[c] = k * (drivenY - ry[c]) + carryY[c];
+    }
+    for (int c = 0; c + 1 < nb; ++c) {
+      fx[c] += hx[c];
+      fy[c] += hy[c];
+    }
+    for (int c = 0; c + 1 < nb; ++c) {
+      fx[c + 1] -= hx[c];
+      fy[c + 1] -= hy[c];
+    }
+    if (above) {
+      for (int c = 0; c < nb; ++c) {
+        fx[c] += vx[c];
+        fy[c] += vy[c];
+        nextX[c] = -vx[c];
+        nextY[c] = -vy[c];
+      }
+      for (int c = 0; c + 1 < nb; ++c) {
+        fx[c] += dx[c];
+        fy[c] += dy[c];
+        nextX[c + 1] -= dx[c];
+        nextY[c + 1] -= dy[c];
+      }
+      for (int c = 0; c + 1 < nb; ++c) {
+        fx[c + 1] += ax[c];
+        fy[c + 1] += ay[c];
+        nextX[c] -= ax[c];
+        nextY[c] -= ay[c];
+      }
+    }
+    // The row's update, tile by tile where blocks slip (before or after the transitions).
+    std::int64_t* mobileRow = mobileStep_.data() + r * tiles;
+    for (int tile = 0; tile < tiles; ++tile) {
+      if (mobileRow[tile] != n - 1) continue;  // no block slipped in the last step
+      const int c0 = tile * kTile, w = std::min(kTile, nb - c0);
+      closeKick(w, half, invMass, gamma, fx + c0, fy + c0, frictionX_.data() + base + c0,
+                frictionY_.data() + base + c0, mobile_.data() + base + c0, vx_.data() + base + c0,
+                vy_.data() + base + c0);
+      markReversalsRange(r, c0, c0 + w);
+    }
+    // The transitions, with the slider-force sum in the kernel's order (the positions are u_n
+    // until the drift below).
+    this->template transitionsWith<L>(r, t, [&](int c) {
+      const double k = Graded ? kS[c] : kS0;
+      sumX += k * (drivenX - rx[c]);
+      sumY += k * (drivenY - ry[c]);
+    });
+    const std::uint8_t* state = state_.data() + base;  // Stuck = 0: mobile where non-zero
+    for (int tile = 0; tile < tiles; ++tile) {
+      const int c0 = tile * kTile, c1 = std::min(c0 + kTile, nb);
+      bool slips = false;
+      if (c1 - c0 == kTile) {
+        std::uint64_t word;
+        static_assert(kTile == sizeof word, "one tile of states in one word");
+        std::memcpy(&word, state + c0, sizeof word);
+        slips = word != 0;
+      } else {
+        for (int c = c0; c < c1; ++c) slips |= state[c] != Stuck;
+      }
+      if (!slips) continue;
+      mobileRow[tile] = n;
+      const int w = c1 - c0;
+      this->template frictionVectorRange<L>(r, c0, c1);
+      openKickAndDrift(w, half, h, invMass, gamma, fx + c0, fy + c0, frictionX_.data() + base + c0,
+                       frictionY_.data() + base + c0, mobile_.data() + base + c0, vx_.data() + base + c0,
+                       vy_.data() + base + c0, ux_.data() + base + c0, uy_.data() + base + c0);
+    }
+    std::swap(carryX, nextX);
+    std::swap(carryY, nextY);
+  }
+  staleTiles_ = stale;
+}
+
 namespace {
 
 template <class Law, bool Graded, SiteLayout L>
-GF_ALWAYS_INLINE void fullStep(FastLattice<Law>& lattice, bool verlet, double t, double h, double& sumX,
-                               double& sumY) {
+GF_ALWAYS_INLINE void fullStep(FastLattice<Law>& lattice, bool verlet, bool active, double t, double h,
+                               double& sumX, double& sumY) {
+  if (active) {
+    lattice.template verletStepActive<Graded, L>(t, sumX, sumY);
+    return;
+  }
   if (verlet) {
     lattice.template verletStep<Graded, L>(t, sumX, sumY);
     return;
@@ -426,18 +625,19 @@ GF_ALWAYS_INLINE void fullStep(FastLattice<Law>& lattice, bool verlet, double t,
 // One compiled entry per law x (uniform|graded stiffness) x (friction layout), each cloned for
 // AVX-512, AVX2 and baseline x86-64 and chosen at load time: portable and fast.
 template <class Law, bool Graded, SiteLayout L>
-GF_KERNEL_CLONES void stepVariant(FastLattice<Law>& lattice, bool verlet, double t, double h, double& sumX,
-                                  double& sumY) {
-  fullStep<Law, Graded, L>(lattice, verlet, t, h, sumX, sumY);
+GF_KERNEL_CLONES void stepVariant(FastLattice<Law>& lattice, bool verlet, bool active, double t, double h,
+                                  double& sumX, double& sumY) {
+  fullStep<Law, Graded, L>(lattice, verlet, active, t, h, sumX, sumY);
 }
 
 template <class Law, bool Graded>
-void stepLayout(FastLattice<Law>& lattice, SiteLayout layout, bool verlet, double t, double h, double& sumX,
-                double& sumY) {
-  if (layout == SiteLayout::Uniform) stepVariant<Law, Graded, SiteLayout::Uniform>(lattice, verlet, t, h, sumX, sumY);
+void stepLayout(FastLattice<Law>& lattice, SiteLayout layout, bool verlet, bool active, double t, double h,
+                double& sumX, double& sumY) {
+  if (layout == SiteLayout::Uniform)
+    stepVariant<Law, Graded, SiteLayout::Uniform>(lattice, verlet, active, t, h, sumX, sumY);
   else if (layout == SiteLayout::PerColumn)
-    stepVariant<Law, Graded, SiteLayout::PerColumn>(lattice, verlet, t, h, sumX, sumY);
-  else stepVariant<Law, Graded, SiteLayout::PerSite>(lattice, verlet, t, h, sumX, sumY);
+    stepVariant<Law, Graded, SiteLayout::PerColumn>(lattice, verlet, active, t, h, sumX, sumY);
+  else stepVariant<Law, Graded, SiteLayout::PerSite>(lattice, verlet, active, t, h, sumX, sumY);
 }
 
 }  // namespace
@@ -447,13 +647,64 @@ void FastLattice<Law>::dispatch(double& sumX, double& sumY) {
   const double t = time();
   const double h = motion_.timeStep;
   const bool verlet = motion_.integrator == Integrator::VelocityVerlet;
-  if (stiffness_.graded) stepLayout<Law, true>(*this, law_.sites.layout, verlet, t, h, sumX, sumY);
-  else stepLayout<Law, false>(*this, law_.sites.layout, verlet, t, h, sumX, sumY);
+  const bool active = useActiveSet();
+  if (active) ++activeSetSteps_;
+  if (stiffness_.graded) stepLayout<Law, true>(*this, law_.sites.layout, verlet, active, t, h, sumX, sumY);
+  else stepLayout<Law, false>(*this, law_.sites.layout, verlet, active, t, h, sumX, sumY);
+}
+
+// The active set pays while few tiles are stale; once more than half of them are, the full sweep
+// is cheaper (no pieces to store): switch, and look again every kModeCheck steps whether fewer
+// than a quarter of the tiles hold a slipping block.
+template <class Law>
+bool FastLattice<Law>::useActiveSet() {
+  constexpr int kModeCheck = 16;
+  if (!motion_.skipIdle || motion_.integrator != Integrator::VelocityVerlet) return false;
+  const int total = nb_ * tiles_;
+  if (activeMode_) {
+    if (steps_ > nextModeCheck_ && 2 * staleTiles_ > total) {
+      activeMode_ = false;
+      nextModeCheck_ = steps_ + kModeCheck;
+    }
+    return activeMode_;
+  }
+  if (steps_ < nextModeCheck_) return false;
+  int slipping = 0;
+  for (int r = 0; r < nb_; ++r)
+    for (int tile = 0; tile < tiles_; ++tile) {
+      const double* mobile = mobile_.data() + r * nb_ + tile * kTile;
+      const int w = std::min(kTile, nb_ - tile * kTile);
+      for (int c = 0; c < w; ++c)
+        if (mobile[c] != 0.0) {
+          ++slipping;
+          break;
+        }
+    }
+  if (4 * slipping >= total) {
+    nextModeCheck_ = steps_ + kModeCheck;
+    return false;
+  }
+  // Enter: every piece stale, every tile possibly moved in the last step (full sweep).
+  activeMode_ = true;
+  nextModeCheck_ = steps_ + 1;  // the first active step evaluates every tile: do not judge it
+  std::fill(pieceStep_.begin(), pieceStep_.end(), -1);
+  std::fill(mobileStep_.begin(), mobileStep_.end(), steps_ - 1);
+  return true;
 }
 
 template <class Law>
 StepObservation FastLattice<Law>::step() {
   StepObservation observation{time(), 0.0, 0.0};
+  if (steps_ < quietUntil_) {  // at rest: nothing to integrate, the sums are known
+    if (quietBatchStart_ < 0 || steps_ >= quietBatchStart_ + kQuietBatch) {
+      quietBatchStart_ = steps_;
+      restSliderForceSums(stiffness_, motion_, steps_, quietSumX_.data(), quietSumY_.data());
+    }
+    observation.sliderForceX = quietSumX_[steps_ - quietBatchStart_];
+    observation.sliderForceY = quietSumY_[steps_ - quietBatchStart_];
+    ++steps_;
+    return observation;
+  }
   dispatch(observation.sliderForceX, observation.sliderForceY);
   ++steps_;
   return observation;

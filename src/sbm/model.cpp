@@ -167,6 +167,8 @@ std::vector<std::string> activeEffects(const Parameters& p, const Grading& g, co
   }
   effects.push_back("friction law: " + describeFrictionLaw(p.frictionLaw));
   effects.push_back(p.damping > 0 ? "viscous damping gamma = " + formatReal(p.damping) + " 1/s" : "no damping");
+  effects.push_back(p.skipIdle ? "idle work skipped: the phase before the first slip in closed form (bit for bit)"
+                               : "every block stepped from t = 0 (-sbm_skip_idle false)");
   effects.push_back("sliding angle theta = " + formatReal(p.plate.slidingAngle) + " degree");
   std::string observed = "observables: mu_s";
   if (q.measurement.kinetic) observed += ", mu_k";

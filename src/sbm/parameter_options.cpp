@@ -36,6 +36,9 @@ Parameters readParameters(MPI_Comm comm, RunParameters* record, const Plate& pla
   const std::string integrator = o.choice("integrator", "verlet", {"rk4", "verlet"},
                                           "time integrator, fixed step: classical RK4 (4 force evaluations a step) or velocity Verlet (1)");
   p.integrator = integrator == "verlet" ? Integrator::VelocityVerlet : Integrator::RK4;
+  p.skipIdle = o.flag("skip_idle", p.skipIdle,
+                      "skip work that cannot change the results: jump over the phase before the first slip "
+                      "(bit for bit the stepped run; false: step every block from t = 0)");
 
   o.requirePositive("lz", p.layerThickness, "m");
   o.requireRange("sigma_s", p.sigmaStatic, 0.0, 0.5, "0 <= sigma_s <= 0.5");

@@ -42,6 +42,9 @@ struct Motion {
   double sliderVelocityX;   // v cos(theta) [m/s]
   double sliderVelocityY;   // v sin(theta)
   Integrator integrator = Integrator::RK4;
+  // Skip work that cannot change the result (Parameters::skipIdle): FastLattice jumps over the
+  // quiet phase before the first slip (quiet_phase.hpp). Off for a load that is not linear in t.
+  bool skipIdle = true;
 };
 
 Motion motionOf(const Parameters& parameters, double timeStep, double damping);
@@ -86,12 +89,20 @@ public:
   const double* velocityX() const { return vx_.data(); }
   const double* velocityY() const { return vy_.data(); }  // half-step velocity with Verlet
   const std::uint8_t* blockStates() const { return state_.data(); }
+  // The first step the kernel integrates: 0, or with Motion::skipIdle the step of the first slip.
+  std::int64_t quietSteps() const { return quietUntil_; }
 
   // The kernel's parts (public so that the per-ISA entry points can reach them).
   template <bool Graded, SiteLayout L, int Stage>
   void rk4Stage(double time, double& sumX, double& sumY);
   template <bool Graded, SiteLayout L>
   void verletStep(double time, double& sumX, double& sumY);
+  template <bool Graded, SiteLayout L>
+  void verletStepActive(double time, double& sumX, double& sumY);
+  // Velocity Verlet steps taken on the active set (tiles of blocks that move or whose neighbours
+  // moved), not the full sweep: for tests and benchmarks.
+  std::int64_t activeSetSteps() const { return activeSetSteps_; }
+  bool useActiveSet();  // decides, before a Verlet step, which of the two sweeps it takes
 
 private:
   void dispatch(double& sumX, double& sumY);
@@ -102,9 +113,14 @@ private:
                  double* nextX, double* nextY, double& sumX, double& sumY);
   template <SiteLayout L>
   void transitions(int r, double t);
+  template <SiteLayout L, class PerBlock>
+  void transitionsWith(int r, double t, PerBlock each);
   template <SiteLayout L>
   void frictionVector(int r);
+  template <SiteLayout L>
+  void frictionVectorRange(int r, int c0, int c1);
   void markReversals(int r);
+  void markReversalsRange(int r, int c0, int c1);
   LatticeStiffness stiffness_;
   Law law_;  // owns the per-block friction strengths
   Motion motion_;
@@ -112,6 +128,25 @@ private:
   std::int64_t steps_ = 0;
   int slipped_ = 0;
   double* firstSlip_ = nullptr;
+  // The quiet phase (quiet_phase.hpp): steps before quietUntil_ are known in closed form; their
+  // slider-force sums are computed kQuietBatch at a time from step quietBatchStart_.
+  std::int64_t quietUntil_ = 0;
+  std::int64_t quietBatchStart_ = -1;
+  std::vector<double> quietSumX_, quietSumY_;
+  // The active set (Verlet, Motion::skipIdle; fast_lattice.cpp): each row is cut into tiles of
+  // kTile columns. The springs a tile owns (its horizontal springs and those to the row above,
+  // "pieces") are kept from the step they were evaluated at (pieceStep_) while no block of the
+  // tile, of the tile to its right or of the two tiles above moved since (mobileStep_: the last
+  // step a tile held a slipping block). Only tiles whose pieces are stale are evaluated; the
+  // forces are assembled from the pieces in the kernel's order, so the results are the full
+  // sweep's bit for bit. Most tiles stale: back to the full sweep, checked every few steps.
+  static constexpr int kTile = 8;
+  int tiles_ = 0;
+  bool activeMode_ = false;
+  std::int64_t activeSetSteps_ = 0, nextModeCheck_ = 0;
+  int staleTiles_ = 0;  // tiles evaluated in the last active step
+  std::vector<double> pieceHx_, pieceHy_, pieceVx_, pieceVy_, pieceDx_, pieceDy_, pieceAx_, pieceAy_;
+  std::vector<std::int64_t> pieceStep_, mobileStep_;
   // State at t_n, stage evaluation point, RK accumulators (sum of weighted stage velocities and
   // accelerations); mobile_ is 1.0 for a slipping block, 0.0 for a stuck one.
   std::vector<double> ux_, uy_, vx_, vy_;

@@ -36,6 +36,10 @@ struct Parameters {
   Integrator integrator = Integrator::VelocityVerlet;
   double timeStepSafety = 0.25;  // default dt at most this fraction of the stability limit
   double timeStepSlip = 0.03;    // ... and at most this fraction of the slip time sqrt(m/K_s)
+  // The one switch for work that cannot change the result (-sbm_skip_idle): jump over the quiet
+  // phase before the first slip, bit for bit the stepped run. It relies on a load linear in time
+  // and a constant normal force: turn it off for anything else.
+  bool skipIdle = true;
 
   double spacing() const { return plate.length / blocksPerSide; }
   double blockMass() const { return plate.density * layerThickness * spacing() * spacing(); }
