@@ -4,6 +4,7 @@
 
 #include "gradfric/core/input_error.hpp"
 #include "gradfric/core/petsc_call.hpp"
+#include "gradfric/physics/field_options.hpp"
 #include "gradfric/physics/grading_options.hpp"
 #include "gradfric/physics/plate_options.hpp"
 #include "gradfric/sbm/lattice.hpp"
@@ -165,7 +166,8 @@ io::EnsembleLayout layoutOf(const Scene& s) {
   return layout;
 }
 
-io::SweepTable tableOf(const Sweep& sweep, const sbm::Parameters& parameters, int bands) {
+io::SweepTable tableOf(const Sweep& sweep, const sbm::Parameters& parameters, int bands,
+                       const std::shared_ptr<const PlateFields>& fields) {
   io::SweepTable table;
   table.axes = sweep.axes;
   for (const auto& q : sweep.points) {
@@ -178,7 +180,9 @@ io::SweepTable tableOf(const Sweep& sweep, const sbm::Parameters& parameters, in
   }
   table.referencePoint = sweep.reference;
   for (const auto& q : sweep.points) {  // the property fields each point uses (results file /properties)
-    const sbm::ColumnProperties c = sbm::columnProperties(parameters, gradingOf(q, bands));
+    Grading g = gradingOf(q, bands);
+    g.fields = fields;
+    const sbm::ColumnProperties c = sbm::columnProperties(parameters, g);
     table.modulus.insert(table.modulus.end(), c.modulus.begin(), c.modulus.end());
     table.muStatic.insert(table.muStatic.end(), c.muStatic.begin(), c.muStatic.end());
     table.muKinetic.insert(table.muKinetic.end(), c.muKinetic.begin(), c.muKinetic.end());
@@ -196,7 +200,11 @@ sbm::Parameters Scene::pointParameters(int p) const {
   return q;
 }
 
-Grading Scene::pointGrading(int p) const { return gradingOf(sweep.points[p], baseGrading.bands); }
+Grading Scene::pointGrading(int p) const {
+  Grading g = gradingOf(sweep.points[p], baseGrading.bands);
+  g.fields = fields;
+  return g;
+}
 
 std::optional<Scene> readScene(MPI_Comm comm, RunParameters* record) {
   Scene s;
@@ -207,13 +215,16 @@ std::optional<Scene> readScene(MPI_Comm comm, RunParameters* record) {
   base.delta = s.baseGrading.delta;
   base.property = toString(s.baseGrading.property);
   base.profile = toString(s.baseGrading.profile);
-  const Grading stiffest = stiffestGrading(buildSweep(lists, base), s.baseGrading, &s.stiffestFactor);
+  Grading stiffest = stiffestGrading(buildSweep(lists, base), s.baseGrading, &s.stiffestFactor);
   const Plate plate = readPlate(comm, record);
+  // The property fields are the same at every point (they replace the grading of their property).
+  s.fields = readPlateFields(comm, record, plate, s.baseGrading);
+  s.baseGrading.fields = stiffest.fields = s.fields;
   s.parameters = sbm::readParameters(comm, record, plate, stiffest);
   s.request = sbm::readRequest(comm, record, s.parameters);
   if (helpRequested()) return std::nullopt;
   checkSweepLists(lists, s.baseGrading);
-  checkUnusedOptions(comm, {"ensemble_", "plate_", "friction_", "sbm_", "grading_", "output"});
+  checkUnusedOptions(comm, {"ensemble_", "plate_", "friction_", "sbm_", "grading_", "field_", "output"});
 
   base.theta = s.parameters.plate.slidingAngle;
   base.sigma = s.parameters.sigmaStatic;
@@ -222,7 +233,7 @@ std::optional<Scene> readScene(MPI_Comm comm, RunParameters* record) {
   if (static_cast<double>(s.points()) * s.realisations > 2e9)
     throw InputError("too many tasks: sweep points x realisations > 2e9");
   s.layout = layoutOf(s);
-  s.table = tableOf(s.sweep, s.parameters, s.baseGrading.bands);
+  s.table = tableOf(s.sweep, s.parameters, s.baseGrading.bands, s.fields);
   for (const auto& o : record->all()) {
     io::Attribute a{stripDash(o.name), o.value, o.unit, originText(o.origin)};
     (kRunControl.count(o.name) ? s.runAttributes : s.sceneAttributes).push_back(a);

@@ -6,12 +6,14 @@
 #include "gradfric/core/options.hpp"
 #include "gradfric/ensemble/sweep.hpp"
 #include "gradfric/io/results_file.hpp"
+#include "gradfric/physics/field.hpp"
 #include "gradfric/physics/grading.hpp"
 #include "gradfric/sbm/parameters.hpp"
 
 #include <mpi.h>
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -21,6 +23,7 @@ namespace gradfric::ensemble {
 struct Scene {
   // -ensemble_* and -output* options.
   Grading baseGrading;
+  std::shared_ptr<const PlateFields> fields;  // -field_* (null: none), the same at every point
   int realisations = 1;
   std::uint64_t seed = 1;
   bool commonStreams = false;  // realisation r of every point draws from the stream (seed, 0, r)
