@@ -186,6 +186,13 @@ io::SweepTable tableOf(const Sweep& sweep, const sbm::Parameters& parameters, in
     table.modulus.insert(table.modulus.end(), c.modulus.begin(), c.modulus.end());
     table.muStatic.insert(table.muStatic.end(), c.muStatic.begin(), c.muStatic.end());
     table.muKinetic.insert(table.muKinetic.end(), c.muKinetic.begin(), c.muKinetic.end());
+    if (fields) {  // fields may vary along y: every block
+      const sbm::BlockProperties b = sbm::blockProperties(parameters, g);
+      table.blockModulus.insert(table.blockModulus.end(), b.modulus.begin(), b.modulus.end());
+      table.blockMuStatic.insert(table.blockMuStatic.end(), b.muStatic.begin(), b.muStatic.end());
+      table.blockMuKinetic.insert(table.blockMuKinetic.end(), b.muKinetic.begin(), b.muKinetic.end());
+      table.blockPressure.insert(table.blockPressure.end(), b.pressure.begin(), b.pressure.end());
+    }
   }
   return table;
 }

@@ -204,8 +204,9 @@ std::shared_ptr<const PropertyField> readField(MPI_Comm comm, RunParameters* rec
       std::ostringstream box;
       box << m.x0 << "," << m.x1 << "," << m.y0 << "," << m.y1;
       const double slack = 1e-9 * plate.length;
+      const bool png = endsWith(mapPath, ".png");  // its extent is an option, an HDF5 map's is in the file
       if (!(m.x0 <= slack && m.x1 >= plate.length - slack && m.y0 <= slack && m.y1 >= plate.length - slack))
-        throw InputError(o.fullName("map"), mapPath,
+        throw InputError(o.fullName(png ? "map_extent" : "map"), png ? box.str() : mapPath,
                          "a map whose extent covers the plate [0, " + formatReal(plate.length) + "]^2 m (it covers x0,x1,y0,y1 = " + box.str() + ")");
       for (int j = 0; j < m.ny; ++j)
         for (int i = 0; i < m.nx; ++i)
@@ -237,7 +238,8 @@ std::shared_ptr<const PlateFields> readPlateFields(MPI_Comm comm, RunParameters*
   fields.muKinetic = readField(comm, record, "mu_k", "the kinetic coefficient mu_k alone", plate);
   fields.pressure = readField(comm, record, "p", "the normal pressure p (static)", plate);
   if (both && (fields.muStatic || fields.muKinetic))
-    throw InputError(std::string(fields.muStatic ? "-field_mu_s_profile" : "-field_mu_k_profile"), "(set)",
+    throw InputError(std::string(fields.muStatic ? "-field_mu_s_profile" : "-field_mu_k_profile"),
+                     toString((fields.muStatic ? fields.muStatic : fields.muKinetic)->shape),
                      "none when -field_mu_profile is set (it gives mu_s and mu_k together)");
   if (both) fields.muStatic = fields.muKinetic = both;
   if (fields.modulus && grading.gradesModulus())
