@@ -59,6 +59,7 @@ class Ensemble:
         self.sigma = sweep["sigma"][:]
         self.property = strings(sweep["property"])
         self.profile = strings(sweep["profile"])
+        self.field_value = sweep["field_value"][:] if "field_value" in sweep else None
         self.points = len(self.delta)
         self.done = self.f["realisations/done"][:].astype(bool)
         self.scene = {k: text(v) for k, v in self.f["scene"].attrs.items()}
@@ -76,6 +77,8 @@ class Ensemble:
                 parts.append(self.property[p])
             elif axis == "profile":
                 parts.append(self.profile[p])
+            elif axis.startswith("field_") and self.field_value is not None:
+                parts.append(f"{axis[6:]}={self.field_value[p]:g}")
         return ", ".join(parts)
 
     def statistic(self, name):

@@ -217,6 +217,8 @@ ResultsFile ResultsFile::create(MPI_Comm comm, const std::string& path, const En
     column1("theta", "degree", "sliding angle between the slider velocity and the grading axis x", sweep.theta);
     column1("sigma", "1", "relative standard deviation of the local mu_s,i", sweep.sigma);
     column1("sigma_kinetic", "1", "relative standard deviation of the local mu_k,i", sweep.sigmaKinetic);
+    if (sweep.fieldValue.size() == P)  // the axis field_<parameter> names it (-ensemble_field)
+      column1("field_value", "", "value of the swept property-field parameter (the axis field_<name>)", sweep.fieldValue);
     auto strings = [&](const char* name, const char* description, const std::vector<std::string>& values) {
       size_t width = 1;
       for (const auto& v : values) width = std::max(width, v.size());

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <stdexcept>
 
 namespace gradfric {
 
@@ -157,6 +158,55 @@ std::vector<std::string> describeFields(const PlateFields& f) {
   }
   add("the normal pressure p", f.pressure);
   return lines;
+}
+
+const std::vector<std::string>& PropertyField::scalarParameters() {
+  static const std::vector<std::string> names = {"delta", "exponent", "angle", "position", "period", "duty"};
+  return names;
+}
+
+bool PropertyField::setParameter(const std::string& name, double value) {
+  double* target = name == "delta"      ? &delta
+                   : name == "exponent" ? &exponent
+                   : name == "angle"    ? &angle
+                   : name == "position" ? &position
+                   : name == "period"   ? &period
+                   : name == "duty"     ? &duty
+                                        : nullptr;
+  if (!target) return false;
+  *target = value;
+  return true;
+}
+
+std::shared_ptr<const PlateFields> withParameter(const std::shared_ptr<const PlateFields>& fields,
+                                                 const std::string& parameter, double value) {
+  for (const std::string& name : PropertyField::scalarParameters()) {
+    const std::string tail = "_" + name;
+    if (parameter.size() <= tail.size() || parameter.compare(parameter.size() - tail.size(), tail.size(), tail) != 0)
+      continue;
+    const std::string property = parameter.substr(0, parameter.size() - tail.size());
+    PlateFields copy = fields ? *fields : PlateFields{};
+    const bool together = copy.muStatic && copy.muStatic == copy.muKinetic;
+    std::shared_ptr<const PropertyField>* slot = property == "E"                  ? &copy.modulus
+                                                 : property == "p"                ? &copy.pressure
+                                                 : property == "mu" && together   ? &copy.muStatic
+                                                 : property == "mu_s" && !together ? &copy.muStatic
+                                                 : property == "mu_k" && !together ? &copy.muKinetic
+                                                                                   : nullptr;
+    if (!slot || !*slot)
+      throw std::invalid_argument("a parameter of a property field the scene sets (-field_" + property +
+                                  "_profile is not set)");
+    PropertyField changed = **slot;
+    changed.setParameter(name, value);
+    changed.blameOption = "-ensemble_field_values";
+    std::ostringstream v;
+    v << value;
+    changed.blameValue = v.str() + " (-field_" + parameter + ")";
+    *slot = std::make_shared<const PropertyField>(changed);
+    if (property == "mu") copy.muKinetic = copy.muStatic;
+    return std::make_shared<const PlateFields>(copy);
+  }
+  throw std::invalid_argument("<property>_<parameter> with parameter one of delta, exponent, angle, position, period, duty");
 }
 
 }  // namespace gradfric

@@ -24,6 +24,7 @@ struct Scene {
   // -ensemble_* and -output* options.
   Grading baseGrading;
   std::shared_ptr<const PlateFields> fields;  // -field_* (null: none), the same at every point
+  std::vector<std::shared_ptr<const PlateFields>> pointFields;  // per point with -ensemble_field (else empty)
   int realisations = 1;
   std::uint64_t seed = 1;
   bool commonStreams = false;  // realisation r of every point draws from the stream (seed, 0, r)

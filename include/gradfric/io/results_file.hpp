@@ -53,6 +53,7 @@ struct SweepTable {
   // With property fields only (else empty): P x N_b x N_b (point, block row, block column): E [Pa],
   // mean mu_s and mu_k, normal pressure p [Pa] of every block.
   std::vector<double> blockModulus, blockMuStatic, blockMuKinetic, blockPressure;
+  std::vector<double> fieldValue;  // per point: the swept field parameter (-ensemble_field), else empty
 };
 
 struct TaskOutput {

@@ -54,6 +54,9 @@ struct PropertyField {
   double scaleFor(int nx, int ny) const;
   // Whether f changes along y (the SBM's stiffness is per block column: it needs f(x) only).
   bool variesAlongY() const;
+  // The scalar parameters a sweep can set by name: delta, exponent, angle, position, period, duty.
+  static const std::vector<std::string>& scalarParameters();
+  bool setParameter(const std::string& name, double value);  // false: no such parameter
   std::string describe() const;
 };
 
@@ -63,6 +66,12 @@ struct PlateFields {
   std::shared_ptr<const PropertyField> modulus, muStatic, muKinetic, pressure;
   bool any() const { return modulus || muStatic || muKinetic || pressure; }
 };
+
+// A copy of `fields` with one scalar parameter of one property's field set: `parameter` is
+// "<property>_<name>" (mu_delta, E_exponent, p_position, mu_s_period, ...). Throws
+// std::invalid_argument naming what is wrong (no such property field, no such parameter).
+std::shared_ptr<const PlateFields> withParameter(const std::shared_ptr<const PlateFields>& fields,
+                                                 const std::string& parameter, double value);
 
 // One line per field: "property field of mu_s and mu_k: stripes, Delta = 0.3, ...".
 std::vector<std::string> describeFields(const PlateFields& fields);
