@@ -243,7 +243,7 @@ def plot_fields(ensemble, png):
         for ax, (name, label, scale) in zip(row, shown):
             im = ax.imshow(group[name][p] * scale, origin="lower", extent=[0, length, 0, length], cmap="viridis")
             fig.colorbar(im, ax=ax, label=label, shrink=0.8)
-            ax.set_title(f"{label.split()[0]}: {ensemble.label(p)}", fontsize=8)
+            ax.set_title(label.split()[0] + (f": {ensemble.label(p)}" if ensemble.axes else ""), fontsize=8)
         if has_slip:
             ax = row[len(shown)]
             done = np.flatnonzero(ensemble.done[p])
