@@ -11,6 +11,7 @@
 #include "gradfric/fem/plate_model.hpp"
 #include "gradfric/fem/plate_ts.hpp"
 #include "gradfric/fem/simulation.hpp"
+#include "gradfric/fem/sweep.hpp"
 #include "gradfric/physics/field_options.hpp"
 #include "gradfric/physics/grading_options.hpp"
 #include "gradfric/physics/plate_options.hpp"
@@ -42,6 +43,7 @@ struct FemRun {
   std::uint64_t seed = 1;
   sbm::Parameters sbmParams;
   sbm::Request sbmRequest;
+  SweepOptions sweep;  // -ensemble_ lists, -fem_sweep_*: a sweep of runs instead of one run
 };
 
 // Reads and checks every option (InputError on every rank alike); nullopt after -help.
@@ -61,13 +63,14 @@ std::optional<FemRun> readFemRun(MPI_Comm comm, RunParameters* record) {
     run.sbmParams = sbm::readParameters(comm, record, plate, run.grading);
     run.sbmRequest = sbm::readRequest(comm, record, run.sbmParams);
   }
+  run.sweep = readSweepOptions(comm, record);
   if (helpRequested()) return std::nullopt;
   checkPlateFields(run.grading, plate, static_cast<int>(run.params.nx), static_cast<int>(run.params.ny));
   readPlateTSOptions(comm);  // the -ts_ options: checked here, used by the run's TS
   if (run.compare)
-    checkUnusedOptions(comm, {"plate_", "friction_", "fem_", "grading_", "field_", "sbm_"});
+    checkUnusedOptions(comm, {"plate_", "friction_", "fem_", "grading_", "field_", "sbm_", "ensemble_"});
   else
-    checkUnusedOptions(comm, {"plate_", "friction_", "fem_", "grading_", "field_"});
+    checkUnusedOptions(comm, {"plate_", "friction_", "fem_", "grading_", "field_", "ensemble_"});
   requireFemRunLength(run.params, run.grading, record);  // refuses a dt above the stable step, an endless run
   return run;
 }
@@ -153,6 +156,10 @@ int main(int argc, char** argv) {
     RunParameters record;
     const std::optional<FemRun> run = readFemRun(comm, &record);  // every option, checked
     if (!run) return;                                             // -help
+    if (run->sweep.requested) {                                   // a sweep of runs over groups of ranks
+      const FemSweep sweep = buildFemSweep(comm, run->params, run->grading, run->sweep, run->compare, record);
+      return runFemSweep(comm, sweep, record);
+    }
     OutputFiles output(comm, run->params);                        // planned before any work
     PlateModel model(comm, run->params, run->grading);
     printPlan(comm, *run, model, &record);

@@ -17,7 +17,11 @@ RESULTS.h5 is a spring-block ensemble file (gradfric) or a finite-element histor
   <name>_detachment.gif     animation of the sigma_x/p snapshots (the Supporting Information videos)
 
 FEM history files given with --fem are added to the mu(t) and variation plots (their Delta is
-read from their /scene). Needs Debian's python3-h5py, python3-matplotlib (and python3-pil
+read from their /scene). A FEM sweep file (gradfric-fem with the -ensemble_ sweep lists, format
+gradfric-fem-sweep, the ensemble's layout) may be plotted alone or given with --fem next to a
+spring-block ensemble: each FEM point is then paired with the spring-block point of the same
+grading (property, profile, Delta) and angle, the pairs are printed, and a sweep with a point
+that has no partner, or made for another plate (-plate_*, -grading_bands), is refused (exit 2). Needs Debian's python3-h5py, python3-matplotlib (and python3-pil
 for the animation), installed by scripts/setup.sh.
 """
 import argparse
@@ -44,14 +48,26 @@ def strings(dataset):
     return [text(v) for v in dataset[:]]
 
 
+ENSEMBLE_FORMATS = {"gradfric-sbm-ensemble": "SBM", "gradfric-fem-sweep": "FEM"}
+
+
+def refuse(message):
+    """Input the tool cannot use: one line on stderr, exit code 2 (the drivers' rule)."""
+    print(f"gradfric_plot: error: {message}", file=sys.stderr)
+    sys.exit(2)
+
+
 class Ensemble:
-    """A spring-block ensemble results file (layout: docs/ensemble.md)."""
+    """A results file with the ensemble layout (docs/ensemble.md): a spring-block ensemble
+    (gradfric) or a FEM sweep (gradfric-fem, one run per point; docs/fem.md)."""
 
     def __init__(self, path):
         self.path = path
         self.f = h5py.File(path, "r")
-        if text(self.f.attrs.get("format", "")) != "gradfric-sbm-ensemble":
-            raise ValueError(f"{path} is not a gradfric spring-block ensemble file")
+        self.format = text(self.f.attrs.get("format", ""))
+        if self.format not in ENSEMBLE_FORMATS:
+            raise ValueError(f"{path} is not a gradfric ensemble or FEM sweep file")
+        self.model = ENSEMBLE_FORMATS[self.format]
         sweep = self.f["sweep"]
         self.axes = [a for a in text(sweep.attrs.get("axes", "")).split(",") if a]
         self.delta = sweep["delta"][:]
@@ -118,15 +134,58 @@ class FemHistory:
         self.thickness = self.parameters.get("plate_H", self.parameters.get("-plate_H", self.parameters.get("fem_H", "")))
 
 
-def plot_histories(ensemble, fems, png):
+def pair_key(ensemble, p, digits=9):
+    """What a point's physics depends on across the models: its grading and its angle (every
+    non-graded point is the same plate whatever its nominal property or profile)."""
+    theta = round(float(ensemble.theta[p]), digits)
+    delta = round(float(ensemble.delta[p]), digits)
+    if ensemble.profile[p] == "none" or delta == 0.0:
+        return ("none", "none", 0.0, theta)
+    return (ensemble.property[p], ensemble.profile[p], delta, theta)
+
+
+def pair_points(sbm, fem):
+    """[(FEM point, SBM point)] for every point of the FEM sweep; refuses (exit 2) a sweep of
+    another plate or with a point the spring-block file does not have."""
+    names = [k for k in fem.scene if k.startswith("plate_") or k == "grading_bands"]
+    differ = [f"-{k}: FEM {fem.scene[k]}, SBM {sbm.scene[k]}" for k in names
+              if k in sbm.scene and sbm.scene[k] != fem.scene[k]]
+    if differ:
+        refuse(f"{fem.path} and {sbm.path} do not describe the same plate: " + "; ".join(differ))
+    by_key = {}
+    for q in range(sbm.points):
+        by_key.setdefault(pair_key(sbm, q), q)
+    pairs, missing = [], []
+    for p in range(fem.points):
+        q = by_key.get(pair_key(fem, p))
+        if q is None:
+            missing.append(f"point {p} ({fem.label(p)}, {fem.property[p]} {fem.profile[p]}, theta={fem.theta[p]:g})")
+        else:
+            pairs.append((p, q))
+    if missing:
+        refuse(f"{fem.path} does not match {sbm.path}: no spring-block point with the grading and angle of FEM "
+               + ", ".join(missing))
+    return pairs
+
+
+def print_pairs(sbm, fem, pairs):
+    rel = {m: (m.statistic("mu_s_relative") * 100, m.statistic("mu_s_mean")) for m in (sbm, fem)}
+    print(f"gradfric_plot: {len(pairs)} FEM point(s) paired with spring-block points (mu_s, relative variation):")
+    for p, q in pairs:
+        print(f"  FEM {p} <-> SBM {q}  {fem.label(p):<24s} FEM {rel[fem][1][p]:.6f} ({rel[fem][0][p]:+.3f} %)"
+              f"  SBM {rel[sbm][1][q]:.6f} ({rel[sbm][0][q]:+.3f} %)")
+
+
+def plot_histories(ensemble, fems, png, sweeps=()):
     fig, ax = plt.subplots(figsize=(7.5, 4.8))
-    if ensemble is not None:
-        colours = plt.cm.viridis(np.linspace(0, 0.9, max(ensemble.points, 1)))
-        for p in range(ensemble.points):
-            runs = ensemble.histories(p)
+    for source in ([ensemble] if ensemble is not None else []) + list(sweeps):
+        colours = plt.cm.viridis(np.linspace(0, 0.9, max(source.points, 1)))
+        style = "--" if source.model == "FEM" else "-"
+        for p in range(source.points):
+            runs = source.histories(p)
             for k, (t, mu) in enumerate(runs[:3]):  # a few realisations: the spread is visible
-                ax.plot(t * 1e3, mu, color=colours[p], lw=1.0 if k == 0 else 0.5, alpha=1.0 if k == 0 else 0.5,
-                        label=f"SBM {ensemble.label(p)}" if k == 0 else None)
+                ax.plot(t * 1e3, mu, style, color=colours[p], lw=1.0 if k == 0 else 0.5, alpha=1.0 if k == 0 else 0.5,
+                        label=f"{source.model} {source.label(p)}" if k == 0 else None)
     for fem in fems:
         label = f"FEM Delta={fem.delta:g}" + (f", H={fem.thickness}" if fem.thickness else "")
         ax.plot(fem.time * 1e3, fem.mu, "--", lw=1.2, label=label)
@@ -146,24 +205,25 @@ def series_key(ensemble, p):
     return (ensemble.theta[p], ensemble.sigma[p], ensemble.property[p], ensemble.profile[p])
 
 
-def plot_variation(ensemble, fems, png):
+def plot_variation(ensemble, fems, png, sweeps=()):
     fig, axes = plt.subplots(1, 2, figsize=(12, 4.8))
     for ax, name in zip(axes, ("mu_s", "mu_k")):
-        if ensemble is not None:
-            relative = ensemble.statistic(f"{name}_relative") * 100
-            error = ensemble.statistic(f"{name}_relative_error") * 100
+        for source in ([ensemble] if ensemble is not None else []) + list(sweeps):
+            relative = source.statistic(f"{name}_relative") * 100
+            error = source.statistic(f"{name}_relative_error") * 100
             groups = {}
-            for p in range(ensemble.points):
-                groups.setdefault(series_key(ensemble, p), []).append(p)
+            for p in range(source.points):
+                groups.setdefault(series_key(source, p), []).append(p)
             for key, members in groups.items():
-                members = sorted(members, key=lambda p: ensemble.delta[p])
-                d = ensemble.delta[members]
+                members = sorted(members, key=lambda p: source.delta[p])
+                d = source.delta[members]
                 y, e = relative[members], error[members]
                 theta, sigma, prop, profile = key
-                label = f"SBM {prop} {profile}" + (f", theta={theta:g}" if len(groups) > 1 else "")
-                ax.plot(d, y, "o-", label=label)
+                label = f"{source.model} {prop} {profile}" + (f", theta={theta:g}" if len(groups) > 1 else "")
+                ax.plot(d, y, "o-" if source.model == "SBM" else "s--", label=label)
                 # 95 % band of the relative variation (propagated standard errors x 1.96)
-                ax.fill_between(d, y - 1.96 * e, y + 1.96 * e, alpha=0.2)
+                if source.model == "SBM":
+                    ax.fill_between(d, y - 1.96 * e, y + 1.96 * e, alpha=0.2)
         if fems:
             reference = [f for f in fems if f.delta == 0.0]
             if reference:
@@ -338,7 +398,7 @@ def main(argv=None):
     os.makedirs(out, exist_ok=True)
     prefix = os.path.join(out, args.prefix or os.path.splitext(os.path.basename(args.results))[0])
 
-    ensemble, fems = None, []
+    ensemble, fems, sweeps = None, [], []
     try:
         ensemble = Ensemble(args.results)
     except (ValueError, KeyError, OSError):
@@ -348,15 +408,26 @@ def main(argv=None):
             sys.exit(f"gradfric_plot: {args.results} is neither a gradfric ensemble nor a FEM history ({error})")
     for path in args.fem:
         try:
+            sweeps.append(Ensemble(path))
+            if sweeps[-1].model != "FEM":
+                refuse(f"--fem {path} is a spring-block ensemble, not a FEM sweep or history")
+            continue
+        except (ValueError, KeyError, OSError):
+            pass
+        try:
             fems.append(FemHistory(path))
         except (ValueError, KeyError, OSError) as error:
-            sys.exit(f"gradfric_plot: --fem {path} is not a gradfric-fem history ({error})")
+            sys.exit(f"gradfric_plot: --fem {path} is not a gradfric-fem history or sweep ({error})")
+    if sweeps and (ensemble is None or ensemble.model != "SBM"):
+        refuse("a FEM sweep given with --fem is paired with a spring-block ensemble: give that one first")
+    for sweep in sweeps:
+        print_pairs(ensemble, sweep, pair_points(ensemble, sweep))
 
-    written = [plot_histories(ensemble, fems, prefix + "_mu_t.png")]
+    written = [plot_histories(ensemble, fems, prefix + "_mu_t.png", sweeps)]
     if ensemble is not None:
         # A relative variation needs a non-graded reference point in the sweep.
         if len(set(ensemble.delta)) > 1 and np.isfinite(ensemble.statistic("mu_s_relative")).sum() > 1:
-            written.append(plot_variation(ensemble, fems, prefix + "_variation.png"))
+            written.append(plot_variation(ensemble, fems, prefix + "_variation.png", sweeps))
         written.append(plot_first_slip(ensemble, prefix + "_first_slip.png"))
         written.append(plot_fields(ensemble, prefix + "_fields.png"))
         point = default_point(ensemble) if args.point is None else args.point

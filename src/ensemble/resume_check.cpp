@@ -6,6 +6,7 @@
 #include "gradfric/io/collective_file.hpp"
 
 #include <csignal>
+#include <set>
 #include <cstdio>
 #include <cstring>
 #include <string>
@@ -16,8 +17,40 @@ namespace gradfric::ensemble {
 
 namespace {
 
-// "" if the scene and layout match; else the differences, "; "-separated.
-std::string sceneDifferences(const Scene& scene, const io::ResultsFile& file) {
+// What an extension may change: the count (or the target) and the swept lists.
+bool extensionMayChange(const std::string& name) {
+  static const std::set<std::string> names = {
+      "ensemble_realisations", "ensemble_delta",       "ensemble_theta",      "ensemble_sigma",
+      "ensemble_property",     "ensemble_profile",     "ensemble_target",     "ensemble_target_type",
+      "ensemble_target_min",   "ensemble_target_max"};
+  return names.count(name) > 0;
+}
+
+// Extension: the file's points are the first points of the scene's sweep, in order, and its
+// realisations the first of each point. "" if so.
+std::string extensionMismatch(const Scene& scene, const io::ResultsFile& file) {
+  const auto& l = file.layout();
+  if (l.points > scene.points())
+    return "it has " + std::to_string(l.points) + " sweep points, the scene " + std::to_string(scene.points()) +
+           " (an extension adds points, never removes them)";
+  if (l.realisations > scene.realisations)
+    return "it has " + std::to_string(l.realisations) + " realisations per point, the scene " +
+           std::to_string(scene.realisations) + " (an extension adds realisations, never removes them)";
+  const io::SweepTable& old = file.sweep();
+  const io::SweepTable& now = scene.table;
+  for (int p = 0; p < l.points; ++p)
+    if (old.delta[p] != now.delta[p] || old.theta[p] != now.theta[p] || old.sigma[p] != now.sigma[p] ||
+        old.sigmaKinetic[p] != now.sigmaKinetic[p] || old.property[p] != now.property[p] ||
+        old.profile[p] != now.profile[p])
+      return "its point " + std::to_string(p) + " is not point " + std::to_string(p) +
+             " of the scene's sweep (the file's points must come first, in order: append values to the outermost "
+             "swept list)";
+  return "";
+}
+
+// "" if the scene and layout match; else the differences, "; "-separated. An extension may
+// change the options extensionMayChange names and grow the sweep and the count.
+std::string sceneDifferences(const ResumeTarget& scene, const io::ResultsFile& file, bool extension = false) {
   std::string differences;
   auto add = [&](const std::string& text) { differences += (differences.empty() ? "" : "; ") + text; };
   const std::vector<io::Attribute> stored = file.sceneAttributes();
@@ -27,6 +60,7 @@ std::string sceneDifferences(const Scene& scene, const io::ResultsFile& file) {
     return nullptr;
   };
   for (const auto& a : scene.sceneAttributes) {
+    if (extension && extensionMayChange(a.name)) continue;
     const io::Attribute* s = findStored(a.name);
     if (!s) add("-" + a.name + " = " + a.value + " (not in the file)");
     else if (s->value != a.value) add("-" + a.name + ": file " + s->value + ", now " + a.value);
@@ -34,11 +68,13 @@ std::string sceneDifferences(const Scene& scene, const io::ResultsFile& file) {
   for (const auto& s : stored) {
     bool found = false;
     for (const auto& a : scene.sceneAttributes) found = found || a.name == s.name;
-    if (!found) add("-" + s.name + " = " + s.value + " (in the file only)");
+    if (!found && !(extension && extensionMayChange(s.name))) add("-" + s.name + " = " + s.value + " (in the file only)");
   }
   const auto& l = file.layout();
   const auto& want = scene.layout;
-  if (l.points != want.points || l.realisations != want.realisations || l.historyCapacity != want.historyCapacity ||
+  if (l.format != want.format) add("format: file " + l.format + ", now " + want.format);
+  const bool sameCount = extension || (l.points == want.points && l.realisations == want.realisations);
+  if (!sameCount || l.historyCapacity != want.historyCapacity ||
       l.mapSide != want.mapSide || l.firstSlipMap != want.firstSlipMap || l.frictionFields != want.frictionFields ||
       l.snapshotTimes.size() != want.snapshotTimes.size())
     add("layout (points, realisations, history capacity or maps)");
@@ -46,9 +82,10 @@ std::string sceneDifferences(const Scene& scene, const io::ResultsFile& file) {
 }
 
 // Rank 0: what is wrong with the file, or "".
-std::string problemWith(const Scene& scene, const std::string& path) {
-  const char* again = " (start again with -output_overwrite)";
-  if (!io::isHdf5File(path)) return "it is not an HDF5 file" + std::string(again);
+// `scene` (the spring-block scene) is needed for an extension only.
+std::string problemWith(const ResumeTarget& target, const Scene* scene, const std::string& path, bool extension) {
+  const std::string again = " (start again with " + target.overwriteOption + ")";
+  if (!io::isHdf5File(path)) return "it is not an HDF5 file" + again;
   {
     io::H5File raw(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT));
     if (!raw.valid()) {
@@ -61,7 +98,7 @@ std::string problemWith(const Scene& scene, const std::string& path) {
       return "it is damaged: its root group cannot be read" + (reason.empty() ? "" : " (" + reason + ")") + again;
     }
     if (hasFormat == 0)
-      return "it is not a gradfric ensemble results file (no attribute format = " + std::string(io::kFormatName) +
+      return "it is not a gradfric ensemble results file (no attribute format = " + target.layout.format +
              ": a file of another program, or a damaged one)" + again;
   }
   try {
@@ -71,10 +108,18 @@ std::string problemWith(const Scene& scene, const std::string& path) {
     file.readRealisationReal("mu_s");
     file.readRealisationReal("mu_k");
     file.readPeakConfirmed();
-    const std::string differences = sceneDifferences(scene, file);
+    const std::string differences = sceneDifferences(target, file, extension);
+    const std::string mismatch = extension && scene && differences.empty() ? extensionMismatch(*scene, file) : "";
+    const bool complete = file.complete();
     file.close();
+    if (extension && !differences.empty())
+      return "it was made with another scene, beyond what an extension may change (the count, the target, "
+             "appended sweep values): " + differences;
+    if (!mismatch.empty()) return mismatch;
+    if (extension && !complete)
+      return "it is not finished (attribute complete = 0): finish it with -ensemble_resume first";
     if (!differences.empty())
-      return "it was started with another scene (run that scene, or start again with -output_overwrite): " +
+      return "it was started with another scene (run that scene, or start again with " + target.overwriteOption + "): " +
              differences;
   } catch (const io::Hdf5Error& e) {
     // Format and version problems come as sentences; a failed HDF5 call means a damaged file.
@@ -99,16 +144,18 @@ void onTimeout(int) {
   _exit(2);
 }
 
-std::string problemWithin(const Scene& scene, const std::string& path, unsigned seconds) {
+std::string problemWithin(const ResumeTarget& target, const Scene* scene, const std::string& path,
+                          unsigned seconds, bool extension) {
   std::snprintf(timeoutMessage, sizeof timeoutMessage,
-                "gradfric: error: invalid option -ensemble_resume (continue %s): it is damaged: HDF5 did not finish "
-                "reading it within %u s (start again with -output_overwrite)\n",
-                path.c_str(), seconds);
+                "gradfric: error: invalid option %s (continue %s): it is damaged: HDF5 did not finish "
+                "reading it within %u s (start again with %s)\n",
+                extension ? "-ensemble_extend" : target.resumeOption.c_str(), path.c_str(), seconds,
+                target.overwriteOption.c_str());
   struct sigaction action {}, previous{};
   action.sa_handler = onTimeout;
   sigaction(SIGALRM, &action, &previous);
   alarm(seconds);
-  const std::string problem = io::withoutHdf5Printing([&] { return problemWith(scene, path); });
+  const std::string problem = io::withoutHdf5Printing([&] { return problemWith(target, scene, path, extension); });
   alarm(0);
   sigaction(SIGALRM, &previous, nullptr);
   return problem;
@@ -116,16 +163,40 @@ std::string problemWithin(const Scene& scene, const std::string& path, unsigned 
 
 }  // namespace
 
-void checkResumable(MPI_Comm comm, const Scene& scene, const std::string& path) {
+namespace {
+
+ResumeTarget targetOf(const Scene& scene) {
+  return ResumeTarget{scene.sceneAttributes, scene.layout, "-ensemble_resume", "-output_overwrite"};
+}
+
+// Rank 0 checks, every rank throws the same InputError. `scene`: for an extension only.
+void checkFile(MPI_Comm comm, const ResumeTarget& target, const Scene* scene, const std::string& path,
+               bool extension) {
   int rank = 0;
   MPI_Comm_rank(comm, &rank);
   std::string problem;
-  if (rank == 0) problem = problemWithin(scene, path, 60);
+  if (rank == 0) problem = problemWithin(target, scene, path, 60, extension);
   int length = static_cast<int>(problem.size());
   MPI_Bcast(&length, 1, MPI_INT, 0, comm);
   problem.resize(length);
   if (length > 0) MPI_Bcast(problem.data(), length, MPI_CHAR, 0, comm);
-  if (!problem.empty()) throw InputError("invalid option -ensemble_resume (continue " + path + "): " + problem);
+  if (!problem.empty())
+    throw InputError("invalid option " + (extension ? std::string("-ensemble_extend (extend ") : target.resumeOption + " (continue ") +
+                     path + "): " + problem);
+}
+
+}  // namespace
+
+void checkResumable(MPI_Comm comm, const Scene& scene, const std::string& path) {
+  checkFile(comm, targetOf(scene), &scene, path, false);
+}
+
+void checkResumable(MPI_Comm comm, const ResumeTarget& target, const std::string& path) {
+  checkFile(comm, target, nullptr, path, false);
+}
+
+void checkExtendable(MPI_Comm comm, const Scene& scene, const std::string& path) {
+  checkFile(comm, targetOf(scene), &scene, path, true);
 }
 
 }  // namespace gradfric::ensemble

@@ -4,6 +4,7 @@
 
 #include "gradfric/core/input_error.hpp"
 #include "gradfric/core/petsc_call.hpp"
+#include "gradfric/ensemble/sweep_options.hpp"
 #include "gradfric/physics/field_options.hpp"
 #include "gradfric/physics/grading_options.hpp"
 #include "gradfric/physics/property_sampler.hpp"
@@ -26,7 +27,15 @@ namespace {
 // resumed or re-ranked run of the same scene writes the same /scene.
 const std::set<std::string> kRunControl = {"-output",          "-output_overwrite",    "-ensemble_resume",
                                            "-ensemble_monitor", "-ensemble_schedule",   "-ensemble_abort_after",
-                                           "-ensemble_dry_run"};
+                                           "-ensemble_dry_run", "-ensemble_extend"};
+
+// Options that did not exist before precision on demand and file extension: not stored at all
+// while they are off, so that the files of scenes without them stay as they were, byte for byte.
+bool storedOption(const std::string& name, const Scene& s) {
+  if (name.rfind("-ensemble_target", 0) == 0) return s.target.active();
+  if (name == "-ensemble_extend") return s.extend;
+  return true;
+}
 
 // The largest modulus factor a grading reaches: the stiffest band sets the stable time step.
 double stiffestFactorOf(const Grading& g) {
@@ -61,29 +70,66 @@ int historyCapacity(const sbm::Parameters& p, const sbm::Request& q) {
   return static_cast<int>(samples) + 2;
 }
 
+// -ensemble_target and its companions: a precision instead of a count.
+void checkTarget(const OptionReader& ens, double target, const std::string& type, PetscInt first, PetscInt cap,
+                 PetscInt realisations, Scene* s) {
+  if (!(target >= 0.0 && target < 1.0))
+    throw InputError(ens.fullName("target"), formatReal(target),
+                     "0 (no target) or a half-width 0 < target < 1 (a fraction for relative and variation)");
+  if (target == 0.0) {
+    for (const char* name : {"target_type", "target_min", "target_max"})
+      if (ens.wasSet(name))
+        throw InputError(ens.fullName(name), "(set)", "only together with -ensemble_target > 0");
+    return;
+  }
+  // A scene's count becomes the first batch of a target run (so a target can be added to it).
+  if (ens.wasSet("realisations")) {
+    if (ens.wasSet("target_min"))
+      throw InputError(ens.fullName("target_min"), std::to_string(first),
+                       "not together with -ensemble_realisations under -ensemble_target (both set the first batch)");
+    if (realisations < 2)
+      throw InputError(ens.fullName("realisations"), std::to_string(realisations),
+                       "at least 2 under -ensemble_target (it is the first batch)");
+    first = realisations;
+  }
+  if (first > cap)
+    throw InputError(ens.fullName(ens.wasSet("realisations") ? "realisations" : "target_min"), std::to_string(first),
+                     "at most -ensemble_target_max = " + std::to_string(cap) + " (the first batch)");
+  s->target.kind = targetKindOf(type);
+  s->target.halfWidth = target;
+  s->target.first = static_cast<int>(first);
+  s->target.cap = static_cast<int>(cap);
+}
+
 // -ensemble_* and -output*: read in the order -help lists them.
 SweepLists readEnsembleOptions(MPI_Comm comm, RunParameters* record, Scene* s) {
   OptionReader ens(comm, "ensemble_", "Ensemble of spring-block realisations", record);
   const PetscInt realisations =
       ens.integer("realisations", 1, 1, 10000000, "1", "realisations R per sweep point (new local friction draws each)");
+  const double target = ens.real(
+      "target", 0.0, "1",
+      "precision on demand: run batches until the 95 % CI half-width of every point's -ensemble_target_type "
+      "quantity is at most this (0: a fixed count, -ensemble_realisations)");
+  const std::string targetType = ens.choice(
+      "target_type", "absolute", {"absolute", "relative", "variation"},
+      "what -ensemble_target bounds: the CI of mean mu_s, that CI over |mean mu_s|, or the CI of the relative "
+      "variation (mu_s - mu_s,0) / mu_s,0 against the non-graded point");
+  const PetscInt targetMin =
+      ens.integer("target_min", 8, 2, 10000000, "1",
+                  "with -ensemble_target: realisations per point of the first batch (-ensemble_realisations if set)");
+  const PetscInt targetMax =
+      ens.integer("target_max", 200, 2, 10000000, "1",
+                  "with -ensemble_target: at most this many realisations per point");
   const PetscInt seed = ens.integer("seed", 1, 0, PETSC_MAX_INT, "1", "scene seed: a task's random stream is (seed, point, realisation)");
-  SweepLists lists;
-  lists.delta = ens.realList("delta", {}, "1", "sweep of the grading amplitude Delta (empty: -grading_delta alone)");
-  lists.theta = ens.realList("theta", {}, "degree", "sweep of the sliding angle (empty: -sbm_theta alone)");
-  lists.sigma = ens.realList("sigma", {}, "1",
-                             "sweep of the relative dispersion, sets sigma_s and sigma_k (empty: -sbm_sigma_s/_k)");
-  lists.property = ens.choiceList("property", {}, {"E", "friction", "both"},
-                                  "sweep of the graded property (empty: -grading_property alone)");
-  lists.profile = ens.choiceList("profile", {}, {"none", "linear", "triangular"},
-                                 "sweep of the grading profile (empty: -grading_profile alone)");
+  SweepLists lists = readSweepLists(ens);  // shared with the FEM sweep
   lists.fieldParameter = ens.text("field", "",
                                   "sweep of one scalar parameter of a property field, <property>_<parameter>: "
                                   "mu_delta, E_exponent, mu_period, p_position, ... (docs/fields.md)");
   lists.fieldValues = ens.realList("field_values", {}, "(the parameter's)", "the values of -ensemble_field, innermost loop");
   s->commonStreams = ens.flag(
-      "common_streams", false,
+      "common_streams", target > 0.0 && targetType == "variation",
       "common random numbers: realisation r of every sweep point draws from the stream (seed, 0, r); the "
-      "relative variations then use paired errors");
+      "relative variations then use paired errors (default: on under -ensemble_target_type variation)");
   s->history = ens.flag("history", true, "store the mu(t) history of every realisation");
   s->frictionFields = ens.flag(
       "friction_fields", false,
@@ -95,6 +141,9 @@ SweepLists readEnsembleOptions(MPI_Comm comm, RunParameters* record, Scene* s) {
   s->monitor =
       ens.flag("monitor", interactive != 0, "print a progress line per finished task (default: on for a terminal)");
   s->resume = ens.flag("resume", false, "continue an interrupted run of the same scene (skips finished tasks)");
+  s->extend = ens.flag("extend", false,
+                       "extend the finished -output file: more realisations or appended sweep points (or a tighter "
+                       "target); what it holds is kept, not run again");
   s->schedule = ens.choice("schedule", "dynamic", {"dynamic", "static"},
                            "task distribution: shared counter (one-sided MPI) or round robin");
   s->dryRun = ens.flag("dry_run", false, "check the scene and print the plan, run nothing, write nothing");
@@ -104,13 +153,13 @@ SweepLists readEnsembleOptions(MPI_Comm comm, RunParameters* record, Scene* s) {
   OptionReader out(comm, "", "Results file", record);
   s->output = out.text("output", "gradfric_sbm.h5", "results file (parallel HDF5; see docs/ensemble.md)");
   s->overwrite = out.flag("output_overwrite", false, "replace an existing results file");
-  for (double d : lists.delta)  // before the stable time step is computed from the sweep
-    if (!(std::fabs(d) < 1.0)) throw InputError(ens.fullName("delta"), formatReal(d), "values with |Delta| < 1");
   if (helpRequested()) return lists;
   ens.requireAtLeast("realisations", realisations, 1);
   ens.requireAtLeast("seed", seed, 0);
   ens.requireAtLeast("abort_after", abortAfter, 0);
+  checkTarget(ens, target, targetType, targetMin, targetMax, realisations, s);
   s->realisations = static_cast<int>(realisations);
+  if (s->target.active()) s->realisations = s->target.cap;  // the file holds up to the cap
   s->seed = static_cast<std::uint64_t>(seed);
   s->abortAfter = static_cast<long>(abortAfter);
   return lists;
@@ -148,20 +197,6 @@ std::vector<std::shared_ptr<const PlateFields>> fieldsPerValue(SweepLists* lists
   return perValue;
 }
 
-// The lists make sense together with the base grading.
-void checkSweepLists(const SweepLists& lists, const Grading& base) {
-  auto name = [](const char* n) { return std::string("-ensemble_") + n; };
-  for (double t : lists.theta)
-    if (!std::isfinite(t)) throw InputError(name("theta"), formatReal(t), "finite angles [degree]");
-  for (double s : lists.sigma)
-    if (!(s >= 0.0 && s <= 0.5)) throw InputError(name("sigma"), formatReal(s), "values with 0 <= sigma <= 0.5");
-  const bool anyProfile = base.profile != GradingProfile::None ||
-                          std::any_of(lists.profile.begin(), lists.profile.end(), [](auto& p) { return p != "none"; });
-  const char* needProfile = "only with a grading profile: set -grading_profile linear or triangular (it is none)";
-  if (!lists.delta.empty() && !anyProfile) throw InputError(name("delta"), "(a list)", needProfile);
-  if (!lists.property.empty() && !anyProfile) throw InputError(name("property"), "(a list)", needProfile);
-}
-
 // The stiffest point of the sweep sets the stable time step: one dt for the whole sweep.
 Grading stiffestGrading(const Sweep& sweep, const Grading& base, double* factor) {
   Grading stiffest = base;
@@ -190,6 +225,10 @@ io::EnsembleLayout layoutOf(const Scene& s) {
                            "mu_k_std",       "mu_k_stderr",   "mu_k_ci95_low",       "mu_k_ci95_high",
                            "mu_k_relative",  "mu_k_relative_error"};
   layout.statisticsInteger = {"finished", "mu_s_count", "mu_k_count", "peaks_unconfirmed"};
+  if (s.target.active()) {  // what the target asked and what each point reached
+    layout.statisticsReal.push_back("target_half_width");
+    layout.statisticsInteger.push_back("target_met");
+  }
   const double cells = static_cast<double>(layout.mapSide) * layout.mapSide;
   const double bytes = static_cast<double>(s.tasks()) *
                        (4.0 * layout.historyCapacity +  // time, mu, force_x, force_y
@@ -199,34 +238,24 @@ io::EnsembleLayout layoutOf(const Scene& s) {
   if (bytes > 64e9)
     throw InputError("results file would need " + formatReal(bytes / 1e9) +
                      " GB: store fewer observables (-friction_observables, -sbm_snapshot_times), a coarser "
-                     "-friction_history_interval or -ensemble_history false");
+                     "-friction_history_interval or -ensemble_history false" +
+                     std::string(s.target.active() ? " (the file is laid out for -ensemble_target_max realisations)"
+                                                   : ""));
   return layout;
 }
 
 io::SweepTable tableOf(const Scene& s) {
-  const Sweep& sweep = s.sweep;
-  io::SweepTable table;
-  table.axes = sweep.axes;
-  for (const auto& q : sweep.points) {
-    table.delta.push_back(q.delta);
-    table.theta.push_back(q.theta);
-    table.sigma.push_back(q.sigma);
-    table.sigmaKinetic.push_back(q.sigmaKinetic);
-    table.property.push_back(q.property);
-    table.profile.push_back(q.profile);
-  }
-  table.referencePoint = sweep.reference;
-  for (const auto& q : sweep.points)
+  io::SweepTable table = sweepColumns(s.sweep);  // shared with the FEM sweep
+  for (const auto& q : s.sweep.points)
     if (q.fieldSwept) table.fieldValue.push_back(q.fieldValue);
   for (int p = 0; p < s.points(); ++p) {  // the property fields each point uses (results file /properties)
     const Grading g = s.pointGrading(p);
-    const sbm::Parameters& parameters = s.parameters;
-    const sbm::ColumnProperties c = sbm::columnProperties(parameters, g);
+    const sbm::ColumnProperties c = sbm::columnProperties(s.parameters, g);
     table.modulus.insert(table.modulus.end(), c.modulus.begin(), c.modulus.end());
     table.muStatic.insert(table.muStatic.end(), c.muStatic.begin(), c.muStatic.end());
     table.muKinetic.insert(table.muKinetic.end(), c.muKinetic.begin(), c.muKinetic.end());
     if (g.fields) {  // fields may vary along y: every block
-      const sbm::BlockProperties b = sbm::blockProperties(parameters, g);
+      const sbm::BlockProperties b = sbm::blockProperties(s.parameters, g);
       table.blockModulus.insert(table.blockModulus.end(), b.modulus.begin(), b.modulus.end());
       table.blockMuStatic.insert(table.blockMuStatic.end(), b.muStatic.begin(), b.muStatic.end());
       table.blockMuKinetic.insert(table.blockMuKinetic.end(), b.muKinetic.begin(), b.muKinetic.end());
@@ -305,9 +334,16 @@ std::optional<Scene> readScene(MPI_Comm comm, RunParameters* record) {
     }
   if (static_cast<double>(s.points()) * s.realisations > 2e9)
     throw InputError("too many tasks: sweep points x realisations > 2e9");
+  if (s.target.active() && s.target.kind == TargetKind::Variation)
+    for (int p = 0; p < s.points(); ++p)
+      if (s.sweep.reference[p] < 0)
+        throw InputError("-ensemble_target_type", "variation",
+                         "sweeps with a non-graded point for every graded one (point " + std::to_string(p) +
+                             " has none: add 0 to -ensemble_delta)");
   s.layout = layoutOf(s);
   s.table = tableOf(s);
   for (const auto& o : record->all()) {
+    if (!storedOption(o.name, s)) continue;
     io::Attribute a{stripDash(o.name), o.value, o.unit, originText(o.origin)};
     (kRunControl.count(o.name) ? s.runAttributes : s.sceneAttributes).push_back(a);
   }

@@ -20,6 +20,8 @@ io::OutputPlan planResultsFile(MPI_Comm comm, const Scene& scene) {
   request.overwriteOption = "-output_overwrite";
   request.resume = scene.resume;
   request.resumeOption = "-ensemble_resume";
+  request.extend = scene.extend;
+  request.extendOption = "-ensemble_extend";
   return io::OutputPlan::decide(comm, request);
 }
 
@@ -27,6 +29,18 @@ io::ResultsFile openResultsFile(MPI_Comm comm, const Scene& scene, const io::Out
   int size = 1;
   GF_CALL_MPI(MPI_Comm_size(comm, &size));
   io::ResultsFile file = [&] {
+    if (plan.start() == io::OutputStart::ExtendFinished) {
+      checkExtendable(comm, scene, plan.path());
+      GF_CALL(PetscPrintf(comm, "Extending %s: writing %s with its tasks (renamed over it when the run completes)\n",
+                          plan.path().c_str(), plan.workPath().c_str()));
+      io::ResultsFile extended =
+          io::ResultsFile::create(comm, plan.workPath(), scene.layout, scene.table, scene.sceneAttributes);
+      extended.copyTasksFrom(plan.path());
+      long kept = 0;
+      for (auto flag : extended.finishedTasks()) kept += flag ? 1 : 0;
+      GF_CALL(PetscPrintf(comm, "%ld task(s) kept from %s\n", kept, plan.path().c_str()));
+      return extended;
+    }
     if (plan.start() == io::OutputStart::Fresh) {
       GF_CALL(PetscPrintf(comm, "Writing %s (renamed to %s when the run completes)\n", plan.workPath().c_str(),
                           plan.path().c_str()));
@@ -65,13 +79,20 @@ std::vector<int> integerColumn(const std::vector<PointStatistics>& stats, Get ge
 }  // namespace
 
 std::vector<PointStatistics> writeStatistics(io::ResultsFile& file, const Scene& scene) {
+  return writeStatistics(file, scene.realisations, scene.sweep.reference, scene.commonStreams,
+                         scene.target.active() ? &scene.target : nullptr);
+}
+
+std::vector<PointStatistics> writeStatistics(io::ResultsFile& file, int realisations,
+                                             const std::vector<int>& reference, bool commonStreams,
+                                             const PrecisionTarget* target) {
   // Every rank reads the small P x R tables and computes the same numbers; rank 0 writes them.
   GF_CALL(PetscLogEventBegin(logEvents().statistics, 0, 0, 0, 0));
   const auto flags = file.finishedTasks();
   const std::vector<unsigned char> done(flags.begin(), flags.end());
-  const auto stats = pointStatistics(scene.realisations, scene.sweep.reference, file.readRealisationReal("mu_s"),
+  const auto stats = pointStatistics(realisations, reference, file.readRealisationReal("mu_s"),
                                      file.readRealisationReal("mu_k"), file.readPeakConfirmed(), done,
-                                     scene.commonStreams);
+                                     commonStreams);
   using S = const PointStatistics&;
   std::vector<std::pair<std::string, std::vector<double>>> real = {
       {"mu_s_mean", realColumn(stats, [](S s) { return s.muStatic.mean; })},
@@ -93,6 +114,16 @@ std::vector<PointStatistics> writeStatistics(io::ResultsFile& file, const Scene&
       {"mu_s_count", integerColumn(stats, [](S s) { return s.muStatic.count; })},
       {"mu_k_count", integerColumn(stats, [](S s) { return s.muKinetic.count; })},
       {"peaks_unconfirmed", integerColumn(stats, [](S s) { return s.peaksUnconfirmed; })}};
+  if (target) {  // the half-width each point reached and whether it met the target
+    std::vector<double> reached;
+    std::vector<int> met;
+    for (int p = 0; p < static_cast<int>(reference.size()); ++p) {
+      reached.push_back(achievedHalfWidth(*target, stats, reference, p));
+      met.push_back(reached.back() <= target->halfWidth ? 1 : 0);
+    }
+    real.emplace_back("target_half_width", reached);
+    integer.emplace_back("target_met", met);
+  }
   file.writeStatistics(real, integer);
   return stats;
 }

@@ -1,6 +1,7 @@
 // What a spring-block scene run prints (include/gradfric/ensemble/scene_report.hpp).
 #include "gradfric/ensemble/scene_report.hpp"
 
+#include "gradfric/core/format.hpp"
 #include "gradfric/core/petsc_call.hpp"
 #include "gradfric/sbm/model.hpp"
 
@@ -66,6 +67,12 @@ void printSweep(MPI_Comm comm, const Scene& scene) {
   GF_CALL(PetscPrintf(comm, "  - sweep: %s (%d point%s) x %d realisation%s = %d task%s on %d rank%s, %s schedule\n",
                       axes.empty() ? "none" : axes.c_str(), P, P == 1 ? "" : "s", R, R == 1 ? "" : "s", T,
                       T == 1 ? "" : "s", size, size == 1 ? "" : "s", scene.schedule.c_str()));
+  if (scene.target.active())
+    GF_CALL(PetscPrintf(comm,
+                        "  - precision target: 95 %% CI half-width <= %g (%s) at every point; batches from %d "
+                        "realisation(s) per point, at most %d\n",
+                        scene.target.halfWidth, toString(scene.target.kind).c_str(), scene.target.first,
+                        scene.target.cap));
   if (scene.stiffestFactor > 1.0)
     GF_CALL(PetscPrintf(comm, "  - one time step for the whole sweep, from its stiffest band (E x %g)\n",
                         scene.stiffestFactor));
@@ -76,8 +83,11 @@ void printSweep(MPI_Comm comm, const Scene& scene) {
 
 void printTable(MPI_Comm comm, const Scene& scene, const std::vector<PointStatistics>& stats, const char* title,
                 bool isStatic) {
-  GF_CALL(PetscPrintf(comm, "\n%s over %d realisation(s) per point (95%% CI: Student t):\n", title,
-                      scene.realisations));
+  if (scene.target.active())  // the counts per point are in column R
+    GF_CALL(PetscPrintf(comm, "\n%s, realisations per point set by the target (95%% CI: Student t):\n", title));
+  else
+    GF_CALL(PetscPrintf(comm, "\n%s over %d realisation(s) per point (95%% CI: Student t):\n", title,
+                        scene.realisations));
   GF_CALL(PetscPrintf(comm, "  %-5s %-32s %4s %10s %10s %10s %23s %19s\n", "point", "sweep", "R", "mean", "std",
                       "std err", "95% CI", "rel. var. [%]"));
   for (size_t p = 0; p < stats.size(); ++p) {
@@ -95,6 +105,24 @@ void printTable(MPI_Comm comm, const Scene& scene, const std::vector<PointStatis
   }
 }
 
+// Which points met -ensemble_target, and which stopped at the cap.
+void printTargetOutcome(MPI_Comm comm, const Scene& scene, const std::vector<PointStatistics>& stats) {
+  std::string missed;
+  for (int p = 0; p < scene.points(); ++p) {
+    const double h = achievedHalfWidth(scene.target, stats, scene.sweep.reference, p);
+    if (!(h <= scene.target.halfWidth)) missed += " " + std::to_string(p) + " (" + formatReal(h) + ")";
+  }
+  if (missed.empty())
+    GF_CALL(PetscPrintf(comm, "Target met: 95 %% CI half-width (%s) <= %g at every point\n",
+                        toString(scene.target.kind).c_str(), scene.target.halfWidth));
+  else
+    GF_CALL(PetscPrintf(comm,
+                        "gradfric: warning: target %g (%s) NOT met at point(s)%s: -ensemble_target_max = %d "
+                        "reached\n",
+                        scene.target.halfWidth, toString(scene.target.kind).c_str(), missed.c_str(),
+                        scene.target.cap));
+}
+
 void printStatistics(MPI_Comm comm, const Scene& scene, const std::vector<PointStatistics>& stats) {
   if (scene.points() == 1 && scene.realisations == 1) {
     const auto& s = stats[0];
@@ -109,6 +137,7 @@ void printStatistics(MPI_Comm comm, const Scene& scene, const std::vector<PointS
                       " +- %s\n",
                       scene.commonStreams ? "the error of the paired differences (common random numbers)"
                                           : "the error propagated from both standard errors"));
+  if (scene.target.active()) printTargetOutcome(comm, scene, stats);
 }
 
 }  // namespace
@@ -121,8 +150,14 @@ void printScene(MPI_Comm comm, const Scene& scene, const RunParameters& record) 
 }
 
 void printDryRun(MPI_Comm comm, const Scene& scene) {
-  GF_CALL(PetscPrintf(comm, "Dry run (-ensemble_dry_run): scene checked, %d task(s) planned, nothing run or written\n",
-                      scene.tasks()));
+  if (scene.target.active())  // the count follows from the results: the first batch and the cap
+    GF_CALL(PetscPrintf(comm,
+                        "Dry run (-ensemble_dry_run): scene checked, %d task(s) in the first batch, at most %d, "
+                        "nothing run or written\n",
+                        scene.points() * scene.target.first, scene.tasks()));
+  else
+    GF_CALL(PetscPrintf(comm, "Dry run (-ensemble_dry_run): scene checked, %d task(s) planned, nothing run or written\n",
+                        scene.tasks()));
 }
 
 void printResults(MPI_Comm comm, const Scene& scene, const std::vector<PointStatistics>& statistics,

@@ -83,10 +83,15 @@ Grading gradingOf(const SweepPoint& point, int bands) {
 double estimatedCost(const SweepPoint& point) { return point.graded() ? 1.0 + 2.0 * std::fabs(point.delta) : 1.0; }
 
 std::vector<Task> pendingTasks(const Sweep& sweep, int realisations, const std::vector<unsigned char>& finished) {
+  return pendingTasks(sweep, realisations, finished, std::vector<int>(sweep.points.size(), realisations));
+}
+
+std::vector<Task> pendingTasks(const Sweep& sweep, int realisations, const std::vector<unsigned char>& finished,
+                               const std::vector<int>& counts) {
   std::vector<Task> tasks;
   const int points = static_cast<int>(sweep.points.size());
   for (int p = 0; p < points; ++p)
-    for (int r = 0; r < realisations; ++r) {
+    for (int r = 0; r < std::min(realisations, counts[p]); ++r) {
       const size_t index = static_cast<size_t>(p) * realisations + r;
       if (index < finished.size() && finished[index]) continue;
       tasks.push_back({p, r});

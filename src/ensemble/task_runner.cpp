@@ -86,13 +86,13 @@ double runTask(const Scene& scene, const Task& task, io::ResultsFile& file, int 
   return wall;
 }
 
-void printProgress(const Scene& scene, const Task& task, const io::TaskOutput& o, double wall, long finishedAll,
-                   long pending, long alreadyDone, double elapsed, int rank) {
+void printProgress(const Task& task, const io::TaskOutput& o, double wall, long finishedAll, long pending,
+                   long alreadyDone, long total, const Sweep& sweep, double elapsed, int rank) {
   const long left = pending - finishedAll;
   const double eta = finishedAll > 0 ? elapsed * left / finishedAll : NAN;
-  std::printf("[%ld/%d] point %d (%s) realisation %d: mu_s = %.6f, mu_k = %.6f%s  task %.2f s on rank %d;"
+  std::printf("[%ld/%ld] point %d (%s) realisation %d: mu_s = %.6f, mu_k = %.6f%s  task %.2f s on rank %d;"
               " elapsed %s, left ~%s\n",
-              finishedAll + alreadyDone, scene.tasks(), task.point, pointLabel(scene.sweep, task.point).c_str(),
+              finishedAll + alreadyDone, total, task.point, pointLabel(sweep, task.point).c_str(),
               task.realisation, o.friction.muStatic, o.friction.muKinetic, o.friction.peakConfirmed ? "" : " (peak unconfirmed)", wall, rank,
               hms(elapsed).c_str(), left > 0 ? hms(eta).c_str() : "0:00:00");
   std::fflush(stdout);
@@ -107,37 +107,32 @@ void abortIfDue(const Scene& scene, long finishedOverall, int rank) {
   std::_Exit(86);
 }
 
-}  // namespace
-
-TaskTally runTasks(MPI_Comm comm, const Scene& scene, io::ResultsFile& file, const std::string& resultsPath) {
+// One batch of tasks over the ranks. `before` counts the tasks this run finished in earlier
+// batches, `total` is the denominator of the progress line.
+void runBatch(MPI_Comm comm, const Scene& scene, io::ResultsFile& file, const std::vector<Task>& tasks,
+              const std::string& resultsPath, long before, long total, TaskTally* tally, long* ranHere,
+              double* secondsHere) {
   int rank = 0;
   GF_CALL_MPI(MPI_Comm_rank(comm, &rank));
-  const auto flags = file.finishedTasks();
-  const std::vector<Task> tasks =
-      pendingTasks(scene.sweep, scene.realisations, std::vector<unsigned char>(flags.begin(), flags.end()));
-  TaskTally tally;
-  tally.alreadyDone = static_cast<long>(scene.tasks()) - static_cast<long>(tasks.size());
-  long ranHere = 0;
-  double secondsHere = 0.0;
   std::string failure;
-  const auto start = tally.start;
+  const auto start = tally->start;
   {
     TaskCounter counter(comm, scene.schedule == "dynamic" ? Schedule::Dynamic : Schedule::Static);
     for (;;) {
-      if (scene.abortAfter > 0) abortIfDue(scene, counter.finishedSoFar(), rank);
+      if (scene.abortAfter > 0) abortIfDue(scene, before + counter.finishedSoFar(), rank);
       const long index = counter.next();
       if (index >= static_cast<long>(tasks.size())) break;
       const Task task = tasks[index];
       try {
         io::TaskOutput o;
         const double wall = runTask(scene, task, file, rank, &o);
-        ++ranHere;
-        secondsHere += wall;
+        ++*ranHere;
+        *secondsHere += wall;
         const long finishedAll = counter.finishOne();
         if (scene.monitor)
-          printProgress(scene, task, o, wall, finishedAll, static_cast<long>(tasks.size()), tally.alreadyDone,
-                        secondsSince(start), rank);
-        abortIfDue(scene, finishedAll, rank);
+          printProgress(task, o, wall, before + finishedAll, before + static_cast<long>(tasks.size()),
+                        tally->alreadyDone, total, scene.sweep, secondsSince(start), rank);
+        abortIfDue(scene, before + finishedAll, rank);
       } catch (const std::exception& e) {
         failure = "task (point " + std::to_string(task.point) + ", realisation " + std::to_string(task.realisation) +
                   ") failed on rank " + std::to_string(rank) + ": " + e.what();
@@ -152,6 +147,58 @@ TaskTally runTasks(MPI_Comm comm, const Scene& scene, io::ResultsFile& file, con
     file.close();
     throw CollectiveError(std::string(e.what()) + "; the finished tasks are in " + resultsPath +
                           ", continue with -ensemble_resume");
+  }
+  file.flush();  // sync, barrier, sync: every rank now reads what the others wrote
+}
+
+// A precision target: batches until every point meets it or reaches the cap. The plan is replayed
+// from the first batch on the file's values (a resumed run takes the same decisions), and each
+// batch runs only what the file does not hold yet.
+void runToTarget(MPI_Comm comm, const Scene& scene, io::ResultsFile& file, const std::string& resultsPath,
+                 TaskTally* tally, long* ranHere, double* secondsHere) {
+  const int points = scene.points();
+  std::vector<int> counts(points, std::min(scene.target.first, scene.target.cap));
+  long ranBefore = 0;
+  for (int batch = 0;;) {
+    const auto flags = file.finishedTasks();
+    const std::vector<unsigned char> done(flags.begin(), flags.end());
+    const std::vector<Task> tasks = pendingTasks(scene.sweep, scene.realisations, done, counts);
+    if (!tasks.empty()) {
+      long planned = 0;
+      for (int c : counts) planned += c;
+      std::string perPoint;
+      for (int c : counts) perPoint += " " + std::to_string(c);
+      GF_CALL(PetscPrintf(comm, "Target batch %d: %zu task(s) to run; realisations per point:%s\n", batch,
+                          tasks.size(), perPoint.c_str()));
+      runBatch(comm, scene, file, tasks, resultsPath, ranBefore, planned, tally, ranHere, secondsHere);
+      ranBefore += static_cast<long>(tasks.size());
+      ++batch;
+      continue;  // the same batch again: now complete, its statistics decide the next
+    }
+    const auto statistics =
+        statisticsOfCounts(counts, scene.realisations, scene.sweep.reference, file.readRealisationReal("mu_s"),
+                           file.readRealisationReal("mu_k"), file.readPeakConfirmed(), done, scene.commonStreams);
+    const std::vector<int> next = planNextBatch(scene.target, counts, statistics, scene.sweep.reference);
+    if (next == counts) return;
+    counts = next;
+  }
+}
+
+}  // namespace
+
+TaskTally runTasks(MPI_Comm comm, const Scene& scene, io::ResultsFile& file, const std::string& resultsPath) {
+  const auto flags = file.finishedTasks();
+  TaskTally tally;
+  long ranHere = 0;
+  double secondsHere = 0.0;
+  if (scene.target.active()) {
+    for (auto f : flags) tally.alreadyDone += f ? 1 : 0;
+    runToTarget(comm, scene, file, resultsPath, &tally, &ranHere, &secondsHere);
+  } else {
+    const std::vector<Task> tasks =
+        pendingTasks(scene.sweep, scene.realisations, std::vector<unsigned char>(flags.begin(), flags.end()));
+    tally.alreadyDone = static_cast<long>(scene.tasks()) - static_cast<long>(tasks.size());
+    runBatch(comm, scene, file, tasks, resultsPath, 0, scene.tasks(), &tally, &ranHere, &secondsHere);
   }
   GF_CALL_MPI(MPI_Allreduce(&ranHere, &tally.ran, 1, MPI_LONG, MPI_SUM, comm));
   GF_CALL_MPI(MPI_Allreduce(&secondsHere, &tally.taskSeconds, 1, MPI_DOUBLE, MPI_SUM, comm));

@@ -24,8 +24,10 @@ const FemLogEvents& femLogEvents() {
 }
 
 ElasticOperator::ElasticOperator(const PlateMesh& mesh, double youngsModulus, double poissonRatio,
-                                 double stiffnessDamping, const Grading& grading)
-    : mesh_(mesh), element_(makeBoxElement(mesh.hx(), mesh.hy(), mesh.hz(), poissonRatio)), beta_(stiffnessDamping) {
+                                 double stiffnessDamping, const Grading& grading, ElementType element)
+    : mesh_(mesh),
+      element_(makeBoxElement(mesh.hx(), mesh.hy(), mesh.hz(), poissonRatio, element)),
+      beta_(stiffnessDamping) {
   evKernel_ = femLogEvents().elastic;
   evGeneric_ = femLogEvents().generic;
   const double length = mesh.size().length;

@@ -1,5 +1,7 @@
 #include "gradfric/fem/hex_element.hpp"
 
+#include "gradfric/fem/incompatible_hex.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -9,49 +11,67 @@ Lame lameFromYoung(double E, double nu) {
   return {E * nu / ((1.0 + nu) * (1.0 - 2.0 * nu)), E / (2.0 * (1.0 + nu))};
 }
 
+const char* elementTypeName(ElementType type) { return type == ElementType::Trilinear ? "q1" : "q1i"; }
+
 namespace {
 
 // Gradients of the 8 trilinear shape functions at reference point (xi, eta, zeta) in [0, 1]^3,
-// mapped to the box (physical derivatives).
-void shapeGradients(const BoxElement& e, double xi, double eta, double zeta, double grad[8][3]) {
+// mapped to the box (physical derivatives), then those of the 3 bubbles 4 s (1 - s).
+void shapeGradients(double hx, double hy, double hz, double xi, double eta, double zeta, double grad[11][3]) {
   for (int a = 0; a < 8; ++a) {
     const int i = a & 1, j = (a >> 1) & 1, k = (a >> 2) & 1;
     const double nx = i ? xi : 1 - xi, ny = j ? eta : 1 - eta, nz = k ? zeta : 1 - zeta;
     const double dx = i ? 1.0 : -1.0, dy = j ? 1.0 : -1.0, dz = k ? 1.0 : -1.0;
-    grad[a][0] = dx * ny * nz / e.hx;
-    grad[a][1] = nx * dy * nz / e.hy;
-    grad[a][2] = nx * ny * dz / e.hz;
+    grad[a][0] = dx * ny * nz / hx;
+    grad[a][1] = nx * dy * nz / hy;
+    grad[a][2] = nx * ny * dz / hz;
   }
+  const double s[3] = {xi, eta, zeta}, h[3] = {hx, hy, hz};
+  for (int m = 0; m < 3; ++m)
+    for (int d = 0; d < 3; ++d) grad[8 + m][d] = d == m ? 4.0 * (1.0 - 2.0 * s[m]) / h[m] : 0.0;
 }
 
 }  // namespace
 
-BoxElement makeBoxElement(double hx, double hy, double hz, double nu) {
+std::vector<double> boxStiffness(double hx, double hy, double hz, double nu, bool withBubbles) {
+  const int shapes = withBubbles ? 11 : 8, n = 3 * shapes;
+  std::vector<double> k(n * n, 0.0);
+  const Lame lame = lameFromYoung(1.0, nu);
+  const double g = 0.5 / std::sqrt(3.0);
+  const double pts[2] = {0.5 - g, 0.5 + g};
+  const double weight = hx * hy * hz / 8.0;
+  for (double xi : pts)
+    for (double eta : pts)
+      for (double zeta : pts) {
+        double grad[11][3];
+        shapeGradients(hx, hy, hz, xi, eta, zeta, grad);
+        for (int a = 0; a < shapes; ++a)
+          for (int b = 0; b < shapes; ++b) {
+            const double dot = grad[a][0] * grad[b][0] + grad[a][1] * grad[b][1] + grad[a][2] * grad[b][2];
+            for (int c = 0; c < 3; ++c)
+              for (int d = 0; d < 3; ++d) {
+                double kk = lame.lambda * grad[a][c] * grad[b][d] + lame.mu * grad[a][d] * grad[b][c];
+                if (c == d) kk += lame.mu * dot;
+                k[(3 * a + c) * n + 3 * b + d] += weight * kk;
+              }
+          }
+      }
+  return k;
+}
+
+BoxElement makeBoxElement(double hx, double hy, double hz, double nu, ElementType type) {
   BoxElement e;
   e.hx = hx;
   e.hy = hy;
   e.hz = hz;
   e.poissonRatio = nu;
-  const Lame lame = lameFromYoung(1.0, nu);
-  const double g = 0.5 / std::sqrt(3.0);
-  const double pts[2] = {0.5 - g, 0.5 + g};
-  const double weight = e.volume() / 8.0;
-  for (double xi : pts)
-    for (double eta : pts)
-      for (double zeta : pts) {
-        double grad[8][3];
-        shapeGradients(e, xi, eta, zeta, grad);
-        for (int a = 0; a < 8; ++a)
-          for (int b = 0; b < 8; ++b) {
-            const double dot = grad[a][0] * grad[b][0] + grad[a][1] * grad[b][1] + grad[a][2] * grad[b][2];
-            for (int c = 0; c < 3; ++c)
-              for (int d = 0; d < 3; ++d) {
-                double k = lame.lambda * grad[a][c] * grad[b][d] + lame.mu * grad[a][d] * grad[b][c];
-                if (c == d) k += lame.mu * dot;
-                e.stiffness[(3 * a + c) * 24 + 3 * b + d] += weight * k;
-              }
-          }
-      }
+  e.type = type;
+  if (type == ElementType::IncompatibleModes) {
+    e.stiffness = condenseIncompatibleModes(boxStiffness(hx, hy, hz, nu, true));
+  } else {
+    const std::vector<double> k = boxStiffness(hx, hy, hz, nu, false);
+    std::copy(k.begin(), k.end(), e.stiffness.begin());
+  }
   return e;
 }
 
@@ -98,8 +118,8 @@ double centralDifferenceStableStep(double omegaSquared, double xi) {
 }
 
 std::array<double, 6> cellAverageStress(const BoxElement& e, double E, const double* ue) {
-  double grad[8][3];
-  shapeGradients(e, 0.5, 0.5, 0.5, grad);  // the centroid: the mean gradient of a box cell
+  double grad[11][3];
+  shapeGradients(e.hx, e.hy, e.hz, 0.5, 0.5, 0.5, grad);  // the centroid: the mean gradient of a box cell
   double du[3][3] = {};
   for (int a = 0; a < 8; ++a)
     for (int c = 0; c < 3; ++c)

@@ -42,6 +42,10 @@ FemParameters readFemParameters(MPI_Comm comm, RunParameters* record, const Plat
   q.nx = static_cast<int>(o.integer("nx", q.nx, 1, 100000, "1", "hexahedra along x (grading axis)"));
   q.ny = static_cast<int>(o.integer("ny", q.ny, 1, 100000, "1", "hexahedra along y"));
   q.nz = static_cast<int>(o.integer("nz", q.nz, 1, 100000, "1", "hexahedra through the thickness"));
+  q.element = o.choice("element", elementTypeName(q.element), {"q1", "q1i"},
+                       "hexahedron: q1 trilinear, q1i with incompatible bending modes (C3D8I-like, condensed)") == "q1"
+                  ? ElementType::Trilinear
+                  : ElementType::IncompatibleModes;
   q.vC = o.real("v_c", q.vC, "m/s", "critical velocity v_c of Eq. 1");
   q.contact = o.flag("contact", true, "contact with the rigid plane (off: free bottom face, for tests)");
   if (auto kn = o.realIfSet("kn", "Pa/m", "normal penalty stiffness k_n", "E0/hz")) q.kn = *kn;

@@ -15,7 +15,7 @@ double stableTimeStep(const FemParameters& given, const Grading& grading) {
   FemParameters q = given;
   q.resolveDerived();
   const BoxElement element = makeBoxElement(q.plate.length / q.nx, q.plate.length / q.ny, q.plate.thickness / q.nz,
-                                            q.plate.poissonRatio);
+                                            q.plate.poissonRatio, q.element);
   double factor = 1.0;
   for (int band = 0; band < grading.bands; ++band)
     if (grading.gradesModulus()) factor = std::max(factor, grading.bandFactor(band));

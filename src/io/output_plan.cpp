@@ -61,9 +61,20 @@ Decision decideHere(const OutputRequest& r) {
   if (r.resume && r.overwrite)
     return Decision{"conflicting options: " + r.resumeOption + " continues " + path + ", " + r.overwriteOption +
                     " replaces it; give one of them"};
+  if (r.extend && (r.overwrite || r.resume))
+    return Decision{"conflicting options: " + r.extendOption + " extends " + path + ", " +
+                    (r.overwrite ? r.overwriteOption + " replaces it" : r.resumeOption + " continues it as it is") +
+                    "; give one of them (" + r.extendOption + " also continues an interrupted extension)"};
   if (isDirectory(temporary)) return refuse("a path whose temporary file " + temporary + " is not a directory");
   Decision d;
-  if (r.resume && exists(temporary)) {
+  if (r.extend && !exists(temporary) && !exists(path))
+    return Decision{InputError(r.extendOption, "(set)", "a finished results file at " + r.option + " (" + path +
+                                                            " does not exist)").what()};
+  if (r.extend && exists(temporary)) {
+    d.start = OutputStart::ContinueTemporary;  // an interrupted extension (checked against the scene later)
+  } else if (r.extend) {
+    d.start = OutputStart::ExtendFinished;
+  } else if (r.resume && exists(temporary)) {
     d.start = OutputStart::ContinueTemporary;
   } else if (r.resume && exists(path)) {
     d.start = OutputStart::ContinueFinished;
@@ -77,8 +88,9 @@ Decision decideHere(const OutputRequest& r) {
   // Write access where the run will write: the temporary is created (and removed again), or the
   // file to continue is opened for writing.
   const std::string target = d.start == OutputStart::ContinueFinished ? path : temporary;
-  const int error = probeWrite(target, d.start == OutputStart::Fresh);
-  if (d.start == OutputStart::Fresh) unlink(temporary.c_str());
+  const bool createsTemporary = d.start == OutputStart::Fresh || d.start == OutputStart::ExtendFinished;
+  const int error = probeWrite(target, createsTemporary);
+  if (createsTemporary) unlink(temporary.c_str());
   if (error)
     return refuse("a path in an existing, writable folder (cannot write " + target + ": " + std::strerror(error) + ")");
   return d;

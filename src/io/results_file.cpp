@@ -105,6 +105,9 @@ T readScalarAttribute(hid_t object, const char* name, hid_t memType, T fallback)
 // One line on each statistics column (docs/ensemble.md has the formulas).
 std::string statisticDescription(const std::string& name) {
   if (name == "finished") return "realisations finished";
+  if (name == "target_half_width")
+    return "95 % CI half-width reached of the quantity -ensemble_target bounds (-ensemble_target_type)";
+  if (name == "target_met") return "1 if the point met -ensemble_target, 0 if it stopped at -ensemble_target_max";
   if (name == "peaks_unconfirmed") return "realisations whose peak was not confirmed before -sbm_t_max";
   const std::string of = name.substr(0, 4);  // mu_s or mu_k
   const std::string what = name.size() > 5 ? name.substr(5) : "";
@@ -147,7 +150,7 @@ ResultsFile ResultsFile::create(MPI_Comm comm, const std::string& path, const En
   GF_H5(H5Pset_dxpl_mpio(f.independent_, H5FD_MPIO_INDEPENDENT));
 
   const hid_t root = f.file_.get();
-  writeStringAttribute(root, "format", kFormatName);
+  writeStringAttribute(root, "format", layout.format);
   writeIntAttribute(root, "format_version", kFormatVersion);
   writeIntAttribute(root, "complete", 0);
   writeIntAttribute(root, "points", layout.points);
@@ -353,8 +356,10 @@ ResultsFile ResultsFile::openReadOnly(MPI_Comm comm, const std::string& path) {
 void ResultsFile::readLayout() {
   const hid_t root = file_.get();
   H5Attribute format(GF_H5(H5Aopen(root, "format", H5P_DEFAULT)));
-  if (readStringAttribute(format) != kFormatName)
-    throw Hdf5Error("not a gradfric ensemble results file (attribute format is not " + std::string(kFormatName) + ")");
+  layout_.format = readStringAttribute(format);
+  if (layout_.format != kFormatName && layout_.format != kFemSweepFormatName)
+    throw Hdf5Error("not a gradfric ensemble results file (attribute format is not " + std::string(kFormatName) +
+                    " or " + kFemSweepFormatName + ")");
   const int version = readScalarAttribute<int>(root, "format_version", H5T_NATIVE_INT, 0);
   if (version != kFormatVersion)
     throw Hdf5Error("results file format version " + std::to_string(version) + ", this build writes " +
@@ -509,6 +514,56 @@ void ResultsFile::writeTask(const TaskOutput& t) {
 }
 
 void ResultsFile::flush() { GF_H5(H5Fflush(file_, H5F_SCOPE_GLOBAL)); }
+
+void ResultsFile::copyTasksFrom(const std::string& path) {
+  if (rank_ == 0) {
+    H5File old(GF_H5(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT)));
+    const hsize_t P = static_cast<hsize_t>(readScalarAttribute<int>(old, "points", H5T_NATIVE_INT, 0));
+    const hsize_t R = static_cast<hsize_t>(readScalarAttribute<int>(old, "realisations", H5T_NATIVE_INT, 0));
+    if (P > static_cast<hsize_t>(layout_.points) || R > static_cast<hsize_t>(layout_.realisations))
+      throw Hdf5Error("cannot extend " + path + ": it has more points or realisations than the new file");
+    // One point row of one dataset at a time: [p, 0..R, rest...].
+    auto copy = [&](const std::string& name) {
+      H5Dataset from(GF_H5(H5Dopen2(old, name.c_str(), H5P_DEFAULT)));
+      H5Space space(GF_H5(H5Dget_space(from)));
+      const int rankOf = H5Sget_simple_extent_ndims(space);
+      std::vector<hsize_t> dims(static_cast<size_t>(std::max(rankOf, 0)));
+      GF_H5(H5Sget_simple_extent_dims(space, dims.data(), nullptr));
+      if (rankOf < 2 || dims[0] != P || dims[1] != R) return;  // not a per-task table
+      H5Dataset to(GF_H5(H5Dopen2(file_, name.c_str(), H5P_DEFAULT)));
+      H5Type type(GF_H5(H5Dget_type(from)));
+      const size_t size = H5Tget_size(type);
+      std::vector<hsize_t> count(dims), offset(dims.size(), 0);
+      count[0] = 1;
+      hsize_t items = 1;
+      for (auto c : count) items *= c;
+      std::vector<unsigned char> row(items * size);
+      H5Space memory(GF_H5(H5Screate_simple(1, &items, nullptr)));
+      for (hsize_t p = 0; p < P; ++p) {
+        offset[0] = p;
+        H5Space source(GF_H5(H5Dget_space(from)));
+        GF_H5(H5Sselect_hyperslab(source, H5S_SELECT_SET, offset.data(), nullptr, count.data(), nullptr));
+        GF_H5(H5Dread(from, type, memory, source, H5P_DEFAULT, row.data()));
+        H5Space target(GF_H5(H5Dget_space(to)));
+        GF_H5(H5Sselect_hyperslab(target, H5S_SELECT_SET, offset.data(), nullptr, count.data(), nullptr));
+        GF_H5(H5Dwrite(to, type, memory, target, independent_, row.data()));
+      }
+    };
+    for (const char* group : {"realisations", "run", "history", "maps"}) {
+      if (H5Lexists(old, group, H5P_DEFAULT) <= 0) continue;
+      H5Group g(GF_H5(H5Gopen2(old, group, H5P_DEFAULT)));
+      for (const std::string& name : linkNames(g)) {
+        H5O_info_t info;
+        GF_H5(H5Oget_info_by_name2(g, name.c_str(), &info, H5O_INFO_BASIC, H5P_DEFAULT));
+        if (info.type != H5O_TYPE_DATASET) continue;  // the option record's groups of /run
+        if (std::string(group) + "/" + name != "realisations/done") copy(std::string(group) + "/" + name);
+      }
+    }
+    copy("realisations/done");  // last: a task is done once all its data is there
+  }
+  flush();
+  flush();  // sync, barrier, sync: every rank reads what rank 0 copied
+}
 
 std::vector<std::uint8_t> ResultsFile::finishedTasks() const {
   auto flags = readAll<std::int8_t>(done_, H5T_NATIVE_INT8);

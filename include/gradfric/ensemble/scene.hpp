@@ -4,6 +4,7 @@
 // The run itself is a sequence of named steps (drivers/gradfric.cpp): readScene, printScene,
 // planResultsFile, openResultsFile, runTasks, finishResultsFile, printResults.
 #include "gradfric/core/options.hpp"
+#include "gradfric/ensemble/precision_target.hpp"
 #include "gradfric/ensemble/sweep.hpp"
 #include "gradfric/io/results_file.hpp"
 #include "gradfric/physics/field.hpp"
@@ -25,7 +26,9 @@ struct Scene {
   Grading baseGrading;
   std::shared_ptr<const PlateFields> fields;  // -field_* (null: none), the same at every point
   std::vector<std::shared_ptr<const PlateFields>> pointFields;  // per point with -ensemble_field (else empty)
-  int realisations = 1;
+  int realisations = 1;          // per point; with a target, the cap (-ensemble_target_max)
+  PrecisionTarget target;        // -ensemble_target*: inactive (halfWidth 0) for a fixed count
+  bool extend = false;           // -ensemble_extend: add realisations or points to a finished file
   std::uint64_t seed = 1;
   bool commonStreams = false;  // realisation r of every point draws from the stream (seed, 0, r)
   bool history = true;         // store the mu(t) histories

@@ -58,6 +58,9 @@ struct Task {
 // takes longer to detach), so that the last tasks to start are short ones. `finished` is P x R
 // (row-major), 1 for a finished task; empty means none finished.
 std::vector<Task> pendingTasks(const Sweep& sweep, int realisations, const std::vector<unsigned char>& finished);
+// The same for realisations r < counts[p] of each point p only (a batch of a precision target).
+std::vector<Task> pendingTasks(const Sweep& sweep, int realisations, const std::vector<unsigned char>& finished,
+                               const std::vector<int>& counts);
 
 // Relative cost estimate of one task of this point (1 for the non-graded plate).
 double estimatedCost(const SweepPoint& point);

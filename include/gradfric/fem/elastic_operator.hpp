@@ -22,8 +22,10 @@ void elasticKernel(PetscInt numCells, const PetscInt* cellOffsets, const double*
 class ElasticOperator {
 public:
   // E of a cell = youngsModulus x grading's modulus factor at the cell centre's x / L.
+  // element: the hexahedron whose box-cell stiffness the kernel applies; PETSc's generic
+  // reference (forceGeneric) is the trilinear one only.
   ElasticOperator(const PlateMesh& mesh, double youngsModulus, double poissonRatio, double stiffnessDamping,
-                  const Grading& grading);
+                  const Grading& grading, ElementType element = ElementType::Trilinear);
   ElasticOperator(const ElasticOperator&) = delete;
   ElasticOperator& operator=(const ElasticOperator&) = delete;
 

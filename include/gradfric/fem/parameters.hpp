@@ -1,6 +1,7 @@
 #pragma once
 // Parameters of the 3D finite-element plate model (all -fem_ options) and their reader.
 #include "gradfric/core/options.hpp"
+#include "gradfric/fem/hex_element.hpp"
 #include "gradfric/physics/friction_history.hpp"
 #include "gradfric/physics/plate.hpp"
 
@@ -15,6 +16,7 @@ FrictionMeasurement derivedMeasurement();
 struct FemParameters {
   // Mesh and geometry
   int nx = 100, ny = 100, nz = 5;
+  ElementType element = ElementType::Trilinear;  // -fem_element q1 | q1i (docs/fem.md)
   // The physical plate (-plate_ options, shared with the spring-block model): size L, thickness
   // H, material, pressure, sliding speed and angle, mean local mu_s and mu_k (graded by -grading_).
   Plate plate;

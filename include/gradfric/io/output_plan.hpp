@@ -24,6 +24,8 @@ struct OutputRequest {
   std::string overwriteOption = "-output_overwrite";   // the option that allows it
   bool resume = false;                                 // continue an interrupted (or finished) run
   std::string resumeOption;                            // non-empty: the temporary can be resumed
+  bool extend = false;                                 // extend the finished file (into the temporary)
+  std::string extendOption;                            // the option that asks for it
 };
 
 // How the run starts.
@@ -31,6 +33,7 @@ enum class OutputStart {
   Fresh,              // a new temporary file
   ContinueTemporary,  // resume: the temporary of an interrupted run exists
   ContinueFinished,   // resume: only the finished file exists; the run works on it in place
+  ExtendFinished,     // extend: a new temporary starts from the finished file, replaces it when complete
 };
 
 class OutputPlan {

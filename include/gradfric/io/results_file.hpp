@@ -23,8 +23,11 @@ namespace gradfric::io {
 
 inline constexpr int kFormatVersion = 2;  // 2: units, dimension scales, forces, properties, provenance
 inline constexpr const char* kFormatName = "gradfric-sbm-ensemble";
+// The same layout filled by a sweep of finite-element runs (gradfric-fem, one run per point).
+inline constexpr const char* kFemSweepFormatName = "gradfric-fem-sweep";
 
 struct EnsembleLayout {
+  std::string format = kFormatName;  // the root attribute `format`: kFormatName or kFemSweepFormatName
   int points = 0;        // P sweep points
   int realisations = 0;  // R realisations per point
   int historyCapacity = 0;  // C: mu(t) samples kept per task (0: no histories)
@@ -96,6 +99,10 @@ public:
   void writeTask(const TaskOutput& task);
   // Collective: pushes everything written so far to the file (MPI_File_sync).
   void flush();
+  // Collective: copies every task of the results file at `path` (P' x R' with P' <= P, R' <= R:
+  // a finished file being extended) into the same (point, realisation) slots of this file, raw
+  // bytes, done flags last. Rank 0 reads and writes; nothing is run again.
+  void copyTasksFrom(const std::string& path);
 
   // Every rank reads the whole P x R table (small scalars only).
   std::vector<std::uint8_t> finishedTasks() const;

@@ -1,0 +1,27 @@
+#pragma once
+// The swept lists of a scene (-ensemble_delta, _theta, _sigma, _property, _profile), read and
+// checked one way for the spring-block ensemble (gradfric) and the FEM sweep (gradfric-fem), so
+// that a scene line means the same in both and their results files have the same axes.
+#include "gradfric/core/options.hpp"
+#include "gradfric/ensemble/sweep.hpp"
+#include "gradfric/io/results_file.hpp"
+#include "gradfric/physics/grading.hpp"
+
+namespace gradfric::ensemble {
+
+// Reads the lists from a reader of prefix "ensemble_" (-help lists them there); refuses
+// |Delta| >= 1 at once (before a stable time step is computed from the sweep).
+SweepLists readSweepLists(OptionReader& ensemble);
+
+// The lists make sense together with the base grading: finite angles, 0 <= sigma <= 0.5, and a
+// Delta or property sweep only with a grading profile.
+void checkSweepLists(const SweepLists& lists, const Grading& base);
+
+// True if any list is given (the scene is a sweep).
+bool anySwept(const SweepLists& lists);
+
+// The /sweep columns of a results file (axes, one row per point, reference points), the same for
+// both writers; the model fills the /properties fields.
+io::SweepTable sweepColumns(const Sweep& sweep);
+
+}  // namespace gradfric::ensemble

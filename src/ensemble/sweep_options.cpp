@@ -1,0 +1,60 @@
+// Reading the swept lists of a scene (include/gradfric/ensemble/sweep_options.hpp).
+#include "gradfric/ensemble/sweep_options.hpp"
+
+#include "gradfric/core/input_error.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace gradfric::ensemble {
+
+SweepLists readSweepLists(OptionReader& ens) {
+  SweepLists lists;
+  lists.delta = ens.realList("delta", {}, "1", "sweep of the grading amplitude Delta (empty: -grading_delta alone)");
+  lists.theta = ens.realList("theta", {}, "degree", "sweep of the sliding angle (empty: -plate_theta alone)");
+  lists.sigma = ens.realList("sigma", {}, "1",
+                             "sweep of the relative dispersion, sets sigma_s and sigma_k (empty: -sbm_sigma_s/_k)");
+  lists.property = ens.choiceList("property", {}, {"E", "friction", "both"},
+                                  "sweep of the graded property (empty: -grading_property alone)");
+  lists.profile = ens.choiceList("profile", {}, {"none", "linear", "triangular"},
+                                 "sweep of the grading profile (empty: -grading_profile alone)");
+  for (double d : lists.delta)
+    if (!(std::fabs(d) < 1.0)) throw InputError(ens.fullName("delta"), formatReal(d), "values with |Delta| < 1");
+  return lists;
+}
+
+void checkSweepLists(const SweepLists& lists, const Grading& base) {
+  auto name = [](const char* n) { return std::string("-ensemble_") + n; };
+  for (double t : lists.theta)
+    if (!std::isfinite(t)) throw InputError(name("theta"), formatReal(t), "finite angles [degree]");
+  for (double s : lists.sigma)
+    if (!(s >= 0.0 && s <= 0.5)) throw InputError(name("sigma"), formatReal(s), "values with 0 <= sigma <= 0.5");
+  const bool anyProfile = base.profile != GradingProfile::None ||
+                          std::any_of(lists.profile.begin(), lists.profile.end(), [](auto& p) { return p != "none"; });
+  const char* needProfile = "only with a grading profile: set -grading_profile linear or triangular (it is none)";
+  if (!lists.delta.empty() && !anyProfile) throw InputError(name("delta"), "(a list)", needProfile);
+  if (!lists.property.empty() && !anyProfile) throw InputError(name("property"), "(a list)", needProfile);
+}
+
+bool anySwept(const SweepLists& lists) {
+  return !lists.delta.empty() || !lists.theta.empty() || !lists.sigma.empty() || !lists.property.empty() ||
+         !lists.profile.empty();
+}
+
+io::SweepTable sweepColumns(const Sweep& sweep) {
+  io::SweepTable table;
+  table.axes = sweep.axes;
+  for (const auto& q : sweep.points) {
+    table.delta.push_back(q.delta);
+    table.theta.push_back(q.theta);
+    table.sigma.push_back(q.sigma);
+    table.sigmaKinetic.push_back(q.sigmaKinetic);
+    table.property.push_back(q.property);
+    table.profile.push_back(q.profile);
+  }
+  table.referencePoint = sweep.reference;
+  return table;
+}
+
+}  // namespace gradfric::ensemble

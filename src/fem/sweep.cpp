@@ -1,0 +1,152 @@
+// Reading and checking an FEM sweep (include/gradfric/fem/sweep.hpp): the options, the points,
+// and the results file's layout, before any work.
+#include "gradfric/fem/sweep.hpp"
+
+#include "gradfric/core/input_error.hpp"
+#include "gradfric/core/petsc_call.hpp"
+#include "gradfric/ensemble/sweep_options.hpp"
+#include "gradfric/fem/stable_step.hpp"
+
+#include <cmath>
+#include <set>
+
+namespace gradfric::fem {
+
+namespace {
+
+// Options that steer how a sweep runs but not its numbers: stored under /run, so a resumed or
+// re-ranked sweep of the same scene writes the same /scene (and may change them).
+const std::set<std::string> kRunControl = {"-fem_output",        "-fem_output_overwrite",     "-fem_sweep_resume",
+                                           "-fem_sweep_abort_after", "-fem_sweep_ranks_per_run", "-fem_verbose"};
+
+const char* originText(OptionOrigin origin) {
+  switch (origin) {
+    case OptionOrigin::User: return "set";
+    case OptionOrigin::Derived: return "derived";
+    default: return "default";
+  }
+}
+
+std::string stripDash(const std::string& name) { return name.rfind('-', 0) == 0 ? name.substr(1) : name; }
+
+// mu(t) samples one run records at most: one at the start of sliding, then one per history
+// interval (at most one per step) up to the longest sliding time; a margin for the last step.
+int historyCapacity(const FemParameters& q) {
+  const double samples = std::floor(q.slideTime / q.measurement.historyInterval) + 4.0;
+  if (samples > 5e7)
+    throw InputError("-friction_history_interval", formatReal(q.measurement.historyInterval),
+                     "an interval giving at most 5e7 mu(t) samples per run up to -fem_slide_time");
+  return static_cast<int>(samples);
+}
+
+io::EnsembleLayout layoutOf(const FemSweep& s) {
+  io::EnsembleLayout layout;
+  layout.format = io::kFemSweepFormatName;
+  layout.points = s.points();
+  layout.realisations = 1;  // the FEM has no random draw: one run per point
+  layout.historyCapacity = historyCapacity(s.params);
+  layout.mapSide = s.params.nx;  // /properties: one column per hexahedron column along x
+  // The columns ensemble::writeStatistics writes (the same as the spring-block ensemble's file).
+  layout.statisticsReal = {"mu_s_mean",      "mu_s_std",     "mu_s_stderr",         "mu_s_ci95_low",
+                           "mu_s_ci95_high", "mu_s_relative", "mu_s_relative_error", "mu_k_mean",
+                           "mu_k_std",       "mu_k_stderr",   "mu_k_ci95_low",       "mu_k_ci95_high",
+                           "mu_k_relative",  "mu_k_relative_error"};
+  layout.statisticsInteger = {"finished", "mu_s_count", "mu_k_count", "peaks_unconfirmed"};
+  return layout;
+}
+
+io::SweepTable tableOf(const FemSweep& s) {
+  io::SweepTable table = ensemble::sweepColumns(s.sweep);  // the ensemble's /sweep columns
+  const Plate& plate = s.params.plate;
+  for (int p = 0; p < s.points(); ++p) {  // the properties at each hexahedron column's centre
+    const Grading g = s.pointGrading(p);
+    for (int i = 0; i < s.params.nx; ++i) {
+      const double centre = (i + 0.5) / s.params.nx;
+      table.modulus.push_back(plate.youngsModulus * g.modulusFactor(centre));
+      table.muStatic.push_back(plate.muStatic * g.frictionFactor(centre));
+      table.muKinetic.push_back(plate.muKinetic * g.frictionFactor(centre));
+    }
+  }
+  return table;
+}
+
+}  // namespace
+
+SweepOptions readSweepOptions(MPI_Comm comm, RunParameters* record) {
+  SweepOptions s;
+  OptionReader ens(comm, "ensemble_", "FEM sweep: the ensemble's sweep lists, one FEM run per point", record);
+  s.lists = ensemble::readSweepLists(ens);
+  OptionReader sw(comm, "fem_sweep_", "FEM sweep over groups of ranks (docs/fem.md)", record);
+  const PetscInt ranks = sw.integer("ranks_per_run", 1, 1, 1000000, "1",
+                                    "ranks of each run's sub-communicator; must divide the number of ranks");
+  s.resume = sw.flag("resume", false, "continue an interrupted sweep: points finished in <-fem_output>.partial are skipped");
+  const PetscInt abortAfter = sw.integer(
+      "abort_after", 0, 0, PETSC_MAX_INT, "1",
+      "testing only: every rank exits abruptly (no close) once its group finished this many runs (0: never)");
+  if (helpRequested()) return s;
+  sw.requireAtLeast("ranks_per_run", ranks, 1);
+  sw.requireAtLeast("abort_after", abortAfter, 0);
+  s.ranksPerRun = static_cast<int>(ranks);
+  s.abortAfter = static_cast<long>(abortAfter);
+  s.requested = ensemble::anySwept(s.lists) || sw.wasSet("ranks_per_run") || sw.wasSet("resume") ||
+                sw.wasSet("abort_after");
+  return s;
+}
+
+FemParameters FemSweep::pointParameters(int p) const {
+  FemParameters q = params;
+  q.plate.slidingAngle = sweep.points[p].theta;
+  q.output.clear();  // a run of the sweep writes no file of its own
+  q.snapshotTimes.clear();
+  q.verbose = false;  // one line per finished run instead of every run's progress
+  return q;
+}
+
+Grading FemSweep::pointGrading(int p) const {
+  Grading g = ensemble::gradingOf(sweep.points[p], baseGrading.bands);
+  g.fields = baseGrading.fields;  // the property fields (-field_*) are the same at every point
+  return g;
+}
+
+FemSweep buildFemSweep(MPI_Comm comm, const FemParameters& params, const Grading& grading,
+                       const SweepOptions& options, bool compareSbm, const RunParameters& record) {
+  FemSweep s;
+  s.params = params;
+  s.baseGrading = grading;
+  s.options = options;
+  if (!options.lists.sigma.empty())
+    throw InputError("-ensemble_sigma", "(a list)",
+                     "no sigma sweep in the FEM: its local coefficients are not dispersed (sweep sigma with gradfric)");
+  ensemble::checkSweepLists(options.lists, grading);
+  int size = 1;
+  GF_CALL_MPI(MPI_Comm_size(comm, &size));
+  if (options.ranksPerRun > size || size % options.ranksPerRun != 0)
+    throw InputError("-fem_sweep_ranks_per_run", std::to_string(options.ranksPerRun),
+                     "a divisor of the number of ranks " + std::to_string(size) + " (1 .. " + std::to_string(size) + ")");
+  if (!params.snapshotTimes.empty())
+    throw InputError("-fem_snapshot_times", "(a list)",
+                     "none in a sweep (field snapshots belong to one run: run that point alone)");
+  if (compareSbm)
+    throw InputError("-fem_compare_sbm", "true",
+                     "false in a sweep (pair the sweep with a gradfric ensemble in scripts/gradfric_plot.py)");
+  s.output = params.output.empty() ? "gradfric_fem_sweep.h5" : params.output;
+
+  ensemble::SweepPoint base;
+  base.delta = grading.delta;
+  base.property = toString(grading.property);
+  base.profile = toString(grading.profile);
+  base.theta = params.plate.slidingAngle;
+  s.sweep = ensemble::buildSweep(options.lists, base);
+  if (s.points() > 1000000) throw InputError("too many FEM sweep points: " + std::to_string(s.points()) + " > 1e6");
+  for (int p = 0; p < s.points(); ++p)  // every point's step and run length, before any work
+    requireFemRunLength(s.pointParameters(p), s.pointGrading(p), &record);
+  s.layout = layoutOf(s);
+  s.table = tableOf(s);
+  for (const auto& o : record.all()) {
+    io::Attribute a{stripDash(o.name), o.value, o.unit, originText(o.origin)};
+    (kRunControl.count(o.name) ? s.runAttributes : s.sceneAttributes).push_back(a);
+  }
+  return s;
+}
+
+}  // namespace gradfric::fem

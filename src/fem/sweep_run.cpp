@@ -1,0 +1,190 @@
+// Running an FEM sweep over groups of ranks (include/gradfric/fem/sweep.hpp).
+#include "gradfric/core/collective_error.hpp"
+#include "gradfric/core/petsc_call.hpp"
+#include "gradfric/ensemble/scene_file.hpp"
+#include "gradfric/ensemble/scene_report.hpp"
+#include "gradfric/fem/plate_model.hpp"
+#include "gradfric/fem/simulation.hpp"
+#include "gradfric/fem/sweep.hpp"
+#include "gradfric/io/collective_file.hpp"
+#include "gradfric/io/output_plan.hpp"
+#include "gradfric/io/provenance.hpp"
+
+#include <petscsys.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+namespace gradfric::fem {
+
+namespace {
+
+// The sub-communicator of this rank's group: ranks [g k, (g + 1) k) of comm, k = ranks per run.
+class GroupComm {
+public:
+  GroupComm(MPI_Comm comm, int ranksPerRun) {
+    int rank = 0, size = 1;
+    GF_CALL_MPI(MPI_Comm_rank(comm, &rank));
+    GF_CALL_MPI(MPI_Comm_size(comm, &size));
+    group_ = rank / ranksPerRun;
+    groups_ = size / ranksPerRun;
+    GF_CALL_MPI(MPI_Comm_split(comm, group_, rank, &comm_));
+    GF_CALL_MPI(MPI_Comm_rank(comm_, &rankInGroup_));
+  }
+  ~GroupComm() {
+    if (comm_ != MPI_COMM_NULL) MPI_Comm_free(&comm_);
+  }
+  GroupComm(const GroupComm&) = delete;
+  GroupComm& operator=(const GroupComm&) = delete;
+  MPI_Comm comm() const { return comm_; }
+  int group() const { return group_; }
+  int groups() const { return groups_; }
+  bool leader() const { return rankInGroup_ == 0; }
+
+private:
+  MPI_Comm comm_ = MPI_COMM_NULL;
+  int group_ = 0, groups_ = 1, rankInGroup_ = 0;
+};
+
+io::OutputPlan planSweepFile(MPI_Comm comm, const FemSweep& s) {
+  io::OutputRequest request;
+  request.option = "-fem_output";
+  request.path = s.output;
+  request.temporarySuffix = ".partial";
+  request.overwrite = s.params.overwrite;
+  request.overwriteOption = "-fem_output_overwrite";
+  request.resume = s.options.resume;
+  request.resumeOption = "-fem_sweep_resume";
+  return io::OutputPlan::decide(comm, request);
+}
+
+io::ResultsFile openSweepFile(MPI_Comm comm, const FemSweep& s, const io::OutputPlan& plan) {
+  io::ResultsFile file = [&] {
+    if (plan.start() == io::OutputStart::Fresh) {
+      GF_CALL(PetscPrintf(comm, "Writing %s (renamed to %s when the sweep completes)\n", plan.workPath().c_str(),
+                          plan.path().c_str()));
+      return io::ResultsFile::create(comm, plan.workPath(), s.layout, s.table, s.sceneAttributes);
+    }
+    ensemble::checkResumable(
+        comm, ensemble::ResumeTarget{s.sceneAttributes, s.layout, "-fem_sweep_resume", "-fem_output_overwrite"},
+        plan.workPath());
+    GF_CALL(PetscPrintf(comm, "Resuming %s\n", plan.workPath().c_str()));
+    return io::ResultsFile::open(comm, plan.workPath());
+  }();
+  file.setRunAttributes(s.runAttributes);
+  file.setProvenance(io::collectProvenance(comm));
+  return file;
+}
+
+// One run of the sweep on the group's communicator; the leader writes it into the file.
+io::TaskOutput runPoint(const FemSweep& s, int point, MPI_Comm group, int worldRank) {
+  PlateModel model(group, s.pointParameters(point), s.pointGrading(point));
+  const double wall0 = MPI_Wtime();
+  FemRunResult r = runPlateExperiment(model);
+  io::TaskOutput o;
+  o.point = point;
+  o.realisation = 0;
+  o.friction = std::move(r.friction);
+  o.endTime = r.time.empty() ? 0.0 : r.time.back();
+  o.steps = r.steps;
+  o.wallSeconds = MPI_Wtime() - wall0;
+  o.rank = worldRank;  // the group's first rank
+  return o;
+}
+
+// -fem_sweep_abort_after (testing only): exits abruptly, as a killed job would.
+void abortIfDue(const FemSweep& s, long ranHere, int rank) {
+  if (s.options.abortAfter <= 0 || ranHere < s.options.abortAfter) return;
+  std::printf("fem sweep: -fem_sweep_abort_after %ld reached: rank %d exits abruptly (test of resume)\n",
+              s.options.abortAfter, rank);
+  std::fflush(stdout);
+  std::_Exit(86);
+}
+
+void printPlan(MPI_Comm comm, const FemSweep& s, const GroupComm& groups, long pending) {
+  std::string axes;
+  for (const auto& a : s.sweep.axes) axes += (axes.empty() ? "" : ",") + a;
+  GF_CALL(PetscPrintf(comm,
+                      "FEM sweep: %d point(s) (axes: %s), %ld to run, on %d group(s) of %d rank(s); "
+                      "%d x %d x %d hexahedra per run\n",
+                      s.points(), axes.empty() ? "none" : axes.c_str(), pending, groups.groups(),
+                      s.options.ranksPerRun, s.params.nx, s.params.ny, s.params.nz));
+}
+
+void printTable(MPI_Comm comm, const FemSweep& s, const std::vector<ensemble::PointStatistics>& stats) {
+  GF_CALL(PetscPrintf(comm, "FEM sweep results (one run per point; relative variation against the non-graded point):\n"
+                            "  point sweep                         mu_s     rel. var. [%%]        mu_k     rel. var. [%%]\n"));
+  for (int p = 0; p < s.points(); ++p) {
+    const auto& st = stats[p];
+    GF_CALL(PetscPrintf(comm, "  %-5d %-24s %10.6f %+14.3f   %10.6f %+14.3f%s\n", p,
+                        ensemble::pointLabel(s.sweep, p).c_str(), st.muStatic.mean, 100 * st.muStaticRelative.value,
+                        st.muKinetic.mean, 100 * st.muKineticRelative.value,
+                        st.peaksUnconfirmed > 0 ? "  (peak not confirmed)" : ""));
+  }
+}
+
+}  // namespace
+
+void runFemSweep(MPI_Comm comm, const FemSweep& s, const RunParameters& record) {
+  int rank = 0;
+  GF_CALL_MPI(MPI_Comm_rank(comm, &rank));
+  const io::OutputPlan plan = planSweepFile(comm, s);  // before any work
+  io::CollectiveFileScope writing(comm, plan.workPath());  // an I/O failure ends every rank
+  io::ResultsFile file = openSweepFile(comm, s, plan);    // a file to resume is checked first
+  record.print(comm, "gradfric-fem: resolved parameters (FEM sweep)");
+  const auto flags = file.finishedTasks();
+  const std::vector<ensemble::Task> pending =
+      ensemble::pendingTasks(s.sweep, 1, std::vector<unsigned char>(flags.begin(), flags.end()));
+  GroupComm groups(comm, s.options.ranksPerRun);
+  printPlan(comm, s, groups, static_cast<long>(pending.size()));
+  const double wall0 = MPI_Wtime();
+  long ranHere = 0;
+  std::string failure;
+  // Round robin over the groups in the fixed order of pendingTasks: the same points run on the
+  // same groups whatever the timing, and no number in the file depends on which group ran it.
+  for (size_t i = groups.group(); i < pending.size(); i += groups.groups()) {
+    const int point = pending[i].point;
+    std::string local;  // this rank's error in this point, if any
+    try {
+      const io::TaskOutput o = runPoint(s, point, groups.comm(), rank);
+      if (groups.leader()) {
+        file.writeTask(o);
+        std::printf("[group %d] point %d (%s): mu_s = %.6f, mu_k = %.6f%s  run %.2f s, %lld steps\n", groups.group(),
+                    point, ensemble::pointLabel(s.sweep, point).c_str(), o.friction.muStatic, o.friction.muKinetic,
+                    o.friction.peakConfirmed ? "" : " (peak not confirmed)", o.wallSeconds,
+                    static_cast<long long>(o.steps));
+        std::fflush(stdout);
+      }
+    } catch (const std::exception& e) {
+      local = "FEM sweep point " + std::to_string(point) + " (" + ensemble::pointLabel(s.sweep, point) +
+              ") failed in group " + std::to_string(groups.group()) + ": " + e.what();
+    }
+    // The group agrees before its next run (a collective on its communicator): an error on one
+    // member, e.g. the leader's write, ends the loop on all of them instead of leaving the others
+    // waiting in the next run. The other groups finish their runs; what finished stays in the file.
+    int failed = local.empty() ? 0 : 1, anyFailed = 0;
+    GF_CALL_MPI(MPI_Allreduce(&failed, &anyFailed, 1, MPI_INT, MPI_MAX, groups.comm()));
+    if (anyFailed) {
+      failure = local;
+      break;
+    }
+    ++ranHere;
+    abortIfDue(s, ranHere, rank);
+  }
+  file.flush();
+  try {
+    agreeOnError(comm, failure);
+  } catch (const CollectiveError& e) {
+    file.close();
+    throw CollectiveError(std::string(e.what()) + "; the finished points are in " + plan.workPath() +
+                          ", continue with -fem_sweep_resume");
+  }
+  const auto stats = ensemble::writeStatistics(file, 1, s.sweep.reference, false);
+  ensemble::finishResultsFile(comm, file, plan);  // complete: renamed into place
+  printTable(comm, s, stats);
+  GF_CALL(PetscPrintf(comm, "FEM sweep: %zu run(s) in %.2f s wall; results in %s\n", pending.size(),
+                      MPI_Wtime() - wall0, plan.path().c_str()));
+}
+
+}  // namespace gradfric::fem

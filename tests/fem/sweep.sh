@@ -1,0 +1,103 @@
+#!/usr/bin/env bash
+# The FEM sweep in one command (docs/fem.md, "Sweeps"), on a coarse 10 x 10 x 2 plate, three
+# points of a friction grading (Delta = 0, 0.2, -0.2):
+#  - determinism: the sweep on 1 rank and on 2 ranks (-fem_sweep_ranks_per_run 1: two groups)
+#    writes the same file value for value (h5diff without /run); on one group of 2 ranks the
+#    numbers agree to rounding;
+#  - the file has the spring-block ensemble's layout (check_sweep_layout.py against an ensemble
+#    of the same lists);
+#  - resume: a sweep killed after its first run leaves <output>.partial and no result; re-run with
+#    -fem_sweep_resume (on another rank count) it skips the finished point and writes the same file;
+#  - bad input: exit 2, one message naming the option, on both ranks, nothing written;
+#  - a sweep that fails leaves the earlier result whole;
+#  - the plotting tool pairs each FEM point with the spring-block point of the same grading and
+#    refuses (exit 2) a sweep that does not match.
+set -u
+driver=$1; sbm_driver=$2; source_dir=$3; scratch=$4
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
+python=/usr/bin/python3
+rm -rf "$scratch"; mkdir -p "$scratch"; cd "$scratch"
+fail() { echo "FAILED: $*" >&2; exit 1; }
+grading=(-grading_profile linear -grading_property friction -ensemble_delta 0,0.2,-0.2)
+sweep=("${grading[@]}" -fem_nx 10 -fem_ny 10 -fem_nz 2)
+fem() {  # name, ranks, expected exit, options...
+  local name=$1 ranks=$2 code=$3; shift 3
+  timeout 300 mpiexec -n "$ranks" "$driver" "$@" >"$name.out" 2>"$name.err"
+  local rc=$?
+  [ $rc -ne 124 ] || fail "$name: no exit within 300 s (a hang)"
+  [ $rc -eq "$code" ] || { tail -5 "$name.err" >&2; fail "$name: exit $rc, expected $code"; }
+}
+same() { h5diff --exclude-path /run "$1" "$2" >/dev/null || fail "$1 and $2 differ: $(h5diff --exclude-path /run "$1" "$2" | head -5)"; }
+
+# Determinism over rank counts.
+fem one 1 0 "${sweep[@]}" -fem_output one.h5
+grep -q "on 1 group(s) of 1 rank(s)" one.out || fail "one: plan line missing"
+[ "$(grep -c '^\[group 0\] point' one.out)" -eq 3 ] || fail "one: not three runs"
+fem two 2 0 "${sweep[@]}" -fem_output two.h5
+grep -q "on 2 group(s) of 1 rank(s)" two.out || fail "two: not two groups"
+grep -q '^\[group 1\] point' two.out || fail "two: group 1 ran nothing"
+same one.h5 two.h5
+fem pair 2 0 "${sweep[@]}" -fem_output pair.h5 -fem_sweep_ranks_per_run 2
+grep -q "on 1 group(s) of 2 rank(s)" pair.out || fail "pair: not one group of two"
+for d in /realisations/mu_s /realisations/mu_k /history/mu; do  # (force_y is zero up to rounding)
+  h5diff -p 1e-9 one.h5 pair.h5 $d $d >/dev/null || fail "one group of 2 ranks: $d differs beyond rounding"
+done
+
+# The ensemble's layout, against a spring-block ensemble of the same lists.
+timeout 300 "$sbm_driver" "${grading[@]}" -sbm_N 10 -ensemble_realisations 2 -output sbm.h5 >sbm.out 2>&1 ||
+  fail "the spring-block ensemble failed: $(tail -3 sbm.out)"
+$python "$source_dir/tests/fem/check_sweep_layout.py" sbm.h5 one.h5 || fail "layout"
+
+# Resume after a kill: the same file.
+fem killed 1 86 "${sweep[@]}" -fem_output resumed.h5 -fem_sweep_abort_after 1
+[ -f resumed.h5.partial ] && [ ! -e resumed.h5 ] || fail "killed: expected only resumed.h5.partial"
+fem again 2 2 "${sweep[@]}" -fem_output resumed.h5
+grep -q "invalid option -fem_output = resumed.h5: .*add -fem_sweep_resume" again.err || fail "again: $(cat again.err)"
+fem resume 2 0 "${sweep[@]}" -fem_output resumed.h5 -fem_sweep_resume
+grep -q "2 to run" resume.out || fail "resume: the finished point was not skipped: $(grep 'to run' resume.out)"
+same one.h5 resumed.h5
+fem resume_other 2 2 "${sweep[@]}" -fem_nx 12 -fem_output resumed.h5 -fem_sweep_resume
+grep -q "invalid option -fem_sweep_resume (continue resumed.h5): it was started with another scene.*-fem_nx: file 10, now 12" resume_other.err ||
+  fail "resume_other: $(cat resume_other.err)"
+fem resume_sbm 1 2 "${sweep[@]}" -fem_output sbm.h5 -fem_sweep_resume
+grep -q "invalid option -fem_sweep_resume (continue sbm.h5): .*format: file gradfric-sbm-ensemble, now gradfric-fem-sweep" resume_sbm.err ||
+  fail "resume_sbm: $(cat resume_sbm.err)"
+
+# Bad input: one message naming the option, exit 2, nothing written (on 2 ranks where the ranks
+# matter; the option checks are the same code on every rank).
+bad() {  # name, ranks, regex, options...
+  local name=$1 ranks=$2 regex=$3; shift 3
+  fem "$name" "$ranks" 2 "$@" -fem_output "$name.h5"
+  [ "$(grep -c '^gradfric: error:' "$name.err")" -eq 1 ] || fail "$name: not one message: $(cat "$name.err")"
+  grep -Eq "$regex" "$name.err" || fail "$name: message does not match $regex: $(cat "$name.err")"
+  ! ls "$name".h5* >/dev/null 2>&1 || fail "$name: a file was written"
+}
+bad ranks 2 "invalid option -fem_sweep_ranks_per_run = 3: allowed a divisor of the number of ranks 2" "${sweep[@]}" -fem_sweep_ranks_per_run 3
+bad sigma 2 "invalid option -ensemble_sigma = \(a list\): allowed no sigma sweep in the FEM" "${sweep[@]}" -ensemble_sigma 0,0.1
+bad delta_range 1 "invalid option -ensemble_delta = 1: allowed values with \|Delta\| < 1" "${sweep[@]}" -ensemble_delta 0,1
+bad no_profile 1 "invalid option -ensemble_delta = \(a list\): allowed only with a grading profile" -ensemble_delta 0,0.2 -fem_nx 10
+bad snapshots 1 "invalid option -fem_snapshot_times = \(a list\): allowed none in a sweep" "${sweep[@]}" -fem_snapshot_times 0
+bad compare 1 "invalid option -fem_compare_sbm = true: allowed false in a sweep" "${sweep[@]}" -fem_compare_sbm
+
+# A failing sweep (the blow-up monitor) leaves the earlier result whole.
+echo "earlier result" >kept.h5
+fem blowup 1 1 "${sweep[@]}" -fem_output kept.h5 -fem_output_overwrite -fem_dt 4e-7 -fem_dt_check false
+grep -q "FEM run unstable.*continue with -fem_sweep_resume" blowup.err || fail "blowup: $(tail -2 blowup.err)"
+[ "$(cat kept.h5)" = "earlier result" ] || fail "a failed sweep replaced kept.h5"
+
+# Pairing in the plotting tool.
+plot=("$python" "$source_dir/scripts/gradfric_plot.py")
+"${plot[@]}" sbm.h5 --fem one.h5 --out plots >plot.out 2>&1 || fail "plot: $(cat plot.out)"
+grep -q "3 FEM point(s) paired" plot.out || fail "plot: no pairs: $(cat plot.out)"
+for p in 0 1 2; do grep -q "FEM $p <-> SBM $p " plot.out || fail "plot: FEM $p not paired with SBM $p"; done
+[ -s plots/sbm_variation.png ] || fail "plot: no variation figure"
+fem other_delta 1 0 "${grading[@]}" -ensemble_delta 0,0.3 -fem_nx 10 -fem_ny 10 -fem_nz 2 -fem_output other.h5
+"${plot[@]}" sbm.h5 --fem other.h5 --out plots >unmatched.out 2>&1
+[ $? -eq 2 ] || fail "plot: an unmatched sweep was not refused with exit 2"
+grep -q "does not match sbm.h5: no spring-block point with the grading and angle of FEM point 1 (Delta=0.3" unmatched.out ||
+  fail "unmatched: $(cat unmatched.out)"
+fem thick 1 0 "${sweep[@]}" -plate_H 1e-4 -fem_output thick.h5
+"${plot[@]}" sbm.h5 --fem thick.h5 --out plots >thick_plot.out 2>&1
+[ $? -eq 2 ] || fail "plot: a sweep of another plate was not refused with exit 2"
+grep -q "do not describe the same plate: -plate_H" thick_plot.out || fail "thick: $(cat thick_plot.out)"
+echo "fem sweep OK"
