@@ -12,7 +12,7 @@ endforeach()
 
 set(GRADFRIC_INSTALL_DATADIR ${CMAKE_INSTALL_DATADIR}/gradfric)
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/input/ DESTINATION ${GRADFRIC_INSTALL_DATADIR}/input
-        FILES_MATCHING PATTERN "*.opts" PATTERN "*.yaml")
+        FILES_MATCHING PATTERN "*.opts" PATTERN "*.yaml" PATTERN "*.h5" PATTERN "*.png")
 # The plotting scripts work on any results file; scripts/setup.sh, run-*.sh and
 # reproduce_paper.sh drive a source tree and stay there.
 install(PROGRAMS ${PROJECT_SOURCE_DIR}/scripts/gradfric_plot.py ${PROJECT_SOURCE_DIR}/scripts/plot_accuracy.py

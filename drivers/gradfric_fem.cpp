@@ -12,6 +12,7 @@
 #include "gradfric/fem/plate_ts.hpp"
 #include "gradfric/fem/simulation.hpp"
 #include "gradfric/fem/sweep.hpp"
+#include "gradfric/physics/field_options.hpp"
 #include "gradfric/physics/grading_options.hpp"
 #include "gradfric/physics/plate_options.hpp"
 #include "gradfric/sbm/model.hpp"
@@ -51,6 +52,7 @@ std::optional<FemRun> readFemRun(MPI_Comm comm, RunParameters* record) {
   run.grading = readGrading(comm, record);
   const Plate plate = readPlate(comm, record);  // one plate for both models
   run.params = readFemParameters(comm, record, plate);
+  run.grading.fields = readPlateFields(comm, record, plate, run.grading);  // -field_*: sampled at cells and nodes
   OptionReader driverOptions(comm, "fem_", "gradfric-fem: both models", record);
   run.compare = driverOptions.flag(
       "compare_sbm", false, "also run one spring-block realisation (-sbm_ options) on the same grading, side by side");
@@ -63,11 +65,12 @@ std::optional<FemRun> readFemRun(MPI_Comm comm, RunParameters* record) {
   }
   run.sweep = readSweepOptions(comm, record);
   if (helpRequested()) return std::nullopt;
+  checkPlateFields(run.grading, plate, static_cast<int>(run.params.nx), static_cast<int>(run.params.ny));
   readPlateTSOptions(comm);  // the -ts_ options: checked here, used by the run's TS
   if (run.compare)
-    checkUnusedOptions(comm, {"plate_", "friction_", "fem_", "grading_", "sbm_", "ensemble_"});
+    checkUnusedOptions(comm, {"plate_", "friction_", "fem_", "grading_", "field_", "sbm_", "ensemble_"});
   else
-    checkUnusedOptions(comm, {"plate_", "friction_", "fem_", "grading_", "ensemble_"});
+    checkUnusedOptions(comm, {"plate_", "friction_", "fem_", "grading_", "field_", "ensemble_"});
   requireFemRunLength(run.params, run.grading, record);  // refuses a dt above the stable step, an endless run
   return run;
 }
@@ -93,6 +96,8 @@ void printPlan(MPI_Comm comm, const FemRun& run, const PlateModel& model, RunPar
               size, params.partitioner.c_str(), params.rampTime, params.settleTime, params.settleDamping,
               params.plate.velocity, params.plate.slidingAngle, describeContact(params).c_str(), params.vC,
               model.timeStep(), model.stableTimeStep(), describeDamping(params).c_str());
+  if (run.grading.fields)
+    for (const auto& line : describeFields(*run.grading.fields)) PetscPrintf(comm, "  %s\n", line.c_str());
 }
 
 void printResults(MPI_Comm comm, const FemRun& run, const FemRunResult& r, double wall) {

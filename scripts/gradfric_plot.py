@@ -11,6 +11,8 @@ RESULTS.h5 is a spring-block ensemble file (gradfric) or a finite-element histor
                             SBM and FEM together (Figures 4, 7, 9, 10, 11); one curve per
                             sliding angle, property or profile when those are swept (Figure 8)
   <name>_first_slip.png     first-slip time on the plate (the detachment front)
+  <name>_fields.png         the property fields a scene used (-field_*: E, mu_s, mu_k, p per
+                            block) next to the first-slip map, one row per sweep point (up to 4)
   <name>_sigma_x.png        sigma_x/p snapshots (Figures 5 and 12)
   <name>_detachment.gif     animation of the sigma_x/p snapshots (the Supporting Information videos)
 
@@ -73,6 +75,7 @@ class Ensemble:
         self.sigma = sweep["sigma"][:]
         self.property = strings(sweep["property"])
         self.profile = strings(sweep["profile"])
+        self.field_value = sweep["field_value"][:] if "field_value" in sweep else None
         self.points = len(self.delta)
         self.done = self.f["realisations/done"][:].astype(bool)
         self.scene = {k: text(v) for k, v in self.f["scene"].attrs.items()}
@@ -90,6 +93,8 @@ class Ensemble:
                 parts.append(self.property[p])
             elif axis == "profile":
                 parts.append(self.profile[p])
+            elif axis.startswith("field_") and self.field_value is not None:
+                parts.append(f"{axis[6:]}={self.field_value[p]:g}")
         return ", ".join(parts)
 
     def statistic(self, name):
@@ -275,6 +280,48 @@ def plot_first_slip(ensemble, png):
     return png
 
 
+FIELD_MAPS = [("E_map", "E [MPa]", 1e-6), ("mu_s_map", "mu_s", 1.0), ("mu_k_map", "mu_k", 1.0),
+              ("p_map", "p [kPa]", 1e-3)]
+
+
+def plot_fields(ensemble, png):
+    """Every property field that varies over the plate, then the first-slip map of the point."""
+    group = ensemble.f.get("properties")
+    if group is None or not any(name in group for name, _, _ in FIELD_MAPS):
+        return None
+    shown = [(n, label, scale) for n, label, scale in FIELD_MAPS
+             if n in group and np.ptp(group[n][...]) > 1e-12 * np.max(np.abs(group[n][...]))]
+    has_slip = "maps" in ensemble.f and "first_slip_time" in ensemble.f["maps"]
+    points = list(range(min(ensemble.points, 4)))
+    columns = len(shown) + (1 if has_slip else 0)
+    if columns == 0:
+        return None
+    scene = ensemble.scene
+    length = float(scene.get("plate_L", scene.get("sbm_L", "0.005"))) * 1e3
+    fig, axes = plt.subplots(len(points), columns, figsize=(3.3 * columns, 3.0 * len(points)), squeeze=False)
+    for row, p in zip(axes, points):
+        for ax, (name, label, scale) in zip(row, shown):
+            im = ax.imshow(group[name][p] * scale, origin="lower", extent=[0, length, 0, length], cmap="viridis")
+            fig.colorbar(im, ax=ax, label=label, shrink=0.8)
+            ax.set_title(label.split()[0] + (f": {ensemble.label(p)}" if ensemble.axes else ""), fontsize=8)
+        if has_slip:
+            ax = row[len(shown)]
+            done = np.flatnonzero(ensemble.done[p])
+            if done.size:
+                m = ensemble.f["maps/first_slip_time"][p, done[0]] * 1e3
+                im = ax.imshow(m, origin="lower", extent=[0, length, 0, length], cmap="magma")
+                fig.colorbar(im, ax=ax, label="first slip [ms]", shrink=0.8)
+                ax.set_title(f"first slip, realisation {done[0]}", fontsize=8)
+        for ax in row:
+            ax.set_xlabel("x [mm] (sliding along x)", fontsize=8)
+        row[0].set_ylabel("y [mm]")
+    fig.suptitle("Property fields and the detachment front", fontsize=10)
+    fig.tight_layout()
+    fig.savefig(png, dpi=100)
+    plt.close(fig)
+    return png
+
+
 def stress_frames(ensemble, point):
     if "maps" not in ensemble.f or "sigma_x_over_p" not in ensemble.f["maps"]:
         return None
@@ -382,6 +429,7 @@ def main(argv=None):
         if len(set(ensemble.delta)) > 1 and np.isfinite(ensemble.statistic("mu_s_relative")).sum() > 1:
             written.append(plot_variation(ensemble, fems, prefix + "_variation.png", sweeps))
         written.append(plot_first_slip(ensemble, prefix + "_first_slip.png"))
+        written.append(plot_fields(ensemble, prefix + "_fields.png"))
         point = default_point(ensemble) if args.point is None else args.point
         if not 0 <= point < ensemble.points:
             sys.exit(f"gradfric_plot: --point {point} is out of range: 0 <= point < {ensemble.points}")

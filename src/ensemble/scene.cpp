@@ -5,7 +5,9 @@
 #include "gradfric/core/input_error.hpp"
 #include "gradfric/core/petsc_call.hpp"
 #include "gradfric/ensemble/sweep_options.hpp"
+#include "gradfric/physics/field_options.hpp"
 #include "gradfric/physics/grading_options.hpp"
+#include "gradfric/physics/property_sampler.hpp"
 #include "gradfric/physics/plate_options.hpp"
 #include "gradfric/sbm/lattice.hpp"
 #include "gradfric/sbm/model.hpp"
@@ -119,7 +121,11 @@ SweepLists readEnsembleOptions(MPI_Comm comm, RunParameters* record, Scene* s) {
       ens.integer("target_max", 200, 2, 10000000, "1",
                   "with -ensemble_target: at most this many realisations per point");
   const PetscInt seed = ens.integer("seed", 1, 0, PETSC_MAX_INT, "1", "scene seed: a task's random stream is (seed, point, realisation)");
-  const SweepLists lists = readSweepLists(ens);  // shared with the FEM sweep
+  SweepLists lists = readSweepLists(ens);  // shared with the FEM sweep
+  lists.fieldParameter = ens.text("field", "",
+                                  "sweep of one scalar parameter of a property field, <property>_<parameter>: "
+                                  "mu_delta, E_exponent, mu_period, p_position, ... (docs/fields.md)");
+  lists.fieldValues = ens.realList("field_values", {}, "(the parameter's)", "the values of -ensemble_field, innermost loop");
   s->commonStreams = ens.flag(
       "common_streams", target > 0.0 && targetType == "variation",
       "common random numbers: realisation r of every sweep point draws from the stream (seed, 0, r); the "
@@ -157,6 +163,38 @@ SweepLists readEnsembleOptions(MPI_Comm comm, RunParameters* record, Scene* s) {
   s->seed = static_cast<std::uint64_t>(seed);
   s->abortAfter = static_cast<long>(abortAfter);
   return lists;
+}
+
+// One PlateFields per value of -ensemble_field_values (empty without a field sweep); the value
+// that makes the field uniform, if any, becomes the sweep's reference.
+std::vector<std::shared_ptr<const PlateFields>> fieldsPerValue(SweepLists* lists,
+                                                               const std::shared_ptr<const PlateFields>& fields) {
+  const bool named = !lists->fieldParameter.empty(), valued = !lists->fieldValues.empty();
+  if (named != valued)
+    throw InputError(named ? "-ensemble_field_values" : "-ensemble_field", "(not set)",
+                     "both -ensemble_field and -ensemble_field_values, or neither");
+  std::vector<std::shared_ptr<const PlateFields>> perValue;
+  for (double v : lists->fieldValues) {
+    try {
+      perValue.push_back(withParameter(fields, lists->fieldParameter, v));
+    } catch (const std::invalid_argument& e) {
+      throw InputError("-ensemble_field", lists->fieldParameter, e.what());
+    }
+  }
+  if (!perValue.empty()) {
+    const PlateFields& f = *perValue.front();
+    const std::string& name = lists->fieldParameter;
+    const auto* swept = name.rfind("E_", 0) == 0 ? f.modulus.get() : name.rfind("p_", 0) == 0 ? f.pressure.get()
+                        : name.rfind("mu_k_", 0) == 0 ? f.muKinetic.get() : f.muStatic.get();
+    const bool amplitude = name.size() > 6 && name.compare(name.size() - 6, 6, "_delta") == 0 &&
+                           swept->shape != FieldShape::Exponential && swept->shape != FieldShape::Bands &&
+                           swept->shape != FieldShape::Map;
+    const bool rate = name.size() > 9 && name.compare(name.size() - 9, 9, "_exponent") == 0 &&
+                      swept->shape == FieldShape::Exponential;
+    lists->fieldHasNeutral = amplitude || rate;
+    lists->fieldNeutral = 0.0;
+  }
+  return perValue;
 }
 
 // The stiffest point of the sweep sets the stable time step: one dt for the whole sweep.
@@ -206,13 +244,23 @@ io::EnsembleLayout layoutOf(const Scene& s) {
   return layout;
 }
 
-io::SweepTable tableOf(const Sweep& sweep, const sbm::Parameters& parameters, int bands) {
-  io::SweepTable table = sweepColumns(sweep);  // shared with the FEM sweep
-  for (const auto& q : sweep.points) {  // the property fields each point uses (results file /properties)
-    const sbm::ColumnProperties c = sbm::columnProperties(parameters, gradingOf(q, bands));
+io::SweepTable tableOf(const Scene& s) {
+  io::SweepTable table = sweepColumns(s.sweep);  // shared with the FEM sweep
+  for (const auto& q : s.sweep.points)
+    if (q.fieldSwept) table.fieldValue.push_back(q.fieldValue);
+  for (int p = 0; p < s.points(); ++p) {  // the property fields each point uses (results file /properties)
+    const Grading g = s.pointGrading(p);
+    const sbm::ColumnProperties c = sbm::columnProperties(s.parameters, g);
     table.modulus.insert(table.modulus.end(), c.modulus.begin(), c.modulus.end());
     table.muStatic.insert(table.muStatic.end(), c.muStatic.begin(), c.muStatic.end());
     table.muKinetic.insert(table.muKinetic.end(), c.muKinetic.begin(), c.muKinetic.end());
+    if (g.fields) {  // fields may vary along y: every block
+      const sbm::BlockProperties b = sbm::blockProperties(s.parameters, g);
+      table.blockModulus.insert(table.blockModulus.end(), b.modulus.begin(), b.modulus.end());
+      table.blockMuStatic.insert(table.blockMuStatic.end(), b.muStatic.begin(), b.muStatic.end());
+      table.blockMuKinetic.insert(table.blockMuKinetic.end(), b.muKinetic.begin(), b.muKinetic.end());
+      table.blockPressure.insert(table.blockPressure.end(), b.pressure.begin(), b.pressure.end());
+    }
   }
   return table;
 }
@@ -227,7 +275,11 @@ sbm::Parameters Scene::pointParameters(int p) const {
   return q;
 }
 
-Grading Scene::pointGrading(int p) const { return gradingOf(sweep.points[p], baseGrading.bands); }
+Grading Scene::pointGrading(int p) const {
+  Grading g = gradingOf(sweep.points[p], baseGrading.bands);
+  g.fields = pointFields.empty() ? fields : pointFields[p];
+  return g;
+}
 
 std::optional<Scene> readScene(MPI_Comm comm, RunParameters* record) {
   Scene s;
@@ -238,18 +290,48 @@ std::optional<Scene> readScene(MPI_Comm comm, RunParameters* record) {
   base.delta = s.baseGrading.delta;
   base.property = toString(s.baseGrading.property);
   base.profile = toString(s.baseGrading.profile);
-  const Grading stiffest = stiffestGrading(buildSweep(lists, base), s.baseGrading, &s.stiffestFactor);
+  Grading stiffest = stiffestGrading(buildSweep(lists, base), s.baseGrading, &s.stiffestFactor);
   const Plate plate = readPlate(comm, record);
+  // The property fields are the same at every point (they replace the grading of their property).
+  s.fields = readPlateFields(comm, record, plate, s.baseGrading);
+  s.baseGrading.fields = stiffest.fields = s.fields;
+  SweepLists allLists = lists;
+  const std::vector<std::shared_ptr<const PlateFields>> valueFields = fieldsPerValue(&allLists, s.fields);
+  // A swept E field: its stiffest value sets the time step (largest factor on a 64 x 64 probe).
+  double stiffestField = 0.0;
+  for (const auto& f : valueFields) {
+    if (!f->modulus) break;
+    Grading g = stiffest;
+    g.fields = f;
+    const PropertySampler sampler(g, 64, 64);
+    double largest = 0.0;
+    for (int j = 0; j < 64; ++j)
+      for (int i = 0; i < 64; ++i) largest = std::max(largest, sampler.modulus((i + 0.5) / 64, (j + 0.5) / 64));
+    if (largest > stiffestField) {
+      stiffestField = largest;
+      stiffest.fields = f;
+    }
+  }
   s.parameters = sbm::readParameters(comm, record, plate, stiffest);
   s.request = sbm::readRequest(comm, record, s.parameters);
   if (helpRequested()) return std::nullopt;
   checkSweepLists(lists, s.baseGrading);
-  checkUnusedOptions(comm, {"ensemble_", "plate_", "friction_", "sbm_", "grading_", "output"});
+  for (std::size_t v = 0; v < valueFields.size(); ++v) {  // every swept field on the lattice, before any work
+    Grading g = s.baseGrading;
+    g.fields = valueFields[v];
+    checkSpringBlockFields(g, plate, s.parameters.blocksPerSide);
+  }
+  checkUnusedOptions(comm, {"ensemble_", "plate_", "friction_", "sbm_", "grading_", "field_", "output"});
 
   base.theta = s.parameters.plate.slidingAngle;
   base.sigma = s.parameters.sigmaStatic;
   base.sigmaKinetic = s.parameters.sigmaKinetic;
-  s.sweep = buildSweep(lists, base);
+  s.sweep = buildSweep(allLists, base);
+  for (const SweepPoint& q : s.sweep.points)  // each point's fields (the same for all without a field sweep)
+    if (q.fieldSwept) {
+      const auto at = std::find(allLists.fieldValues.begin(), allLists.fieldValues.end(), q.fieldValue);
+      s.pointFields.push_back(valueFields[at - allLists.fieldValues.begin()]);
+    }
   if (static_cast<double>(s.points()) * s.realisations > 2e9)
     throw InputError("too many tasks: sweep points x realisations > 2e9");
   if (s.target.active() && s.target.kind == TargetKind::Variation)
@@ -259,7 +341,7 @@ std::optional<Scene> readScene(MPI_Comm comm, RunParameters* record) {
                          "sweeps with a non-graded point for every graded one (point " + std::to_string(p) +
                              " has none: add 0 to -ensemble_delta)");
   s.layout = layoutOf(s);
-  s.table = tableOf(s.sweep, s.parameters, s.baseGrading.bands);
+  s.table = tableOf(s);
   for (const auto& o : record->all()) {
     if (!storedOption(o.name, s)) continue;
     io::Attribute a{stripDash(o.name), o.value, o.unit, originText(o.origin)};

@@ -33,6 +33,7 @@ std::string pointLabel(const Sweep& sweep, int p) {
     if (axis == "sigma") add("sigma=" + formatReal(q.sigma));
     if (axis == "property") add("property=" + q.property);
     if (axis == "profile") add("profile=" + q.profile);
+    if (axis.rfind("field_", 0) == 0) add(axis.substr(6) + "=" + formatReal(q.fieldValue));
   }
   return first ? "single point" : out.str();
 }

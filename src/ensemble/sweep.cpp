@@ -16,6 +16,8 @@ Sweep buildSweep(const SweepLists& lists, const SweepPoint& base) {
   if (!lists.theta.empty()) sweep.axes.push_back("theta");
   if (!lists.sigma.empty()) sweep.axes.push_back("sigma");
   if (!lists.delta.empty()) sweep.axes.push_back("delta");
+  if (!lists.fieldValues.empty()) sweep.axes.push_back("field_" + lists.fieldParameter);
+  const std::vector<double> fieldValues = lists.fieldValues.empty() ? std::vector<double>{0.0} : lists.fieldValues;
   const auto properties = orBase(lists.property, base.property);
   const auto profiles = orBase(lists.profile, base.profile);
   const auto thetas = orBase(lists.theta, base.theta);
@@ -24,15 +26,21 @@ Sweep buildSweep(const SweepLists& lists, const SweepPoint& base) {
     for (const auto& profile : profiles)
       for (double theta : thetas)
         for (size_t s = 0; s < std::max<size_t>(lists.sigma.size(), 1); ++s)
-          for (double delta : deltas) {
-            SweepPoint p = base;
-            p.property = property;
-            p.profile = profile;
-            p.theta = theta;
-            if (!lists.sigma.empty()) p.sigma = p.sigmaKinetic = lists.sigma[s];
-            p.delta = delta;
-            sweep.points.push_back(p);
-          }
+          for (double delta : deltas)
+            for (double value : fieldValues) {
+              SweepPoint p = base;
+              p.property = property;
+              p.profile = profile;
+              p.theta = theta;
+              if (!lists.sigma.empty()) p.sigma = p.sigmaKinetic = lists.sigma[s];
+              p.delta = delta;
+              if (!lists.fieldValues.empty()) {
+                p.fieldSwept = true;
+                p.fieldValue = value;
+                p.fieldNeutral = lists.fieldHasNeutral && value == lists.fieldNeutral;
+              }
+              sweep.points.push_back(p);
+            }
   // The reference of a point: a non-graded point with the same angle and dispersions, preferring
   // the same property and profile (the Delta = 0 entry of its own Delta sweep).
   const int n = static_cast<int>(sweep.points.size());

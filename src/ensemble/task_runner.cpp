@@ -5,6 +5,7 @@
 #include "gradfric/core/random_stream.hpp"
 #include "gradfric/ensemble/log_events.hpp"
 #include "gradfric/ensemble/scheduler.hpp"
+#include "gradfric/physics/property_sampler.hpp"
 #include "gradfric/sbm/model.hpp"
 
 #include "gradfric/sbm/lattice.hpp"
@@ -63,11 +64,15 @@ double runTask(const Scene& scene, const Task& task, io::ResultsFile& file, int 
   io::TaskOutput o = toTaskOutput(task, std::move(result), scene.history, wall, rank);
   if (scene.frictionFields) {  // the same draw as the run's (a pure function of the stream key)
     const sbm::Parameters q = scene.pointParameters(task.point);
-    const sbm::FrictionField field = sbm::buildFriction(q, scene.pointGrading(task.point), key);
+    const Grading grading = scene.pointGrading(task.point);
+    const sbm::FrictionField field = sbm::buildFriction(q, grading, key);
     const int nb = q.blocksPerSide;
-    const double normal = q.normalForcePerBlock();
+    const PropertySampler sampler(grading, nb, nb);  // a pressure field (-field_p_*) changes F_n per block
+    const bool pressureField = grading.fields && grading.fields->pressure;
     for (int row = 0; row < nb; ++row)
       for (int column = 0; column < nb; ++column) {
+        const double normal = pressureField ? q.normalForcePerBlock() * sampler.pressure((column + 0.5) / nb, (row + 0.5) / nb)
+                                            : q.normalForcePerBlock();
         o.localStatic.push_back(field.staticAt(row, column) / normal);
         o.localKinetic.push_back(field.kineticAt(row, column) / normal);
       }

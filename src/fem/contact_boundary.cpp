@@ -1,6 +1,7 @@
 #include "gradfric/fem/contact_boundary.hpp"
 
 #include "gradfric/core/petsc_call.hpp"
+#include "gradfric/physics/property_sampler.hpp"
 
 #include <algorithm>
 #include <utility>
@@ -12,8 +13,16 @@ ContactBoundary::ContactBoundary(const PlateMesh& mesh, const PenaltyStiffness& 
     : comm_(mesh.comm()), stiffness_(stiffness) {
   const double length = mesh.size().length;
   const std::vector<double> area = mesh.sumOverFaces(FaceSet::Bottom);
-  const std::vector<double> graded =
-      mesh.sumOverFaces(FaceSet::Bottom, [&](double x) { return grading.frictionFactor(x / length); });
+  // The property fields (or the bands) at the bottom faces' centres; mu_k has its own sum only
+  // when a field gives it its own factor.
+  const PropertySampler sampler(grading, mesh.size().nx, mesh.size().ny);
+  const std::vector<double> graded = mesh.sumOverFaces(
+      FaceSet::Bottom, [&](double x, double y) { return sampler.muStatic(x / length, y / length); });
+  const bool ownKinetic = grading.fields && grading.fields->muKinetic != grading.fields->muStatic;
+  const std::vector<double> gradedKinetic =
+      ownKinetic ? mesh.sumOverFaces(FaceSet::Bottom,
+                                     [&](double x, double y) { return sampler.muKinetic(x / length, y / length); })
+                 : graded;
   FrictionSites sites;
   sites.layout = SiteLayout::PerSite;
   for (const OwnedVertex& v : mesh.ownedVertices()) {
@@ -21,7 +30,7 @@ ContactBoundary::ContactBoundary(const PlateMesh& mesh, const PenaltyStiffness& 
     const double factor = graded[v.block] / area[v.block];  // area-weighted band factor
     nodes_.push_back(Node{v.block, v.x, v.y, area[v.block]});
     sites.staticStrength.push_back(muStatic * factor);
-    sites.kineticStrength.push_back(muKinetic * factor);
+    sites.kineticStrength.push_back(muKinetic * (gradedKinetic[v.block] / area[v.block]));
   }
   sites.columns = static_cast<int>(nodes_.size());
   FrictionLawSettings settings;

@@ -2,6 +2,7 @@
 
 #include "gradfric/core/petsc_call.hpp"
 #include "gradfric/fem/log_events.hpp"
+#include "gradfric/physics/property_sampler.hpp"
 
 #include <stdexcept>
 
@@ -31,8 +32,9 @@ ElasticOperator::ElasticOperator(const PlateMesh& mesh, double youngsModulus, do
   evGeneric_ = femLogEvents().generic;
   const double length = mesh.size().length;
   cellModulus_.resize(mesh.localCells());
+  const PropertySampler sampler(grading, mesh.size().nx, mesh.size().ny);  // field or bands at the cell centroid
   for (PetscInt c = 0; c < mesh.localCells(); ++c)
-    cellModulus_[c] = youngsModulus * grading.modulusFactor(mesh.cellCentres()[c][0] / length);
+    cellModulus_[c] = youngsModulus * sampler.modulus(mesh.cellCentres()[c][0] / length, mesh.cellCentres()[c][1] / length);
   setupReference();
   GF_CALL(DMCreateGlobalVector(dmU_, uGlobal_.out()));
   GF_CALL(VecDuplicate(uGlobal_, fGlobal_.out()));

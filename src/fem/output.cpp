@@ -5,6 +5,7 @@
 #include "gradfric/core/petsc_call.hpp"
 #include "gradfric/fem/xdmf.hpp"
 #include "gradfric/io/hdf5_attributes.hpp"
+#include "gradfric/physics/property_sampler.hpp"
 
 #include <hdf5.h>
 #include <petscdmplex.h>
@@ -244,13 +245,34 @@ void OutputFiles::writeHistory(const PlateModel& model, const FemRunResult& r, c
     {  // The property fields used: E per cell column, friction per bottom-face column (both vary along x only).
       const FemParameters& q = model.params();
       const Grading& g = model.grading();
+      const PropertySampler sampler(g, q.nx, q.ny);  // the fields (-field_*) or the bands
       std::vector<double> x, modulus, muS, muK;
       for (int i = 0; i < q.nx; ++i) {
         const double centre = (i + 0.5) / q.nx;
         x.push_back(centre * q.plate.length);
-        modulus.push_back(q.plate.youngsModulus * g.modulusFactor(centre));
-        muS.push_back(q.plate.muStatic * g.frictionFactor(centre));
-        muK.push_back(q.plate.muKinetic * g.frictionFactor(centre));
+        modulus.push_back(q.plate.youngsModulus * sampler.modulus(centre, 0.5));
+        muS.push_back(q.plate.muStatic * sampler.muStatic(centre, 0.5));
+        muK.push_back(q.plate.muKinetic * sampler.muKinetic(centre, 0.5));
+      }
+      if (g.fields) {  // fields may vary along y: every bottom cell, [ny][nx] row-major
+        std::vector<double> maps[4];
+        for (int j = 0; j < q.ny; ++j)
+          for (int i = 0; i < q.nx; ++i) {
+            const double u = (i + 0.5) / q.nx, v = (j + 0.5) / q.ny;
+            maps[0].push_back(q.plate.youngsModulus * sampler.modulus(u, v));
+            maps[1].push_back(q.plate.muStatic * sampler.muStatic(u, v));
+            maps[2].push_back(q.plate.muKinetic * sampler.muKinetic(u, v));
+            maps[3].push_back(q.plate.pressure * sampler.pressure(u, v));
+          }
+        H5Group fieldGroup = createGroup(file, "fields");
+        const char* names[4] = {"E_map", "mu_s_map", "mu_k_map", "p_map"};
+        const char* units[4] = {"Pa", "1", "1", "Pa"};
+        for (int k = 0; k < 4; ++k) {
+          H5Dataset d = vector(fieldGroup, names[k], maps[k], units[k],
+                               "property field at the centre of every bottom cell, fem_ny x fem_nx row-major (docs/fields.md)");
+          writeIntAttribute(d, "rows", q.ny);
+          writeIntAttribute(d, "columns", q.nx);
+        }
       }
       H5Group properties = createGroup(file, "properties");
       H5Dataset column = vector(properties, "x", x, "m", "centre of each cell column along the grading axis x");

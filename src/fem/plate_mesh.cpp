@@ -168,7 +168,7 @@ std::vector<double> PlateMesh::sumOverCells(const std::vector<double>& cellShare
   });
 }
 
-std::vector<double> PlateMesh::sumOverFaces(FaceSet set, const std::function<double(double)>& weight) const {
+std::vector<double> PlateMesh::sumOverFaces(FaceSet set, const std::function<double(double, double)>& weight) const {
   return assemble([&](PetscScalar* f, PetscSection section) {
     PetscSection coordSection = nullptr;
     Vec coords = nullptr;
@@ -193,7 +193,7 @@ std::vector<double> PlateMesh::sumOverFaces(FaceSet set, const std::function<dou
       PetscInt np = 0;
       PetscInt* pts = nullptr;
       GF_CALL(DMPlexGetTransitiveClosure(dm_, faces[i], PETSC_TRUE, &np, &pts));
-      double xc = 0;
+      double xc = 0, yc = 0;
       int nv = 0;
       PetscInt verts[4];
       for (PetscInt k = 0; k < np; ++k) {
@@ -204,11 +204,12 @@ std::vector<double> PlateMesh::sumOverFaces(FaceSet set, const std::function<dou
         if (std::fabs(x[off + 2] - zExpected) > 1e-9 * size_.thickness)
           throw std::runtime_error("plate mesh: Face Sets value does not match the face position");
         xc += x[off] / 4.0;
+        yc += x[off + 1] / 4.0;
         if (nv < 4) verts[nv] = p;
         ++nv;
       }
       GF_CALL(DMPlexRestoreTransitiveClosure(dm_, faces[i], PETSC_TRUE, &np, &pts));
-      const double share = weight ? quarter * weight(xc) : quarter;
+      const double share = weight ? quarter * weight(xc, yc) : quarter;
       for (int k = 0; k < std::min(nv, 4); ++k) {
         PetscInt soff = 0;
         GF_CALL(PetscSectionGetOffset(section, verts[k], &soff));

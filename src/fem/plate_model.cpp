@@ -2,6 +2,7 @@
 
 #include "gradfric/core/petsc_call.hpp"
 #include "gradfric/fem/log_events.hpp"
+#include "gradfric/physics/property_sampler.hpp"
 
 namespace gradfric::fem {
 
@@ -13,6 +14,16 @@ FemParameters resolved(FemParameters q) {
 }
 
 MeshSize meshSize(const FemParameters& q) { return {q.nx, q.ny, q.nz, q.plate.length, q.plate.thickness}; }
+
+// A static pressure field (-field_p_*) as the top load's shape p(x, y)/p; empty when uniform. Used
+// while the top loading is built only.
+std::function<double(double, double)> pressureShapeOf(const Grading& grading, const FemParameters& q) {
+  if (!grading.fields || !grading.fields->pressure) return {};
+  const double length = q.plate.length;
+  return [sampler = PropertySampler(grading, q.nx, q.ny), length](double x, double y) {
+    return sampler.pressure(x / length, y / length);
+  };
+}
 
 }  // namespace
 
@@ -27,7 +38,8 @@ PlateModel::PlateModel(MPI_Comm comm, const FemParameters& params, const Grading
             params_.bulkQuadratic, grading),
       contact_(mesh_, PenaltyStiffness{params_.kn, params_.kt}, params_.plate.muStatic, params_.plate.muKinetic,
                params_.vC, grading),
-      top_(mesh_, params_.plate.pressure, params_.rampTime, params_.plate.velocity, params_.plate.slidingAngle) {
+      top_(mesh_, params_.plate.pressure, params_.rampTime, params_.plate.velocity, params_.plate.slidingAngle,
+           pressureShapeOf(grading, params_)) {
   stableDt_ = fem::stableTimeStep(params_, grading_);
   dt_ = fem::chooseTimeStep(params_, grading_);
   if (dt_ > stableDt_)  // only with -fem_dt_check false

@@ -2,6 +2,7 @@
 
 #include "gradfric/core/run_limits.hpp"
 #include "gradfric/fem/hex_element.hpp"
+#include "gradfric/physics/property_sampler.hpp"
 #include "gradfric/physics/stability.hpp"
 
 #include <algorithm>
@@ -18,6 +19,11 @@ double stableTimeStep(const FemParameters& given, const Grading& grading) {
   double factor = 1.0;
   for (int band = 0; band < grading.bands; ++band)
     if (grading.gradesModulus()) factor = std::max(factor, grading.bandFactor(band));
+  if (grading.fields && grading.fields->modulus) {  // an E field: its stiffest cell
+    const PropertySampler sampler(grading, q.nx, q.ny);
+    for (int j = 0; j < q.ny; ++j)
+      for (int i = 0; i < q.nx; ++i) factor = std::max(factor, sampler.modulus((i + 0.5) / q.nx, (j + 0.5) / q.ny));
+  }
   const double elementOmega2 = elementMaxFrequencySquared(element, q.plate.youngsModulus * factor, q.plate.density);
   double omega2 = elementOmega2;
   // Penalty springs: k * area / nodal mass = 2 k / (rho hz) at every bottom node.

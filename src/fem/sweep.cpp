@@ -102,7 +102,11 @@ FemParameters FemSweep::pointParameters(int p) const {
   return q;
 }
 
-Grading FemSweep::pointGrading(int p) const { return ensemble::gradingOf(sweep.points[p], baseGrading.bands); }
+Grading FemSweep::pointGrading(int p) const {
+  Grading g = ensemble::gradingOf(sweep.points[p], baseGrading.bands);
+  g.fields = baseGrading.fields;  // the property fields (-field_*) are the same at every point
+  return g;
+}
 
 FemSweep buildFemSweep(MPI_Comm comm, const FemParameters& params, const Grading& grading,
                        const SweepOptions& options, bool compareSbm, const RunParameters& record) {

@@ -7,12 +7,13 @@
 
 namespace gradfric::fem {
 
-TopLoading::TopLoading(const PlateMesh& mesh, double pressure, double rampTime, double velocity, double angleDegrees)
+TopLoading::TopLoading(const PlateMesh& mesh, double pressure, double rampTime, double velocity, double angleDegrees,
+                       const std::function<double(double, double)>& pressureShape)
     : comm_(mesh.comm()), pressure_(pressure), rampTime_(rampTime) {
   const double theta = angleDegrees * M_PI / 180.0;
   velocityX_ = velocity * std::cos(theta);
   velocityY_ = velocity * std::sin(theta);
-  const std::vector<double> area = mesh.sumOverFaces(FaceSet::Top);
+  const std::vector<double> area = mesh.sumOverFaces(FaceSet::Top, pressureShape);
   for (const OwnedVertex& v : mesh.ownedVertices())
     if (area[v.block] > 0) nodes_.push_back({v.block, area[v.block]});
 }

@@ -220,6 +220,8 @@ ResultsFile ResultsFile::create(MPI_Comm comm, const std::string& path, const En
     column1("theta", "degree", "sliding angle between the slider velocity and the grading axis x", sweep.theta);
     column1("sigma", "1", "relative standard deviation of the local mu_s,i", sweep.sigma);
     column1("sigma_kinetic", "1", "relative standard deviation of the local mu_k,i", sweep.sigmaKinetic);
+    if (sweep.fieldValue.size() == P)  // the axis field_<parameter> names it (-ensemble_field)
+      column1("field_value", "", "value of the swept property-field parameter (the axis field_<name>)", sweep.fieldValue);
     auto strings = [&](const char* name, const char* description, const std::vector<std::string>& values) {
       size_t width = 1;
       for (const auto& v : values) width = std::max(width, v.size());
@@ -249,6 +251,16 @@ ResultsFile ResultsFile::create(MPI_Comm comm, const std::string& path, const En
           "mean local kinetic coefficient of each block column; realisation r draws "
           "mu_k,i = mu_k * (1 + sigma_kinetic * z) per block (docs/ensemble.md)",
           sweep.muKinetic);
+    // With property fields (-field_*), which may vary along y: every block's value, per point.
+    auto map = [&](const char* name, const char* units, const char* description, const std::vector<double>& v) {
+      if (v.size() != P * N * N) return;
+      H5Dataset d = real(group, name, {point, row, column}, units, description);
+      if (f.rank_ == 0) writeSlab(d, H5T_NATIVE_DOUBLE, {0, 0, 0}, {P, N, N}, v.data(), f.independent_);
+    };
+    map("E_map", "Pa", "Young's modulus of every block (property fields, docs/fields.md)", sweep.blockModulus);
+    map("mu_s_map", "1", "mean local static coefficient of every block, before dispersion", sweep.blockMuStatic);
+    map("mu_k_map", "1", "mean local kinetic coefficient of every block, before dispersion", sweep.blockMuKinetic);
+    map("p_map", "Pa", "normal pressure of every block (its normal force is p l^2)", sweep.blockPressure);
   }
   {
     H5Group group = createGroup(root, "realisations");

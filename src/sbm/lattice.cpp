@@ -1,5 +1,6 @@
 #include "gradfric/sbm/lattice.hpp"
 
+#include "gradfric/physics/property_sampler.hpp"
 #include "gradfric/sbm/spring.hpp"
 
 #include <algorithm>
@@ -12,6 +13,8 @@ namespace {
 double seriesStiffness(double a, double b) { return 2.0 * a * b / (a + b); }
 
 double columnCentre(int column, int blocksPerSide) { return (column + 0.5) / blocksPerSide; }
+// The stiffness is per column: an E field varies along x only (the scene refuses others), so any row will do.
+constexpr double kMiddleRow = 0.5;
 
 }  // namespace
 
@@ -26,9 +29,10 @@ LatticeStiffness buildStiffness(const Parameters& p, const Grading& grading) {
   LatticeStiffness s;
   s.blocksPerSide = nb;
   s.spacing = p.spacing();
-  s.graded = grading.gradesModulus();
+  const PropertySampler sampler(grading, nb, nb);
+  s.graded = sampler.gradesModulus();
   std::vector<double> modulus(nb);
-  for (int c = 0; c < nb; ++c) modulus[c] = p.plate.youngsModulus * grading.modulusFactor(columnCentre(c, nb));
+  for (int c = 0; c < nb; ++c) modulus[c] = p.plate.youngsModulus * sampler.modulus(columnCentre(c, nb), kMiddleRow);
   s.vertical.resize(nb);
   s.slider.resize(nb);
   for (int c = 0; c < nb; ++c) {
@@ -46,41 +50,64 @@ LatticeStiffness buildStiffness(const Parameters& p, const Grading& grading) {
 
 ColumnProperties columnProperties(const Parameters& p, const Grading& grading) {
   const int nb = p.blocksPerSide;
+  const PropertySampler sampler(grading, nb, nb);
   ColumnProperties c;
   for (int column = 0; column < nb; ++column) {
     const double x = columnCentre(column, nb);
-    c.modulus.push_back(p.plate.youngsModulus * grading.modulusFactor(x));
-    c.muStatic.push_back(p.plate.muStatic * grading.frictionFactor(x));
-    c.muKinetic.push_back(p.plate.muKinetic * grading.frictionFactor(x));
+    c.modulus.push_back(p.plate.youngsModulus * sampler.modulus(x, kMiddleRow));
+    c.muStatic.push_back(p.plate.muStatic * sampler.muStatic(x, kMiddleRow));
+    c.muKinetic.push_back(p.plate.muKinetic * sampler.muKinetic(x, kMiddleRow));
   }
   return c;
+}
+
+BlockProperties blockProperties(const Parameters& p, const Grading& grading) {
+  const int nb = p.blocksPerSide;
+  const PropertySampler sampler(grading, nb, nb);
+  BlockProperties b;
+  for (int r = 0; r < nb; ++r)
+    for (int column = 0; column < nb; ++column) {
+      const double u = columnCentre(column, nb), v = columnCentre(r, nb);
+      b.modulus.push_back(p.plate.youngsModulus * sampler.modulus(u, v));
+      b.muStatic.push_back(p.plate.muStatic * sampler.muStatic(u, v));
+      b.muKinetic.push_back(p.plate.muKinetic * sampler.muKinetic(u, v));
+      b.pressure.push_back(p.plate.pressure * sampler.pressure(u, v));
+    }
+  return b;
 }
 
 FrictionField buildFriction(const Parameters& p, const Grading& grading, StreamKey key) {
   const int nb = p.blocksPerSide;
   const double normal = p.normalForcePerBlock();
+  const PropertySampler sampler(grading, nb, nb);
   FrictionField f;
   f.columns = nb;
   const bool dispersed = p.sigmaStatic > 0.0 || p.sigmaKinetic > 0.0;
-  if (dispersed) {
+  if (dispersed || sampler.frictionVariesAlongY()) {
     f.layout = SiteLayout::PerSite;
-  } else if (grading.gradesFriction()) {
+  } else if (sampler.gradesFriction()) {
     f.layout = SiteLayout::PerColumn;
   } else {
     f.layout = SiteLayout::Uniform;
   }
-  const int columns = f.layout == SiteLayout::Uniform ? 1 : nb;
-  std::vector<double> meanStatic(columns), meanKinetic(columns);
-  for (int c = 0; c < columns; ++c) {
-    const double factor = grading.frictionFactor(columnCentre(c, nb));
-    meanStatic[c] = p.plate.muStatic * factor;
-    meanKinetic[c] = p.plate.muKinetic * factor;
-  }
+  // Mean coefficients and normal force of a block (row r, column c): the fields' or the bands'.
+  struct Mean {
+    double muS, muK, normal;
+  };
+  auto meanAt = [&](int r, int c) {
+    const double u = columnCentre(c, nb), v = columnCentre(r, nb);
+    return Mean{p.plate.muStatic * sampler.muStatic(u, v), p.plate.muKinetic * sampler.muKinetic(u, v),
+                grading.fields && grading.fields->pressure ? normal * sampler.pressure(u, v) : normal};
+  };
   if (!dispersed) {
-    for (int c = 0; c < columns; ++c) {
-      f.staticStrength.push_back(meanStatic[c] * normal);
-      f.kineticStrength.push_back(meanKinetic[c] * normal);
-    }
+    const int rows = f.layout == SiteLayout::PerSite ? nb : 1;
+    const int columns = f.layout == SiteLayout::Uniform ? 1 : nb;
+    for (int r = 0; r < rows; ++r)
+      for (int c = 0; c < columns; ++c) {
+        const Mean m = meanAt(rows == 1 ? nb / 2 : r, c);
+        f.staticStrength.push_back(m.muS * m.normal);
+        f.kineticStrength.push_back(m.muK * m.normal);
+      }
     return f;
   }
   const RandomStream stream(key);
@@ -89,17 +116,17 @@ FrictionField buildFriction(const Parameters& p, const Grading& grading, StreamK
   for (int r = 0; r < nb; ++r) {
     for (int c = 0; c < nb; ++c) {
       const int i = r * nb + c;
-      const int col = f.layout == SiteLayout::PerSite ? c : 0;
+      const Mean m = meanAt(r, c);
       double muS = 0.0, muK = 0.0;
       for (std::uint32_t attempt = 0;; ++attempt) {
         const auto [zs, zk] = stream.normalPair(std::uint64_t(i), 0, attempt);
-        muS = meanStatic[col] * (1.0 + p.sigmaStatic * zs);
-        muK = meanKinetic[col] * (1.0 + p.sigmaKinetic * zk);
+        muS = m.muS * (1.0 + p.sigmaStatic * zs);
+        muK = m.muK * (1.0 + p.sigmaKinetic * zk);
         if (muK > 0.0 && muK <= muS) break;
         if (attempt == 0) ++f.redrawnBlocks;
       }
-      f.staticStrength[i] = muS * normal;
-      f.kineticStrength[i] = muK * normal;
+      f.staticStrength[i] = muS * m.normal;
+      f.kineticStrength[i] = muK * m.normal;
     }
   }
   return f;

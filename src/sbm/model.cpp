@@ -2,6 +2,7 @@
 #include "gradfric/sbm/model.hpp"
 
 #include "gradfric/core/format.hpp"
+#include "gradfric/physics/field.hpp"
 #include "gradfric/physics/friction_laws.hpp"
 #include "gradfric/physics/stability.hpp"
 #include "gradfric/sbm/integrator.hpp"
@@ -153,10 +154,16 @@ std::vector<std::string> activeEffects(const Parameters& p, const Grading& g, co
   std::ostringstream s;
   s << p.blocksPerSide << " x " << p.blocksPerSide << " blocks, axial + diagonal springs (nonlinear geometry)";
   effects.push_back(s.str());
+  const bool fieldE = g.fields && g.fields->modulus;
+  const bool fieldMu = g.fields && (g.fields->muStatic || g.fields->muKinetic || g.fields->pressure);
   effects.push_back(g.gradesModulus() ? "graded Young's modulus (" + describe(g) + "), series spring stiffness"
+                    : fieldE          ? "Young's modulus from a property field, series spring stiffness"
                                       : "uniform Young's modulus: uniform-stiffness kernel");
   effects.push_back(g.gradesFriction() ? "graded friction coefficients (" + describe(g) + ")"
+                    : fieldMu          ? "friction strengths mu p l^2 from property fields"
                                        : "uniform mean friction coefficients");
+  if (g.fields)
+    for (const auto& line : describeFields(*g.fields)) effects.push_back(line);
   if (p.sigmaStatic > 0 || p.sigmaKinetic > 0) {
     std::ostringstream d;
     d << "Gaussian dispersion of local friction: sigma_s = " << p.sigmaStatic << ", sigma_k = " << p.sigmaKinetic

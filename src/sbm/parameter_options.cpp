@@ -3,6 +3,7 @@
 
 #include "gradfric/core/input_error.hpp"
 #include "gradfric/core/run_limits.hpp"
+#include "gradfric/physics/field_options.hpp"
 #include "gradfric/physics/friction_options.hpp"
 #include "gradfric/physics/stability.hpp"
 #include "gradfric/physics/friction_laws.hpp"
@@ -45,6 +46,7 @@ Parameters readParameters(MPI_Comm comm, RunParameters* record, const Plate& pla
   o.requireRange("sigma_k", p.sigmaKinetic, 0.0, 0.5, "0 <= sigma_k <= 0.5");
   o.requireAtLeast("N", p.blocksPerSide, 2);
   if (p.blocksPerSide > 4096) throw InputError(o.fullName("N"), std::to_string(p.blocksPerSide), "2 <= N <= 4096");
+  checkSpringBlockFields(grading, plate, p.blocksPerSide);  // the property fields at the block centres
 
   const double kInt = p.axialStiffness(p.plate.youngsModulus);
   const double omega = std::sqrt(kInt / p.blockMass());

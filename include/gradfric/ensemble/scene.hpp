@@ -7,12 +7,14 @@
 #include "gradfric/ensemble/precision_target.hpp"
 #include "gradfric/ensemble/sweep.hpp"
 #include "gradfric/io/results_file.hpp"
+#include "gradfric/physics/field.hpp"
 #include "gradfric/physics/grading.hpp"
 #include "gradfric/sbm/parameters.hpp"
 
 #include <mpi.h>
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -22,6 +24,8 @@ namespace gradfric::ensemble {
 struct Scene {
   // -ensemble_* and -output* options.
   Grading baseGrading;
+  std::shared_ptr<const PlateFields> fields;  // -field_* (null: none), the same at every point
+  std::vector<std::shared_ptr<const PlateFields>> pointFields;  // per point with -ensemble_field (else empty)
   int realisations = 1;          // per point; with a target, the cap (-ensemble_target_max)
   PrecisionTarget target;        // -ensemble_target*: inactive (halfWidth 0) for a fixed count
   bool extend = false;           // -ensemble_extend: add realisations or points to a finished file

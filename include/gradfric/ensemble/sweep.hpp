@@ -15,7 +15,11 @@ struct SweepPoint {
   double sigmaKinetic = 0.0;  // relative dispersion of mu_k,i
   std::string property = "E";
   std::string profile = "none";
-  bool graded() const { return profile != "none" && delta != 0.0; }
+  // A swept property-field parameter (-ensemble_field): its value at this point; neutral when
+  // the value makes the field uniform (an amplitude of 0), the reference of the relative variation.
+  double fieldValue = 0.0;
+  bool fieldSwept = false, fieldNeutral = true;
+  bool graded() const { return (profile != "none" && delta != 0.0) || (fieldSwept && !fieldNeutral); }
 };
 
 // The lists of a scene; an empty list is not swept (the base value is used).
@@ -25,6 +29,12 @@ struct SweepLists {
   std::vector<double> theta;
   std::vector<double> sigma;  // sets both relative dispersions
   std::vector<double> delta;
+  // One scalar parameter of a property field (-ensemble_field mu_delta -ensemble_field_values ...),
+  // innermost; `fieldNeutral` is the value that makes the field uniform, if there is one.
+  std::string fieldParameter;
+  std::vector<double> fieldValues;
+  bool fieldHasNeutral = false;
+  double fieldNeutral = 0.0;
 };
 
 struct Sweep {
@@ -33,7 +43,7 @@ struct Sweep {
   std::vector<int> reference;  // per point: the non-graded point it is compared with, or -1
 };
 
-// Loop order, outermost first: property, profile, theta, sigma, delta.
+// Loop order, outermost first: property, profile, theta, sigma, delta, field parameter.
 Sweep buildSweep(const SweepLists& lists, const SweepPoint& base);
 
 // The grading of one point (bands from the scene's -grading_bands).

@@ -57,8 +57,8 @@ public:
   // its value to its 8 vertices), assembled over ranks.
   std::vector<double> sumOverCells(const std::vector<double>& cellShare) const;
   // Per owned block, the sum over the faces of `set` around the vertex of a quarter of the face's
-  // area times weight(x of the face centre) (weight 1 if empty), assembled over ranks.
-  std::vector<double> sumOverFaces(FaceSet set, const std::function<double(double)>& weight = {}) const;
+  // area times weight(x, y of the face centre) (weight 1 if empty), assembled over ranks.
+  std::vector<double> sumOverFaces(FaceSet set, const std::function<double(double, double)>& weight = {}) const;
 
 private:
   void build(const std::string& partitioner);

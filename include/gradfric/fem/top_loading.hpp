@@ -5,13 +5,16 @@
 // vertical displacement are accounted for the energy balance.
 #include "gradfric/fem/plate_mesh.hpp"
 
+#include <functional>
 #include <vector>
 
 namespace gradfric::fem {
 
 class TopLoading {
 public:
-  TopLoading(const PlateMesh& mesh, double pressure, double rampTime, double velocity, double angleDegrees);
+  // pressureShape(x, y): the local pressure over p (a static pressure field, -field_p_*); empty: uniform.
+  TopLoading(const PlateMesh& mesh, double pressure, double rampTime, double velocity, double angleDegrees,
+             const std::function<double(double, double)>& pressureShape = {});
 
   double pressureAt(double t, bool sliding) const;
   // Adds the pressure force at t to the force slots of F (global state layout).
@@ -28,7 +31,7 @@ public:
 private:
   struct Node {
     PetscInt block;
-    double area;
+    double area;  // nodal area, times the pressure shape when there is one (what p pushes on)
   };
   MPI_Comm comm_;
   double pressure_, rampTime_, velocityX_, velocityY_;

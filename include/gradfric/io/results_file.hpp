@@ -53,6 +53,10 @@ struct SweepTable {
   // The property fields each point used before random dispersion, P x N_b row-major (point,
   // block column; every row of a column is the same): E [Pa], mean mu_s and mu_k.
   std::vector<double> modulus, muStatic, muKinetic;
+  // With property fields only (else empty): P x N_b x N_b (point, block row, block column): E [Pa],
+  // mean mu_s and mu_k, normal pressure p [Pa] of every block.
+  std::vector<double> blockModulus, blockMuStatic, blockMuKinetic, blockPressure;
+  std::vector<double> fieldValue;  // per point: the swept field parameter (-ensemble_field), else empty
 };
 
 struct TaskOutput {

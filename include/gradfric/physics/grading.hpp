@@ -3,6 +3,7 @@
 // Pure arithmetic, no PETSc: unit-testable on its own and shared by the SBM and the FEM.
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <string>
 
 namespace gradfric {
@@ -10,11 +11,16 @@ namespace gradfric {
 enum class GradingProfile { None, Linear, Triangular };
 enum class GradedProperty { YoungsModulus, Friction, Both };
 
+struct PlateFields;
+
 struct Grading {
   GradingProfile profile = GradingProfile::None;
   GradedProperty property = GradedProperty::YoungsModulus;
   double delta = 0.0;  // relative variation at the edge (linear) or centre (triangular), |delta| < 1
   int bands = 10;      // N >= 2
+  // Property fields (-field_* options, field.hpp): each replaces the grading of its property.
+  // Sample through PropertySampler (property_sampler.hpp), which falls back on the bands below.
+  std::shared_ptr<const PlateFields> fields = nullptr;
 
   bool active() const { return profile != GradingProfile::None && delta != 0.0; }
   bool gradesModulus() const { return active() && property != GradedProperty::Friction; }

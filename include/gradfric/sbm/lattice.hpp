@@ -45,6 +45,12 @@ struct ColumnProperties {
   std::vector<double> modulus, muStatic, muKinetic;
 };
 ColumnProperties columnProperties(const Parameters& parameters, const Grading& grading);
+// The same per block (row-major, N_b^2 each), with the normal pressure p [Pa]: the property
+// fields (-field_*) may vary along y too.
+struct BlockProperties {
+  std::vector<double> modulus, muStatic, muKinetic, pressure;
+};
+BlockProperties blockProperties(const Parameters& parameters, const Grading& grading);
 
 // Energies of a lattice state [J]: kinetic, elastic in the internal springs, elastic in the
 // slider springs (slider at sliderX, sliderY, the displacement of the slider's end).

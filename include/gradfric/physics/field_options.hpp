@@ -1,0 +1,26 @@
+#pragma once
+// The -field_<property>_* options (E, mu, mu_s, mu_k, p): one property field each (field.hpp),
+// maps read from HDF5 or greyscale PNG. PETSc/HDF5 part of the library; docs/fields.md.
+#include "gradfric/core/options.hpp"
+#include "gradfric/physics/field.hpp"
+#include "gradfric/physics/grading.hpp"
+#include "gradfric/physics/plate.hpp"
+
+#include <memory>
+
+namespace gradfric {
+
+// Reads every field's options (all listed by -help) and its map; refuses bad options, unreadable
+// or malformed maps and a field that a -grading_* option grades too. Null when no field is set.
+std::shared_ptr<const PlateFields> readPlateFields(MPI_Comm comm, RunParameters* record, const Plate& plate,
+                                                   const Grading& grading);
+
+// Refuses, naming the field's option, a property out of range at a site of the model's nx x ny
+// grid (E, mu_s, p <= 0, mu_k > mu_s): its value and where on the plate. Same on every rank.
+void checkPlateFields(const Grading& grading, const Plate& plate, int nx, int ny);
+
+// The spring-block model's check: the above on its block centres, and an E field that varies
+// along x only (its stiffnesses are per block column).
+void checkSpringBlockFields(const Grading& grading, const Plate& plate, int blocksPerSide);
+
+}  // namespace gradfric
