@@ -150,7 +150,15 @@ std::shared_ptr<const PropertyField> readField(MPI_Comm comm, RunParameters* rec
   const std::string dataset = o.text("map_dataset", "factor", "map: the HDF5 dataset [ny][nx] (attribute extent = x0,x1,y0,y1 [m])");
   const std::vector<double> extent = o.realList("map_extent", {0.0, plate.length, 0.0, plate.length}, "m", "PNG map: x0,x1,y0,y1 the image covers (an HDF5 map carries its own)");
   const std::vector<double> range = o.realList("map_range", {0.5, 1.5}, "1", "PNG map: f of black, f of white (grey values in between, linearly)");
-  f.normalise = o.flag("normalise", false, "rescale f so its mean over the model's sites is 1 (the plate's value is the mean)");
+  // The pressure field keeps its mean: mu(t) is the tangential force over -plate_p L^2, so -plate_p
+  // must be the mean pressure (a higher total load is said with -plate_p, not with the field).
+  const bool isPressure = property == "p";
+  f.normalise = o.flag("normalise", isPressure,
+                       isPressure ? "must stay true: the pressure field keeps its mean -plate_p (mu = F / (p L^2))"
+                                  : "rescale f so its mean over the model's sites is 1 (the plate's value is the mean)");
+  if (isPressure && !f.normalise && !helpRequested())
+    throw InputError(o.fullName("normalise"), "false",
+                     "true (the pressure field keeps its mean -plate_p, by which mu is measured; change the total load with -plate_p)");
   if (helpRequested() || shapeName == "none") return nullptr;
   f.shape = shapeOf(shapeName);
   f.blameOption = o.fullName("delta");

@@ -71,6 +71,7 @@ s() { expect 1 "$sbm" -output "$@"; }
 s "-field_E_delta = 1.5" "E > 0" "E = -" "x = 6.25e-05 m" -- -sbm_N 40 -field_E_profile linear -field_E_delta 1.5
 s "-field_mu_k_delta = 0.8" "mu_k <= mu_s" -- -field_mu_k_profile constant -field_mu_k_delta 0.8
 s "-field_p_delta = -1.2" "p > 0" -- -field_p_profile step -field_p_delta -1.2 -field_p_position 1e-3
+s "-field_p_normalise = false" "keeps its mean" -- -field_p_profile linear -field_p_delta 0.3 -field_p_normalise false
 s "-field_mu_s_values = 1,0,1" "mu_s > 0" "x = " -- -field_mu_s_profile bands -field_mu_s_values 1,0,1
 s "-field_mu_map = $scratch/negative.h5" "mu_s > 0" -- -field_mu_profile map -field_mu_map "$scratch/negative.h5"
 s "-field_mu_exponent = 0" "> 0 for the power law" -- -field_mu_profile power -field_mu_exponent 0
