@@ -55,18 +55,7 @@ ContactTotals ContactBoundary::addForce(Vec X, Vec F) {
     n.pressure = r.pressure;
     n.tx = r.tx;
     n.ty = r.ty;
-    recordPending(n, xb, n.area * r.tx, n.area * r.ty, n.area * r.pressure);
-    PetscScalar* fb = f + 6 * n.block;
-    fb[3] += n.area * r.tx;
-    fb[4] += n.area * r.ty;
-    fb[5] += n.area * r.pressure;
-    totals.fx += n.area * r.tx;
-    totals.fy += n.area * r.ty;
-    totals.fn += n.area * r.pressure;
-    if (r.state == ContactState::Stick) ++totals.stick;
-    else if (r.state == ContactState::Slip) ++totals.slip;
-    else ++totals.open;
-    if (n.everSlipped || r.state != ContactState::Stick) ++totals.everSlipped;
+    applyNodeForce(n, xb, f + 6 * n.block, n.area * r.tx, n.area * r.ty, n.area * r.pressure, totals);
   }
   totals.nodes = static_cast<long long>(nodes_.size());
   GF_CALL(VecRestoreArrayRead(X, &x));
@@ -93,17 +82,7 @@ ContactTotals ContactBoundary::addKinematicForce(Vec X, Vec F, const std::vector
     n.pressure = r.fn / n.area;
     n.tx = r.fx / n.area;
     n.ty = r.fy / n.area;
-    recordPending(n, xb, r.fx, r.fy, r.fn);
-    fb[3] += r.fx;
-    fb[4] += r.fy;
-    fb[5] += r.fn;
-    totals.fx += r.fx;
-    totals.fy += r.fy;
-    totals.fn += r.fn;
-    if (r.state == ContactState::Stick) ++totals.stick;
-    else if (r.state == ContactState::Slip) ++totals.slip;
-    else ++totals.open;
-    if (n.everSlipped || r.state != ContactState::Stick) ++totals.everSlipped;
+    applyNodeForce(n, xb, fb, r.fx, r.fy, r.fn, totals);
   }
   totals.nodes = static_cast<long long>(nodes_.size());
   GF_CALL(VecRestoreArrayRead(X, &x));
@@ -111,11 +90,24 @@ ContactTotals ContactBoundary::addKinematicForce(Vec X, Vec F, const std::vector
   return totals;
 }
 
-void ContactBoundary::recordPending(Node& n, const PetscScalar* xb, double fx, double fy, double fz) {
+// Both contact methods end the same way: the node's force is kept for the work of the step, added
+// to its block's right-hand side and counted (n.pendingState is set by the caller).
+void ContactBoundary::applyNodeForce(Node& n, const PetscScalar* xb, PetscScalar* fb, double fx, double fy, double fz,
+                                     ContactTotals& totals) {
   n.pendingForce[0] = fx;
   n.pendingForce[1] = fy;
   n.pendingForce[2] = fz;
   for (int d = 0; d < 3; ++d) n.pendingU[d] = xb[d];
+  fb[3] += fx;
+  fb[4] += fy;
+  fb[5] += fz;
+  totals.fx += fx;
+  totals.fy += fy;
+  totals.fn += fz;
+  if (n.pendingState == ContactState::Stick) ++totals.stick;
+  else if (n.pendingState == ContactState::Slip) ++totals.slip;
+  else ++totals.open;
+  if (n.everSlipped || n.pendingState != ContactState::Stick) ++totals.everSlipped;
 }
 
 double ContactBoundary::work() const {

@@ -68,10 +68,12 @@ private:
   MPI_Comm comm_;
   PenaltyStiffness stiffness_;
   std::vector<Node> nodes_;
-  ContactLaw law_;
+  ContactLaw law_;  // one site per node: its local coefficients (area-weighted over its faces' bands)
   double work_ = 0;  // this rank's share of work()
-  // Records the evaluation's force on node n at displacement xb (pending until commit).
-  void recordPending(Node& n, const PetscScalar* xb, double fx, double fy, double fz);  // one site per node: its local coefficients (area-weighted over its faces' bands)
+  // Adds the evaluation's force on node n (at displacement xb) to its block's right-hand side fb and
+  // to the totals, and keeps it pending until commit.
+  void applyNodeForce(Node& n, const PetscScalar* xb, PetscScalar* fb, double fx, double fy, double fz,
+                      ContactTotals& totals);
 };
 
 }  // namespace gradfric::fem
