@@ -27,7 +27,8 @@ double halfWidth(const ensemble::Summary& s) { return 0.5 * (s.ciHigh - s.ciLow)
 // How far an evaluation is from convergence: <= 1 when both residuals are within tolerance.
 double misfit(const Calibration& c, const Evaluation& e) {
   const Residual r = residualOf(c, e);
-  const double peakTolerance = std::max(c.settings.peakTolerance * halfWidth(e.peak), 1e-6);
+  // (an ensemble without dispersion has no CI: then 1e-4 of mu)
+  const double peakTolerance = c.settings.peakTolerance * std::max(halfWidth(e.peak), 1e-4);
   return std::max(std::fabs(r.slope) / c.settings.slopeTolerance, std::fabs(r.peak) / peakTolerance);
 }
 
@@ -81,7 +82,7 @@ CalibrationResult calibrate(MPI_Comm comm, const Calibration& c) {
     const double a = std::clamp(x[0] + dx[0], 0.25, 4.0), b = std::clamp(x[1] + dx[1], 0.0, 0.5 / s.sigmaStep);
     dx[0] = a - x[0];
     dx[1] = b - x[1];
-    if (dx[0] == 0.0 && dx[1] == 0.0) break;  // pinned at a bound
+    if (std::fabs(dx[0]) < 1e-9 && std::fabs(dx[1]) < 1e-9) break;  // pinned at a bound, or nowhere to go
     const Residual g = evaluate(a, b);
     // Broyden's update: the secant condition along the step just taken.
     const double df[2] = {g.slope - f.slope, g.peak - f.peak};
@@ -100,12 +101,14 @@ CalibrationResult calibrate(MPI_Comm comm, const Calibration& c) {
     if (misfit(c, out.evaluations[k]) < misfit(c, out.evaluations[out.best])) out.best = k;
   const Evaluation& e = out.fitted();
   out.converged = misfit(c, e) <= 1.0;
-  // Unreachable: the peak's residual keeps its sign at a sigma bound.
-  const Residual r = residualOf(c, e);
-  const bool atZero = e.sigma <= 0.0 && r.peak < 0.0, atTop = e.sigma >= 0.5 && r.peak > 0.0;
-  if (!out.converged && (atZero || atTop))
-    throw CollectiveError("the reference's peak " + formatReal(c.target.peak) + " is out of reach of this spring-block scene: at sigma = " +
-                          formatReal(e.sigma) + " its peak is " + formatReal(e.peak.mean) + ", the closest it gets");
+  // Unreachable: at a sigma bound the peak is still on the far side of the reference's.
+  for (const Evaluation& b : out.evaluations) {
+    const Residual r = residualOf(c, b);
+    const bool atZero = b.sigma <= 0.0 && r.peak < 0.0, atTop = b.sigma >= 0.5 && r.peak > 0.0;
+    if (!out.converged && (atZero || atTop))
+      throw CollectiveError("the reference's peak " + formatReal(c.target.peak) + " is out of reach of this spring-block scene: at sigma = " +
+                          formatReal(b.sigma) + " its peak is " + formatReal(b.peak.mean) + ", the closest it gets");
+  }
   // In physical units: d/d l_z = d/da / l_z0, d/d sigma = d/db / sigma_step.
   for (int i = 0; i < 2; ++i) {
     out.jacobian[i][0] = J[i][0] / lz0;
