@@ -6,6 +6,7 @@
 #include <petscsys.h>
 
 #include <cmath>
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <stdexcept>
@@ -71,6 +72,16 @@ void writeCalibration(MPI_Comm comm, const Calibration& c, const CalibrationResu
   int samples = 0;
   const double rms = curveResidual(c, e, &samples);
   const double paperLayer = 5.7e-5, paperSigma = 0.028;
+  // The peak's l_z derivative is measured only if l_z moved (it does not when the first guess,
+  // from the slope, already fits it).
+  double lowest = e.layerThickness, highest = e.layerThickness;
+  for (const auto& x : r.evaluations) {
+    lowest = std::min(lowest, x.layerThickness);
+    highest = std::max(highest, x.layerThickness);
+  }
+  char text[96] = "";
+  if (highest > lowest * 1.001) std::snprintf(text, sizeof text, ", d(peak)/d l_z = %.4e 1/m", r.jacobian[1][0]);
+  const std::string coupling = text;
   GF_CALL(PetscPrintf(
       comm,
       "Calibration %s after %zu evaluation(s) (%ld realisations, %.2f s wall):\n"
@@ -79,14 +90,14 @@ void writeCalibration(MPI_Comm comm, const Calibration& c, const CalibrationResu
       "  slope: SBM %.6e +- %.2e 1/s, reference %.6e +- %.2e 1/s: residual %+.4f %%\n"
       "  peak:  SBM %.6f +- %.6f (95 %% CI), reference %.6f: residual %+.6f (%s the CI)\n"
       "  mean mu(t) - reference up to the peak: RMS %.6f over %d samples\n"
-      "  d(slope ratio)/d l_z = %.4e 1/m, d(peak)/d sigma = %.4f, d(peak)/d l_z = %.4e 1/m\n",
+      "  d(slope ratio)/d l_z = %.4e 1/m, d(peak)/d sigma = %.4f (secant)%s\n",
       r.converged ? "converged" : "did NOT converge (best evaluation reported)", r.evaluations.size(), r.realisations,
       r.wallSeconds, e.layerThickness, r.layerError, paperLayer, 100 * (e.layerThickness / paperLayer - 1), e.sigma,
       r.sigmaError, paperSigma, 100 * (e.sigma / paperSigma - 1), e.slope.mean, halfWidth(e.slope), c.target.slope,
       1.96 * (std::isfinite(c.target.slopeStdError) ? c.target.slopeStdError : 0.0), 100 * (e.slope.mean / c.target.slope - 1),
       e.peak.mean, halfWidth(e.peak), c.target.peak, e.peak.mean - c.target.peak,
       std::fabs(e.peak.mean - c.target.peak) <= halfWidth(e.peak) ? "inside" : "outside", rms, samples, r.jacobian[0][0],
-      r.jacobian[1][1], r.jacobian[1][0]));
+      r.jacobian[1][1], coupling.c_str()));
   c.scenePlan.writeOnRank0(comm, [&](const std::string& work) { writeScene(work, c.scenePlan.path(), c, r); });
   if (c.curvePlan) c.curvePlan->writeOnRank0(comm, [&](const std::string& work) { writeCurves(work, c, e); });
   c.scenePlan.commit(comm);
