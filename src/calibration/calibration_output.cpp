@@ -1,6 +1,7 @@
 // The report and the files of a calibration (include/gradfric/calibration/calibration.hpp).
 #include "gradfric/calibration/calibration.hpp"
 
+#include "gradfric/core/collective_error.hpp"
 #include "gradfric/core/petsc_call.hpp"
 
 #include <petscsys.h>
@@ -43,7 +44,7 @@ void writeScene(const std::string& work, const std::string& path, const Calibrat
                 "# residuals: slope %+.4f %%, peak %+.6f (ensemble 95 %% CI +- %.6f); %s after %zu evaluations\n",
                 c.target.slope, c.scene.window.low, c.scene.window.high, c.target.peak, e.layerThickness, r.layerError,
                 e.sigma, r.sigmaError, 100 * (e.slope.mean / c.target.slope - 1), e.peak.mean - c.target.peak,
-                halfWidth(e.peak), r.converged ? "converged" : "NOT converged", r.evaluations.size());
+                halfWidth(e.peak), "converged", r.evaluations.size());
   out << line;
   out << "# gradfric -options_file " << path << " -output run.h5 reproduces the fitted ensemble (same seed)\n";
   for (const auto& o : c.sceneOptions) out << o.name << " " << o.value << "\n";
@@ -98,6 +99,9 @@ void writeCalibration(MPI_Comm comm, const Calibration& c, const CalibrationResu
       e.peak.mean, halfWidth(e.peak), c.target.peak, e.peak.mean - c.target.peak,
       std::fabs(e.peak.mean - c.target.peak) <= halfWidth(e.peak) ? "inside" : "outside", rms, samples, r.jacobian[0][0],
       r.jacobian[1][1], coupling.c_str()));
+  if (!r.converged)  // a scene that does not reproduce the reference is not written
+    throw CollectiveError("the calibration did not converge in " + std::to_string(r.evaluations.size()) +
+                          " evaluations (-calibrate_max_evaluations; the best is printed above): nothing written");
   c.scenePlan.writeOnRank0(comm, [&](const std::string& work) { writeScene(work, c.scenePlan.path(), c, r); });
   if (c.curvePlan) c.curvePlan->writeOnRank0(comm, [&](const std::string& work) { writeCurves(work, c, e); });
   c.scenePlan.commit(comm);

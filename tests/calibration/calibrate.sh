@@ -7,7 +7,7 @@
 #    G v / (p slope) of the FEM curve; the same scene file on 1 rank;
 #  - the same curve as CSV and as HDF5 datasets gives the same l_z and sigma;
 #  - bad input: exit 2, one message naming the option, nothing written, an earlier file kept;
-#  - a peak no sigma reaches: exit 1 naming the closest value, nothing written.
+#  - a peak no sigma reaches, or no convergence in the evaluations allowed: exit 1, nothing written.
 set -u
 calibrate=$1; fem=$2; sbm=$3; source_dir=$4; scratch=$5
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
@@ -83,4 +83,10 @@ grep -q "invalid option -calibrate_output = kept.opts: .*-calibrate_output_overw
 run high 2 1 "$calibrate" -calibrate_reference high.csv "${fit[@]}" -calibrate_output high.opts
 grep -q "is out of reach of this spring-block scene: at sigma = 0 its peak is" high.err || fail "high: $(cat high.err)"
 ! ls high.opts* >/dev/null 2>&1 || fail "high: a file was written"
+# Not converged within the evaluations allowed (a tolerance no 16-realisation ensemble meets in 2):
+# exit 1, the best printed, no file.
+run short 1 1 "$calibrate" -calibrate_reference fem.h5 "${fit[@]}" -calibrate_max_evaluations 2 \
+  -calibrate_peak_tolerance 0.001 -calibrate_output short.opts
+grep -q "did NOT converge" short.out && grep -q "did not converge in 2 evaluations" short.err || fail "short: $(cat short.err)"
+! ls short.opts* >/dev/null 2>&1 || fail "short: a file was written"
 echo "calibration OK"
