@@ -6,6 +6,8 @@
 
 #include <petscsys.h>
 
+#include <cmath>
+
 namespace gradfric::design {
 
 namespace {
@@ -66,6 +68,11 @@ void saveDesignFile(MPI_Comm comm, const io::OutputPlan& plan, const Problem& pr
     file.attributes.emplace_back(option.name[0] == '-' ? option.name.substr(1) : option.name, option.value);
   file.ladders.push_back(tableOf("evaluations", problem, log.all()));
   file.ladders.push_back(tableOf("design", problem, {result.design}));
+  if (std::isfinite(result.slope))  // one parameter: its CI through the local slope
+    file.ladders.back().columns.insert(file.ladders.back().columns.end(),
+                                       {{"slope", {result.slope}},
+                                        {"x_ci95_low", {result.parameterLow()}},
+                                        {"x_ci95_high", {result.parameterHigh()}}});
   if (verification) file.ladders.push_back(tableOf("verification", problem, {*verification}));
   study::saveStudyFile(comm, plan, file);
 }
@@ -83,6 +90,9 @@ void printDesign(MPI_Comm comm, const Problem& problem, const SearchResult& resu
                         e.value, e.ciLow, e.ciHigh, e.muStatic, e.muStaticCiLow, e.muStaticCiHigh));
   };
   row("search", d);
+  if (std::isfinite(result.slope))
+    GF_CALL(PetscPrintf(comm, "  %s in [%.6g, %.6g] (the design's CI through the local slope %.4g)\n",
+                        problem.free[0].name.c_str(), result.parameterLow(), result.parameterHigh(), result.slope));
   if (verification) row("verification", *verification);
   GF_CALL(PetscPrintf(comm, "  target %s = %g +- %g%s\n", quantity, problem.target, problem.tolerance,
                       verification ? (verification->side(problem.target) == 0 ? "; the verification's CI holds it"

@@ -73,7 +73,7 @@ void Evaluator::run(const std::vector<Batch>& batches) {
 }
 
 Evaluation Evaluator::evaluate(const std::vector<double>& x, double halfWidth, const std::string& phase,
-                               std::uint32_t stream) {
+                               std::uint32_t stream, int atLeast) {
   std::vector<double>& mine = values_[{stream, x}];
   std::vector<double>& reference = reference_[stream];
   const bool variation = problem_.kind == TargetKind::Variation;
@@ -86,7 +86,7 @@ Evaluation Evaluator::evaluate(const std::vector<double>& x, double halfWidth, c
   const std::vector<int> referenceOf = variation ? std::vector<int>{0, 0} : std::vector<int>{-1};
   const std::vector<const std::vector<double>*> plates =
       variation ? std::vector<const std::vector<double>*>{&reference, &mine} : std::vector<const std::vector<double>*>{&mine};
-  int n = std::min(problem_.cap, std::max(problem_.firstBatch, static_cast<int>(mine.size())));
+  int n = std::min(problem_.cap, std::max({problem_.firstBatch, static_cast<int>(mine.size()), atLeast}));
   std::vector<ensemble::PointStatistics> statistics;
   for (;;) {
     std::vector<Batch> batches;

@@ -2,6 +2,7 @@
 #include "gradfric/design/problem.hpp"
 
 #include "gradfric/core/input_error.hpp"
+#include "gradfric/core/petsc_call.hpp"
 #include "gradfric/physics/field_options.hpp"
 #include "gradfric/physics/grading_options.hpp"
 #include "gradfric/physics/plate_options.hpp"
@@ -181,6 +182,8 @@ std::optional<Problem> readProblem(MPI_Comm comm, RunParameters* record) {
       throw InputError(o.fullName("upper"), s.describe(c), std::string("bounds inside which the plate is valid: ") + e.what());
     }
   }
+  PetscBool taoType = PETSC_FALSE;  // read by TaoSetFromOptions later: not an unused option
+  GF_CALL(PetscOptionsHasName(nullptr, nullptr, "-tao_type", &taoType));
   checkUnusedOptions(comm, {"design_", "plate_", "friction_", "sbm_", "grading_", "field_", "output"});
   s.kind = kind == "variation" ? TargetKind::Variation : TargetKind::Absolute;
   s.target = target;

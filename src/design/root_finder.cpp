@@ -86,7 +86,10 @@ private:
       const double halfWidth = std::clamp(0.5 * std::min(std::fabs(gap(a)), std::fabs(gap(b))), problem_.tolerance,
                                           problem_.coarse);
       const Evaluation e = settle(x, halfWidth, "step");
-      if (const auto done = finished(e)) return *done;
+      if (auto done = finished(e)) {
+        done->slope = localSlope(e.x[0]);
+        return *done;
+      }
       if (e.side(problem_.target) == a.side(problem_.target)) {
         a = e;
         fa = gap(e);
@@ -103,6 +106,26 @@ private:
     return {Status::NotConverged, best, "root",
             "-design_max_evaluations = " + std::to_string(problem_.maxEvaluations) +
                 " reached; the design is the bracket's end closest to the target"};
+  }
+
+  // d value / d x near x: a least-squares line through the latest evaluation at each of the four
+  // parameter values closest to x (the design among them). Several points: a two-point secant of
+  // evaluations at different precisions would carry their noise.
+  double localSlope(double x) const {
+    std::vector<std::pair<double, double>> latest;  // (x, value), the latest evaluation per x
+    for (const auto& e : log_.all()) {
+      auto at = std::find_if(latest.begin(), latest.end(), [&](const auto& p) { return p.first == e.x[0]; });
+      if (at == latest.end()) latest.emplace_back(e.x[0], e.value);
+      else at->second = e.value;
+    }
+    std::stable_sort(latest.begin(), latest.end(),
+                     [&](const auto& p, const auto& q) { return std::fabs(p.first - x) < std::fabs(q.first - x); });
+    latest.resize(std::min<std::size_t>(latest.size(), 4));
+    double mx = 0, my = 0;
+    for (const auto& [u, v] : latest) mx += u / latest.size(), my += v / latest.size();
+    double sxy = 0, sxx = 0;
+    for (const auto& [u, v] : latest) sxy += (u - mx) * (v - my), sxx += (u - mx) * (u - mx);
+    return sxy / sxx;
   }
 
   Evaluator& evaluator_;

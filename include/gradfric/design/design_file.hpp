@@ -6,7 +6,8 @@
 //                free_parameters, then every option of the run
 //   /evaluations every evaluation in order: index, x_<parameter> ..., realisations, value,
 //                ci95_low, ci95_high, mu_s, mu_s_ci95_low, mu_s_ci95_high; attribute phases
-//   /design      the design (one row, same columns)
+//   /design      the design (one row, same columns; one parameter: slope, x_ci95_low, x_ci95_high,
+//                its CI mapped onto the parameter through the local slope)
 //   /verification  the fresh ensemble at the design (one row; absent with -design_verify false)
 #include "gradfric/design/search.hpp"
 #include "gradfric/io/output_plan.hpp"

@@ -40,9 +40,11 @@ public:
   Evaluator(MPI_Comm comm, const Problem& problem);
 
   // Collective. Runs (more) realisations at x from `stream` until the CI half-width is at most
-  // `halfWidth` or the cap is reached, reusing the realisations already run there.
+  // `halfWidth` or the cap is reached, reusing the realisations already run there; at least
+  // `atLeast` realisations (a search that compares evaluations at one count, whose common streams
+  // then make the value a smooth function of x).
   Evaluation evaluate(const std::vector<double>& x, double halfWidth, const std::string& phase,
-                      std::uint32_t stream = 0);
+                      std::uint32_t stream = 0, int atLeast = 0);
 
   long realisationsRun() const { return realisations_; }  // over all ranks, the reference included
   double taskSeconds() const { return taskSeconds_; }     // summed over the ranks

@@ -5,6 +5,8 @@
 
 #include <mpi.h>
 
+#include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -24,6 +26,11 @@ struct SearchResult {
   Evaluation design;
   std::string method;  // root, or TAO's type (nm, pounders)
   std::string note;    // how the search ended, in words
+  // One parameter: the local slope d value / d x from the bracket around the design (NaN if
+  // unknown), and the design's 95 % CI mapped through it onto the parameter.
+  double slope = std::numeric_limits<double>::quiet_NaN();
+  double parameterLow() const { return design.x[0] - design.halfWidth() / std::fabs(slope); }
+  double parameterHigh() const { return design.x[0] + design.halfWidth() / std::fabs(slope); }
 };
 
 class SearchLog {

@@ -1,6 +1,9 @@
 #pragma once
 // A design with several free parameters: PETSc TAO with a derivative-free method (-tao_type nm,
 // the default, or pounders), each objective evaluation an ensemble (Evaluator).
+//   - TAO runs redundantly on every rank (PETSC_COMM_SELF: a handful of parameters; pounders is
+//     serial); it sees the same objective values everywhere, so it takes the same steps, and each
+//     objective evaluation is an ensemble collective over the communicator.
 //   - TAO sees the parameters scaled to [0, 1] (bounds given with TaoSetVariableBounds); Nelder-
 //     Mead, which ignores bounds, is evaluated at the projection with a penalty for the distance.
 //   - The objective is ((value - target) / tolerance)^2, the residual (pounders) its root: one
@@ -16,7 +19,7 @@
 
 namespace gradfric::design {
 
-// Collective over comm (TAO is created on it).
+// Collective over comm.
 SearchResult searchWithTao(MPI_Comm comm, Evaluator& evaluator, const Problem& problem, SearchLog& log);
 
 }  // namespace gradfric::design
