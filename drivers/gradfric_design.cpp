@@ -8,7 +8,7 @@
 //   python3 scripts/plot_design.py design.h5
 //
 // One free parameter: a stochastic root finder; several: PETSc TAO. Then a fresh verification
-// ensemble with independent streams. Exit status: 0 design found, 4 target unreachable within the
+// ensemble with independent streams, and with -design_verify_fem the surface in the FEM. Exit status: 0 design found, 4 target unreachable within the
 // bounds, 5 not converged, 2 bad input (docs/design.md).
 #include "gradfric/core/driver.hpp"
 #include "gradfric/core/options.hpp"
@@ -48,10 +48,12 @@ int main(int argc, char** argv) {
     std::optional<Evaluation> verification;
     if (problem->verify)  // independent streams (seed, 1, r), to the tolerance
       verification = evaluator.evaluate(result.design.x, problem->tolerance, "verify", 1);
+    std::optional<FemVerification> fem;
+    if (problem->fem) fem = runFemCheck(comm, *problem->fem, problem->gradingAt(result.design.x));
     double wall = MPI_Wtime() - start;
     MPI_Bcast(&wall, 1, MPI_DOUBLE, 0, comm);
-    saveDesignFile(comm, plan, *problem, record, log, result, verification, evaluator.realisationsRun());
-    printDesign(comm, *problem, result, verification, evaluator.realisationsRun(), wall, plan.path());
+    saveDesignFile(comm, plan, *problem, record, log, result, verification, fem, evaluator.realisationsRun());
+    printDesign(comm, *problem, result, verification, fem, evaluator.realisationsRun(), wall, plan.path());
     int rank = 0;
     MPI_Comm_rank(comm, &rank);
     if (problem->plot && rank == 0) {

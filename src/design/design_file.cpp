@@ -53,7 +53,7 @@ io::OutputPlan planDesignFile(MPI_Comm comm, const Problem& problem) {
 
 void saveDesignFile(MPI_Comm comm, const io::OutputPlan& plan, const Problem& problem, const RunParameters& record,
                     const SearchLog& log, const SearchResult& result, const std::optional<Evaluation>& verification,
-                    long realisationsRun) {
+                    const std::optional<FemVerification>& fem, long realisationsRun) {
   study::StudyFile file;
   std::string names;
   for (const auto& f : problem.free) names += (names.empty() ? "" : ",") + f.name;
@@ -74,11 +74,21 @@ void saveDesignFile(MPI_Comm comm, const io::OutputPlan& plan, const Problem& pr
                                         {"x_ci95_low", {result.parameterLow()}},
                                         {"x_ci95_high", {result.parameterHigh()}}});
   if (verification) file.ladders.push_back(tableOf("verification", problem, {*verification}));
+  if (fem) {
+    study::LadderTable t;
+    t.name = "fem_verification";
+    for (const auto& option : problem.fem->record.all())
+      t.texts.emplace_back(option.name[0] == '-' ? option.name.substr(1) : option.name, option.value);
+    t.columns = {{"mu_s", {fem->muStatic}}, {"peak_confirmed", {fem->peakConfirmed ? 1.0 : 0.0}},
+                 {"cells", {double(fem->cells)}}};
+    file.ladders.push_back(t);
+  }
   study::saveStudyFile(comm, plan, file);
 }
 
 void printDesign(MPI_Comm comm, const Problem& problem, const SearchResult& result,
-                 const std::optional<Evaluation>& verification, long realisationsRun, double wallSeconds,
+                 const std::optional<Evaluation>& verification, const std::optional<FemVerification>& fem,
+                 long realisationsRun, double wallSeconds,
                  const std::string& path) {
   const char* quantity = problem.kind == TargetKind::Variation ? "relative variation" : "mu_s";
   const Evaluation& d = result.design;
@@ -94,11 +104,14 @@ void printDesign(MPI_Comm comm, const Problem& problem, const SearchResult& resu
     GF_CALL(PetscPrintf(comm, "  %s in [%.6g, %.6g] (the design's CI through the local slope %.4g)\n",
                         problem.free[0].name.c_str(), result.parameterLow(), result.parameterHigh(), result.slope));
   if (verification) row("verification", *verification);
+  if (fem)
+    GF_CALL(PetscPrintf(comm, "  %-13s %4s %12s %26s %12.6f%s   (%d hexahedra, %.1f s)\n", "FEM", "1", "", "", fem->muStatic,
+                        fem->peakConfirmed ? "" : " (peak not confirmed)", fem->cells, fem->wallSeconds));
   GF_CALL(PetscPrintf(comm, "  target %s = %g +- %g%s\n", quantity, problem.target, problem.tolerance,
                       verification ? (verification->side(problem.target) == 0 ? "; the verification's CI holds it"
                                                                                : "; the verification's CI misses it")
                                    : ""));
-  GF_CALL(PetscPrintf(comm, "  %ld realisations (the reference and the verification included), %.1f s wall\n",
+  GF_CALL(PetscPrintf(comm, "  %ld realisations run (the verification and any reference plate included), %.1f s wall\n",
                       realisationsRun, wallSeconds));
   GF_CALL(PetscPrintf(comm, "design file: %s\n", path.c_str()));
 }

@@ -149,6 +149,9 @@ std::optional<Problem> readProblem(MPI_Comm comm, RunParameters* record) {
                                   "seed: realisation r of every evaluation draws from stream (seed, 0, r), the "
                                   "verification from (seed, 1, r)");
   s.verify = o.flag("verify", true, "a fresh verification ensemble with independent streams at the design");
+  const bool verifyFem = o.flag("verify_fem", false,
+                                "also run the design's surface in the finite-element model (-fem_* options: mesh, "
+                                "penalties; a reduced mesh such as -fem_nx 20 -fem_ny 20 -fem_nz 2 is allowed), side by side");
   s.monitor = o.flag("monitor", true, "print a line per evaluation");
   s.plot = o.flag("plot", false, "draw the search with scripts/plot_design.py when the design completes");
   OptionReader out(comm, "", "Results file", record);
@@ -174,6 +177,7 @@ std::optional<Problem> readProblem(MPI_Comm comm, RunParameters* record) {
   }
   s.parameters = sbm::readParameters(comm, record, plate, stiffest);
   s.request = sbm::readRequest(comm, record, s.parameters);
+  if (verifyFem || helpRequested()) s.fem = readFemCheck(comm, plate);
   if (helpRequested()) return std::nullopt;
   for (const auto& c : corners(s.free)) {  // the family on the lattice at every corner, before any work
     try {
@@ -182,9 +186,17 @@ std::optional<Problem> readProblem(MPI_Comm comm, RunParameters* record) {
       throw InputError(o.fullName("upper"), s.describe(c), std::string("bounds inside which the plate is valid: ") + e.what());
     }
   }
+  if (s.fem) {
+    std::vector<Grading> all;
+    for (const auto& c : corners(s.free)) all.push_back(s.gradingAt(c));
+    checkFemCheck(*s.fem, all);
+  }
   PetscBool taoType = PETSC_FALSE;  // read by TaoSetFromOptions later: not an unused option
   GF_CALL(PetscOptionsHasName(nullptr, nullptr, "-tao_type", &taoType));
-  checkUnusedOptions(comm, {"design_", "plate_", "friction_", "sbm_", "grading_", "field_", "output"});
+  if (s.fem)
+    checkUnusedOptions(comm, {"design_", "plate_", "friction_", "sbm_", "grading_", "field_", "output", "fem_"});
+  else
+    checkUnusedOptions(comm, {"design_", "plate_", "friction_", "sbm_", "grading_", "field_", "output"});
   s.kind = kind == "variation" ? TargetKind::Variation : TargetKind::Absolute;
   s.target = target;
   if (s.kind == TargetKind::Absolute && !(target > 0.0 && target < 10.0))

@@ -95,6 +95,7 @@ refuse)
   refused 1 -design_method -design_method simplex
   refused 1 -design_tolerance -design_tolerance nan
   refused 1 -design_tolernce -design_tolernce 0.001  # a misspelling
+  refused 1 -fem_nx -design_verify_fem -fem_nx 0     # the FEM's options, checked before any work
   # On 2 ranks: one line, exit 2, every rank (no hang).
   refused 2 -design_upper -design_upper 1.5
   refused 2 -design_target -design_target 0

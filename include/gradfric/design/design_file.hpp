@@ -9,6 +9,8 @@
 //   /design      the design (one row, same columns; one parameter: slope, x_ci95_low, x_ci95_high,
 //                its CI mapped onto the parameter through the local slope)
 //   /verification  the fresh ensemble at the design (one row; absent with -design_verify false)
+//   /fem_verification  with -design_verify_fem: mu_s, peak_confirmed, cells; attributes: the -fem_* options
+#include "gradfric/design/fem_check.hpp"
 #include "gradfric/design/search.hpp"
 #include "gradfric/io/output_plan.hpp"
 
@@ -24,11 +26,12 @@ io::OutputPlan planDesignFile(MPI_Comm comm, const Problem& problem);
 // Collective: writes and commits the file.
 void saveDesignFile(MPI_Comm comm, const io::OutputPlan& plan, const Problem& problem, const RunParameters& record,
                     const SearchLog& log, const SearchResult& result, const std::optional<Evaluation>& verification,
-                    long realisationsRun);
+                    const std::optional<FemVerification>& fem, long realisationsRun);
 
 // Rank 0 prints the design, its verification and how the search went.
 void printDesign(MPI_Comm comm, const Problem& problem, const SearchResult& result,
-                 const std::optional<Evaluation>& verification, long realisationsRun, double wallSeconds,
+                 const std::optional<Evaluation>& verification, const std::optional<FemVerification>& fem,
+                 long realisationsRun, double wallSeconds,
                  const std::string& path);
 
 }  // namespace gradfric::design

@@ -4,12 +4,14 @@
 // non-graded plate) and a tolerance. Every -design_* option is read and checked before any work
 // (docs/design.md).
 #include "gradfric/core/options.hpp"
+#include "gradfric/design/fem_check.hpp"
 #include "gradfric/physics/grading.hpp"
 #include "gradfric/sbm/parameters.hpp"
 
 #include <mpi.h>
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -44,7 +46,7 @@ struct Problem {
   std::string method = "root";  // root (one parameter) or tao
   std::uint64_t seed = 1;
   bool verify = true;
-  bool verifyFem = false;
+  std::shared_ptr<FemCheck> fem;  // -design_verify_fem: the FEM's options (null: no FEM run)
   bool monitor = true;
   bool plot = false;
   std::string output;
