@@ -197,6 +197,8 @@ std::optional<Problem> readProblem(MPI_Comm comm, RunParameters* record) {
     checkUnusedOptions(comm, {"design_", "plate_", "friction_", "sbm_", "grading_", "field_", "output", "fem_"});
   else
     checkUnusedOptions(comm, {"design_", "plate_", "friction_", "sbm_", "grading_", "field_", "output"});
+  if (!o.wasSet("target"))
+    throw InputError(o.fullName("target"), "(not set)", "a target mu_s (absolute) or relative variation (variation)");
   s.kind = kind == "variation" ? TargetKind::Variation : TargetKind::Absolute;
   s.target = target;
   if (s.kind == TargetKind::Absolute && !(target > 0.0 && target < 10.0))

@@ -78,6 +78,9 @@ tao)
   grep -q "Design (tao pounders, found)" "$work/t.log" || { cat "$work/t.log" >&2; fail "no TAO design"; }
   "$python" "$checker" status "$work/t.h5" found || fail "status"
   "$python" "$checker" meets "$work/t.h5" 0.85 0.003 || fail "the TAO design does not meet the target"
+  # TAO takes the same steps on 1 rank: the same file.
+  run 0 1 "$work/t1.log" -options_file "$src/input/design_E_mu_tao.opts" -sbm_N 20 -tao_type pounders -output "$work/t1.h5"
+  "$python" "$checker" same "$work/t1.h5" "$work/t.h5" || fail "TAO: 1 and 2 ranks differ"
   ;;
 refuse)
   refused 1 -design_parameters -design_parameters ""
