@@ -65,11 +65,13 @@ unreachable)
   "$python" "$checker" unreachable "$work/v.h5" -0.6 -0.4 || fail "closest attainable variation"
   ;;
 ranks)
-  # The same seed gives the same design file on 1 and 2 ranks (a relative-variation target).
+  # The same seed gives the same design file on 1 and 2 ranks: a property-field parameter under a
+  # relative-variation target (paired streams with the non-graded plate).
   for n in 1 2; do
-    run 0 "$n" "$work/r$n.log" "${scene[@]}" -sbm_N 20 -design_target_type variation -design_target -0.12 \
-      -design_tolerance 0.004 -output "$work/r$n.h5"
+    run 0 "$n" "$work/r$n.log" -options_file "$src/input/design_mu_field_variation.opts" -sbm_N 20 -output "$work/r$n.h5"
   done
+  "$python" "$checker" status "$work/r1.h5" found || fail "status"
+  "$python" "$checker" meets "$work/r1.h5" -0.12 0.004 || fail "the variation design does not meet the target"
   "$python" "$checker" same "$work/r1.h5" "$work/r2.h5" || fail "1 and 2 ranks differ"
   ;;
 tao)
