@@ -11,8 +11,8 @@ namespace {
 
 class RootSearch {
 public:
-  RootSearch(Evaluator& evaluator, const Problem& problem, SearchLog& log)
-      : evaluator_(evaluator), problem_(problem), log_(log) {}
+  RootSearch(const EvaluateFunction& evaluate, const Problem& problem, SearchLog& log)
+      : evaluate_(evaluate), problem_(problem), log_(log) {}
 
   SearchResult run() {
     const FreeParameter& f = problem_.free[0];
@@ -41,9 +41,9 @@ private:
   // An evaluation at x; if its CI holds the target, refined to the tolerance.
   Evaluation settle(double x, double halfWidth, const char* phase) {
     ++tried_;
-    Evaluation e = log_.add(evaluator_.evaluate({x}, halfWidth, phase));
+    Evaluation e = log_.add(evaluate_({x}, halfWidth, phase));
     if (e.side(problem_.target) == 0 && !log_.meets(e) && e.realisations < problem_.cap)
-      e = log_.add(evaluator_.evaluate({x}, problem_.tolerance, "refine"));
+      e = log_.add(evaluate_({x}, problem_.tolerance, "refine"));
     return e;
   }
 
@@ -69,7 +69,7 @@ private:
   // No sign change within the bounds: the closest value the family reached, at the tolerance.
   SearchResult unreachable() {
     const Evaluation closest = log_.closest();
-    Evaluation e = log_.add(evaluator_.evaluate(closest.x, problem_.tolerance, "closest"));
+    Evaluation e = log_.add(evaluate_(closest.x, problem_.tolerance, "closest"));
     if (const auto done = finished(e)) return *done;
     return {Status::Unreachable, e, "root",
             "the target is outside what the family reaches within the bounds (scanned " +
@@ -128,7 +128,7 @@ private:
     return sxy / sxx;
   }
 
-  Evaluator& evaluator_;
+  const EvaluateFunction& evaluate_;
   const Problem& problem_;
   SearchLog& log_;
   int tried_ = 0;  // parameter values tried (refinements not counted)
@@ -136,8 +136,15 @@ private:
 
 }  // namespace
 
+SearchResult findRoot(const EvaluateFunction& evaluate, const Problem& problem, SearchLog& log) {
+  return RootSearch(evaluate, problem, log).run();
+}
+
 SearchResult findRoot(Evaluator& evaluator, const Problem& problem, SearchLog& log) {
-  return RootSearch(evaluator, problem, log).run();
+  const EvaluateFunction evaluate = [&](const std::vector<double>& x, double halfWidth, const std::string& phase) {
+    return evaluator.evaluate(x, halfWidth, phase);
+  };
+  return findRoot(evaluate, problem, log);
 }
 
 }  // namespace gradfric::design

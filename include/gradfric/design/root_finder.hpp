@@ -12,9 +12,15 @@
 // A side is decided only by a CI that excludes the target: noise cannot flip the bracket.
 #include "gradfric/design/search.hpp"
 
+#include <functional>
+
 namespace gradfric::design {
 
-// Collective.
+// An evaluation at x to a CI half-width (Evaluator::evaluate on stream 0, or a stand-in in tests).
+using EvaluateFunction = std::function<Evaluation(const std::vector<double>& x, double halfWidth, const std::string& phase)>;
+
+// Collective (through the evaluations).
+SearchResult findRoot(const EvaluateFunction& evaluate, const Problem& problem, SearchLog& log);
 SearchResult findRoot(Evaluator& evaluator, const Problem& problem, SearchLog& log);
 
 }  // namespace gradfric::design
