@@ -52,6 +52,8 @@ known_answer)
   "$python" "$checker" status "$work/d.h5" found || fail "status"
   "$python" "$checker" meets "$work/d.h5" "$target" 0.002 || fail "the design does not meet the target"
   "$python" "$checker" known "$work/d.h5" "$work/sweep.h5" "$target" || fail "known answer"
+  "$python" "$src/scripts/plot_design.py" "$work/d.h5" --out "$work/plots" >/dev/null || fail "plot of a one-parameter search"
+  [ -s "$work/plots/d_search.png" ] || fail "no search plot"
   ;;
 unreachable)
   # Above the non-graded plate's mu_s: no Delta in [-0.4, 0] reaches it; the closest is Delta = 0.
@@ -83,6 +85,8 @@ tao)
   # TAO takes the same steps on 1 rank: the same file.
   run 0 1 "$work/t1.log" -options_file "$src/input/design_E_mu_tao.opts" -sbm_N 20 -tao_type pounders -output "$work/t1.h5"
   "$python" "$checker" same "$work/t1.h5" "$work/t.h5" || fail "TAO: 1 and 2 ranks differ"
+  "$python" "$src/scripts/plot_design.py" "$work/t.h5" --out "$work/plots" >/dev/null || fail "plot of a TAO search"
+  [ -s "$work/plots/t_search.png" ] || fail "no search plot"
   ;;
 refuse)
   refused 1 -design_parameters -design_parameters ""
@@ -103,12 +107,11 @@ refuse)
   refused 1 -fem_nx -design_verify_fem -fem_nx 0     # the FEM's options, checked before any work
   # On 2 ranks: one line, exit 2, every rank (no hang).
   refused 2 -design_upper -design_upper 1.5
-  refused 2 -design_target -design_target 0
   # grading_delta without a grading profile; two parameters under the root finder; a field
   # parameter whose bound makes the plate invalid (mu_s < 0).
   refused 1 -design_parameters -grading_profile none
-  refused 2 -design_method -options_file "$src/input/design_E_mu_tao.opts" -design_method root
-  refused 2 -design_upper -options_file "$src/input/design_E_mu_tao.opts" -design_upper 0.5,1.5
+  refused 1 -design_method -options_file "$src/input/design_E_mu_tao.opts" -design_method root
+  refused 1 -design_upper -options_file "$src/input/design_E_mu_tao.opts" -design_upper 0.5,1.5
   ;;
 *)
   fail "unknown check $check"
