@@ -38,10 +38,10 @@ int main(int argc, char** argv) {
     RunParameters record;
     const std::optional<Problem> problem = readProblem(comm, &record);  // every option, checked
     if (!problem) return;                                                 // -help
+    const io::OutputPlan plan = planDesignFile(comm, *problem);         // before any work
     record.print(comm, "gradfric-design parameters");
     PetscPrintf(comm, "Every realisation measures mu_s only and stops at its confirmed peak (%d x %d blocks, dt %.4g s).\n",
                 problem->parameters.blocksPerSide, problem->parameters.blocksPerSide, problem->parameters.timeStep);
-    const io::OutputPlan plan = planDesignFile(comm, *problem);         // before any work
     const double start = MPI_Wtime();
     Evaluator evaluator(comm, *problem);
     SearchLog log(comm, *problem);

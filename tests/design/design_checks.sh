@@ -30,9 +30,10 @@ run() {  # run <expected exit> <ranks> <log> <args...>
 refused() {  # refused <ranks> <option named> <args...>: exit 2, the option named, no file
   local n=$1 option=$2
   shift 2
-  run 2 "$n" "$work/bad.log" "${scene[@]}" "$@" -output "$work/bad.h5"
+  run 2 "$n" "$work/bad.log" "${scene[@]}" -output "$work/bad.h5" "$@"
   grep -q "gradfric: error: .*$option" "$work/bad.log" || { cat "$work/bad.log" >&2; fail "$option not named for: $*"; }
   [ "$(grep -c 'gradfric: error' "$work/bad.log")" -eq 1 ] || fail "not one error line for: $*"
+  ! grep -q "gradfric-design parameters" "$work/bad.log" || fail "parameters printed before the refusal of: $*"
   [ ! -e "$work/bad.h5" ] && [ ! -e "$work/bad.h5.partial" ] || fail "a refused run wrote a file: $*"
 }
 # The paper's linear friction grading (Figure 4) on a reduced plate.
@@ -105,6 +106,7 @@ refuse)
   refused 1 -design_tolerance -design_tolerance nan
   refused 1 -design_tolernce -design_tolernce 0.001  # a misspelling
   refused 1 -fem_nx -design_verify_fem -fem_nx 0     # the FEM's options, checked before any work
+  refused 1 -output -output "$work/missing/d.h5"     # a missing folder
   # On 2 ranks: one line, exit 2, every rank (no hang).
   refused 2 -design_upper -design_upper 1.5
   # grading_delta without a grading profile; two parameters under the root finder; a field
