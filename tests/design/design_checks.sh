@@ -1,12 +1,13 @@
 #!/usr/bin/env bash
 # End-to-end checks of gradfric-design on reduced plates (check_design.py reads the files).
-#   design_checks.sh <gradfric-design> <gradfric> <source-dir> <check>
-# checks: known_answer, unreachable, ranks, tao, refuse
+#   design_checks.sh <gradfric-design> <gradfric> <source-dir> <check> [<gradfric-fem>]
+# checks: known_answer, unreachable, ranks, tao, refuse, fem
 set -euo pipefail
 design=$1
 driver=$2
 src=$3
 check=$4
+fem=${5:-}
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
 work=$(mktemp -d "$PWD/design_${check}_XXXXXX")
 trap 'rm -rf "$work"' EXIT
@@ -88,6 +89,24 @@ tao)
   "$python" "$checker" same "$work/t1.h5" "$work/t.h5" || fail "TAO: 1 and 2 ranks differ"
   "$python" "$src/scripts/plot_design.py" "$work/t.h5" --out "$work/plots" >/dev/null || fail "plot of a TAO search"
   [ -s "$work/plots/t_search.png" ] || fail "no search plot"
+  ;;
+fem)
+  # -design_verify_fem on a tiny mesh: the design's surface in the FEM, beside the spring blocks;
+  # the FEM too finds the graded plate's mu_s below its uniform plate's.
+  run 0 1 "$work/f.log" "${scene[@]}" -sbm_N 12 -design_verify_fem -fem_nx 8 -fem_ny 8 -fem_nz 1 -output "$work/f.h5"
+  grep -q "^  FEM " "$work/f.log" || { cat "$work/f.log" >&2; fail "no FEM line"; }
+  "$fem" -fem_nx 8 -fem_ny 8 -fem_nz 1 -friction_observables mu_s -fem_output "$work/u.h5" >"$work/u.log" 2>&1 ||
+    { cat "$work/u.log" >&2; fail "the uniform FEM run"; }
+  uniform=$(sed -n 's/^  mu_s (global) *\([0-9.]*\).*/\1/p' "$work/u.log")
+  "$python" - "$work/f.h5" "$uniform" <<'PY' || fail "FEM verification"
+import math, sys, h5py
+with h5py.File(sys.argv[1], "r") as f:
+    mu, confirmed = f["fem_verification/mu_s"][0], f["fem_verification/peak_confirmed"][0]
+uniform = float(sys.argv[2])
+print(f"FEM mu_s: design {mu:.4f}, uniform plate {uniform:.4f}")
+assert math.isfinite(mu) and confirmed == 1, (mu, confirmed)
+assert mu < uniform - 0.01, "the graded design does not lower the FEM's mu_s"
+PY
   ;;
 refuse)
   refused 1 -design_parameters -design_parameters ""
