@@ -18,6 +18,8 @@ const FemLogEvents& femLogEvents() {
     GF_CALL(PetscLogEventRegister("GfFemElastic", classId, &events.elastic));
     GF_CALL(PetscLogEventRegister("GfFemContact", classId, &events.contact));
     GF_CALL(PetscLogEventRegister("GfFemGeneric", classId, &events.generic));
+    GF_CALL(PetscLogEventRegister("GfFemPostStep", classId, &events.postStep));
+    GF_CALL(PetscLogEventRegister("GfFemMonitor", classId, &events.monitor));
     registered = true;
   }
   return events;
