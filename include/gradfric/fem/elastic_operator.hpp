@@ -32,9 +32,10 @@ class ElasticOperator {
 public:
   // E of a cell = youngsModulus x grading's modulus factor at the cell centre's x / L.
   // element: the hexahedron whose box-cell stiffness the kernel applies; PETSc's generic
-  // reference (forceGeneric) is the trilinear one only.
+  // reference (forceGeneric) is the trilinear one only. blockedKernel: elasticKernelBlocked
+  // instead of the dense product (forces equal to round-off, not bit for bit).
   ElasticOperator(const PlateMesh& mesh, double youngsModulus, double poissonRatio, double stiffnessDamping,
-                  const Grading& grading, ElementType element = ElementType::Trilinear);
+                  const Grading& grading, ElementType element = ElementType::Trilinear, bool blockedKernel = false);
   ElasticOperator(const ElasticOperator&) = delete;
   ElasticOperator& operator=(const ElasticOperator&) = delete;
 
@@ -57,6 +58,7 @@ public:
 private:
   void setupReference();  // elastic_reference.cpp
   void kernelForce(Vec uLocal, Vec fLocal);
+  bool lastForceIsFor(Vec X);  // collective: uGlobal_/fGlobal_ hold X's displacements and force
   // f += -sum_cells E_c K_hat u_e (the blocked kernel when the element allows it).
   void applyKernel(const std::vector<PetscInt>& cellOffsets, const double* u, double* f) const;
 
@@ -68,7 +70,8 @@ private:
   bool blocked_ = false;  // K_hat is block diagonal in the mirror basis (every box cell)
   std::vector<PetscInt> cellDispOff_;  // 8 offsets into a local displacement vector per cell
   OwnedDM dmU_, dmAux_;
-  OwnedVec auxLocal_, uGlobal_, fGlobal_, uLocal_, fLocalU_, xLocal_, fLocal_;
+  OwnedVec auxLocal_, uGlobal_, fGlobal_, uLocal_, fLocalU_, xLocal_, fLocal_, stateForce_;
+  bool haveForce_ = false;  // fGlobal_ = -K uGlobal_ from the last setForce
   PetscLogEvent evKernel_ = 0, evGeneric_ = 0;
 };
 
