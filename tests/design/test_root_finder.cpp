@@ -117,7 +117,7 @@ TEST(RootFinder, TheEvaluationBudgetIsKept) {
   StandIn model{[](double x) { return 0.93 + 0.7 * x + 3.0 * x * x * x; }};
   SearchLog log(MPI_COMM_WORLD, p);
   const SearchResult r = findRoot(model.function(p), p, log);
-  if (r.status != Status::Found) EXPECT_EQ(r.status, Status::NotConverged);
+  EXPECT_TRUE(r.status == Status::Found || r.status == Status::NotConverged) << toString(r.status);
   int tried = 0;
   for (const auto& e : log.all()) tried += e.phase != "refine";
   EXPECT_LE(tried, 3);
