@@ -6,6 +6,7 @@
 #include "gradfric/core/driver.hpp"
 #include "gradfric/core/input_error.hpp"
 #include "gradfric/core/options.hpp"
+#include "gradfric/fem/error_estimate.hpp"
 #include "gradfric/fem/output.hpp"
 #include "gradfric/fem/parameters.hpp"
 #include "gradfric/fem/plate_model.hpp"
@@ -103,16 +104,20 @@ void printPlan(MPI_Comm comm, const FemRun& run, const PlateModel& model, RunPar
 void printResults(MPI_Comm comm, const FemRun& run, const FemRunResult& r, double wall) {
   const double eq2 = run.params.eq2PeakTime();
   const FrictionSummary& f = r.friction;
+  FemParameters resolved = run.params;
+  resolved.resolveDerived();
+  const DiscretisationError error = discretisationError(resolved, run.grading, r.dt / r.stableDt);
   PetscPrintf(comm,
               "Results (FEM):\n"
               "  settled normal force / (p L^2)  %.6f\n"
-              "  mu_s (global)                   %.6f%s\n"
+              "  mu_s (global)                   %s%s\n"
               "  peak time after sliding start   %.6e s   (Eq. 2: %.6e s, ratio %.4f)\n"
               "  first slip after sliding start  %.6e s\n"
-              "  mu_k (kinetic window)           %.6f%s\n"
+              "  mu_k (kinetic window)           %s%s\n"
               "  steps %ld, dt %.4e s, wall %.2f s (pressure %.2f s, sliding %.2f s), %.3f ms/step\n",
-              r.settledNormalForce, f.muStatic, f.peakConfirmed ? "" : "  (peak not confirmed)", f.peakTime, eq2,
-              f.peakTime / eq2, f.firstSlipTime, f.muKinetic,
+              r.settledNormalForce, withErrorBar(f.muStatic, error).c_str(),
+              f.peakConfirmed ? "" : "  (peak not confirmed)", f.peakTime, eq2, f.peakTime / eq2, f.firstSlipTime,
+              withKineticErrorBar(f.muKinetic, error).c_str(),
               !run.params.measurement.kinetic ? "  (not asked: -friction_observables)"
               : f.kineticComplete             ? ""
                                               : "  (window incomplete)",

@@ -12,7 +12,9 @@
 #include <benchmark/benchmark.h>
 #include <petscsys.h>
 
+#include <array>
 #include <cstdio>
+#include <vector>
 #include <map>
 #include <memory>
 #include <string>
@@ -91,6 +93,35 @@ void BM_WholeRightHandSide(benchmark::State& state) {
   timeCalls(state, "rhs", [&] { m.rhs(0.0, X, F); });
 }
 
+// The cell kernel alone on this rank's cells (no ghost exchange): the dense 24x24 product against
+// the mirror-basis blocks (elastic_kernel.cpp), same input, in one run: their ratio is load-free.
+template <bool Blocked>
+void kernelOnly(benchmark::State& state, const char* name) {
+  PlateModel& m = model();
+  OwnedVec xLocal;
+  DMCreateLocalVector(m.dm(), xLocal.out());
+  VecSet(xLocal, 1e-9);
+  PetscInt n = 0;
+  VecGetLocalSize(xLocal, &n);
+  std::vector<double> f(n, 0.0);
+  std::array<double, 72> blocks{};
+  reflectionBlocks(m.elastic().element().stiffness.data(), &blocks);
+  const PetscScalar* x = nullptr;
+  VecGetArrayRead(xLocal, &x);
+  const std::vector<PetscInt>& off = m.mesh().cellStateOffsets();
+  const PetscInt cells = m.mesh().localCells();
+  timeCalls(state, name, [&] {
+    if (Blocked)
+      elasticKernelBlocked(cells, off.data(), m.elastic().cellModulus().data(), blocks.data(), x, f.data());
+    else
+      elasticKernel(cells, off.data(), m.elastic().cellModulus().data(), m.elastic().element().stiffness.data(), x,
+                    nullptr, 0.0, f.data());
+  });
+  VecRestoreArrayRead(xLocal, &x);
+}
+void BM_KernelDense(benchmark::State& state) { kernelOnly<false>(state, "kernel dense"); }
+void BM_KernelBlocked(benchmark::State& state) { kernelOnly<true>(state, "kernel blocked"); }
+
 // Ranks other than 0 run the same (collective) benchmarks silently.
 class QuietReporter : public benchmark::BenchmarkReporter {
 public:
@@ -102,6 +133,8 @@ public:
 
 BENCHMARK(BM_ElasticSpecialised)->UseManualTime()->Unit(benchmark::kMillisecond)->MinTime(1.0);
 BENCHMARK(BM_ElasticGeneric)->UseManualTime()->Unit(benchmark::kMillisecond)->MinTime(2.0);
+BENCHMARK(BM_KernelDense)->UseManualTime()->Unit(benchmark::kMillisecond)->MinTime(1.0);
+BENCHMARK(BM_KernelBlocked)->UseManualTime()->Unit(benchmark::kMillisecond)->MinTime(1.0);
 BENCHMARK(BM_WholeRightHandSide)->UseManualTime()->Unit(benchmark::kMillisecond)->MinTime(1.0);
 
 int main(int argc, char** argv) {
@@ -123,6 +156,10 @@ int main(int argc, char** argv) {
                   "specialised/generic %.4f (generic is %.0fx slower)\n",
                   size, static_cast<int>(model().mesh().globalCells()), 1e3 * s, 1e3 * g, s / g, g / s);
     }
+    if (rank == 0 && gSecondsPerCall.count("kernel dense") && gSecondsPerCall.count("kernel blocked"))
+      std::printf("cell kernel alone: dense %.3f ms, blocked %.3f ms, ratio blocked/dense %.3f\n",
+                  1e3 * gSecondsPerCall["kernel dense"], 1e3 * gSecondsPerCall["kernel blocked"],
+                  gSecondsPerCall["kernel blocked"] / gSecondsPerCall["kernel dense"]);
     gModel.reset();
   }
   PetscFinalize();

@@ -4,6 +4,7 @@
 #include "gradfric/core/input_error.hpp"
 #include "gradfric/core/petsc_call.hpp"
 #include "gradfric/fem/xdmf.hpp"
+#include "gradfric/fem/error_estimate.hpp"
 #include "gradfric/io/hdf5_attributes.hpp"
 #include "gradfric/physics/property_sampler.hpp"
 
@@ -223,6 +224,14 @@ void OutputFiles::writeHistory(const PlateModel& model, const FemRunResult& r, c
       H5Group results = createGroup(file, "results");
       writeRealAttribute(results, "mu_s", r.friction.muStatic);
       writeRealAttribute(results, "mu_k", r.friction.muKinetic);
+      {  // the error bar (error_estimate.hpp): relative bound, NaN when not measured, and its basis
+        const DiscretisationError e = discretisationError(model.params(), model.grading(), r.dt / r.stableDt);
+        writeRealAttribute(results, "mu_s_discretisation_error",
+                           e.measured ? e.relative : std::numeric_limits<double>::quiet_NaN());
+        writeStringAttribute(results, "mu_s_error_basis", e.measured ? e.basis : "not measured: " + e.basis);
+        writeRealAttribute(results, "mu_k_discretisation_error", std::numeric_limits<double>::quiet_NaN());
+        writeStringAttribute(results, "mu_k_error_basis", "not measured: " + e.kineticBasis);
+      }
       writeRealAttribute(results, "peak_time", r.friction.peakTime);
       writeRealAttribute(results, "eq2_peak_time", model.params().eq2PeakTime());
       writeRealAttribute(results, "first_slip_time", r.friction.firstSlipTime);
@@ -238,7 +247,7 @@ void OutputFiles::writeHistory(const PlateModel& model, const FemRunResult& r, c
       for (const char* name : {"peak_time", "eq2_peak_time", "first_slip_time", "slide_start", "dt", "stable_dt",
                                "wall_seconds"})
         writeStringAttribute(units, name, "s");
-      for (const char* name : {"mu_s", "mu_k", "settled_normal_force", "peak_confirmed", "kinetic_window_complete",
+      for (const char* name : {"mu_s", "mu_k", "mu_s_discretisation_error", "mu_k_discretisation_error", "settled_normal_force", "peak_confirmed", "kinetic_window_complete",
                                "steps"})
         writeStringAttribute(units, name, "1");
     }

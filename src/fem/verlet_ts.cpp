@@ -53,16 +53,24 @@ PetscErrorCode halfKick(Vec X, Vec F, PetscReal h, PetscInt bs) {
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode drift(Vec X, PetscReal dt, PetscInt bs) {
+// The first half kick and the drift in one pass over the state (the same operations per value as
+// a half kick followed by a drift: v += h f, then x += dt v with the kicked v).
+PetscErrorCode halfKickAndDrift(Vec X, Vec F, PetscReal h, PetscReal dt, PetscInt bs) {
   PetscFunctionBeginUser;
   PetscInt n = 0;
   PetscCall(VecGetLocalSize(X, &n));
   PetscScalar* x = nullptr;
+  const PetscScalar* f = nullptr;
   PetscCall(VecGetArray(X, &x));
+  PetscCall(VecGetArrayRead(F, &f));
   const PetscInt k = bs / 2;
   for (PetscInt b = 0; b < n; b += bs)
-    for (PetscInt c = 0; c < k; ++c) x[b + c] += dt * x[b + k + c];
+    for (PetscInt c = 0; c < k; ++c) {
+      x[b + k + c] += h * f[b + k + c];
+      x[b + c] += dt * x[b + k + c];
+    }
   PetscCall(VecRestoreArray(X, &x));
+  PetscCall(VecRestoreArrayRead(F, &f));
   PetscFunctionReturn(0);
 }
 
@@ -81,8 +89,7 @@ PetscErrorCode TSStep_GFVerlet(TS ts) {
     d->haveRhs = PETSC_TRUE;
   }
   PetscCall(TSPreStage(ts, t));
-  PetscCall(halfKick(X, d->rhs, 0.5 * dt, bs));
-  PetscCall(drift(X, dt, bs));
+  PetscCall(halfKickAndDrift(X, d->rhs, 0.5 * dt, dt, bs));
   PetscCall(TSComputeRHSFunction(ts, t + dt, X, d->rhs));
   PetscCall(halfKick(X, d->rhs, 0.5 * dt, bs));
   PetscCall(TSPostStage(ts, t + dt, 0, &X));

@@ -19,13 +19,23 @@ namespace gradfric::fem {
 void elasticKernel(PetscInt numCells, const PetscInt* cellOffsets, const double* cellModulus, const double* stiffness,
                    const double* u, const double* v, double beta, double* f);
 
+// The box cell's stiffness in the basis of its three mirror symmetries (elastic_kernel.cpp): the
+// 8 diagonal 3 x 3 blocks of H K_hat H / 64, H the Walsh-Hadamard transform over the corners.
+// False when K_hat is not block diagonal in that basis (then the dense kernel must be used).
+bool reflectionBlocks(const double* stiffness, std::array<double, 72>* blocks);
+// The same force as elasticKernel (u only) through the blocks: ~4 x fewer flops, equal to
+// round-off; the scatter-add keeps the cell order.
+void elasticKernelBlocked(PetscInt numCells, const PetscInt* cellOffsets, const double* cellModulus,
+                          const double* blocks, const double* u, double* f);
+
 class ElasticOperator {
 public:
   // E of a cell = youngsModulus x grading's modulus factor at the cell centre's x / L.
   // element: the hexahedron whose box-cell stiffness the kernel applies; PETSc's generic
-  // reference (forceGeneric) is the trilinear one only.
+  // reference (forceGeneric) is the trilinear one only. blockedKernel: elasticKernelBlocked
+  // instead of the dense product (forces equal to round-off, not bit for bit).
   ElasticOperator(const PlateMesh& mesh, double youngsModulus, double poissonRatio, double stiffnessDamping,
-                  const Grading& grading, ElementType element = ElementType::Trilinear);
+                  const Grading& grading, ElementType element = ElementType::Trilinear, bool blockedKernel = false);
   ElasticOperator(const ElasticOperator&) = delete;
   ElasticOperator& operator=(const ElasticOperator&) = delete;
 
@@ -48,14 +58,20 @@ public:
 private:
   void setupReference();  // elastic_reference.cpp
   void kernelForce(Vec uLocal, Vec fLocal);
+  bool lastForceIsFor(Vec X);  // collective: uGlobal_/fGlobal_ hold X's displacements and force
+  // f += -sum_cells E_c K_hat u_e (the blocked kernel when the element allows it).
+  void applyKernel(const std::vector<PetscInt>& cellOffsets, const double* u, double* f) const;
 
   const PlateMesh& mesh_;
   BoxElement element_;
   double beta_;
   std::vector<double> cellModulus_;
+  std::array<double, 72> blocks_{};
+  bool blocked_ = false;  // K_hat is block diagonal in the mirror basis (every box cell)
   std::vector<PetscInt> cellDispOff_;  // 8 offsets into a local displacement vector per cell
   OwnedDM dmU_, dmAux_;
-  OwnedVec auxLocal_, uGlobal_, fGlobal_, uLocal_, fLocalU_, xLocal_, fLocal_;
+  OwnedVec auxLocal_, uGlobal_, fGlobal_, uLocal_, fLocalU_, xLocal_, fLocal_, stateForce_;
+  bool haveForce_ = false;  // fGlobal_ = -K uGlobal_ from the last setForce
   PetscLogEvent evKernel_ = 0, evGeneric_ = 0;
 };
 

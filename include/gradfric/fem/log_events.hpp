@@ -6,6 +6,7 @@ namespace gradfric::fem {
 
 struct FemLogEvents {
   PetscLogEvent rhs = 0, elastic = 0, contact = 0, generic = 0;
+  PetscLogEvent postStep = 0, monitor = 0;  // per-step work outside the right-hand side
 };
 
 // Registered once per process, on first use (after PetscInitialize).

@@ -1,0 +1,36 @@
+#pragma once
+// The error bar printed and stored with every FEM result: the discretisation error of mu_s (and
+// of mu_k) for the mesh, element, time step, contact and scene of the run, taken from the measured
+// studies of docs/accuracy_fem.md ("Error bar"), never extrapolated: outside the studied settings
+// the answer is "not measured".
+#include "gradfric/fem/parameters.hpp"
+#include "gradfric/physics/grading.hpp"
+
+#include <string>
+
+namespace gradfric::fem {
+
+struct ErrorTerm {
+  bool measured = false;
+  double relative = 0;  // |mu / mu_converged - 1| bound of this term (fraction)
+  std::string basis;    // what was measured, or why it was not
+};
+
+struct DiscretisationError {
+  ErrorTerm mesh, timeStep, contact;  // mu_s terms
+  bool measured = false;              // every term measured
+  double relative = 0;                // sum of the terms (a bound: their signs are not known)
+  std::string basis;                  // the terms, or the first one not measured
+  bool kineticMeasured = false;       // mu_k: no study bounds all its terms (see the docs)
+  std::string kineticBasis;
+};
+
+// params as resolved (PlateModel::params()); dtRatio = dt / stable step of the run.
+DiscretisationError discretisationError(const FemParameters& params, const Grading& grading, double dtRatio);
+
+// "0.883912 +- 1.3 % (discretisation: mesh 0.5 %, ...)" or "0.883912 (discretisation error not
+// measured: ...)".
+std::string withErrorBar(double mu, const DiscretisationError& error);
+std::string withKineticErrorBar(double mu, const DiscretisationError& error);
+
+}  // namespace gradfric::fem

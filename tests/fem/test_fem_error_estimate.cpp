@@ -1,0 +1,87 @@
+// The error bar of the FEM's mu_s (error_estimate.hpp): the measured terms for the studied
+// settings, "not measured" outside them, and the printed form.
+#include "gradfric/fem/error_estimate.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace gradfric;
+using namespace gradfric::fem;
+
+namespace {
+
+FemParameters paperDefaults() {
+  FemParameters q;
+  q.resolveDerived();
+  return q;
+}
+
+Grading linear(GradedProperty property, double delta) {
+  Grading g;
+  g.profile = GradingProfile::Linear;
+  g.property = property;
+  g.delta = delta;
+  return g;
+}
+
+}  // namespace
+
+TEST(FemErrorBar, PaperMeshAtTheDefaultsIsMeasured) {
+  const DiscretisationError e = discretisationError(paperDefaults(), Grading{}, 0.6);
+  ASSERT_TRUE(e.measured) << e.basis;
+  EXPECT_NEAR(e.mesh.relative, 0.005, 1e-12);
+  EXPECT_NEAR(e.timeStep.relative, 0.004, 1e-12);
+  EXPECT_NEAR(e.contact.relative, 0.004, 1e-12);
+  EXPECT_NEAR(e.relative, 0.013, 1e-12);
+  const std::string text = withErrorBar(0.883912, e);
+  EXPECT_EQ(text.rfind("0.883912 +- 1.3 % (discretisation: mesh 0.5 %, dt 0.4 %, contact 0.4 %; 100x100x5 q1", 0), 0u)
+      << text;
+  EXPECT_FALSE(e.kineticMeasured);
+  EXPECT_NE(withKineticErrorBar(0.39, e).find("not measured"), std::string::npos);
+}
+
+TEST(FemErrorBar, EachTermFollowsItsStudy) {
+  FemParameters q = paperDefaults();
+  EXPECT_NEAR(discretisationError(q, Grading{}, 0.3).timeStep.relative, 0.001, 1e-12);
+  EXPECT_NEAR(discretisationError(q, Grading{}, 0.9).timeStep.relative, 0.010, 1e-12);
+  EXPECT_NEAR(discretisationError(q, linear(GradedProperty::Friction, -0.2), 0.6).relative, 0.013, 1e-12);
+  q.contactMethod = ContactMethod::Kinematic;
+  EXPECT_NEAR(discretisationError(q, Grading{}, 0.6).relative, 0.009, 1e-12);
+  q = paperDefaults();
+  q.nx = q.ny = 25;
+  EXPECT_NEAR(discretisationError(q, Grading{}, 0.6).mesh.relative, 0.031, 1e-12);
+  EXPECT_NEAR(discretisationError(q, linear(GradedProperty::YoungsModulus, 0.2), 0.6).mesh.relative, 0.033, 1e-12);
+  q.element = ElementType::IncompatibleModes;
+  EXPECT_NEAR(discretisationError(q, Grading{}, 0.6).mesh.relative, 0.056, 1e-12);
+}
+
+TEST(FemErrorBar, OutsideTheStudiesItIsNotMeasured) {
+  auto notMeasured = [](const FemParameters& q, const Grading& g, double dtRatio, const char* why) {
+    const DiscretisationError e = discretisationError(q, g, dtRatio);
+    EXPECT_FALSE(e.measured) << why;
+    EXPECT_NE(e.basis.find(why), std::string::npos) << e.basis;
+    const std::string text = withErrorBar(0.9, e);
+    EXPECT_NE(text.find("(discretisation error not measured: "), std::string::npos) << text;
+    EXPECT_EQ(text.find("+-"), std::string::npos) << text;
+  };
+  FemParameters q = paperDefaults();
+  notMeasured(q, Grading{}, 0.95, "dt above 0.9");
+  notMeasured(q, linear(GradedProperty::YoungsModulus, 0.2), 0.6, "mesh 100x100x5 q1 (graded) not in the mesh study");
+  notMeasured(q, linear(GradedProperty::Friction, 0.5), 0.6, "grading other than");
+  q.nx = q.ny = 10;
+  notMeasured(q, Grading{}, 0.6, "mesh 10x10x5 q1 not in the mesh study");
+  q = paperDefaults();
+  q.kt = 10 * q.plate.shearModulus() / q.plate.thickness;
+  notMeasured(q, Grading{}, 0.6, "penalty stiffness other than 250 G/H");
+  q = paperDefaults();
+  q.plate.length *= 2;
+  q.resolveDerived();
+  notMeasured(q, Grading{}, 0.6, "plate or friction law other than the paper's");
+  q = paperDefaults();
+  q.stiffnessDamping = 3e-8;
+  notMeasured(q, Grading{}, 0.6, "damping while sliding");
+  q = paperDefaults();
+  q.rampTime *= 0.5;
+  notMeasured(q, Grading{}, 0.6, "pressure step other than");
+}
