@@ -8,6 +8,7 @@
 #include "gradfric/sbm/integrator.hpp"
 #include "gradfric/sbm/lattice.hpp"
 #include "gradfric/sbm/pressure_coupling.hpp"
+#include "gradfric/sbm/quiet_phase.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -149,11 +150,36 @@ std::optional<PressureCoupling> pressureCouplingFor(const Parameters& p, const G
 
 void setPhaseTimer(PhaseTimer timer) { phaseTimer = timer; }
 
+// The law a FastLattice is built on under a load-dependent pressure with the quiet-phase jump:
+// strengths that hold no longer than the real ones during the quiet phase, so that the jump ends
+// at or before the first slip (the real strengths are set before the first integrated step).
+// While every block rests, mu(t_n) = sum_i K_s,i v t_n / (p L^2) rises linearly; the first slip
+// comes no later than the first block with g_i <= 0 (its threshold never rises) would slip at its
+// static strength: mu up to that step bounds every mu the quiet phase sees.
+template <class Law>
+Law quietPhaseLaw(const Law& law, const PressureCoupling& coupling, const LatticeStiffness& stiffness,
+                  const Motion& motion, double normalForce) {
+  const int nb = stiffness.blocksPerSide;
+  const FrictionSites& base = coupling.perSite();
+  std::int64_t latest = std::int64_t(1) << 52;
+  double sliderSum = 0.0;
+  for (int r = 0; r < nb; ++r)
+    for (int c = 0; c < nb; ++c) {
+      sliderSum += stiffness.slider[c];
+      const std::size_t i = std::size_t(r) * nb + c;
+      if (coupling.shape()[i] <= 0.0)
+        latest = std::min(latest, firstSlipStepAtRest<Law>(stiffness.slider[c], base.staticStrength[i], motion, latest));
+    }
+  const double speed = std::hypot(motion.sliderVelocityX, motion.sliderVelocityY);
+  const double muBound = sliderSum * speed * double(latest + 1) * motion.timeStep / normalForce * (1.0 + 1e-9);
+  Law bounded = law;
+  bounded.sites = coupling.quietPhaseSites(muBound);
+  return bounded;
+}
+
 Result simulate(const Parameters& parameters, const Grading& grading, const Request& q, StreamKey key, Kernel kernel) {
   std::optional<PhaseScope> setup(std::in_place, Phase::Setup);
-  // The quiet-phase jump assumes constant thresholds: off under a load-dependent pressure.
-  Parameters p = parameters;
-  if (p.pressureResponse.active()) p.skipIdle = false;
+  const Parameters& p = parameters;
   const LatticeStiffness stiffness = buildStiffness(p, grading);
   const FrictionField friction = buildFriction(p, grading, key);
   std::optional<PressureCoupling> coupling = pressureCouplingFor(p, grading, friction);
@@ -167,7 +193,12 @@ Result simulate(const Parameters& parameters, const Grading& grading, const Requ
   const FrictionSites sites = coupling ? coupling->perSite() : FrictionSites(friction);
   withFrictionLaw(p.frictionLaw, sites, [&](auto law) {
     using Law = decltype(law);
-    if (kernel == Kernel::Fast) {
+    if (kernel == Kernel::Fast && couple && motion.skipIdle) {
+      // Built on bounded strengths (an exact quiet-phase jump), then given the real ones: the
+      // first apply() in integrate() sets them before the first integrated step.
+      FastLattice<Law> lattice(stiffness, quietPhaseLaw(law, *couple, stiffness, motion, p.plate.normalForce()), motion);
+      integrate(lattice, stiffness, friction, motion, p, q, stable, couple, result);
+    } else if (kernel == Kernel::Fast) {
       FastLattice<Law> lattice(stiffness, std::move(law), motion);
       integrate(lattice, stiffness, friction, motion, p, q, stable, couple, result);
     } else {
@@ -206,8 +237,9 @@ std::vector<std::string> activeEffects(const Parameters& p, const Grading& g, co
   if (p.pressureResponse.active()) {
     effects.push_back(p.pressureResponse.describe() +
                       "; mu(t) of the previous step (explicit), strengths mu_s,i F_n,i and mu_k,i F_n,i rescaled every step");
-    effects.push_back("every block stepped from t = 0: the quiet-phase jump (-sbm_skip_idle) assumes constant "
-                      "thresholds, switched off by the pressure response");
+    effects.push_back(p.skipIdle ? "idle work skipped: the quiet phase before the first slip in closed form, ended at "
+                                   "or before the first slip under the rising load (bit for bit)"
+                                 : "every block stepped from t = 0 (-sbm_skip_idle false)");
   } else {
     effects.push_back(p.skipIdle ? "idle work skipped: the phase before the first slip in closed form (bit for bit)"
                                  : "every block stepped from t = 0 (-sbm_skip_idle false)");

@@ -26,6 +26,16 @@ PressureCoupling::PressureCoupling(const FrictionSites& base, int nb, std::vecto
   record_.active = true;
 }
 
+FrictionSites PressureCoupling::quietPhaseSites(double muBound) const {
+  FrictionSites sites = base_;
+  for (std::size_t i = 0; i < shape_.size(); ++i) {
+    const double factor = std::max(0.0, 1.0 + muBound * std::min(shape_[i], 0.0));
+    sites.staticStrength[i] *= factor;
+    sites.kineticStrength[i] *= factor;
+  }
+  return sites;
+}
+
 void PressureCoupling::apply(double mu, FrictionSites& sites) {
   if (mu == lastMu_) return;  // the same load: the same strengths
   lastMu_ = mu;

@@ -30,6 +30,12 @@ public:
                    std::vector<double> coordinates, std::vector<double> weights, double thickness);
   // The base strengths, one per block (the layout the rescaled strengths need).
   const FrictionSites& perSite() const { return base_; }
+  const std::vector<double>& shape() const { return shape_; }
+  // Strengths no larger than any the blocks have while mu(t) <= muBound: the base ones times
+  // max(0, 1 + muBound min(g_i, 0)). A lattice built on them predicts a quiet phase (the jump
+  // of Motion::skipIdle) that ends no later than the first slip under the rising load, so the
+  // jump stays exact (model.cpp).
+  FrictionSites quietPhaseSites(double muBound) const;
   // Sets sites' strengths to the base ones times max(0, 1 + mu g_i) and checks the totals.
   void apply(double mu, FrictionSites& sites);
   const PressureCouplingRecord& record() const { return record_; }
