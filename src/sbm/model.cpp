@@ -237,6 +237,18 @@ std::vector<std::string> activeEffects(const Parameters& p, const Grading& g, co
   if (p.pressureResponse.active()) {
     effects.push_back(p.pressureResponse.describe() +
                       "; mu(t) of the previous step (explicit), strengths mu_s,i F_n,i and mu_k,i F_n,i rescaled every step");
+    const int nb = p.blocksPerSide;
+    const double angle = p.plate.slidingAngle;
+    const std::vector<double> g =
+        pressureResponseShape(p.pressureResponse, nb, p.plate.length, p.plate.thickness, angle);
+    const ShapeMoments m = shapeMoments(g, slidingCoordinates(nb, p.plate.length, angle));
+    const auto [lo, hi] = std::minmax_element(g.begin(), g.end());
+    std::ostringstream shape;
+    shape.precision(4);
+    shape << "pressure response g on the blocks: " << *lo << " (most unloaded) to " << *hi
+          << " (most loaded), first moment " << m.moment / p.plate.thickness << " H along the sliding direction, mean "
+          << m.mean;
+    effects.push_back(shape.str());
     effects.push_back(p.skipIdle ? "idle work skipped: the quiet phase before the first slip in closed form, ended at "
                                    "or before the first slip under the rising load (bit for bit)"
                                  : "every block stepped from t = 0 (-sbm_skip_idle false)");
