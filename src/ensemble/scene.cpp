@@ -285,7 +285,7 @@ std::optional<Scene> readScene(MPI_Comm comm, RunParameters* record) {
     g.fields = valueFields[v];
     checkSpringBlockFields(g, plate, s.parameters.blocksPerSide);
   }
-  checkUnusedOptions(comm, {"ensemble_", "plate_", "friction_", "sbm_", "grading_", "field_", "output"});
+  checkUnusedOptions(comm, {"ensemble_", "plate_", "friction_", "sbm_", "grading_", "field_", "pressure_", "output"});
 
   base.theta = s.parameters.plate.slidingAngle;
   base.sigma = s.parameters.sigmaStatic;

@@ -14,6 +14,7 @@
 #include <petscviewerhdf5.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -80,8 +81,10 @@ OutputFiles::~OutputFiles() {
 }
 
 StepObserver OutputFiles::snapshotObserver(PlateModel& model) {
-  if (pending_.empty()) return {};
+  if (path_.empty()) return {};
+  pressureResponse_ = std::make_unique<PressureResponseRecorder>(model);
   return [this, &model](double t, Vec state) {
+    pressureResponse_->observe(model);
     while (!pending_.empty() && t >= pending_.front() - 0.5 * model.timeStep()) {
       pending_.erase(pending_.begin());
       writeSnapshot(model, state, t);
@@ -107,6 +110,32 @@ void OutputFiles::createFieldDMs(PlateModel& model) {
 }
 
 namespace {
+
+void writeRealsAttribute(hid_t object, const char* name, const double* values, hsize_t n) {
+  using namespace io;
+  H5Space space(GF_H5(H5Screate_simple(1, &n, nullptr)));
+  H5Attribute a(GF_H5(H5Acreate2(object, name, H5T_IEEE_F64LE, space, H5P_DEFAULT, H5P_DEFAULT)));
+  GF_H5(H5Awrite(a, H5T_NATIVE_DOUBLE, values));
+}
+
+// /pressure_response/g [ny+1][nx+1] with the extent of a property-field map (docs/fields.md).
+void writePressureResponse(hid_t file, const PressureResponseMap& m) {
+  using namespace io;
+  H5Group group = createGroup(file, "pressure_response");
+  const hsize_t dims[2] = {hsize_t(m.ny), hsize_t(m.nx)};
+  H5Space space(GF_H5(H5Screate_simple(2, dims, nullptr)));
+  H5Dataset map(GF_H5(H5Dcreate2(group, "g", H5T_IEEE_F64LE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT)));
+  GF_H5(H5Dwrite(map, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, m.g.data()));
+  describe(map, "1",
+           "change of the bottom contact pressure per unit of mu(t), (1/p) dp_c/dmu, at every bottom node [ny+1][nx+1] "
+           "(rows along y); least squares over the loading phase; -pressure_response fem reads it");
+  writeRealsAttribute(map, "extent", m.extent, 4);
+  writeRealsAttribute(map, "mu_window", m.window, 2);
+  writeIntAttribute(map, "samples", static_cast<int>(m.samples));
+  writeRealAttribute(map, "mean", m.mean);
+  writeRealAttribute(map, "moment_over_H", m.momentOverThickness);
+}
+
 PetscLogEvent outputEvent() {
   static PetscLogEvent event = 0;
   if (!event) {
@@ -185,6 +214,15 @@ void OutputFiles::writeFields(PlateModel& model, Vec state, double t) {
 
 void OutputFiles::writeHistory(const PlateModel& model, const FemRunResult& r, const RunParameters& record) {
   if (path_.empty()) return;
+  // The pressure response's regression, gathered on rank 0 (collective; the same decision on every rank).
+  std::optional<PressureResponseMap> response;
+  if (pressureResponse_ && std::isfinite(r.friction.muStatic)) {
+    try {
+      response = pressureResponse_->finish(model, r.friction.muStatic);
+    } catch (const std::runtime_error& e) {
+      PetscPrintf(model.comm(), "gradfric-fem: no /pressure_response in the results file: %s\n", e.what());
+    }
+  }
   historyPlan_->writeOnRank0(model.comm(), [&](const std::string& tmp) {
     using namespace io;
     H5File file(GF_H5(H5Fcreate(tmp.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT)));
@@ -294,6 +332,7 @@ void OutputFiles::writeHistory(const PlateModel& model, const FemRunResult& r, c
           vector(properties, "mu_k", muK, "1", "local kinetic coefficient of the bottom faces of the column")};
       for (const auto& d : fields) attachScale(d, column, 0);
     }
+    if (response) writePressureResponse(file, *response);
     {
       std::vector<Attribute> options;
       for (const auto& o : record.all()) {

@@ -29,8 +29,10 @@ bool endsWith(const std::string& text, const std::string& tail) {
   return text.size() >= tail.size() && text.compare(text.size() - tail.size(), tail.size(), tail) == 0;
 }
 
-// A map from an HDF5 dataset: rank 2, [ny][nx] (rows along y), attribute "extent" = x0, x1, y0, y1 [m].
-FieldMap readHdf5Map(const std::string& option, const std::string& path, const std::string& dataset) {
+}  // namespace
+
+FieldMap readHdf5Map(const std::string& option, const std::string& path, const std::string& dataset,
+                     const std::string& datasetOption) {
   H5E_auto2_t handler = nullptr;
   void* data = nullptr;
   H5Eget_auto2(H5E_DEFAULT, &handler, &data);
@@ -57,7 +59,9 @@ FieldMap readHdf5Map(const std::string& option, const std::string& path, const s
     }
   } c{file};
   c.d = H5Dopen2(file, dataset.c_str(), H5P_DEFAULT);
-  if (c.d < 0) refuse("an HDF5 file with a dataset '" + dataset + "' (-" + option.substr(1) + "_dataset)");
+  if (c.d < 0)
+    refuse("an HDF5 file with a dataset '" + dataset + "'" +
+           (datasetOption.empty() ? " (-" + option.substr(1) + "_dataset)" : " (" + datasetOption + ")"));
   c.s = H5Dget_space(c.d);
   const int rank = H5Sget_simple_extent_ndims(c.s);
   if (rank != 2) refuse("a rank-2 dataset [ny][nx] ('" + dataset + "' has rank " + std::to_string(rank) + ")");
@@ -86,6 +90,8 @@ FieldMap readHdf5Map(const std::string& option, const std::string& path, const s
   m.source = path + ":" + dataset;
   return m;
 }
+
+namespace {
 
 // A greyscale PNG through libpng: row 0 is the top of the image (y = y1); grey g in [0, 255]
 // maps linearly onto [lo, hi].

@@ -7,6 +7,8 @@
 #include "gradfric/physics/stability.hpp"
 #include "gradfric/sbm/integrator.hpp"
 #include "gradfric/sbm/lattice.hpp"
+#include "gradfric/sbm/pressure_coupling.hpp"
+#include "gradfric/sbm/quiet_phase.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -51,7 +53,7 @@ std::string likelyCause(const Parameters& p, double stable) {
 
 template <class Lattice>
 void integrate(Lattice& lattice, const LatticeStiffness& stiffness, const FrictionField& friction, const Motion& motion,
-               const Parameters& p, const Request& q, double stable, Result& result) {
+               const Parameters& p, const Request& q, double stable, PressureCoupling* coupling, Result& result) {
   const int nb = p.blocksPerSide;
   const std::size_t n = std::size_t(nb) * nb;
   const double dt = p.timeStep;
@@ -71,6 +73,7 @@ void integrate(Lattice& lattice, const LatticeStiffness& stiffness, const Fricti
     throw NumericalInstability("the spring-block", quantity, t, lattice.steps(), likelyCause(p, stable));
   };
   std::size_t nextSnapshot = 0;
+  double observedMu = 0.0;  // mu(t) the observer holds at the start of the step (the pressure response's load)
   const auto start = std::chrono::steady_clock::now();
   for (;;) {
     const double t = lattice.time();
@@ -85,10 +88,12 @@ void integrate(Lattice& lattice, const LatticeStiffness& stiffness, const Fricti
     }
     const StepObservation o = [&] {
       PhaseScope timed(Phase::Step);
+      if (coupling) coupling->apply(observedMu, lattice.law().sites);
       return lattice.step();
     }();
     const double mu = history.observe(t, o.sliderForceX, o.sliderForceY, lattice.slippedBlocks() > 0,
                                       lattice.slippedBlocks() == int(n));
+    observedMu = mu;
     // mu(t) cannot exceed the largest local static coefficient but by a dynamic overshoot: twice
     // that is a blow-up, caught at once.
     const std::string muProblem = frictionViolation(mu, 2.0 * result.maxLocalStatic);
@@ -120,30 +125,85 @@ void integrate(Lattice& lattice, const LatticeStiffness& stiffness, const Fricti
   result.steps = lattice.steps();
   result.endTime = lattice.time();
   result.friction = history.summary();
+  if (coupling) result.pressureCoupling = coupling->record();
+}
+
+// The load-dependent pressure of a run, if the scene asks for one: the shape g on this lattice
+// (zero mean under the static pressure's weights) and the law's base strengths per block.
+std::optional<PressureCoupling> pressureCouplingFor(const Parameters& p, const Grading& grading,
+                                                    const FrictionField& friction) {
+  if (!p.pressureResponse.active()) return std::nullopt;
+  const int nb = p.blocksPerSide;
+  std::vector<double> weights;  // p_i^0 / p, empty when the static pressure is uniform
+  if (grading.fields && grading.fields->pressure) {
+    weights = blockProperties(p, grading).pressure;
+    for (double& w : weights) w /= p.plate.pressure;
+  }
+  const double angle = p.plate.slidingAngle;
+  std::vector<double> shape =
+      pressureResponseShape(p.pressureResponse, nb, p.plate.length, p.plate.thickness, angle, weights);
+  return PressureCoupling(friction, nb, std::move(shape), slidingCoordinates(nb, p.plate.length, angle),
+                          std::move(weights), p.plate.thickness);
 }
 
 }  // namespace
 
 void setPhaseTimer(PhaseTimer timer) { phaseTimer = timer; }
 
-Result simulate(const Parameters& p, const Grading& grading, const Request& q, StreamKey key, Kernel kernel) {
+// The law a FastLattice is built on under a load-dependent pressure with the quiet-phase jump:
+// strengths that hold no longer than the real ones during the quiet phase, so that the jump ends
+// at or before the first slip (the real strengths are set before the first integrated step).
+// While every block rests, mu(t_n) = sum_i K_s,i v t_n / (p L^2) rises linearly; the first slip
+// comes no later than the first block with g_i <= 0 (its threshold never rises) would slip at its
+// static strength: mu up to that step bounds every mu the quiet phase sees.
+template <class Law>
+Law quietPhaseLaw(const Law& law, const PressureCoupling& coupling, const LatticeStiffness& stiffness,
+                  const Motion& motion, double normalForce) {
+  const int nb = stiffness.blocksPerSide;
+  const FrictionSites& base = coupling.perSite();
+  std::int64_t latest = std::int64_t(1) << 52;
+  double sliderSum = 0.0;
+  for (int r = 0; r < nb; ++r)
+    for (int c = 0; c < nb; ++c) {
+      sliderSum += stiffness.slider[c];
+      const std::size_t i = std::size_t(r) * nb + c;
+      if (coupling.shape()[i] <= 0.0)
+        latest = std::min(latest, firstSlipStepAtRest<Law>(stiffness.slider[c], base.staticStrength[i], motion, latest));
+    }
+  const double speed = std::hypot(motion.sliderVelocityX, motion.sliderVelocityY);
+  const double muBound = sliderSum * speed * double(latest + 1) * motion.timeStep / normalForce * (1.0 + 1e-9);
+  Law bounded = law;
+  bounded.sites = coupling.quietPhaseSites(muBound);
+  return bounded;
+}
+
+Result simulate(const Parameters& parameters, const Grading& grading, const Request& q, StreamKey key, Kernel kernel) {
   std::optional<PhaseScope> setup(std::in_place, Phase::Setup);
+  const Parameters& p = parameters;
   const LatticeStiffness stiffness = buildStiffness(p, grading);
   const FrictionField friction = buildFriction(p, grading, key);
+  std::optional<PressureCoupling> coupling = pressureCouplingFor(p, grading, friction);
   const Motion motion = motionOf(p, p.timeStep, p.damping);
   setup.reset();
   Result result;
   result.redrawnBlocks = friction.redrawnBlocks;
   const double stable = stableTimeStep(p, grading);
   // The law's template parameter selects the compiled kernels (friction_laws.hpp).
-  withFrictionLaw(p.frictionLaw, friction, [&](auto law) {
+  PressureCoupling* couple = coupling ? &*coupling : nullptr;
+  const FrictionSites sites = coupling ? coupling->perSite() : FrictionSites(friction);
+  withFrictionLaw(p.frictionLaw, sites, [&](auto law) {
     using Law = decltype(law);
-    if (kernel == Kernel::Fast) {
+    if (kernel == Kernel::Fast && couple && motion.skipIdle) {
+      // Built on bounded strengths (an exact quiet-phase jump), then given the real ones: the
+      // first apply() in integrate() sets them before the first integrated step.
+      FastLattice<Law> lattice(stiffness, quietPhaseLaw(law, *couple, stiffness, motion, p.plate.normalForce()), motion);
+      integrate(lattice, stiffness, friction, motion, p, q, stable, couple, result);
+    } else if (kernel == Kernel::Fast) {
       FastLattice<Law> lattice(stiffness, std::move(law), motion);
-      integrate(lattice, stiffness, friction, motion, p, q, stable, result);
+      integrate(lattice, stiffness, friction, motion, p, q, stable, couple, result);
     } else {
       ReferenceLattice<Law> lattice(stiffness, std::move(law), motion);
-      integrate(lattice, stiffness, friction, motion, p, q, stable, result);
+      integrate(lattice, stiffness, friction, motion, p, q, stable, couple, result);
     }
   });
   return result;
@@ -174,8 +234,28 @@ std::vector<std::string> activeEffects(const Parameters& p, const Grading& g, co
   }
   effects.push_back("friction law: " + describeFrictionLaw(p.frictionLaw));
   effects.push_back(p.damping > 0 ? "viscous damping gamma = " + formatReal(p.damping) + " 1/s" : "no damping");
-  effects.push_back(p.skipIdle ? "idle work skipped: the phase before the first slip in closed form (bit for bit)"
-                               : "every block stepped from t = 0 (-sbm_skip_idle false)");
+  if (p.pressureResponse.active()) {
+    effects.push_back(p.pressureResponse.describe() +
+                      "; mu(t) of the previous step (explicit), strengths mu_s,i F_n,i and mu_k,i F_n,i rescaled every step");
+    const int nb = p.blocksPerSide;
+    const double angle = p.plate.slidingAngle;
+    const std::vector<double> g =
+        pressureResponseShape(p.pressureResponse, nb, p.plate.length, p.plate.thickness, angle);
+    const ShapeMoments m = shapeMoments(g, slidingCoordinates(nb, p.plate.length, angle));
+    const auto [lo, hi] = std::minmax_element(g.begin(), g.end());
+    std::ostringstream shape;
+    shape.precision(4);
+    shape << "pressure response g on the blocks: " << *lo << " (most unloaded) to " << *hi
+          << " (most loaded), first moment " << m.moment / p.plate.thickness << " H along the sliding direction, mean "
+          << m.mean;
+    effects.push_back(shape.str());
+    effects.push_back(p.skipIdle ? "idle work skipped: the quiet phase before the first slip in closed form, ended at "
+                                   "or before the first slip under the rising load (bit for bit)"
+                                 : "every block stepped from t = 0 (-sbm_skip_idle false)");
+  } else {
+    effects.push_back(p.skipIdle ? "idle work skipped: the phase before the first slip in closed form (bit for bit)"
+                                 : "every block stepped from t = 0 (-sbm_skip_idle false)");
+  }
   effects.push_back("sliding angle theta = " + formatReal(p.plate.slidingAngle) + " degree");
   std::string observed = "observables: mu_s";
   if (q.measurement.kinetic) observed += ", mu_k";

@@ -7,6 +7,7 @@
 #include "gradfric/physics/friction_options.hpp"
 #include "gradfric/physics/stability.hpp"
 #include "gradfric/physics/friction_laws.hpp"
+#include "gradfric/physics/pressure_response_options.hpp"
 #include "gradfric/sbm/log_events.hpp"
 
 #include <algorithm>
@@ -47,6 +48,7 @@ Parameters readParameters(MPI_Comm comm, RunParameters* record, const Plate& pla
   o.requireAtLeast("N", p.blocksPerSide, 2);
   if (p.blocksPerSide > 4096) throw InputError(o.fullName("N"), std::to_string(p.blocksPerSide), "2 <= N <= 4096");
   checkSpringBlockFields(grading, plate, p.blocksPerSide);  // the property fields at the block centres
+  p.pressureResponse = readPressureResponse(comm, record, plate, p.blocksPerSide);  // -pressure_response
 
   const double kInt = p.axialStiffness(p.plate.youngsModulus);
   const double omega = std::sqrt(kInt / p.blockMass());

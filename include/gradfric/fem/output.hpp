@@ -1,7 +1,9 @@
 #pragma once
 // Output of the FEM driver.
 //  <output>              HDF5, rank 0: /history/{time,mu,normal_force} of step 2 and the run's scalars
-//                        (mu_s, mu_k, peak_time, eq2_peak_time, ...) and parameters as attributes.
+//                        (mu_s, mu_k, peak_time, eq2_peak_time, ...) and parameters as attributes;
+//                        /pressure_response/g, the change of the bottom contact pressure per unit of
+//                        mu over the loading phase, a map the SBM reads (pressure_response_recorder.hpp).
 //  <stem>_fields.h5/.xmf field snapshots in PETSc's HDF5 VIZ layout (ParaView opens the .xmf):
 //                        /vertex_fields/state_displacement, state_velocity, bottom_contact (contact
 //                        pressure, t_x, t_y, state 0 open 1 stick 2 slip), /cell_fields/cell_stress
@@ -9,10 +11,12 @@
 // Nothing is overwritten unless -fem_output_overwrite; files are written under a temporary name
 // and renamed at the end, so a failed run leaves no half-written result.
 #include "gradfric/core/options.hpp"
+#include "gradfric/fem/pressure_response_recorder.hpp"
 #include "gradfric/fem/simulation.hpp"
 #include "gradfric/io/provenance.hpp"
 #include "gradfric/io/output_plan.hpp"
 
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -30,7 +34,8 @@ public:
   bool enabled() const { return !path_.empty(); }
   const std::string& historyPath() const { return path_; }
   const std::string& fieldsPath() const { return fieldsPath_; }
-  // An observer writing a snapshot at each requested time (empty if none were requested).
+  // An observer writing a snapshot at each requested time and recording the pressure response
+  // (empty without an output file). Collective.
   StepObserver snapshotObserver(PlateModel& model);
   void writeSnapshot(PlateModel& model, Vec state, double tSliding);
   void writeHistory(const PlateModel& model, const FemRunResult& result, const RunParameters& record);
@@ -50,6 +55,7 @@ private:
   PetscViewer viewer_ = nullptr;
   DM contactDM_ = nullptr, stressDM_ = nullptr;
   bool historyWritten_ = false, finished_ = false;
+  std::unique_ptr<PressureResponseRecorder> pressureResponse_;  // with an output file
   std::optional<io::OutputPlan> historyPlan_, fieldsPlan_, xmfPlan_;  // where each file goes
 };
 

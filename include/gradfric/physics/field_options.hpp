@@ -10,6 +10,12 @@
 
 namespace gradfric {
 
+// A map from an HDF5 dataset: rank 2, [ny][nx] (rows along y), attribute "extent" = x0, x1, y0,
+// y1 [m]. Refuses (InputError naming `option` and `path`) what cannot be read; datasetOption names
+// where the dataset's name comes from (default: the option's "_dataset" companion).
+FieldMap readHdf5Map(const std::string& option, const std::string& path, const std::string& dataset,
+                     const std::string& datasetOption = "");
+
 // Reads every field's options (all listed by -help) and its map; refuses bad options, unreadable
 // or malformed maps and a field that a -grading_* option grades too. Null when no field is set.
 std::shared_ptr<const PlateFields> readPlateFields(MPI_Comm comm, RunParameters* record, const Plate& plate,

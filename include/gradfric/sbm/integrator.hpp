@@ -91,6 +91,9 @@ public:
   const std::uint8_t* blockStates() const { return state_.data(); }
   // The first step the kernel integrates: 0, or with Motion::skipIdle the step of the first slip.
   std::int64_t quietSteps() const { return quietUntil_; }
+  // The friction law and its per-site strengths: a caller may change the strengths between steps
+  // (the load-dependent pressure, pressure_coupling.hpp), never their layout; not with skipIdle.
+  Law& law() { return law_; }
 
   // The kernel's parts (public so that the per-ISA entry points can reach them).
   template <bool Graded, SiteLayout L, int Stage>
@@ -175,6 +178,7 @@ public:
   std::vector<double> velocityY() const;  // half-step velocity with Verlet
   // Driving force F_mot (springs + slider) on every block at the current state (for tests).
   void drivingForces(std::vector<double>& fx, std::vector<double>& fy) const;
+  Law& law() { return law_; }  // as FastLattice::law()
 
   struct Block {
     double ux, uy, vx, vy;

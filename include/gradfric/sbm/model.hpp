@@ -6,6 +6,7 @@
 #include "gradfric/physics/friction_history.hpp"
 #include "gradfric/physics/grading.hpp"
 #include "gradfric/sbm/parameters.hpp"
+#include "gradfric/sbm/pressure_coupling.hpp"
 
 #include <cstdint>
 #include <string>
@@ -30,6 +31,7 @@ struct Result {
   double energy = 0.0;
   double sliderWork = 0.0;
   double maxLocalStatic = 0.0;  // the largest local mu_s,i: mu(t) stays below it (checked)
+  PressureCouplingRecord pressureCoupling;  // the load-dependent pressure's totals (inactive: none)
 };
 
 // simulate() throws gradfric::NumericalInstability (physics/stability.hpp) when the run blows up:

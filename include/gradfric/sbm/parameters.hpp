@@ -6,6 +6,7 @@
 #include "gradfric/physics/friction_laws_settings.hpp"
 #include "gradfric/physics/grading.hpp"
 #include "gradfric/physics/plate.hpp"
+#include "gradfric/physics/pressure_response.hpp"
 
 #include <string>
 #include <vector>
@@ -40,6 +41,9 @@ struct Parameters {
   // phase before the first slip, bit for bit the stepped run. It relies on a load linear in time
   // and a constant normal force: turn it off for anything else.
   bool skipIdle = true;
+  // The load-dependent pressure p_i(t) = p_i^0 (1 + mu(t) g_i) (-pressure_response; none by
+  // default: every block keeps its static normal force). It switches skipIdle off.
+  PressureResponse pressureResponse;
 
   double spacing() const { return plate.length / blocksPerSide; }
   double blockMass() const { return plate.density * layerThickness * spacing() * spacing(); }

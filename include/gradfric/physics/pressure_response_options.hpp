@@ -1,0 +1,26 @@
+#pragma once
+// The -pressure_response options of the spring-block model (physics/pressure_response.hpp):
+//   -pressure_response none|moment|fem     the shape g of p_i(t) = p_i^0 (1 + mu(t) g_i)
+//   -pressure_response_edge <m>            moment: decay length of the edge concentration
+//   -pressure_response_file <run.h5>       fem: a gradfric-fem results file (/pressure_response/g)
+// PETSc/HDF5 part of the library; docs/fields.md, "The 3D pressure in the spring-block model".
+#include "gradfric/core/options.hpp"
+#include "gradfric/physics/plate.hpp"
+#include "gradfric/physics/pressure_response.hpp"
+
+namespace gradfric {
+
+// The dataset gradfric-fem writes and the SBM reads.
+inline constexpr const char* kPressureResponseDataset = "/pressure_response/g";
+
+// The default decay length of the moment-balance shape, in units of the plate thickness H
+// (the FEM-measured g of the paper mesh on 120 x 120 blocks is fitted best by 0.48 H; docs/fields.md).
+inline constexpr double kDefaultEdgeOverThickness = 0.5;
+
+// Reads and checks the options on every rank (InputError, before any work): an edge length out
+// of (0, L/2], a file that is not a readable map covering the plate or holds a non-finite value,
+// an option given for the other source, and a shape that would make some block's pressure
+// negative before mu(t) reaches the plate's mean mu_s.
+PressureResponse readPressureResponse(MPI_Comm comm, RunParameters* record, const Plate& plate, int blocksPerSide);
+
+}  // namespace gradfric

@@ -1,0 +1,82 @@
+#!/usr/bin/env bash
+# Every refusal of the -pressure_response options, before any work: exit code 2, one message
+# naming the option, its value and what is allowed, no results file left; on 2 ranks as well.
+# Usage: refusals.sh <gradfric driver> <source dir> <scratch folder>
+set -u
+sbm=$1
+source_dir=$2
+scratch=$3
+mkdir -p "$scratch"
+out="$scratch/refused.h5"
+failures=0
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
+
+# Bad pressure-response maps: a NaN node, an extent short of the plate.
+/usr/bin/python3 - "$scratch" <<'PY'
+import sys
+import h5py, numpy as np
+d, L = sys.argv[1], 5e-3
+def h5(name, data, extent):
+    with h5py.File(f"{d}/{name}", "w") as f:
+        ds = f.create_dataset("/pressure_response/g", data=data)
+        ds.attrs["extent"] = np.array(extent, dtype=float)
+nan = np.zeros((6, 6)); nan[4, 1] = np.nan
+h5("nan.h5", nan, (0, L, 0, L))
+h5("small.h5", np.zeros((6, 6)), (0, L / 2, 0, L))
+PY
+
+# expect <ranks> <text the message must contain ...> -- <arguments...>
+expect() {
+  local ranks=$1; shift
+  local needles=()
+  while [ "$1" != "--" ]; do needles+=("$1"); shift; done
+  shift
+  rm -f "$out" "$out.partial"
+  local message status
+  if [ "$ranks" = 1 ]; then
+    message=$(timeout 120 "$sbm" -output "$out" -sbm_N 16 "$@" 2>&1 >/dev/null)
+  else
+    message=$(timeout 120 mpiexec -n "$ranks" "$sbm" -output "$out" -sbm_N 16 "$@" 2>&1 >/dev/null)
+  fi
+  status=$?
+  if [ $status -ne 2 ]; then
+    echo "FAIL ($*): exit $status, expected 2: $message"; failures=$((failures + 1)); return
+  fi
+  for needle in "${needles[@]}"; do
+    if ! grep -qF -- "$needle" <<<"$message"; then
+      echo "FAIL ($*): message lacks '$needle': $message"; failures=$((failures + 1)); return
+    fi
+  done
+  if [ "$(grep -c 'gradfric: error:' <<<"$message")" -ne "$ranks" ] && [ "$(grep -c 'gradfric: error:' <<<"$message")" -ne 1 ]; then
+    echo "FAIL ($*): not one error line: $message"; failures=$((failures + 1)); return
+  fi
+  if [ -e "$out" ] || [ -e "$out.partial" ]; then
+    echo "FAIL ($*): left $out behind"; failures=$((failures + 1)); return
+  fi
+  echo "ok   ($*): $(head -1 <<<"$message")"
+}
+s() { expect 1 "$@"; }
+
+s "-pressure_response = linear" "none, moment, fem" -- -pressure_response linear
+s "-pressure_response_edge = 0" "0 < lambda <= L/2 = 0.0025 [m]" -- -pressure_response moment -pressure_response_edge 0
+s "-pressure_response_edge = 0.01" "0 < lambda <= L/2" -- -pressure_response moment -pressure_response_edge 0.01
+s "-pressure_response_edge" "inf" -- -pressure_response moment -pressure_response_edge inf
+s "-pressure_response_edge = 5e-05" "only with -pressure_response moment" -- -pressure_response_edge 5e-5
+s "-pressure_response_edge = 5e-05" "only with -pressure_response moment" -- -pressure_response fem -pressure_response_edge 5e-5 -pressure_response_file "$scratch/nan.h5"
+s "-pressure_response_file = $scratch/nan.h5" "only with -pressure_response fem" -- -pressure_response moment -pressure_response_file "$scratch/nan.h5"
+s "-pressure_response_file = $scratch/nan.h5" "only with -pressure_response fem" -- -pressure_response_file "$scratch/nan.h5"
+s "-pressure_response_file = (not set)" "gradfric-fem results file" -- -pressure_response fem
+s "-pressure_response_file = $scratch/missing.h5" "cannot open" -- -pressure_response fem -pressure_response_file "$scratch/missing.h5"
+s "-pressure_response_file" "dataset '/pressure_response/g'" "gradfric-fem -fem_output" -- -pressure_response fem -pressure_response_file "$source_dir/input/fields/linear_ramp.h5"
+s "-pressure_response_file" "finite g everywhere (pixel 1, 4" -- -pressure_response fem -pressure_response_file "$scratch/nan.h5"
+s "-pressure_response_file" "covering the plate" -- -pressure_response fem -pressure_response_file "$scratch/small.h5"
+# The unloaded trailing edge: a concentration so sharp that a block's pressure turns negative
+# before mu(t) reaches -plate_mu_s (120 blocks, lambda = H / 10: g = -1.17 at the trailing edge).
+s "-pressure_response_edge = 5e-06" "pressure stays positive up to mu = -plate_mu_s = 1" "x = 2.08333e-05 m" -- -sbm_N 120 -pressure_response moment -pressure_response_edge 5e-6
+s "-pressure_respons" "did you mean -pressure_response" -- -pressure_respons moment
+# Every rank refuses (no hang, no file).
+expect 2 "-pressure_response_file = (not set)" -- -pressure_response fem
+expect 2 "-pressure_response_edge = 5e-06" "pressure stays positive" -- -sbm_N 120 -pressure_response moment -pressure_response_edge 5e-6
+
+if [ $failures -ne 0 ]; then echo "$failures refusal(s) wrong"; exit 1; fi
+echo "all pressure-response refusals correct"
