@@ -152,6 +152,18 @@ private:
     const double mu = history_.observe(tSliding, totals.fx, totals.fy, totals.slip > 0,
                                        totals.everSlipped == totals.nodes);
     sample_.mu = mu;
+    // The damping of the sliding plate starts once mu fell -friction_peak_drop below its maximum
+    // after the first slip (the peak is then behind: mu_s is the undamped run's), or at the
+    // confirmed peak, whichever comes first.
+    using Start = FemParameters::DampingStart;
+    const bool pastPeak = history_.peakConfirmed() || q_.peakDampingStart == Start::Sliding ||
+                          (q_.peakDampingStart == Start::Drop && totals.slip > 0 &&
+                           mu < (1.0 - q_.measurement.peakDrop) * history_.peak());
+    if (pastPeak && !model_.peakDampingOn() && model_.startPeakDamping()) {
+      r_.peakDampingStart = tSliding;
+      if (q_.verbose)
+        GF_CALL(PetscPrintf(model_.comm(), "  peak confirmed at t - t0 = %.4e s: damping while sliding on\n", tSliding));
+    }
     r_.time.push_back(tSliding);
     r_.mu.push_back(mu);
     r_.normalForce.push_back(totals.fn / normal_);
