@@ -53,13 +53,15 @@ std::string describeDamping(const FemParameters& q) {
   }
   FemParameters r = q;
   r.resolveDerived();
+  const char* from = r.peakDampingStart == FemParameters::DampingStart::Confirmed ? "the confirmed peak"
+                     : r.peakDampingStart == FemParameters::DampingStart::Drop    ? "the first drop of mu"
+                                                                                  : "the start of sliding";
   if (r.peakDamping > 0) {
-    std::snprintf(buffer, sizeof buffer, "from the confirmed peak: mass-proportional towards the slider %.3g 1/s",
-                  r.peakDamping);
+    std::snprintf(buffer, sizeof buffer, "from %s: mass-proportional towards the slider %.3g 1/s", from, r.peakDamping);
     add(buffer);
   }
   if (r.peakStiffnessDamping > 0) {
-    std::snprintf(buffer, sizeof buffer, "from the confirmed peak: stiffness-proportional %.3g s", r.peakStiffnessDamping);
+    std::snprintf(buffer, sizeof buffer, "from %s: stiffness-proportional %.3g s", from, r.peakStiffnessDamping);
     add(buffer);
   }
   return text.empty() ? "none" : text;

@@ -152,9 +152,9 @@ private:
     const double mu = history_.observe(tSliding, totals.fx, totals.fy, totals.slip > 0,
                                        totals.everSlipped == totals.nodes);
     sample_.mu = mu;
-    // The damping of the sliding plate starts once mu fell -friction_peak_drop below its maximum
-    // after the first slip (the peak is then behind: mu_s is the undamped run's), or at the
-    // confirmed peak, whichever comes first.
+    // The damping of the sliding plate starts at the confirmed peak (mu_s is then the undamped
+    // run's), or with -fem_peak_damping_start at the first drop of mu after the first slip or at
+    // once (study options: they can damp the peak).
     using Start = FemParameters::DampingStart;
     const bool pastPeak = history_.peakConfirmed() || q_.peakDampingStart == Start::Sliding ||
                           (q_.peakDampingStart == Start::Drop && totals.slip > 0 &&

@@ -1,17 +1,18 @@
 #pragma once
 // Damping of the plate's vibrations once it slides (docs/accuracy_fem.md, "Steady sliding after
 // the peak"). The release of the stored shear at the static peak rings the plate's thickness-shear
-// modes (omega_1 = pi c_s / (2H)) with a bottom velocity far above the sliding speed; undamped,
-// the bottom comes to rest and re-sticks at mu_s (stick-slip), so mu_k is not Eq. 1's.
+// and rocking modes (omega_1 = pi c_s / (2H)) with a bottom velocity far above the sliding speed;
+// undamped, the plate bounces (normal force +-10 %, nodes lifting off) and does not slide steadily
+// even with constant friction.
 //
 // The remedy is mass-proportional damping measured in the slider's frame,
 //   a_damping = -gamma_lab v - gamma_slider (v - v_slider),   v_slider = v (cos theta, sin theta, 0),
 // switched on once the static peak is confirmed (so mu_s is untouched bit for bit): it damps every
-// vibration relative to the rigidly sliding plate, strongest for the slow thickness-shear modes
-// that re-stick the bottom, and exerts no force at all in steady sliding (every node moves at
-// v_slider), so neither the friction nor the normal force of the steady state is biased. A
-// dashpot towards the slider (gamma_lab, -fem_slide_damping) drags by gamma rho H v instead.
-// Pure arithmetic, no PETSc.
+// vibration relative to the rigidly sliding plate, strongest in the slowest modes, and exerts no
+// force at all in steady sliding (every node moves at v_slider), so neither the friction nor the
+// normal force of the steady state is biased. A dashpot towards rest (gamma_lab,
+// -fem_slide_damping) drags by gamma rho H v instead. It does not remove the node-scale
+// stick-slip of Eq. 1 (a stopped node is back at mu_s): see the docs. Pure arithmetic, no PETSc.
 namespace gradfric::fem {
 
 struct SlidingDamping {
@@ -29,7 +30,6 @@ struct SlidingDamping {
     for (int d = 0; d < 3; ++d) p -= mass * acceleration(velocity, d) * velocity[d];
     return p;
   }
-  bool active() const { return lab > 0.0 || slider > 0.0; }
 };
 
 }  // namespace gradfric::fem
