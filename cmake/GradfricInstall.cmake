@@ -4,7 +4,7 @@
 include(GNUInstallDirs)
 option(GRADFRIC_INSTALL_DOCS "Install README.md and docs/ into share/doc/gradfric" ON)
 
-foreach(driver gradfric_driver gradfric_fem_driver gradfric_study_driver)
+foreach(driver gradfric_driver gradfric_fem_driver gradfric_study_driver gradfric_design_driver gradfric_calibrate_driver)
   if(TARGET ${driver})
     install(TARGETS ${driver} RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
   endif()
@@ -16,6 +16,8 @@ install(DIRECTORY ${PROJECT_SOURCE_DIR}/input/ DESTINATION ${GRADFRIC_INSTALL_DA
 # The plotting scripts work on any results file; scripts/setup.sh, run-*.sh and
 # reproduce_paper.sh drive a source tree and stay there.
 install(PROGRAMS ${PROJECT_SOURCE_DIR}/scripts/gradfric_plot.py ${PROJECT_SOURCE_DIR}/scripts/plot_accuracy.py
+                 ${PROJECT_SOURCE_DIR}/scripts/plot_design.py
+                 ${PROJECT_SOURCE_DIR}/scripts/plot_calibration.py
         DESTINATION ${GRADFRIC_INSTALL_DATADIR}/scripts)
 install(PROGRAMS ${PROJECT_SOURCE_DIR}/slurm/sbm_ensemble.sbatch ${PROJECT_SOURCE_DIR}/slurm/submit_chain.sh
         DESTINATION ${GRADFRIC_INSTALL_DATADIR}/slurm)

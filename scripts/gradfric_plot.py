@@ -135,21 +135,26 @@ class FemHistory:
 
 
 def pair_key(ensemble, p, digits=9):
-    """What a point's physics depends on across the models: its grading and its angle (every
-    non-graded point is the same plate whatever its nominal property or profile)."""
+    """What a point's physics depends on across the models: its grading, its angle (every
+    non-graded point is the same plate whatever its nominal property or profile) and the value of
+    a swept field parameter (-ensemble_field), named by its axis."""
     theta = round(float(ensemble.theta[p]), digits)
     delta = round(float(ensemble.delta[p]), digits)
+    field = tuple(a for a in ensemble.axes if a.startswith("field_"))
+    if field and ensemble.field_value is not None:
+        field += (round(float(ensemble.field_value[p]), digits),)
     if ensemble.profile[p] == "none" or delta == 0.0:
-        return ("none", "none", 0.0, theta)
-    return (ensemble.property[p], ensemble.profile[p], delta, theta)
+        return ("none", "none", 0.0, theta) + field
+    return (ensemble.property[p], ensemble.profile[p], delta, theta) + field
 
 
 def pair_points(sbm, fem):
     """[(FEM point, SBM point)] for every point of the FEM sweep; refuses (exit 2) a sweep of
     another plate or with a point the spring-block file does not have."""
-    names = [k for k in fem.scene if k.startswith("plate_") or k == "grading_bands"]
-    differ = [f"-{k}: FEM {fem.scene[k]}, SBM {sbm.scene[k]}" for k in names
-              if k in sbm.scene and sbm.scene[k] != fem.scene[k]]
+    # The plate, and the property fields (-field_*: the same surface apart from the swept value).
+    names = [k for k in fem.scene if k.startswith("plate_") or k.startswith("field_") or k == "grading_bands"]
+    differ = [f"-{k}: FEM {fem.scene[k]}, SBM {sbm.scene.get(k, '(not set)')}" for k in names
+              if (k in sbm.scene or k.startswith("field_")) and sbm.scene.get(k) != fem.scene[k]]
     if differ:
         refuse(f"{fem.path} and {sbm.path} do not describe the same plate: " + "; ".join(differ))
     by_key = {}
@@ -163,7 +168,7 @@ def pair_points(sbm, fem):
         else:
             pairs.append((p, q))
     if missing:
-        refuse(f"{fem.path} does not match {sbm.path}: no spring-block point with the grading and angle of FEM "
+        refuse(f"{fem.path} does not match {sbm.path}: no spring-block point with the grading, angle and field value of FEM "
                + ", ".join(missing))
     return pairs
 

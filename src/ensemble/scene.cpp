@@ -121,11 +121,7 @@ SweepLists readEnsembleOptions(MPI_Comm comm, RunParameters* record, Scene* s) {
       ens.integer("target_max", 200, 2, 10000000, "1",
                   "with -ensemble_target: at most this many realisations per point");
   const PetscInt seed = ens.integer("seed", 1, 0, PETSC_MAX_INT, "1", "scene seed: a task's random stream is (seed, point, realisation)");
-  SweepLists lists = readSweepLists(ens);  // shared with the FEM sweep
-  lists.fieldParameter = ens.text("field", "",
-                                  "sweep of one scalar parameter of a property field, <property>_<parameter>: "
-                                  "mu_delta, E_exponent, mu_period, p_position, ... (docs/fields.md)");
-  lists.fieldValues = ens.realList("field_values", {}, "(the parameter's)", "the values of -ensemble_field, innermost loop");
+  SweepLists lists = readSweepLists(ens);  // shared with the FEM sweep (the field sweep too)
   s->commonStreams = ens.flag(
       "common_streams", target > 0.0 && targetType == "variation",
       "common random numbers: realisation r of every sweep point draws from the stream (seed, 0, r); the "
@@ -163,38 +159,6 @@ SweepLists readEnsembleOptions(MPI_Comm comm, RunParameters* record, Scene* s) {
   s->seed = static_cast<std::uint64_t>(seed);
   s->abortAfter = static_cast<long>(abortAfter);
   return lists;
-}
-
-// One PlateFields per value of -ensemble_field_values (empty without a field sweep); the value
-// that makes the field uniform, if any, becomes the sweep's reference.
-std::vector<std::shared_ptr<const PlateFields>> fieldsPerValue(SweepLists* lists,
-                                                               const std::shared_ptr<const PlateFields>& fields) {
-  const bool named = !lists->fieldParameter.empty(), valued = !lists->fieldValues.empty();
-  if (named != valued)
-    throw InputError(named ? "-ensemble_field_values" : "-ensemble_field", "(not set)",
-                     "both -ensemble_field and -ensemble_field_values, or neither");
-  std::vector<std::shared_ptr<const PlateFields>> perValue;
-  for (double v : lists->fieldValues) {
-    try {
-      perValue.push_back(withParameter(fields, lists->fieldParameter, v));
-    } catch (const std::invalid_argument& e) {
-      throw InputError("-ensemble_field", lists->fieldParameter, e.what());
-    }
-  }
-  if (!perValue.empty()) {
-    const PlateFields& f = *perValue.front();
-    const std::string& name = lists->fieldParameter;
-    const auto* swept = name.rfind("E_", 0) == 0 ? f.modulus.get() : name.rfind("p_", 0) == 0 ? f.pressure.get()
-                        : name.rfind("mu_k_", 0) == 0 ? f.muKinetic.get() : f.muStatic.get();
-    const bool amplitude = name.size() > 6 && name.compare(name.size() - 6, 6, "_delta") == 0 &&
-                           swept->shape != FieldShape::Exponential && swept->shape != FieldShape::Bands &&
-                           swept->shape != FieldShape::Map;
-    const bool rate = name.size() > 9 && name.compare(name.size() - 9, 9, "_exponent") == 0 &&
-                      swept->shape == FieldShape::Exponential;
-    lists->fieldHasNeutral = amplitude || rate;
-    lists->fieldNeutral = 0.0;
-  }
-  return perValue;
 }
 
 // The stiffest point of the sweep sets the stable time step: one dt for the whole sweep.

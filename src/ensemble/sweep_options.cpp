@@ -4,6 +4,7 @@
 #include "gradfric/core/input_error.hpp"
 
 #include <algorithm>
+#include <stdexcept>
 #include <cmath>
 #include <string>
 
@@ -19,9 +20,45 @@ SweepLists readSweepLists(OptionReader& ens) {
                                   "sweep of the graded property (empty: -grading_property alone)");
   lists.profile = ens.choiceList("profile", {}, {"none", "linear", "triangular"},
                                  "sweep of the grading profile (empty: -grading_profile alone)");
+  lists.fieldParameter = ens.text("field", "",
+                                  "sweep of one scalar parameter of a property field, <property>_<parameter>: "
+                                  "mu_delta, E_exponent, mu_period, p_position, ... (docs/fields.md)");
+  lists.fieldValues = ens.realList("field_values", {}, "(the parameter's)", "the values of -ensemble_field, innermost loop");
   for (double d : lists.delta)
     if (!(std::fabs(d) < 1.0)) throw InputError(ens.fullName("delta"), formatReal(d), "values with |Delta| < 1");
   return lists;
+}
+
+// One PlateFields per value of -ensemble_field_values (empty without a field sweep); the value
+// that makes the field uniform, if any, becomes the sweep's reference.
+std::vector<std::shared_ptr<const PlateFields>> fieldsPerValue(SweepLists* lists,
+                                                               const std::shared_ptr<const PlateFields>& fields) {
+  const bool named = !lists->fieldParameter.empty(), valued = !lists->fieldValues.empty();
+  if (named != valued)
+    throw InputError(named ? "-ensemble_field_values" : "-ensemble_field", "(not set)",
+                     "both -ensemble_field and -ensemble_field_values, or neither");
+  std::vector<std::shared_ptr<const PlateFields>> perValue;
+  for (double v : lists->fieldValues) {
+    try {
+      perValue.push_back(withParameter(fields, lists->fieldParameter, v));
+    } catch (const std::invalid_argument& e) {
+      throw InputError("-ensemble_field", lists->fieldParameter, e.what());
+    }
+  }
+  if (!perValue.empty()) {
+    const PlateFields& f = *perValue.front();
+    const std::string& name = lists->fieldParameter;
+    const auto* swept = name.rfind("E_", 0) == 0 ? f.modulus.get() : name.rfind("p_", 0) == 0 ? f.pressure.get()
+                        : name.rfind("mu_k_", 0) == 0 ? f.muKinetic.get() : f.muStatic.get();
+    const bool amplitude = name.size() > 6 && name.compare(name.size() - 6, 6, "_delta") == 0 &&
+                           swept->shape != FieldShape::Exponential && swept->shape != FieldShape::Bands &&
+                           swept->shape != FieldShape::Map;
+    const bool rate = name.size() > 9 && name.compare(name.size() - 9, 9, "_exponent") == 0 &&
+                      swept->shape == FieldShape::Exponential;
+    lists->fieldHasNeutral = amplitude || rate;
+    lists->fieldNeutral = 0.0;
+  }
+  return perValue;
 }
 
 void checkSweepLists(const SweepLists& lists, const Grading& base) {
@@ -39,7 +76,7 @@ void checkSweepLists(const SweepLists& lists, const Grading& base) {
 
 bool anySwept(const SweepLists& lists) {
   return !lists.delta.empty() || !lists.theta.empty() || !lists.sigma.empty() || !lists.property.empty() ||
-         !lists.profile.empty();
+         !lists.profile.empty() || !lists.fieldParameter.empty() || !lists.fieldValues.empty();
 }
 
 io::SweepTable sweepColumns(const Sweep& sweep) {

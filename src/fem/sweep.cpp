@@ -6,7 +6,10 @@
 #include "gradfric/core/petsc_call.hpp"
 #include "gradfric/ensemble/sweep_options.hpp"
 #include "gradfric/fem/stable_step.hpp"
+#include "gradfric/physics/field_options.hpp"
+#include "gradfric/physics/property_sampler.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 
@@ -57,15 +60,30 @@ io::EnsembleLayout layoutOf(const FemSweep& s) {
 
 io::SweepTable tableOf(const FemSweep& s) {
   io::SweepTable table = ensemble::sweepColumns(s.sweep);  // the ensemble's /sweep columns
+  for (const auto& q : s.sweep.points)
+    if (q.fieldSwept) table.fieldValue.push_back(q.fieldValue);
   const Plate& plate = s.params.plate;
-  for (int p = 0; p < s.points(); ++p) {  // the properties at each hexahedron column's centre
+  const int n = static_cast<int>(s.params.nx);
+  for (int p = 0; p < s.points(); ++p) {  // the properties the run samples (as its history file has them)
     const Grading g = s.pointGrading(p);
-    for (int i = 0; i < s.params.nx; ++i) {
-      const double centre = (i + 0.5) / s.params.nx;
-      table.modulus.push_back(plate.youngsModulus * g.modulusFactor(centre));
-      table.muStatic.push_back(plate.muStatic * g.frictionFactor(centre));
-      table.muKinetic.push_back(plate.muKinetic * g.frictionFactor(centre));
+    const PropertySampler sampler(g, static_cast<int>(s.params.nx), static_cast<int>(s.params.ny));
+    for (int i = 0; i < n; ++i) {  // each hexahedron column's centre on the middle row
+      const double centre = (i + 0.5) / n;
+      table.modulus.push_back(plate.youngsModulus * sampler.modulus(centre, 0.5));
+      table.muStatic.push_back(plate.muStatic * sampler.muStatic(centre, 0.5));
+      table.muKinetic.push_back(plate.muKinetic * sampler.muKinetic(centre, 0.5));
     }
+    if (!g.fields) continue;
+    // With fields, the ensemble's per-block maps (map side fem_nx): the centres of an nx x nx grid
+    // of the plate, [row][column], the bottom cells themselves when fem_ny = fem_nx.
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        const double u = (i + 0.5) / n, v = (j + 0.5) / n;
+        table.blockModulus.push_back(plate.youngsModulus * sampler.modulus(u, v));
+        table.blockMuStatic.push_back(plate.muStatic * sampler.muStatic(u, v));
+        table.blockMuKinetic.push_back(plate.muKinetic * sampler.muKinetic(u, v));
+        table.blockPressure.push_back(plate.pressure * sampler.pressure(u, v));
+      }
   }
   return table;
 }
@@ -104,7 +122,8 @@ FemParameters FemSweep::pointParameters(int p) const {
 
 Grading FemSweep::pointGrading(int p) const {
   Grading g = ensemble::gradingOf(sweep.points[p], baseGrading.bands);
-  g.fields = baseGrading.fields;  // the property fields (-field_*) are the same at every point
+  // The property fields (-field_*): the same at every point, or the point's value of -ensemble_field.
+  g.fields = pointFields.empty() ? baseGrading.fields : pointFields[p];
   return g;
 }
 
@@ -131,12 +150,26 @@ FemSweep buildFemSweep(MPI_Comm comm, const FemParameters& params, const Grading
                      "false in a sweep (pair the sweep with a gradfric ensemble in scripts/gradfric_plot.py)");
   s.output = params.output.empty() ? "gradfric_fem_sweep.h5" : params.output;
 
+  // A field sweep: the scene's fields with each value, every one checked on the mesh before any work.
+  ensemble::SweepLists lists = options.lists;
+  const auto valueFields = ensemble::fieldsPerValue(&lists, grading.fields);
+  for (const auto& fields : valueFields) {
+    Grading g = grading;
+    g.fields = fields;
+    checkPlateFields(g, params.plate, static_cast<int>(params.nx), static_cast<int>(params.ny));
+  }
+
   ensemble::SweepPoint base;
   base.delta = grading.delta;
   base.property = toString(grading.property);
   base.profile = toString(grading.profile);
   base.theta = params.plate.slidingAngle;
-  s.sweep = ensemble::buildSweep(options.lists, base);
+  s.sweep = ensemble::buildSweep(lists, base);
+  for (const auto& q : s.sweep.points)  // each point's fields, in the ensemble's order
+    if (q.fieldSwept) {
+      const auto at = std::find(lists.fieldValues.begin(), lists.fieldValues.end(), q.fieldValue);
+      s.pointFields.push_back(valueFields[at - lists.fieldValues.begin()]);
+    }
   if (s.points() > 1000000) throw InputError("too many FEM sweep points: " + std::to_string(s.points()) + " > 1e6");
   for (int p = 0; p < s.points(); ++p)  // every point's step and run length, before any work
     requireFemRunLength(s.pointParameters(p), s.pointGrading(p), &record);

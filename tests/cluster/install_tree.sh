@@ -10,7 +10,7 @@ rm -rf "$prefix"
 cmake --install "$build" --prefix "$prefix" > "$2/install.log"
 
 fail() { echo "FAIL: $*" >&2; exit 1; }
-for f in bin/gradfric bin/gradfric-fem bin/gradfric-study \
+for f in bin/gradfric bin/gradfric-fem bin/gradfric-study bin/gradfric-design \
          share/gradfric/scripts/gradfric_plot.py share/gradfric/slurm/sbm_ensemble.sbatch \
          share/gradfric/slurm/submit_chain.sh; do
   [ -x "$prefix/$f" ] || fail "$f not installed as an executable"
@@ -19,7 +19,7 @@ scenes=$(ls "$prefix"/share/gradfric/input/*.opts | wc -l)
 sources=$(ls "$(dirname "$0")"/../../input/*.opts | wc -l)
 [ "$scenes" -eq "$sources" ] || fail "$scenes scenes installed, $sources in input/"
 
-for driver in gradfric gradfric-fem gradfric-study; do
+for driver in gradfric gradfric-fem gradfric-study gradfric-design; do
   # Moved out of the build tree's reach: run from the prefix with a clean working folder.
   (cd "$2" && "$prefix/bin/$driver" -help > "$2/$driver.help" 2>&1) || fail "installed $driver -help exited $?"
   grep -q -- "-grading_delta" "$2/$driver.help" || fail "installed $driver -help does not list -grading_delta"

@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """A FEM sweep file has the spring-block ensemble's layout: the same root attributes, the same
 datasets (but /maps, which only the spring-block model fills) with the same types, ranks, units
-and dimension scales, the same /sweep columns, and the FEM's own format name and one run per point.
+and dimension scales, the same /sweep columns (the swept field values included), the same
+per-point property maps under property fields, and the FEM's own format name and one run per point.
 
     check_sweep_layout.py SBM_ENSEMBLE.h5 FEM_SWEEP.h5
 """
@@ -47,6 +48,13 @@ def main(sbm_path, fem_path):
             problems.append(f"sweep axes {fem['sweep'].attrs['axes']!r}, ensemble {sbm['sweep'].attrs['axes']!r}")
         if list(fem["sweep/delta"][:]) != list(sbm["sweep/delta"][:]):
             problems.append("sweep/delta differs from the ensemble's (same lists, same construction)")
+        if ("field_value" in fem["sweep"]) != ("field_value" in sbm["sweep"]) or (
+                "field_value" in fem["sweep"] and list(fem["sweep/field_value"][:]) != list(sbm["sweep/field_value"][:])):
+            problems.append("sweep/field_value differs from the ensemble's (same -ensemble_field lists)")
+        for name in ("E_map", "mu_s_map", "mu_k_map", "p_map"):  # property fields: every point's maps
+            if name in sbm["properties"] and fem[f"properties/{name}"].shape != sbm[f"properties/{name}"].shape:
+                problems.append(f"properties/{name}: shape {fem[f'properties/{name}'].shape}, "
+                                f"ensemble {sbm[f'properties/{name}'].shape} (same map side)")
         if list(fem["sweep/reference_point"][:]) != list(sbm["sweep/reference_point"][:]):
             problems.append("sweep/reference_point differs from the ensemble's")
         if not all(fem["realisations/done"][:].ravel() == 1):

@@ -11,7 +11,9 @@
 #  - bad input: exit 2, one message naming the option, on both ranks, nothing written;
 #  - a sweep that fails leaves the earlier result whole;
 #  - the plotting tool pairs each FEM point with the spring-block point of the same grading and
-#    refuses (exit 2) a sweep that does not match.
+#    refuses (exit 2) a sweep that does not match;
+#  - a property-field parameter as the sweep axis (-ensemble_field): the ensemble's points,
+#    field values and per-point maps, paired on the value; mismatches and bad values refused.
 set -u
 driver=$1; sbm_driver=$2; source_dir=$3; scratch=$4
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
@@ -97,10 +99,47 @@ for p in 0 1 2; do grep -q "FEM $p <-> SBM $p " plot.out || fail "plot: FEM $p n
 fem other_delta 1 0 "${grading[@]}" -ensemble_delta 0,0.3 -fem_nx 10 -fem_ny 10 -fem_nz 2 -fem_output other.h5
 "${plot[@]}" sbm.h5 --fem other.h5 --out plots >unmatched.out 2>&1
 [ $? -eq 2 ] || fail "plot: an unmatched sweep was not refused with exit 2"
-grep -q "does not match sbm.h5: no spring-block point with the grading and angle of FEM point 1 (Delta=0.3" unmatched.out ||
+grep -q "does not match sbm.h5: no spring-block point with the grading, angle and field value of FEM point 1 (Delta=0.3" unmatched.out ||
   fail "unmatched: $(cat unmatched.out)"
 fem thick 1 0 "${sweep[@]}" -plate_H 1e-4 -fem_output thick.h5
 "${plot[@]}" sbm.h5 --fem thick.h5 --out plots >thick_plot.out 2>&1
 [ $? -eq 2 ] || fail "plot: a sweep of another plate was not refused with exit 2"
 grep -q "do not describe the same plate: -plate_H" thick_plot.out || fail "thick: $(cat thick_plot.out)"
+
+# A property-field parameter as a sweep axis (-ensemble_field), as the ensemble reads it: the same
+# points and layout (field values, per-point maps), paired by the plotting tool on the field value;
+# other values or another field are refused.
+stripes=(-field_mu_profile stripes -field_mu_period 1e-3 -field_mu_normalise -ensemble_field mu_delta)
+fem field 2 0 "${stripes[@]}" -ensemble_field_values 0,0.3 -fem_nx 10 -fem_ny 10 -fem_nz 2 -fem_kn 4e11 -fem_output field.h5
+grep -q "2 point(s) (axes: field_mu_delta)" field.out || fail "field: plan line: $(grep 'point(s)' field.out)"
+timeout 300 "$sbm_driver" "${stripes[@]}" -ensemble_field_values 0,0.3 -sbm_N 10 -ensemble_realisations 2 \
+  -output sbm_field.h5 >sbm_field.out 2>&1 || fail "the spring-block field ensemble failed: $(tail -3 sbm_field.out)"
+$python "$source_dir/tests/fem/check_sweep_layout.py" sbm_field.h5 field.h5 || fail "field sweep layout"
+$python - field.h5 <<'PY' || fail "field: the per-point maps are not the swept stripes"
+import sys, h5py, numpy as np
+f = h5py.File(sys.argv[1], "r")
+m = f["properties/mu_s_map"][:]  # [point][row][column]; mean-preserving stripes of amplitude 0 and 0.3
+base = float(f["scene"].attrs["plate_mu_s"])
+assert np.allclose(m[0], base), "point 0 (delta 0) is not uniform"
+assert abs(m[1].mean() / base - 1) < 1e-9 and m[1].max() / m[1].min() > 1.2, "point 1 is not the mean-kept stripes"
+assert list(f["sweep/reference_point"][:]) == [0, 0], "the uniform point is not the reference"
+PY
+"${plot[@]}" sbm_field.h5 --fem field.h5 --out plots >field_plot.out 2>&1 || fail "field plot: $(cat field_plot.out)"
+grep -q "FEM 1 <-> SBM 1  mu_delta=0.3" field_plot.out || fail "field plot: not paired on the value: $(cat field_plot.out)"
+fem field_other 1 0 "${stripes[@]}" -ensemble_field_values 0,0.2 -fem_nx 10 -fem_ny 10 -fem_nz 2 -fem_output field_other.h5
+"${plot[@]}" sbm_field.h5 --fem field_other.h5 --out plots >field_other.out 2>&1
+[ $? -eq 2 ] || fail "plot: a sweep of other field values was not refused with exit 2"
+grep -q "no spring-block point with the grading, angle and field value of FEM point 1 (mu_delta=0.2" field_other.out ||
+  fail "field_other: $(cat field_other.out)"
+fem field_period 1 0 "${stripes[@]}" -ensemble_field_values 0,0.3 -field_mu_period 2e-3 -fem_nx 10 -fem_ny 10 -fem_nz 2 \
+  -fem_output field_period.h5
+"${plot[@]}" sbm_field.h5 --fem field_period.h5 --out plots >field_period.out 2>&1
+[ $? -eq 2 ] || fail "plot: a sweep of another field was not refused with exit 2"
+grep -q "do not describe the same plate: -field_mu_period" field_period.out || fail "field_period: $(cat field_period.out)"
+bad field_alone 2 "invalid option -ensemble_field_values = \(not set\): allowed both -ensemble_field and" \
+  "${stripes[@]}" -fem_nx 10
+bad field_value 2 "invalid option -ensemble_field_values = -1.5 \(-field_mu_delta\): allowed mu_s > 0 everywhere" "${stripes[@]}" \
+  -ensemble_field_values 0,-1.5 -fem_nx 10
+bad field_name 1 "invalid option -ensemble_field = mu_s_delta" -ensemble_field mu_s_delta -ensemble_field_values 0,0.1 \
+  "${stripes[@]:0:5}" -fem_nx 10
 echo "fem sweep OK"

@@ -1,6 +1,6 @@
 #pragma once
 // A sweep of FEM runs in one command (gradfric-fem with -ensemble_delta, _theta, _property,
-// _profile: the ensemble's lists and its sweep construction, ensemble::buildSweep). The ranks are
+// _profile, _field: the ensemble's lists and its sweep construction, ensemble::buildSweep). The ranks are
 // split into groups of -fem_sweep_ranks_per_run (MPI_Comm_split); each run has a group's
 // sub-communicator to itself. The pending points are handed out round robin over the groups in
 // the ensemble's fixed order (ensemble::pendingTasks), so which group runs a point never changes
@@ -16,6 +16,7 @@
 
 #include <mpi.h>
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -37,6 +38,7 @@ SweepOptions readSweepOptions(MPI_Comm comm, RunParameters* record);
 struct FemSweep {
   FemParameters params;  // the base run (theta of each point from the sweep)
   Grading baseGrading;
+  std::vector<std::shared_ptr<const PlateFields>> pointFields;  // per point with -ensemble_field (else empty)
   SweepOptions options;
   ensemble::Sweep sweep;
   io::EnsembleLayout layout;

@@ -1,0 +1,69 @@
+// gradfric-design: from a target friction to a surface. Finds the free parameters of a family of
+// graded plates (a grading amplitude, a field's exponent, a stripe pattern's period and duty, ...)
+// whose spring-block ensemble gives a target global static friction mu_s, or a target relative
+// variation against the non-graded plate, within a tolerance.
+//
+//   mpiexec -n 2 gradfric-design -options_file input/design_friction_delta.opts -output design.h5
+//   mpiexec -n 2 gradfric-design -options_file input/design_stripes_tao.opts -tao_type pounders
+//   python3 scripts/plot_design.py design.h5
+//
+// One free parameter: a stochastic root finder; several: PETSc TAO. Then a fresh verification
+// ensemble with independent streams, and with -design_verify_fem the surface in the FEM. Exit status: 0 design found, 4 target unreachable within the
+// bounds, 5 not converged, 2 bad input (docs/design.md).
+#include "gradfric/core/driver.hpp"
+#include "gradfric/core/options.hpp"
+#include "gradfric/design/design_file.hpp"
+#include "gradfric/design/evaluator.hpp"
+#include "gradfric/design/problem.hpp"
+#include "gradfric/design/root_finder.hpp"
+#include "gradfric/design/tao_search.hpp"
+
+#include <petscsys.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <optional>
+
+static const char help[] =
+    "gradfric-design: the parameters of a graded plate that give a target global static friction\n"
+    "(spring-block ensembles; one parameter: root finder, several: PETSc TAO, -tao_type nm|pounders).\n"
+    "-help lists all options.\n\n";
+
+static int designStatus = 0;  // the search's outcome, returned once the driver has finished cleanly
+
+int main(int argc, char** argv) {
+  const int status = gradfric::runDriver(argc, argv, help, [](MPI_Comm comm) {
+    using namespace gradfric;
+    using namespace gradfric::design;
+    RunParameters record;
+    const std::optional<Problem> problem = readProblem(comm, &record);  // every option, checked
+    if (!problem) return;                                                 // -help
+    const io::OutputPlan plan = planDesignFile(comm, *problem);         // before any work
+    record.print(comm, "gradfric-design parameters");
+    PetscPrintf(comm, "Every realisation measures mu_s only and stops at its confirmed peak (%d x %d blocks, dt %.4g s).\n",
+                problem->parameters.blocksPerSide, problem->parameters.blocksPerSide, problem->parameters.timeStep);
+    const double start = MPI_Wtime();
+    Evaluator evaluator(comm, *problem);
+    SearchLog log(comm, *problem);
+    const SearchResult result = problem->method == "root" ? findRoot(evaluator, *problem, log)
+                                                          : searchWithTao(comm, evaluator, *problem, log);
+    std::optional<Evaluation> verification;
+    if (problem->verify)  // independent streams (seed, 1, r), to the tolerance
+      verification = evaluator.evaluate(result.design.x, problem->tolerance, "verify", 1);
+    std::optional<FemVerification> fem;
+    if (problem->fem) fem = runFemCheck(comm, *problem->fem, problem->gradingAt(result.design.x));
+    double wall = MPI_Wtime() - start;
+    MPI_Bcast(&wall, 1, MPI_DOUBLE, 0, comm);
+    saveDesignFile(comm, plan, *problem, record, log, result, verification, fem, evaluator.realisationsRun());
+    printDesign(comm, *problem, result, verification, fem, evaluator.realisationsRun(), wall, plan.path());
+    int rank = 0;
+    MPI_Comm_rank(comm, &rank);
+    if (problem->plot && rank == 0) {
+      const std::string command = "/usr/bin/python3 '" GRADFRIC_SCRIPTS_DIR "/plot_design.py' '" + plan.path() + "'";
+      if (std::system(command.c_str()) != 0)
+        std::fprintf(stderr, "gradfric-design: warning: plotting failed (%s); the design file is complete\n", command.c_str());
+    }
+    designStatus = exitCode(result.status);
+  });
+  return status == 0 ? designStatus : status;
+}

@@ -1,0 +1,38 @@
+#pragma once
+// -design_verify_fem: the design's surface in the finite-element model (gradfric-fem's library:
+// the same plate, grading and fields, the -fem_* mesh and numerics, a reduced mesh allowed), run
+// to its confirmed static peak and printed beside the spring-block values.
+#include "gradfric/core/options.hpp"
+#include "gradfric/fem/parameters.hpp"
+#include "gradfric/physics/grading.hpp"
+
+#include <mpi.h>
+
+#include <memory>
+#include <vector>
+
+namespace gradfric::design {
+
+struct FemCheck {
+  fem::FemParameters parameters;
+  RunParameters record;  // the -fem_* options (their own record: the FEM derives other defaults)
+};
+
+// Collective: reads the -fem_* and -ts_* options (also under -help).
+std::shared_ptr<FemCheck> readFemCheck(MPI_Comm comm, const Plate& plate);
+
+// Collective, before any work: refuses a plate of the family the mesh cannot carry or an endless
+// run, at each of `corners`.
+void checkFemCheck(const FemCheck& check, const std::vector<Grading>& corners);
+
+struct FemVerification {
+  double muStatic = 0.0;
+  bool peakConfirmed = false;
+  double wallSeconds = 0.0;
+  int cells = 0;
+};
+
+// Collective over comm.
+FemVerification runFemCheck(MPI_Comm comm, const FemCheck& check, const Grading& grading);
+
+}  // namespace gradfric::design

@@ -1,0 +1,109 @@
+// The report and the files of a calibration (include/gradfric/calibration/calibration.hpp).
+#include "gradfric/calibration/calibration.hpp"
+
+#include "gradfric/core/petsc_call.hpp"
+
+#include <petscsys.h>
+
+#include <cmath>
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+#include <stdexcept>
+
+namespace gradfric::calibration {
+
+namespace {
+
+double halfWidth(const ensemble::Summary& s) { return 0.5 * (s.ciHigh - s.ciLow); }
+
+// Root mean square of the mean SBM curve against the reference, up to the reference's peak.
+double curveResidual(const Calibration& c, const Evaluation& e, int* samples) {
+  const std::vector<double> reference = interpolate(c.reference.time, c.reference.mu, c.grid);
+  double sum = 0;
+  int n = 0;
+  for (std::size_t k = 0; k < c.grid.size(); ++k) {
+    if (c.grid[k] > c.target.peakTime || !std::isfinite(e.meanCurve[k]) || !std::isfinite(reference[k])) continue;
+    sum += (e.meanCurve[k] - reference[k]) * (e.meanCurve[k] - reference[k]);
+    ++n;
+  }
+  *samples = n;
+  return n > 0 ? std::sqrt(sum / n) : NAN;
+}
+
+void writeScene(const std::string& work, const std::string& path, const Calibration& c, const CalibrationResult& r) {
+  std::ofstream out(work);
+  const Evaluation& e = r.fitted();
+  char line[512];
+  out << "# gradfric-calibrate: spring-block l_z and sigma fitted to " << c.settings.source.path << " ("
+      << c.reference.kind << ")\n";
+  std::snprintf(line, sizeof line,
+                "# reference: loading slope %.6e 1/s (over %.2g-%.2g mu_s), peak mu_s %.6f\n"
+                "# fitted:    l_z = %.6e +- %.2e m, sigma = %.6f +- %.6f (95 %%)\n"
+                "# residuals: slope %+.4f %%, peak %+.6f (ensemble 95 %% CI +- %.6f); %s after %zu evaluations\n",
+                c.target.slope, c.scene.window.low, c.scene.window.high, c.target.peak, e.layerThickness, r.layerError,
+                e.sigma, r.sigmaError, 100 * (e.slope.mean / c.target.slope - 1), e.peak.mean - c.target.peak,
+                halfWidth(e.peak), r.converged ? "converged" : "NOT converged", r.evaluations.size());
+  out << line;
+  out << "# gradfric -options_file " << path << " -output run.h5 reproduces the fitted ensemble (same seed)\n";
+  for (const auto& o : c.sceneOptions) out << o.name << " " << o.value << "\n";
+  std::snprintf(line, sizeof line, "-sbm_lz %.10g\n-sbm_sigma_s %.10g\n-sbm_sigma_k %.10g\n", e.layerThickness, e.sigma,
+                e.sigma);
+  out << line << "-ensemble_realisations " << c.scene.realisations << "\n-ensemble_seed " << c.scene.seed << "\n";
+  if (!out.flush()) throw std::runtime_error("cannot write " + work);
+}
+
+void writeCurves(const std::string& path, const Calibration& c, const Evaluation& e) {
+  std::ofstream out(path);
+  const std::vector<double> reference = interpolate(c.reference.time, c.reference.mu, c.grid);
+  out << "t,mu_reference,mu_sbm_mean\n";
+  char line[128];
+  for (std::size_t k = 0; k < c.grid.size(); ++k) {
+    std::snprintf(line, sizeof line, "%.9e,%.9g,%.9g\n", c.grid[k], reference[k], e.meanCurve[k]);
+    out << line;
+  }
+  if (!out.flush()) throw std::runtime_error("cannot write " + path);
+}
+
+}  // namespace
+
+void writeCalibration(MPI_Comm comm, const Calibration& c, const CalibrationResult& r) {
+  const Evaluation& e = r.fitted();
+  int samples = 0;
+  const double rms = curveResidual(c, e, &samples);
+  const double paperLayer = 5.7e-5, paperSigma = 0.028;
+  // The peak's l_z derivative is measured only if l_z moved (it does not when the first guess,
+  // from the slope, already fits it).
+  double lowest = e.layerThickness, highest = e.layerThickness;
+  for (const auto& x : r.evaluations) {
+    lowest = std::min(lowest, x.layerThickness);
+    highest = std::max(highest, x.layerThickness);
+  }
+  char text[96] = "";
+  if (highest > lowest * 1.001) std::snprintf(text, sizeof text, ", d(peak)/d l_z = %.4e 1/m", r.jacobian[1][0]);
+  const std::string coupling = text;
+  GF_CALL(PetscPrintf(
+      comm,
+      "Calibration %s after %zu evaluation(s) (%ld realisations, %.2f s wall):\n"
+      "  l_z   = %.6e m +- %.2e m (95 %%)   [paper: %.3g m, %+.1f %%]\n"
+      "  sigma = %.6f +- %.6f (95 %%)       [paper: %.3g, %+.1f %%]\n"
+      "  slope: SBM %.6e +- %.2e 1/s, reference %.6e +- %.2e 1/s: residual %+.4f %%\n"
+      "  peak:  SBM %.6f +- %.6f (95 %% CI), reference %.6f: residual %+.6f (%s the CI)\n"
+      "  mean mu(t) - reference up to the peak: RMS %.6f over %d samples\n"
+      "  d(slope ratio)/d l_z = %.4e 1/m, d(peak)/d sigma = %.4f (secant)%s\n",
+      r.converged ? "converged" : "did NOT converge (best evaluation reported)", r.evaluations.size(), r.realisations,
+      r.wallSeconds, e.layerThickness, r.layerError, paperLayer, 100 * (e.layerThickness / paperLayer - 1), e.sigma,
+      r.sigmaError, paperSigma, 100 * (e.sigma / paperSigma - 1), e.slope.mean, halfWidth(e.slope), c.target.slope,
+      1.96 * (std::isfinite(c.target.slopeStdError) ? c.target.slopeStdError : 0.0), 100 * (e.slope.mean / c.target.slope - 1),
+      e.peak.mean, halfWidth(e.peak), c.target.peak, e.peak.mean - c.target.peak,
+      std::fabs(e.peak.mean - c.target.peak) <= halfWidth(e.peak) ? "inside" : "outside", rms, samples, r.jacobian[0][0],
+      r.jacobian[1][1], coupling.c_str()));
+  c.scenePlan.writeOnRank0(comm, [&](const std::string& work) { writeScene(work, c.scenePlan.path(), c, r); });
+  if (c.curvePlan) c.curvePlan->writeOnRank0(comm, [&](const std::string& work) { writeCurves(work, c, e); });
+  c.scenePlan.commit(comm);
+  if (c.curvePlan) c.curvePlan->commit(comm);
+  GF_CALL(PetscPrintf(comm, "Scene written to %s%s%s\n", c.scenePlan.path().c_str(), c.curvePlan ? ", curves to " : "",
+                      c.curvePlan ? c.curvePlan->path().c_str() : ""));
+}
+
+}  // namespace gradfric::calibration

@@ -1,0 +1,124 @@
+// One evaluation of a design problem (include/gradfric/design/evaluator.hpp).
+#include "gradfric/design/evaluator.hpp"
+
+#include "gradfric/core/collective_error.hpp"
+#include "gradfric/core/petsc_call.hpp"
+#include "gradfric/ensemble/precision_target.hpp"
+#include "gradfric/ensemble/scheduler.hpp"
+#include "gradfric/sbm/model.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace gradfric::design {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// The ensemble's statistics of the first n realisations of each plate (P x n tables).
+std::vector<ensemble::PointStatistics> statisticsOf(const std::vector<const std::vector<double>*>& plates, int n,
+                                                    const std::vector<int>& reference, bool paired) {
+  std::vector<double> muStatic, muKinetic;
+  for (const auto* values : plates) muStatic.insert(muStatic.end(), values->begin(), values->begin() + n);
+  muKinetic.assign(muStatic.size(), kNaN);
+  const std::vector<signed char> confirmed(muStatic.size(), 1);
+  const std::vector<unsigned char> done(muStatic.size(), 1);
+  return ensemble::pointStatistics(n, reference, muStatic, muKinetic, confirmed, done, paired);
+}
+
+}  // namespace
+
+Evaluator::Evaluator(MPI_Comm comm, const Problem& problem) : comm_(comm), problem_(problem) {}
+
+void Evaluator::run(const std::vector<Batch>& batches) {
+  struct Task {
+    int batch, realisation;
+  };
+  std::vector<Task> tasks;
+  for (int b = 0; b < static_cast<int>(batches.size()); ++b)
+    for (int r = static_cast<int>(batches[b].sink->size()); r < batches[b].count; ++r) tasks.push_back({b, r});
+  if (tasks.empty()) return;
+  int rank = 0;
+  GF_CALL_MPI(MPI_Comm_rank(comm_, &rank));
+  std::vector<double> found(tasks.size(), 0.0);  // each entry set by the one rank that ran it
+  double seconds = 0.0;
+  std::string failure;
+  {
+    ensemble::TaskCounter counter(comm_, ensemble::Schedule::Dynamic);
+    for (long k = counter.next(); k < static_cast<long>(tasks.size()); k = counter.next()) {
+      const Batch& b = batches[tasks[k].batch];
+      const Grading grading = b.x ? problem_.gradingAt(*b.x) : problem_.referenceGrading();
+      try {
+        const sbm::Result result = sbm::simulate(problem_.parameters, grading, problem_.request,
+                                                 StreamKey{problem_.seed, b.stream, static_cast<std::uint32_t>(tasks[k].realisation)});
+        found[k] = result.friction.muStatic;
+        seconds += result.wallSeconds;
+      } catch (const std::exception& e) {
+        failure = "realisation " + std::to_string(tasks[k].realisation) + " at " +
+                  (b.x ? problem_.describe(*b.x) : std::string("the non-graded plate")) + " failed on rank " +
+                  std::to_string(rank) + ": " + e.what();
+        break;
+      }
+      counter.finishOne();
+    }
+  }
+  agreeOnError(comm_, failure);
+  GF_CALL_MPI(MPI_Allreduce(MPI_IN_PLACE, found.data(), static_cast<int>(found.size()), MPI_DOUBLE, MPI_SUM, comm_));
+  GF_CALL_MPI(MPI_Allreduce(MPI_IN_PLACE, &seconds, 1, MPI_DOUBLE, MPI_SUM, comm_));
+  for (std::size_t k = 0; k < tasks.size(); ++k) batches[tasks[k].batch].sink->push_back(found[k]);  // in order
+  realisations_ += static_cast<long>(tasks.size());
+  taskSeconds_ += seconds;
+}
+
+Evaluation Evaluator::evaluate(const std::vector<double>& x, double halfWidth, const std::string& phase,
+                               std::uint32_t stream, int atLeast) {
+  std::vector<double>& mine = values_[{stream, x}];
+  std::vector<double>& reference = reference_[stream];
+  const bool variation = problem_.kind == TargetKind::Variation;
+  ensemble::PrecisionTarget target;
+  target.kind = variation ? ensemble::TargetKind::Variation : ensemble::TargetKind::Absolute;
+  target.halfWidth = halfWidth;
+  target.first = problem_.firstBatch;
+  target.cap = problem_.cap;
+  // Points of the plan: the reference (paired) and x, or x alone.
+  const std::vector<int> referenceOf = variation ? std::vector<int>{0, 0} : std::vector<int>{-1};
+  const std::vector<const std::vector<double>*> plates =
+      variation ? std::vector<const std::vector<double>*>{&reference, &mine} : std::vector<const std::vector<double>*>{&mine};
+  int n = std::min(problem_.cap, std::max({problem_.firstBatch, static_cast<int>(mine.size()), atLeast}));
+  std::vector<ensemble::PointStatistics> statistics;
+  for (;;) {
+    std::vector<Batch> batches;
+    if (variation) batches.push_back({nullptr, stream, n, &reference});
+    batches.push_back({&x, stream, n, &mine});
+    run(batches);
+    statistics = statisticsOf(plates, n, referenceOf, variation);
+    const std::vector<int> counts(plates.size(), n);
+    const std::vector<int> next = ensemble::planNextBatch(target, counts, statistics, referenceOf);
+    if (next == counts) break;
+    n = *std::max_element(next.begin(), next.end());
+  }
+  const int p = variation ? 1 : 0;
+  Evaluation e;
+  e.index = count_++;
+  e.phase = phase;
+  e.x = x;
+  e.realisations = n;
+  e.muStatic = statistics[p].muStatic.mean;
+  e.muStaticCiLow = statistics[p].muStatic.ciLow;
+  e.muStaticCiHigh = statistics[p].muStatic.ciHigh;
+  if (variation) {
+    const double h = ensemble::achievedHalfWidth(target, statistics, referenceOf, 1);
+    e.value = statistics[1].muStaticRelative.value;
+    e.ciLow = e.value - h;
+    e.ciHigh = e.value + h;
+  } else {
+    e.value = e.muStatic;
+    e.ciLow = e.muStaticCiLow;
+    e.ciHigh = e.muStaticCiHigh;
+  }
+  return e;
+}
+
+}  // namespace gradfric::design

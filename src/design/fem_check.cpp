@@ -1,0 +1,42 @@
+// The design's surface in the finite-element model (include/gradfric/design/fem_check.hpp).
+#include "gradfric/design/fem_check.hpp"
+
+#include "gradfric/fem/plate_model.hpp"
+#include "gradfric/fem/plate_ts.hpp"
+#include "gradfric/fem/simulation.hpp"
+#include "gradfric/fem/stable_step.hpp"
+#include "gradfric/physics/field_options.hpp"
+
+namespace gradfric::design {
+
+std::shared_ptr<FemCheck> readFemCheck(MPI_Comm comm, const Plate& plate) {
+  auto check = std::make_shared<FemCheck>();
+  check->parameters = fem::readFemParameters(comm, &check->record, plate);
+  // mu_s only, as the spring-block evaluations: the run stops at the confirmed peak.
+  check->parameters.measurement.kinetic = false;
+  check->parameters.measurement.firstSlipMap = false;
+  fem::readPlateTSOptions(comm);
+  return check;
+}
+
+void checkFemCheck(const FemCheck& check, const std::vector<Grading>& corners) {
+  const fem::FemParameters& p = check.parameters;
+  for (const Grading& g : corners) {
+    checkPlateFields(g, p.plate, p.nx, p.ny);
+    fem::requireFemRunLength(p, g, &check.record);
+  }
+}
+
+FemVerification runFemCheck(MPI_Comm comm, const FemCheck& check, const Grading& grading) {
+  fem::PlateModel model(comm, check.parameters, grading);
+  const double start = MPI_Wtime();
+  const fem::FemRunResult r = fem::runPlateExperiment(model);
+  FemVerification v;
+  v.muStatic = r.friction.muStatic;
+  v.peakConfirmed = r.friction.peakConfirmed;
+  v.wallSeconds = MPI_Wtime() - start;
+  v.cells = check.parameters.nx * check.parameters.ny * check.parameters.nz;
+  return v;
+}
+
+}  // namespace gradfric::design

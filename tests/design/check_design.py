@@ -1,0 +1,87 @@
+#!/usr/bin/env python3
+"""Checks of gradfric-design's files (tests/design/design_checks.sh).
+
+  check_design.py status <design.h5> <status>             the search ended so
+  check_design.py meets <design.h5> <target> <tolerance>   the design's CI holds the target, within the tolerance
+  check_design.py known <design.h5> <sweep.h5> <target>    the design recovers the Delta a gradfric sweep gives
+  check_design.py unreachable <design.h5> <target> <x>     the closest value is at x and its CI misses the target
+  check_design.py same <a.h5> <b.h5>                       every dataset and attribute alike (but -output)
+"""
+import sys
+
+import h5py
+import numpy as np
+
+
+def text(value):
+    return value.decode() if isinstance(value, bytes) else str(value)
+
+
+def design_row(f, group="design"):
+    return {name: float(f[group][name][0]) for name in f[group]}
+
+
+def main(argv):
+    check = argv[1]
+    if check == "status":
+        with h5py.File(argv[2], "r") as f:
+            status = text(f.attrs["status"])
+            assert f.attrs["format"] == b"gradfric-design" or text(f.attrs["format"]) == "gradfric-design"
+            assert status == argv[3], f"status {status}, expected {argv[3]}"
+    elif check == "meets":
+        target, tolerance = float(argv[3]), float(argv[4])
+        with h5py.File(argv[2], "r") as f:
+            d = design_row(f)
+            assert d["ci95_low"] <= target <= d["ci95_high"], d
+            assert 0.5 * (d["ci95_high"] - d["ci95_low"]) <= tolerance * (1 + 1e-9), d
+            assert "verification" in f, "no verification ensemble"
+            v = design_row(f, "verification")
+            # an independent ensemble: its mean agrees with the search's within their CIs
+            assert abs(v["value"] - d["value"]) <= (v["ci95_high"] - v["ci95_low"]) / 2 + (d["ci95_high"] - d["ci95_low"]) / 2, (v, d)
+    elif check == "known":
+        target = float(argv[4])
+        with h5py.File(argv[3], "r") as s:
+            delta = s["sweep/delta"][()]
+            mean = s["statistics/mu_s_mean"][()]
+            half = 0.5 * (s["statistics/mu_s_ci95_high"][()] - s["statistics/mu_s_ci95_low"][()])
+        order = np.argsort(delta)
+        delta, mean, half = delta[order], mean[order], half[order]
+        i = next(k for k in range(len(delta) - 1) if (mean[k] - target) * (mean[k + 1] - target) <= 0)
+        slope = (mean[i + 1] - mean[i]) / (delta[i + 1] - delta[i])
+        known = delta[i] + (target - mean[i]) / slope
+        known_half = max(half[i], half[i + 1]) / abs(slope)  # the sweep's own uncertainty on Delta
+        with h5py.File(argv[2], "r") as f:
+            d = design_row(f)
+            x = d["x_grading_delta"]
+            x_half = 0.5 * (d["x_ci95_high"] - d["x_ci95_low"])
+        print(f"sweep: Delta = {known:.5f} +- {known_half:.5f}; design: Delta = {x:.5f} +- {x_half:.5f}")
+        assert abs(x - known) <= x_half + known_half, "the design does not recover the sweep's Delta"
+        assert x_half < 0.02, "the design's Delta is not resolved"
+    elif check == "unreachable":
+        target, expected = float(argv[3]), float(argv[4])
+        with h5py.File(argv[2], "r") as f:
+            d = design_row(f)
+            name = [k for k in d if k.startswith("x_")][0]
+            assert abs(d[name] - expected) < 1e-12, f"closest at {d[name]}, expected {expected}"
+            assert not (d["ci95_low"] <= target <= d["ci95_high"]), d
+    elif check == "same":
+        with h5py.File(argv[2], "r") as a, h5py.File(argv[3], "r") as b:
+            names = []
+            a.visit(names.append)
+            other = []
+            b.visit(other.append)
+            assert names == other, (names, other)
+            for n in names:
+                if isinstance(a[n], h5py.Dataset):
+                    assert np.array_equal(a[n][()], b[n][()]), n
+                assert dict(a[n].attrs) == dict(b[n].attrs), n
+            skip = {"output"}
+            ka = {k: text(v) for k, v in a.attrs.items() if k not in skip}
+            kb = {k: text(v) for k, v in b.attrs.items() if k not in skip}
+            assert ka == kb, set(ka.items()) ^ set(kb.items())
+    else:
+        raise SystemExit(f"unknown check {check}")
+
+
+if __name__ == "__main__":
+    main(sys.argv)

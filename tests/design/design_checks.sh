@@ -1,0 +1,141 @@
+#!/usr/bin/env bash
+# End-to-end checks of gradfric-design on reduced plates (check_design.py reads the files).
+#   design_checks.sh <gradfric-design> <gradfric> <source-dir> <check> [<gradfric-fem>]
+# checks: known_answer, unreachable, ranks, tao, refuse, fem
+set -euo pipefail
+design=$1
+driver=$2
+src=$3
+check=$4
+fem=${5:-}
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
+work=$(mktemp -d "$PWD/design_${check}_XXXXXX")
+trap 'rm -rf "$work"' EXIT
+python=/usr/bin/python3
+checker="$src/tests/design/check_design.py"
+fail() {
+  echo "FAILED: $*" >&2
+  exit 1
+}
+run() {  # run <expected exit> <ranks> <log> <args...>
+  local expected=$1 n=$2 log=$3
+  shift 3
+  local status=0
+  if [ "$n" -eq 1 ]; then  # a singleton: no mpiexec start-up
+    "$design" "$@" >"$log" 2>&1 || status=$?
+  else
+    mpiexec --oversubscribe -n "$n" "$design" "$@" >"$log" 2>&1 || status=$?
+  fi
+  [ "$status" -eq "$expected" ] || { cat "$log" >&2; fail "exit $status, not $expected, for: $*"; }
+}
+refused() {  # refused <ranks> <option named> <args...>: exit 2, the option named, no file
+  local n=$1 option=$2
+  shift 2
+  run 2 "$n" "$work/bad.log" "${scene[@]}" -output "$work/bad.h5" "$@"
+  grep -q "gradfric: error: .*$option" "$work/bad.log" || { cat "$work/bad.log" >&2; fail "$option not named for: $*"; }
+  [ "$(grep -c 'gradfric: error' "$work/bad.log")" -eq 1 ] || fail "not one error line for: $*"
+  ! grep -q "gradfric-design parameters" "$work/bad.log" || fail "parameters printed before the refusal of: $*"
+  [ ! -e "$work/bad.h5" ] && [ ! -e "$work/bad.h5.partial" ] || fail "a refused run wrote a file: $*"
+}
+# The paper's linear friction grading (Figure 4) on a reduced plate.
+scene=(-options_file "$src/input/design_friction_delta.opts" -sbm_N 24)
+
+case "$check" in
+known_answer)
+  # mu_s(Delta) measured by a small gradfric sweep (independent streams); a target inside it;
+  # the design must recover the sweep's Delta within the two uncertainties.
+  mpiexec --oversubscribe -n 2 "$driver" -grading_profile linear -grading_property friction -grading_bands 10 \
+    -sbm_N 24 -ensemble_delta -0.25,-0.2,-0.15,-0.1 -ensemble_realisations 12 -ensemble_seed 11 \
+    -friction_observables mu_s -ensemble_history false -ensemble_monitor false -output "$work/sweep.h5" >"$work/sweep.log" 2>&1 ||
+    { cat "$work/sweep.log" >&2; fail "the sweep"; }
+  target=$("$python" -c "import h5py,sys; m=h5py.File(sys.argv[1])['statistics/mu_s_mean'][()]; print(round(0.5*(m[1]+m[2]),4))" "$work/sweep.h5")
+  run 0 2 "$work/d.log" "${scene[@]}" -design_target "$target" -output "$work/d.h5"
+  grep -q "Design (root, found)" "$work/d.log" || fail "no design line"
+  "$python" "$checker" status "$work/d.h5" found || fail "status"
+  "$python" "$checker" meets "$work/d.h5" "$target" 0.002 || fail "the design does not meet the target"
+  "$python" "$checker" known "$work/d.h5" "$work/sweep.h5" "$target" || fail "known answer"
+  "$python" "$src/scripts/plot_design.py" "$work/d.h5" --out "$work/plots" >/dev/null || fail "plot of a one-parameter search"
+  [ -s "$work/plots/d_search.png" ] || fail "no search plot"
+  ;;
+unreachable)
+  # Above the non-graded plate's mu_s: no Delta in [-0.4, 0] reaches it; the closest is Delta = 0.
+  run 4 2 "$work/u.log" "${scene[@]}" -design_target 0.99 -design_scan_points 1 -output "$work/u.h5"
+  grep -q "unreachable" "$work/u.log" || fail "not reported unreachable"
+  "$python" "$checker" status "$work/u.h5" unreachable || fail "status"
+  "$python" "$checker" unreachable "$work/u.h5" 0.99 0 || fail "closest attainable value"
+  # A relative variation beyond the family's reach: -60 % (Delta = -0.4 gives about -28 %).
+  run 4 1 "$work/v.log" "${scene[@]}" -design_target_type variation -design_target -0.6 -design_tolerance 0.005 \
+    -design_scan_points 0 -design_verify false -output "$work/v.h5"
+  "$python" "$checker" unreachable "$work/v.h5" -0.6 -0.4 || fail "closest attainable variation"
+  ;;
+ranks)
+  # The same seed gives the same design file on 1 and 2 ranks: a property-field parameter under a
+  # relative-variation target (paired streams with the non-graded plate).
+  for n in 1 2; do
+    run 0 "$n" "$work/r$n.log" -options_file "$src/input/design_mu_field_variation.opts" -sbm_N 20 -output "$work/r$n.h5"
+  done
+  "$python" "$checker" status "$work/r1.h5" found || fail "status"
+  "$python" "$checker" meets "$work/r1.h5" -0.12 0.004 || fail "the variation design does not meet the target"
+  "$python" "$checker" same "$work/r1.h5" "$work/r2.h5" || fail "1 and 2 ranks differ"
+  ;;
+tao)
+  # Two free parameters (E and mu amplitudes) with TAO's pounders on a reduced plate.
+  run 0 2 "$work/t.log" -options_file "$src/input/design_E_mu_tao.opts" -sbm_N 20 -tao_type pounders -output "$work/t.h5"
+  grep -q "Design (tao pounders, found)" "$work/t.log" || { cat "$work/t.log" >&2; fail "no TAO design"; }
+  "$python" "$checker" status "$work/t.h5" found || fail "status"
+  "$python" "$checker" meets "$work/t.h5" 0.85 0.003 || fail "the TAO design does not meet the target"
+  # TAO takes the same steps on 1 rank: the same file.
+  run 0 1 "$work/t1.log" -options_file "$src/input/design_E_mu_tao.opts" -sbm_N 20 -tao_type pounders -output "$work/t1.h5"
+  "$python" "$checker" same "$work/t1.h5" "$work/t.h5" || fail "TAO: 1 and 2 ranks differ"
+  "$python" "$src/scripts/plot_design.py" "$work/t.h5" --out "$work/plots" >/dev/null || fail "plot of a TAO search"
+  [ -s "$work/plots/t_search.png" ] || fail "no search plot"
+  ;;
+fem)
+  # -design_verify_fem on a tiny mesh: the design's surface in the FEM, beside the spring blocks;
+  # the FEM too finds the graded plate's mu_s below its uniform plate's.
+  run 0 1 "$work/f.log" "${scene[@]}" -sbm_N 12 -design_verify_fem -fem_nx 8 -fem_ny 8 -fem_nz 1 -output "$work/f.h5"
+  grep -q "^  FEM " "$work/f.log" || { cat "$work/f.log" >&2; fail "no FEM line"; }
+  "$fem" -fem_nx 8 -fem_ny 8 -fem_nz 1 -friction_observables mu_s -fem_output "$work/u.h5" >"$work/u.log" 2>&1 ||
+    { cat "$work/u.log" >&2; fail "the uniform FEM run"; }
+  uniform=$(sed -n 's/^  mu_s (global) *\([0-9.]*\).*/\1/p' "$work/u.log")
+  "$python" - "$work/f.h5" "$uniform" <<'PY' || fail "FEM verification"
+import math, sys, h5py
+with h5py.File(sys.argv[1], "r") as f:
+    mu, confirmed = f["fem_verification/mu_s"][0], f["fem_verification/peak_confirmed"][0]
+uniform = float(sys.argv[2])
+print(f"FEM mu_s: design {mu:.4f}, uniform plate {uniform:.4f}")
+assert math.isfinite(mu) and confirmed == 1, (mu, confirmed)
+assert mu < uniform - 0.01, "the graded design does not lower the FEM's mu_s"
+PY
+  ;;
+refuse)
+  refused 1 -design_parameters -design_parameters ""
+  refused 1 -design_parameters -design_parameters mu_width
+  refused 1 -design_parameters -design_parameters grading_delta,grading_delta -design_lower -0.4,-0.4 -design_upper 0,0
+  refused 1 -design_lower -design_lower -0.4,-0.2
+  refused 1 -design_upper -design_upper -0.5
+  refused 1 -design_upper -design_upper 1.5
+  refused 1 -design_target -design_target 0
+  refused 1 -design_target -design_target_type variation -design_target -1.5
+  refused 1 -design_tolerance -design_tolerance 0
+  refused 1 -design_coarse -design_coarse 0.001
+  refused 1 -design_max_realisations -design_min_realisations 20 -design_max_realisations 10
+  refused 1 -design_max_evaluations -design_max_evaluations 0
+  refused 1 -design_method -design_method simplex
+  refused 1 -design_tolerance -design_tolerance nan
+  refused 1 -design_tolernce -design_tolernce 0.001  # a misspelling
+  refused 1 -fem_nx -design_verify_fem -fem_nx 0     # the FEM's options, checked before any work
+  refused 1 -output -output "$work/missing/d.h5"     # a missing folder
+  # On 2 ranks: one line, exit 2, every rank (no hang).
+  refused 2 -design_upper -design_upper 1.5
+  # grading_delta without a grading profile; two parameters under the root finder; a field
+  # parameter whose bound makes the plate invalid (mu_s < 0).
+  refused 1 -design_parameters -grading_profile none
+  refused 1 -design_method -options_file "$src/input/design_E_mu_tao.opts" -design_method root
+  refused 1 -design_upper -options_file "$src/input/design_E_mu_tao.opts" -design_upper 0.5,1.5
+  ;;
+*)
+  fail "unknown check $check"
+  ;;
+esac
+echo "design check $check: passed"
