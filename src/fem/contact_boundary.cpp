@@ -63,8 +63,8 @@ ContactTotals ContactBoundary::addForce(Vec X, Vec F) {
   return totals;
 }
 
-ContactTotals ContactBoundary::addKinematicForce(Vec X, Vec F, const std::vector<double>& mass, double gamma,
-                                                 double dt) {
+ContactTotals ContactBoundary::addKinematicForce(Vec X, Vec F, const std::vector<double>& mass,
+                                                 const SlidingDamping& damping, double dt) {
   const PetscScalar* x = nullptr;
   PetscScalar* f = nullptr;
   GF_CALL(VecGetArrayRead(X, &x));
@@ -76,7 +76,8 @@ ContactTotals ContactBoundary::addKinematicForce(Vec X, Vec F, const std::vector
     PetscScalar* fb = f + 6 * n.block;
     const double m = mass[n.block];
     const double v[3] = {xb[3], xb[4], xb[5]};
-    const double aFree[3] = {fb[3] / m - gamma * v[0], fb[4] / m - gamma * v[1], fb[5] / m - gamma * v[2]};
+    const double aFree[3] = {fb[3] / m + damping.acceleration(v, 0), fb[4] / m + damping.acceleration(v, 1),
+                             fb[5] / m + damping.acceleration(v, 2)};
     const KinematicContactForce r = kinematicContact(law_, static_cast<int>(site), m, dt, xb[2], v, aFree);
     n.pendingState = r.state;
     n.pressure = r.fn / n.area;

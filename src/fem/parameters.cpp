@@ -51,6 +51,19 @@ std::string describeDamping(const FemParameters& q) {
     std::snprintf(buffer, sizeof buffer, "stiffness-proportional %.3g s", q.stiffnessDamping);
     add(buffer);
   }
+  FemParameters r = q;
+  r.resolveDerived();
+  const char* from = r.peakDampingStart == FemParameters::DampingStart::Confirmed ? "the confirmed peak"
+                     : r.peakDampingStart == FemParameters::DampingStart::Drop    ? "the first drop of mu"
+                                                                                  : "the start of sliding";
+  if (r.peakDamping > 0) {
+    std::snprintf(buffer, sizeof buffer, "from %s: mass-proportional towards the slider %.3g 1/s", from, r.peakDamping);
+    add(buffer);
+  }
+  if (r.peakStiffnessDamping > 0) {
+    std::snprintf(buffer, sizeof buffer, "from %s: stiffness-proportional %.3g s", from, r.peakStiffnessDamping);
+    add(buffer);
+  }
   return text.empty() ? "none" : text;
 }
 
@@ -63,6 +76,8 @@ double FemParameters::thicknessModeStiffnessDamping(double dampingRatio) const {
   return 2.0 * dampingRatio * plate.thickness / (M_PI * dilatationalWaveSpeed());
 }
 
+double FemParameters::thicknessShearFrequency() const { return M_PI * shearWaveSpeed() / (2.0 * plate.thickness); }
+
 double FemParameters::shearWaveSpeed() const { return std::sqrt(shearModulus() / plate.density); }
 
 void FemParameters::resolveDerived() {
@@ -71,6 +86,7 @@ void FemParameters::resolveDerived() {
   if (kt <= 0) kt = kn;
   const double cs = shearWaveSpeed();
   if (settleDamping < 0) settleDamping = cs / H;
+  if (peakDamping < 0) peakDamping = cs / H;
   if (rampTime < 0) rampTime = 20 * H / cs;
   if (settleTime < 0) settleTime = 10 * H / cs;
   const double ts = eq2PeakTime();
@@ -122,6 +138,20 @@ FemParameters readFemParameters(MPI_Comm comm, RunParameters* record, const Plat
   q.stiffnessDamping = o.real("stiffness_damping", 0.0, "s",
                               "stiffness-proportional (Rayleigh beta) damping (0.2 H/(pi c_p): steady sliding, see "
                               "docs/accuracy_fem.md)");
+  if (auto g = o.realIfSet("peak_damping", "1/s",
+                           "mass-proportional damping towards the slider's velocity, from the confirmed peak on (0: off)",
+                           "c_s/H (1/pi of critical in the thickness-shear mode)"))
+    q.peakDamping = *g;
+  q.peakStiffnessDamping = o.real("peak_stiffness_damping", 0.0, "s",
+                                  "stiffness-proportional damping from the confirmed peak on (0: off)");
+  {
+    const std::string start = o.choice("peak_damping_start", "confirmed", {"confirmed", "drop", "sliding"},
+                                       "when the damping of the sliding plate starts: the confirmed peak, the first drop "
+                                       "of mu below its maximum, or the start of sliding (study only: it then damps the peak)");
+    q.peakDampingStart = start == "confirmed" ? FemParameters::DampingStart::Confirmed
+                         : start == "drop"    ? FemParameters::DampingStart::Drop
+                                              : FemParameters::DampingStart::Sliding;
+  }
   if (o.flag("bulk_viscosity", false, "bulk viscosity of Abaqus/Explicit (-fem_bulk_b1, -fem_bulk_b2)")) {
     q.bulkLinear = 0.06;
     q.bulkQuadratic = 1.2;
@@ -163,6 +193,8 @@ FemParameters readFemParameters(MPI_Comm comm, RunParameters* record, const Plat
   o.requireRange("bulk_b2", q.bulkQuadratic, 0.0, 10.0, "0 <= b2 <= 10");
   o.requireNonNegative("slide_damping", q.slideDamping, "1/s");
   o.requireNonNegative("stiffness_damping", q.stiffnessDamping, "s");
+  if (o.wasSet("peak_damping")) o.requireNonNegative("peak_damping", q.peakDamping, "1/s");
+  o.requireNonNegative("peak_stiffness_damping", q.peakStiffnessDamping, "s");
   if (o.wasSet("dt")) o.requirePositive("dt", q.dt, "s");
   o.requireRange("dt_safety", q.dtSafety, 1e-6, 1.0, "0 < dt_safety <= 1");
   for (const char* name : {"ramp_time", "settle_time"})
@@ -186,6 +218,8 @@ FemParameters readFemParameters(MPI_Comm comm, RunParameters* record, const Plat
   if (!o.wasSet("kt")) o.recordDerived("kt", derived.kt, "Pa/m", "tangential penalty stiffness k_t");
   if (!o.wasSet("settle_damping"))
     o.recordDerived("settle_damping", derived.settleDamping, "1/s", "mass-proportional damping during the pressure step");
+  if (!o.wasSet("peak_damping"))
+    o.recordDerived("peak_damping", derived.peakDamping, "1/s", "damping towards the slider from the confirmed peak on");
   if (!o.wasSet("ramp_time")) o.recordDerived("ramp_time", derived.rampTime, "s", "pressure ramp duration");
   if (!o.wasSet("settle_time")) o.recordDerived("settle_time", derived.settleTime, "s", "hold under pressure");
   if (!o.wasSet("slide_time")) o.recordDerived("slide_time", derived.slideTime, "s", "longest sliding duration");

@@ -4,6 +4,8 @@
 #include "gradfric/fem/log_events.hpp"
 #include "gradfric/physics/property_sampler.hpp"
 
+#include <cmath>
+
 namespace gradfric::fem {
 
 namespace {
@@ -66,13 +68,13 @@ void PlateModel::rhs(double t, Vec X, Vec F) {
   elastic_.setForce(X, F);
   top_.addPressure(t, sliding, F);
   dampingPower_ = bulk_.addForce(X, F);
-  if (params_.energyAudit && params_.stiffnessDamping > 0) stiffnessPower_ = stiffnessDampingPower(X);
-  const double gamma = sliding ? params_.slideDamping : params_.settleDamping;
+  if (params_.energyAudit && elastic_.stiffnessDamping() > 0) stiffnessPower_ = stiffnessDampingPower(X);
+  const SlidingDamping damping = massDamping();
   ContactTotals totals;
   if (params_.contact) {
     GF_CALL(PetscLogEventBegin(events.contact, 0, 0, 0, 0));
     if (params_.contactMethod == ContactMethod::Kinematic)
-      totals = contact_.addKinematicForce(X, F, mass_.perBlock(), gamma, dt_);
+      totals = contact_.addKinematicForce(X, F, mass_.perBlock(), damping, dt_);
     else
       totals = contact_.addForce(X, F);
     GF_CALL(PetscLogEventEnd(events.contact, 0, 0, 0, 0));
@@ -88,9 +90,9 @@ void PlateModel::rhs(double t, Vec X, Vec F) {
     const PetscScalar* xb = x + 6 * b;
     for (int d = 0; d < 3; ++d) {
       fb[d] = xb[3 + d];
-      fb[3 + d] = fb[3 + d] * inverseMass[b] - gamma * xb[3 + d];
-      dampingPower_ += gamma * blockMass[b] * xb[3 + d] * xb[3 + d];
+      fb[3 + d] = fb[3 + d] * inverseMass[b] + damping.acceleration(xb + 3, d);
     }
+    dampingPower_ += damping.power(blockMass[b], xb + 3);
   }
   GF_CALL(VecRestoreArray(F, &f));
   GF_CALL(VecRestoreArrayRead(X, &x));
@@ -128,7 +130,30 @@ double PlateModel::stiffnessDampingPower(Vec X) {
     }
   GF_CALL(VecRestoreArray(velocityAsDisplacement_, &w));
   GF_CALL(VecRestoreArrayRead(X, &x));
-  return 2.0 * params_.stiffnessDamping * elastic_.energy(velocityAsDisplacement_);
+  return 2.0 * elastic_.stiffnessDamping() * elastic_.energy(velocityAsDisplacement_);
+}
+
+SlidingDamping PlateModel::massDamping() const {
+  SlidingDamping d;
+  if (phase_ != Phase::Sliding) {
+    d.lab = params_.settleDamping;
+    return d;
+  }
+  d.lab = params_.slideDamping;
+  if (peakDampingOn_) {
+    const double theta = params_.plate.angleRadians();
+    d.slider = params_.peakDamping;
+    d.sliderVelocity[0] = params_.plate.velocity * std::cos(theta);
+    d.sliderVelocity[1] = params_.plate.velocity * std::sin(theta);
+  }
+  return d;
+}
+
+bool PlateModel::startPeakDamping() {
+  if (peakDampingOn_ || phase_ != Phase::Sliding) return false;
+  peakDampingOn_ = true;
+  if (params_.peakStiffnessDamping > 0) elastic_.setStiffnessDamping(params_.stiffnessDamping + params_.peakStiffnessDamping);
+  return params_.peakDamping > 0 || params_.peakStiffnessDamping > 0;
 }
 
 void PlateModel::startSliding(Vec X) {

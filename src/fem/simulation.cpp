@@ -158,6 +158,18 @@ private:
     const double mu = history_.observe(tSliding, totals.fx, totals.fy, totals.slip > 0,
                                        totals.everSlipped == totals.nodes);
     sample_.mu = mu;
+    // The damping of the sliding plate starts at the confirmed peak (mu_s is then the undamped
+    // run's), or with -fem_peak_damping_start at the first drop of mu after the first slip or at
+    // once (study options: they can damp the peak).
+    using Start = FemParameters::DampingStart;
+    const bool pastPeak = history_.peakConfirmed() || q_.peakDampingStart == Start::Sliding ||
+                          (q_.peakDampingStart == Start::Drop && totals.slip > 0 &&
+                           mu < (1.0 - q_.measurement.peakDrop) * history_.peak());
+    if (pastPeak && !model_.peakDampingOn() && model_.startPeakDamping()) {
+      r_.peakDampingStart = tSliding;
+      if (q_.verbose)
+        GF_CALL(PetscPrintf(model_.comm(), "  peak confirmed at t - t0 = %.4e s: damping while sliding on\n", tSliding));
+    }
     r_.time.push_back(tSliding);
     r_.mu.push_back(mu);
     r_.normalForce.push_back(totals.fn / normal_);

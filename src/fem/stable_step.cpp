@@ -31,11 +31,12 @@ double stableTimeStep(const FemParameters& given, const Grading& grading) {
   if (q.contact && q.contactMethod == ContactMethod::Penalty)
     omega2 += 2.0 * std::max(q.kn, q.kt) / (q.plate.density * element.hz);
   const double omega = std::sqrt(omega2);
-  const double gamma = std::max(q.settleDamping, q.slideDamping);
+  // The damping switched on at the peak (towards the slider) adds to -fem_slide_damping.
+  const double gamma = std::max(q.settleDamping, q.slideDamping + std::max(q.peakDamping, 0.0));
   // Linear bulk viscosity: b1 is the damping ratio of the highest (dilatational) mode (Abaqus).
   // Stiffness-proportional damping acts on the element's stiffness, not on the penalty springs:
   // damping ratio beta omega_e^2 / (2 omega) of the combined mode.
-  const double xi = 0.5 * q.stiffnessDamping * elementOmega2 / omega + gamma / (2.0 * omega) + q.bulkLinear;
+  const double xi = 0.5 * (q.stiffnessDamping + q.peakStiffnessDamping) * elementOmega2 / omega + gamma / (2.0 * omega) + q.bulkLinear;
   return centralDifferenceStableStep(omega2, xi);
 }
 

@@ -24,7 +24,9 @@ check() {  # name, expected cause regex, extra options...
   grep -m1 "FEM run unstable" "$name.log" | cut -c1-400
 }
 check dt_above_limit "the time step dt = 3e-07 s is above the stable step" -fem_dt 3e-7 -fem_dt_check false
-check ssp_integrator "the integrator -ts_type ssp is unstable" -ts_type ssp
+# (undamped after the peak, as measured: the damping of the sliding plate slows its growth enough
+# for the run to end first)
+check ssp_integrator "the integrator -ts_type ssp is unstable" -ts_type ssp -fem_peak_damping 0
 # Without the bypass the same dt is refused before any work (exit 2).
 mpiexec --oversubscribe -n 2 "$driver" -options_file "$scene" -fem_dt 3e-7 >refused.log 2>&1
 rc=$?

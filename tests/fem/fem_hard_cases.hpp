@@ -12,8 +12,8 @@
 //  * mu(t) within physical bounds: 0 <= mu(t) <= max local mu_s x normal force(t) / (p L^2) (the
 //    return map caps every node's traction at mu(v) p_c <= mu_s p_c), and mu_k > 0;
 //  * agreement with the same case at dt/2: |mu_s(dt) / mu_s(dt/2) - 1| <= muSTolerance (1 %) and
-//    |mu_k(dt) / mu_k(dt/2) - 1| <= muKTolerance (6 %: mu_k is the window mean of an undamped,
-//    oscillating mu(t), the slowest quantity to converge in dt; see docs/accuracy_fem.md).
+//    |mu_k(dt) / mu_k(dt/2) - 1| <= muKTolerance (6 %: mu_k is the window mean of an oscillating
+//    or stick-slipping mu(t), the slowest quantity to converge in dt; see docs/accuracy_fem.md).
 #include <petscsection.h>
 #include <petscsf.h>
 #include "gradfric/fem/simulation.hpp"

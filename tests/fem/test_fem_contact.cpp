@@ -1,7 +1,8 @@
 // The contact of the FEM plate: the exact (kinematic) contact node by node, the bulk viscosity's
 // volumetric rate, and on a reduced plate at the defaults: the loading slope against G L^2/H, the
-// settled normal force, penalty against kinematic contact up to the peak, and steady sliding with
-// constant friction (plateau, contact kept, normal force, energy balance).
+// settled normal force, penalty against kinematic contact up to the peak, steady sliding with
+// constant friction (plateau, contact kept, normal force, energy balance) and mu_s untouched by the
+// damping of the sliding plate.
 //
 // The reduced plate: the paper's plate (L = 5 mm, H = 0.05 mm, material, loading) on 10 x 10 x 5
 // hexahedra. Its cells are 500 x 500 x 10 um, the paper mesh's 50 x 50 x 10 um: the same hz, so the
@@ -16,6 +17,7 @@
 #include "gradfric/fem/contact_kinematic.hpp"
 #include "gradfric/fem/hex_element.hpp"
 #include "gradfric/fem/simulation.hpp"
+#include "gradfric/fem/sliding_damping.hpp"
 #include "fem_test_util.hpp"
 
 #include <gtest/gtest.h>
@@ -234,52 +236,101 @@ TEST_F(FemContactRuns, PenaltyAndKinematicContactAgreeUpToThePeak) {
   EXPECT_GT(k.stableDt, 1.5 * p.stableDt) << "no penalty spring: a larger stable step";
 }
 
-// Constant friction (mu_s = mu_k = 1) with the thickness-mode damping: once the plate slides it
-// holds a plateau at its peak, keeps the interior of its face on the plane, carries p L^2, and the
+// Constant friction (mu_s = mu_k = 1) at the defaults (the damping of the sliding plate switched on
+// at the confirmed peak, sliding_damping.hpp), with either contact: once the plate slides it holds
+// a plateau at its peak, keeps the interior of its face on the plane, carries p L^2, and the
 // energy it is given is what it holds plus what friction and damping took.
 TEST(FemContactSliding, ConstantFrictionSlidesOnAPlateauAndBalancesItsEnergy) {
-  FemParameters q = reducedPlate();
-  q.plate.muStatic = q.plate.muKinetic = 1.0;
-  q.stiffnessDamping = q.thicknessModeStiffnessDamping(0.1);
-  q.energyAudit = true;
-  q.stopWhenKnown = false;
-  q.slideTime = 2.5 * q.eq2PeakTime();
-  q.monitorEvery = 50;
-  const PlateRun run = runReduced(q, true);
-  const FemRunResult& r = run.result;
-  // The peak: the largest mu before 1.5 t_s (Eq. 2); the plateau: mu from 1.5 t_s to the end.
-  const double ts = q.eq2PeakTime();
-  double peak = 0, tPeak = 0, sum = 0, count = 0, lowest = 1e300, highest = 0, fnWorst = 0;
-  for (std::size_t i = 0; i < r.time.size(); ++i) {
-    if (r.time[i] < 1.5 * ts) {
-      if (r.mu[i] > peak) {
-        peak = r.mu[i];
-        tPeak = r.time[i];
+  for (ContactMethod method : {ContactMethod::Penalty, ContactMethod::Kinematic}) {
+    FemParameters q = reducedPlate();
+    q.contactMethod = method;
+    q.plate.muStatic = q.plate.muKinetic = 1.0;
+    q.stopWhenKnown = false;
+    q.slideTime = 2.5 * q.eq2PeakTime();
+    q.monitorEvery = 50;
+    const PlateRun run = runReduced(q, true);
+    const FemRunResult& r = run.result;
+    // The peak: the largest mu before 1.5 t_s (Eq. 2); the plateau: mu from 1.5 t_s to the end.
+    const double ts = q.eq2PeakTime();
+    double peak = 0, tPeak = 0, sum = 0, count = 0, lowest = 1e300, highest = 0, fnWorst = 0;
+    for (std::size_t i = 0; i < r.time.size(); ++i) {
+      if (r.time[i] < 1.5 * ts) {
+        if (r.mu[i] > peak) {
+          peak = r.mu[i];
+          tPeak = r.time[i];
+        }
+      } else {
+        sum += r.mu[i];
+        count += 1;
+        lowest = std::min(lowest, r.mu[i]);
+        highest = std::max(highest, r.mu[i]);
       }
-    } else {
-      sum += r.mu[i];
-      count += 1;
-      lowest = std::min(lowest, r.mu[i]);
-      highest = std::max(highest, r.mu[i]);
+      fnWorst = std::max(fnWorst, std::fabs(r.normalForce[i] - 1));
     }
-    fnWorst = std::max(fnWorst, std::fabs(r.normalForce[i] - 1));
+    const double plateau = sum / count;
+    // The energy balance over the samples of the sliding step.
+    double balanceWorst = 0;
+    for (std::size_t i = 0; i < r.energyTime.size(); ++i) {
+      if (r.energyTime[i] < r.slideStart) continue;
+      balanceWorst =
+          std::max(balanceWorst, std::fabs(r.energy[i] + r.energyDissipated[i] - r.energyIn[i]) / r.energyIn[i]);
+    }
+    PetscPrintf(PETSC_COMM_WORLD,
+                "constant friction 1 (%s): peak %.5f at %.3f t_s, damping from %.3f t_s, plateau mean %.5f (%+.3f %%), "
+                "range [%.5f, %.5f], |F_n/(p L^2) - 1| <= %.2e, interior in contact: %s, energy balance worst %.3e\n",
+                contactMethodName(method), peak, tPeak / ts, r.peakDampingStart / ts, plateau,
+                100 * (plateau / peak - 1), lowest, highest, fnWorst, run.interiorAlwaysInContact ? "yes" : "no",
+                balanceWorst);
+    ASSERT_GT(count, 100);
+    ASSERT_GE(r.peakDampingStart, 0.0) << "the damping of the sliding plate started";
+    EXPECT_LT(r.peakDampingStart, 1.5 * ts);
+    EXPECT_NEAR(plateau / peak, 1.0, 0.01) << contactMethodName(method);
+    EXPECT_GT(lowest, 0.99 * peak) << contactMethodName(method);
+    EXPECT_LT(fnWorst, 0.01) << contactMethodName(method);
+    EXPECT_TRUE(run.interiorAlwaysInContact) << contactMethodName(method);
+    EXPECT_LT(balanceWorst, 0.01) << contactMethodName(method);
   }
-  const double plateau = sum / count;
-  // The energy balance over the samples of the sliding step.
-  double balanceWorst = 0;
-  for (std::size_t i = 0; i < r.energyTime.size(); ++i) {
-    if (r.energyTime[i] < r.slideStart) continue;
-    balanceWorst = std::max(balanceWorst, std::fabs(r.energy[i] + r.energyDissipated[i] - r.energyIn[i]) / r.energyIn[i]);
+}
+
+// The damping of the sliding plate starts at the confirmed peak: mu_s, its time and every mu(t)
+// before that step are the undamped run's bit for bit (it does not change the step either: its
+// default c_s/H is the pressure step's damping, already in the stable step); after it the runs
+// differ (it acts), and steady sliding is not dragged (no force at the slider's velocity).
+TEST(FemContactSliding, DampingAfterThePeakLeavesMuStaticBitForBit) {
+  FemParameters q = reducedPlate();
+  q.contactMethod = ContactMethod::Kinematic;
+  FemParameters undamped = q;
+  undamped.peakDamping = 0;
+  const PlateRun on = runReduced(q), off = runReduced(undamped);
+  const FemRunResult &a = on.result, &b = off.result;
+  ASSERT_GE(a.peakDampingStart, 0.0);
+  EXPECT_LT(b.peakDampingStart, 0.0) << "nothing to switch on";
+  EXPECT_EQ(a.dt, b.dt);
+  EXPECT_EQ(a.friction.muStatic, b.friction.muStatic);
+  EXPECT_EQ(a.friction.peakTime, b.friction.peakTime);
+  EXPECT_TRUE(a.friction.peakConfirmed);
+  std::size_t same = 0, differ = 0;
+  for (std::size_t i = 0; i < std::min(a.time.size(), b.time.size()); ++i) {
+    if (a.time[i] <= a.peakDampingStart) {
+      ASSERT_EQ(a.mu[i], b.mu[i]) << "step " << i << " before the damping started";
+      ++same;
+    } else if (a.mu[i] != b.mu[i]) {
+      ++differ;
+    }
   }
   PetscPrintf(PETSC_COMM_WORLD,
-              "constant friction 1: peak %.5f at %.3f t_s, plateau mean %.5f (%+.3f %%), range [%.5f, %.5f], "
-              "|F_n/(p L^2) - 1| <= %.2e, interior in contact: %s, energy balance worst %.3e\n",
-              peak, tPeak / ts, plateau, 100 * (plateau / peak - 1), lowest, highest, fnWorst,
-              run.interiorAlwaysInContact ? "yes" : "no", balanceWorst);
-  ASSERT_GT(count, 100);
-  EXPECT_NEAR(plateau / peak, 1.0, 0.01);
-  EXPECT_GT(lowest, 0.97 * peak);
-  EXPECT_LT(fnWorst, 0.01);
-  EXPECT_TRUE(run.interiorAlwaysInContact);
-  EXPECT_LT(balanceWorst, 0.01);
+              "mu_s %.6f with and without the damping of the sliding plate (from %.4e s, %zu identical steps before "
+              "it, %zu differing after); mu_k %.5f vs %.5f undamped (Eq. 1: %.5f)\n",
+              a.friction.muStatic, a.peakDampingStart, same, differ, a.friction.muKinetic, b.friction.muKinetic,
+              q.plate.muKinetic + (q.plate.muStatic - q.plate.muKinetic) * std::exp(-q.plate.velocity / q.vC));
+  EXPECT_GT(same, 100u);
+  EXPECT_GT(differ, 100u) << "the damping acts after the peak";
+  // No drag in steady sliding: the damping force at the slider's velocity is zero.
+  SlidingDamping d;
+  d.slider = on.params.peakDamping;
+  d.sliderVelocity[0] = q.plate.velocity;
+  const double sliding[3] = {q.plate.velocity, 0, 0};
+  for (int k = 0; k < 3; ++k) EXPECT_EQ(d.acceleration(sliding, k), 0.0);
+  EXPECT_EQ(d.power(1.0, sliding), 0.0);
+  EXPECT_DOUBLE_EQ(on.params.peakDamping, on.params.settleDamping) << "default c_s/H";
 }

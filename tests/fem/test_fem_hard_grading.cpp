@@ -36,6 +36,11 @@ std::vector<HardCase> gradingCases() {
         // 0.5687 (E linear +0.9).
         if (property == GradedProperty::YoungsModulus && !(profile == GradingProfile::Triangular && delta < 0))
           c.peakConfirms = false;
+        // mu_k: with the default damping of the sliding plate (from the confirmed peak) mu(t) after
+        // the peak of these |Delta| = 0.9 plates is a node-scale stick-slip whose window mean
+        // converges more slowly in dt than the undamped ringing did: measured dt vs dt/2 up to
+        // 7.4 % (both linear -0.9; E triangular -0.9 7.3 %; friction triangular -0.9 6.4 %).
+        c.muKTolerance = 0.08;
         if (property != GradedProperty::YoungsModulus) {
           // With local mu_s down to 0.1 on one side, mu(t) after the first slip is a fast, undamped
           // oscillation (hundreds of local maxima within 10 % of the peak) and mu_s is the largest

@@ -7,6 +7,7 @@
 // forces did on the plate over the step (trapezoidal in the displacement), for the energy balance.
 #include "gradfric/fem/contact_kinematic.hpp"
 #include "gradfric/fem/contact_penalty.hpp"
+#include "gradfric/fem/sliding_damping.hpp"
 #include "gradfric/fem/plate_mesh.hpp"
 #include "gradfric/physics/exponential_law.hpp"
 #include "gradfric/physics/grading.hpp"
@@ -50,8 +51,9 @@ public:
   // totals of this rank; the new contact state is pending.
   ContactTotals addForce(Vec X, Vec F);
   // Kinematic contact (gfverlet): F's force slots hold every other force; the acceleration the
-  // RHS will return is F / m - gamma v (mass per block, mass damping gamma); dt the step.
-  ContactTotals addKinematicForce(Vec X, Vec F, const std::vector<double>& mass, double gamma, double dt);
+  // RHS will return is F / m plus the mass-proportional damping (mass per block); dt the step.
+  ContactTotals addKinematicForce(Vec X, Vec F, const std::vector<double>& mass, const SlidingDamping& damping,
+                                  double dt);
   void commit();  // accept the pending contact state (after a step)
   void resetSlipRecord();  // from now on, everSlipped counts slips after this point
   // Work of the contact forces on the plate over the committed steps, summed over ranks [J]

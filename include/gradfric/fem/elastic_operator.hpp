@@ -43,6 +43,9 @@ public:
   // force of the global state X (displacement + beta velocity). Slots 0..2 are left alone.
   void setForce(Vec X, Vec F);
   double energy(Vec X);  // (1/2) u . K u, summed over ranks [J]
+  // Rayleigh beta [s] from now on (the damping switched on at the confirmed peak).
+  void setStiffnessDamping(double beta) { beta_ = beta; }
+  double stiffnessDamping() const { return beta_; }
   // Per local cell the average stress (Voigt) of the state X.
   void cellStresses(Vec X, std::vector<std::array<double, 6>>* stress);
 

@@ -48,6 +48,19 @@ struct FemParameters {
   // "Steady sliding"): thicknessModeStiffnessDamping(0.1) gives that value.
   double stiffnessDamping = 0;
   double thicknessModeStiffnessDamping(double dampingRatio) const;  // 2 xi H / (pi c_p)
+  // Damping switched on once the static peak is confirmed (sliding_damping.hpp): mass-proportional
+  // towards the slider's velocity [1/s] (< 0: derived c_s/H, the pressure step's damping: 1/pi of
+  // critical in the fundamental thickness-shear mode pi c_s/(2H), and no change of the stable step)
+  // and stiffness-proportional [s]. Neither acts before the peak (mu_s is the undamped run's, bit
+  // for bit) nor on a plate sliding steadily (docs/accuracy_fem.md, "Steady sliding").
+  double peakDamping = -1;
+  double peakStiffnessDamping = 0;
+  // When it starts (-fem_peak_damping_start): confirmed (the peak is confirmed), drop (mu fell
+  // -friction_peak_drop below its running maximum after the first slip, or confirmed), sliding
+  // (the start of step 2: it then acts on the peak too, for the study only).
+  enum class DampingStart { Confirmed, Drop, Sliding };
+  DampingStart peakDampingStart = DampingStart::Confirmed;
+  double thicknessShearFrequency() const;  // pi c_s / (2H) [rad/s]
   bool energyAudit = false;  // also integrate the stiffness-proportional dissipation (one more operator pass per step)
   // Time stepping
   double dt = 0;            // 0: safety * stable step

@@ -14,6 +14,7 @@
 #include "gradfric/fem/lumped_mass.hpp"
 #include "gradfric/fem/parameters.hpp"
 #include "gradfric/fem/plate_mesh.hpp"
+#include "gradfric/fem/sliding_damping.hpp"
 #include "gradfric/fem/stable_step.hpp"
 #include "gradfric/fem/top_loading.hpp"
 #include "gradfric/physics/grading.hpp"
@@ -52,6 +53,11 @@ public:
   Phase phase() const { return phase_; }
   void setPhase(Phase phase) { phase_ = phase; }
   void startSliding(Vec X);  // phase Sliding; the top's tangential velocity set to the slider's
+  // Switches on the damping of the sliding plate (params.peakDamping, peakStiffnessDamping) from the
+  // next step on: called once the static peak is confirmed. True if any damping was switched on.
+  bool startPeakDamping();
+  bool peakDampingOn() const { return peakDampingOn_; }
+  SlidingDamping massDamping() const;  // of the current phase
   double pressureAt(double t) const { return top_.pressureAt(t, phase_ == Phase::Sliding); }
   ContactTotals contactTotals() const;  // of the last rhs evaluation, summed over ranks
   double kineticEnergy(Vec X) const { return mass_.kineticEnergy(X); }
@@ -76,6 +82,7 @@ private:
   double stableDt_ = 0, dt_ = 0;
   Phase phase_ = Phase::Pressure;
   ContactTotals lastTotals_;
+  bool peakDampingOn_ = false;
   double dampingPower_ = 0, dampingWork_ = 0;  // this rank's: of the last rhs, and committed
   double stiffnessPower_ = 0, stiffnessWork_ = 0;  // over ranks (params.energyAudit only)
   OwnedVec velocityAsDisplacement_;             // for the audit: v in the displacement slots
