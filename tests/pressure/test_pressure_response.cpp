@@ -52,7 +52,7 @@ double largestMagnitude(const std::vector<double>& g) {
 }  // namespace
 
 TEST(PressureResponse, ZeroShapeIsTheUniformModelBitForBit) {
-  for (const Grading g : {Grading{}, Grading{GradingProfile::Linear, GradedProperty::Friction, 0.2, 10}}) {
+  for (const Grading& g : {Grading{}, Grading{GradingProfile::Linear, GradedProperty::Friction, 0.2, 10}}) {
     for (double sigma : {0.0, 0.028}) {
       const Parameters uniform = sbm::testing::paperParameters(16, sigma, g);
       Parameters coupled = uniform;
@@ -67,9 +67,11 @@ TEST(PressureResponse, ZeroShapeIsTheUniformModelBitForBit) {
       ASSERT_EQ(a.friction.mu.size(), b.friction.mu.size());
       for (std::size_t i = 0; i < a.friction.mu.size(); ++i) ASSERT_EQ(a.friction.mu[i], b.friction.mu[i]) << i;
       ASSERT_EQ(a.firstSlipTime.size(), b.firstSlipTime.size());
-      for (std::size_t i = 0; i < a.firstSlipTime.size(); ++i)
-        if (!(std::isnan(a.firstSlipTime[i]) && std::isnan(b.firstSlipTime[i])))
+      for (std::size_t i = 0; i < a.firstSlipTime.size(); ++i) {
+        if (!(std::isnan(a.firstSlipTime[i]) && std::isnan(b.firstSlipTime[i]))) {
           ASSERT_EQ(a.firstSlipTime[i], b.firstSlipTime[i]);
+        }
+      }
     }
   }
 }
