@@ -39,32 +39,7 @@ with open(f"{d}/colour.png", "wb") as f:
 PY
 
 # expect <ranks> <driver> <output option> <text the message must contain ...> -- <arguments...>
-expect() {
-  local ranks=$1 driver=$2 outopt=$3; shift 3
-  local needles=()
-  while [ "$1" != "--" ]; do needles+=("$1"); shift; done
-  shift
-  rm -f "$out" "$out.partial"
-  local message status
-  if [ "$ranks" = 1 ]; then
-    message=$(timeout 120 "$driver" "$outopt" "$out" "$@" 2>&1 >/dev/null)
-  else
-    message=$(timeout 120 mpiexec -n "$ranks" "$driver" "$outopt" "$out" "$@" 2>&1 >/dev/null)
-  fi
-  status=$?
-  if [ $status -ne 2 ]; then
-    echo "FAIL ($*): exit $status, expected 2: $message"; failures=$((failures + 1)); return
-  fi
-  for needle in "${needles[@]}"; do
-    if ! grep -qF -- "$needle" <<<"$message"; then
-      echo "FAIL ($*): message lacks '$needle': $message"; failures=$((failures + 1)); return
-    fi
-  done
-  if [ -e "$out" ] || [ -e "$out.partial" ]; then
-    echo "FAIL ($*): left $out behind"; failures=$((failures + 1)); return
-  fi
-  echo "ok   ($*): $(head -1 <<<"$message")"
-}
+source "$source_dir/tests/common/expect_refusal.sh"
 s() { expect 1 "$sbm" -output "$@"; }
 
 # Values out of range somewhere on the plate: the option, its value, the property and where.

@@ -25,37 +25,16 @@ h5("nan.h5", nan, (0, L, 0, L))
 h5("small.h5", np.zeros((6, 6)), (0, L / 2, 0, L))
 PY
 
-# expect <ranks> <text the message must contain ...> -- <arguments...>
-expect() {
-  local ranks=$1; shift
-  local needles=()
+source "$source_dir/tests/common/expect_refusal.sh"
+# sbm_expect <ranks> <text the message must contain ...> -- <arguments...>: the spring-block
+# driver on a 16 x 16 plate (the arguments may override it).
+sbm_expect() {
+  local ranks=$1 needles=(); shift
   while [ "$1" != "--" ]; do needles+=("$1"); shift; done
   shift
-  rm -f "$out" "$out.partial"
-  local message status
-  if [ "$ranks" = 1 ]; then
-    message=$(timeout 120 "$sbm" -output "$out" -sbm_N 16 "$@" 2>&1 >/dev/null)
-  else
-    message=$(timeout 120 mpiexec -n "$ranks" "$sbm" -output "$out" -sbm_N 16 "$@" 2>&1 >/dev/null)
-  fi
-  status=$?
-  if [ $status -ne 2 ]; then
-    echo "FAIL ($*): exit $status, expected 2: $message"; failures=$((failures + 1)); return
-  fi
-  for needle in "${needles[@]}"; do
-    if ! grep -qF -- "$needle" <<<"$message"; then
-      echo "FAIL ($*): message lacks '$needle': $message"; failures=$((failures + 1)); return
-    fi
-  done
-  if [ "$(grep -c 'gradfric: error:' <<<"$message")" -ne "$ranks" ] && [ "$(grep -c 'gradfric: error:' <<<"$message")" -ne 1 ]; then
-    echo "FAIL ($*): not one error line: $message"; failures=$((failures + 1)); return
-  fi
-  if [ -e "$out" ] || [ -e "$out.partial" ]; then
-    echo "FAIL ($*): left $out behind"; failures=$((failures + 1)); return
-  fi
-  echo "ok   ($*): $(head -1 <<<"$message")"
+  expect "$ranks" "$sbm" -output "${needles[@]}" -- -sbm_N 16 "$@"
 }
-s() { expect 1 "$@"; }
+s() { sbm_expect 1 "$@"; }
 
 s "-pressure_response = linear" "none, moment, fem" -- -pressure_response linear
 s "-pressure_response_edge = 0" "0 < lambda <= L/2 = 0.0025 [m]" -- -pressure_response moment -pressure_response_edge 0
@@ -75,8 +54,8 @@ s "-pressure_response_file" "covering the plate" -- -pressure_response fem -pres
 s "-pressure_response_edge = 5e-06" "pressure stays positive up to mu = -plate_mu_s = 1" "x = 2.08333e-05 m" -- -sbm_N 120 -pressure_response moment -pressure_response_edge 5e-6
 s "-pressure_respons" "did you mean -pressure_response" -- -pressure_respons moment
 # Every rank refuses (no hang, no file).
-expect 2 "-pressure_response_file = (not set)" -- -pressure_response fem
-expect 2 "-pressure_response_edge = 5e-06" "pressure stays positive" -- -sbm_N 120 -pressure_response moment -pressure_response_edge 5e-6
+sbm_expect 2 "-pressure_response_file = (not set)" -- -pressure_response fem
+sbm_expect 2 "-pressure_response_edge = 5e-06" "pressure stays positive" -- -sbm_N 120 -pressure_response moment -pressure_response_edge 5e-6
 
 if [ $failures -ne 0 ]; then echo "$failures refusal(s) wrong"; exit 1; fi
 echo "all pressure-response refusals correct"
