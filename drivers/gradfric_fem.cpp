@@ -11,6 +11,7 @@
 #include "gradfric/fem/parameters.hpp"
 #include "gradfric/fem/plate_model.hpp"
 #include "gradfric/fem/plate_ts.hpp"
+#include "gradfric/fem/scene_options.hpp"
 #include "gradfric/fem/simulation.hpp"
 #include "gradfric/fem/sweep.hpp"
 #include "gradfric/physics/field_options.hpp"
@@ -50,10 +51,10 @@ struct FemRun {
 // Reads and checks every option (InputError on every rank alike); nullopt after -help.
 std::optional<FemRun> readFemRun(MPI_Comm comm, RunParameters* record) {
   FemRun run;
-  run.grading = readGrading(comm, record);
-  const Plate plate = readPlate(comm, record);  // one plate for both models
-  run.params = readFemParameters(comm, record, plate);
-  run.grading.fields = readPlateFields(comm, record, plate, run.grading);  // -field_*: sampled at cells and nodes
+  const FemScene scene = readFemScene(comm, record);  // -grading_, -plate_, -fem_, -field_
+  const Plate& plate = scene.plate;  // one plate for both models
+  run.grading = scene.grading;
+  run.params = scene.params;
   OptionReader driverOptions(comm, "fem_", "gradfric-fem: both models", record);
   run.compare = driverOptions.flag(
       "compare_sbm", false, "also run one spring-block realisation (-sbm_ options) on the same grading, side by side");
@@ -66,13 +67,11 @@ std::optional<FemRun> readFemRun(MPI_Comm comm, RunParameters* record) {
   }
   run.sweep = readSweepOptions(comm, record);
   if (helpRequested()) return std::nullopt;
-  checkPlateFields(run.grading, plate, static_cast<int>(run.params.nx), static_cast<int>(run.params.ny));
-  readPlateTSOptions(comm);  // the -ts_ options: checked here, used by the run's TS
+  // Fields against the mesh, -ts_ options, misspellings, the run length and the stable step.
   if (run.compare)
-    checkUnusedOptions(comm, {"plate_", "friction_", "fem_", "grading_", "field_", "sbm_", "ensemble_"});
+    checkFemScene(comm, scene, record, {"sbm_", "ensemble_"});
   else
-    checkUnusedOptions(comm, {"plate_", "friction_", "fem_", "grading_", "field_", "ensemble_"});
-  requireFemRunLength(run.params, run.grading, record);  // refuses a dt above the stable step, an endless run
+    checkFemScene(comm, scene, record, {"ensemble_"});
   return run;
 }
 

@@ -225,7 +225,15 @@ def plot_variation(ensemble, fems, png, sweeps=()):
                 y, e = relative[members], error[members]
                 theta, sigma, prop, profile = key
                 label = f"{source.model} {prop} {profile}" + (f", theta={theta:g}" if len(groups) > 1 else "")
-                ax.plot(d, y, "o-" if source.model == "SBM" else "s--", label=label)
+                line, = ax.plot(d, y, "o-" if source.model == "SBM" else "s--", label=label)
+                # FEM sweep: each point's discretisation error bar (relative bound of its own mu;
+                # NaN where no study measured it: no bar drawn there)
+                if source.model == "FEM" and f"{name}_discretisation_error" in source.f["statistics"]:
+                    bar = source.statistic(f"{name}_discretisation_error")[members]
+                    known = np.isfinite(bar) & np.isfinite(y)
+                    if known.any():
+                        ax.errorbar(d[known], y[known], yerr=(100 + y[known]) * bar[known], fmt="none", capsize=3,
+                                    color=line.get_color())
                 # 95 % band of the relative variation (propagated standard errors x 1.96)
                 if source.model == "SBM":
                     ax.fill_between(d, y - 1.96 * e, y + 1.96 * e, alpha=0.2)

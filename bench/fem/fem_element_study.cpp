@@ -9,14 +9,14 @@
 #include "gradfric/fem/parameters.hpp"
 #include "gradfric/fem/plate_model.hpp"
 #include "gradfric/fem/plate_ts.hpp"
+#include "gradfric/fem/scene_options.hpp"
 #include "gradfric/fem/simulation.hpp"
 #include "gradfric/fem/stable_step.hpp"
-#include "gradfric/physics/grading_options.hpp"
-#include "gradfric/physics/plate_options.hpp"
 
 #include <petscsys.h>
 
 #include <cmath>
+#include <optional>
 
 static const char help[] = "bench_fem_element_study: mu_s, edge pressures and moment balance at the peak of one FEM run\n";
 
@@ -25,14 +25,11 @@ int main(int argc, char** argv) {
   using namespace gradfric::fem;
   return runDriver(argc, argv, help, [](MPI_Comm comm) {
     RunParameters record;
-    const Grading grading = readGrading(comm, &record);
-    const Plate plate = readPlate(comm, &record);
-    FemParameters params = readFemParameters(comm, &record, plate);
-    if (helpRequested()) return;
+    const std::optional<FemScene> scene = readCheckedFemScene(comm, &record);  // the driver's options and checks
+    if (!scene) return;  // -help
+    const Grading& grading = scene->grading;
+    FemParameters params = scene->params;
     params.verbose = false;
-    readPlateTSOptions(comm);
-    checkUnusedOptions(comm, {"plate_", "friction_", "fem_", "grading_"});
-    requireFemRunLength(params, grading, &record);
     PlateModel model(comm, params, grading);
     const double normal = model.params().plate.normalForce(), H = model.params().plate.thickness;
     double best = -1;

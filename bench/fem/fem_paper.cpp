@@ -10,14 +10,15 @@
 #include "gradfric/fem/parameters.hpp"
 #include "gradfric/fem/plate_model.hpp"
 #include "gradfric/fem/plate_ts.hpp"
+#include "gradfric/fem/scene_options.hpp"
 #include "gradfric/fem/simulation.hpp"
 #include "gradfric/fem/stable_step.hpp"
-#include "gradfric/physics/grading_options.hpp"
-#include "gradfric/physics/plate_options.hpp"
 
 #include <petscsys.h>
 
 #include <cmath>
+#include <ctime>
+#include <optional>
 #include <fstream>
 #include <string>
 
@@ -32,6 +33,12 @@ std::string loadAverage() {
   char text[64];
   std::snprintf(text, sizeof text, "%.2f (1 min), %.2f (5 min)", one, five);
   return text;
+}
+
+double cpuSeconds() {  // this process, all threads
+  timespec t{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return t.tv_sec + 1e-9 * t.tv_nsec;
 }
 
 struct EventTime {
@@ -56,14 +63,11 @@ int main(int argc, char** argv) {
   using namespace gradfric::fem;
   return runDriver(argc, argv, help, [](MPI_Comm comm) {
     RunParameters record;
-    const Grading grading = readGrading(comm, &record);
-    const Plate plate = readPlate(comm, &record);
-    FemParameters params = readFemParameters(comm, &record, plate);
-    if (helpRequested()) return;
+    const std::optional<FemScene> scene = readCheckedFemScene(comm, &record);  // the driver's options and checks
+    if (!scene) return;  // -help
+    const Grading& grading = scene->grading;
+    FemParameters params = scene->params;
     params.verbose = false;
-    readPlateTSOptions(comm);
-    checkUnusedOptions(comm, {"plate_", "friction_", "fem_", "grading_"});
-    requireFemRunLength(params, grading, &record);
     int ranks = 1;
     MPI_Comm_size(comm, &ranks);
     GF_CALL(PetscLogDefaultBegin());
@@ -71,23 +75,27 @@ int main(int argc, char** argv) {
     const double setup0 = MPI_Wtime();
     PlateModel model(comm, params, grading);
     const double setup = MPI_Wtime() - setup0;
+    const double cpu0 = cpuSeconds();
     const FemRunResult r = runPlateExperiment(model);
+    const double cpuLocal = cpuSeconds() - cpu0;
+    double cpu = 0;  // the busiest rank's CPU time: with a loaded machine, the load-free measure of the work
+    GF_CALL_MPI(MPI_Allreduce(&cpuLocal, &cpu, 1, MPI_DOUBLE, MPI_MAX, comm));
     const std::string loadAfter = loadAverage();
     const long slideSteps = static_cast<long>(r.mu.size());
     const long pressureSteps = r.steps - slideSteps;
     const double wall = r.wallPressure + r.wallSliding;
     PetscPrintf(comm,
-                "bench_fem_paper: mesh %dx%dx%d, element %s, %d ranks, dt %.4e s (stable %.4e s)\n"
+                "bench_fem_paper: mesh %dx%dx%d, element %s, kernel %s, %d ranks, dt %.4e s (stable %.4e s)\n"
                 "  load average before %s, after %s\n"
                 "  set-up %.2f s\n"
                 "  step 1 (pressure): %ld steps, %.2f s wall, %.3f ms/step\n"
                 "  step 2 (sliding):  %ld steps, %.2f s wall, %.3f ms/step\n"
-                "  total: %ld steps, %.2f s wall (%.3f ms/step)\n"
+                "  total: %ld steps, %.2f s wall (%.3f ms/step); CPU of the busiest rank %.2f s (%.3f ms/step)\n"
                 "  results: mu_s %.6f (peak at %.6e s, confirmed %d), mu_k %.6f, settled normal force %.6f p L^2\n",
-                params.nx, params.ny, params.nz, elementTypeName(params.element), ranks, r.dt, r.stableDt,
+                params.nx, params.ny, params.nz, elementTypeName(params.element), params.blockedKernel ? "blocked" : "dense", ranks, r.dt, r.stableDt,
                 loadBefore.c_str(), loadAfter.c_str(), setup, pressureSteps, r.wallPressure,
                 1e3 * r.wallPressure / std::max(1L, pressureSteps), slideSteps, r.wallSliding,
-                1e3 * r.wallSliding / std::max(1L, slideSteps), r.steps, wall, 1e3 * wall / std::max(1L, r.steps),
+                1e3 * r.wallSliding / std::max(1L, slideSteps), r.steps, wall, 1e3 * wall / std::max(1L, r.steps), cpu, 1e3 * cpu / std::max(1L, r.steps),
                 r.friction.muStatic, r.friction.peakTime, r.friction.peakConfirmed ? 1 : 0, r.friction.muKinetic,
                 r.settledNormalForce);
     // What each event is (times on the slowest rank, inclusive of nested events).

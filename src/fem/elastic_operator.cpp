@@ -4,6 +4,9 @@
 #include "gradfric/fem/log_events.hpp"
 #include "gradfric/physics/property_sampler.hpp"
 
+#include <algorithm>
+#include <numeric>
+#include <random>
 #include <stdexcept>
 
 namespace gradfric::fem {
@@ -49,6 +52,22 @@ ElasticOperator::ElasticOperator(const PlateMesh& mesh, double youngsModulus, do
   PetscInt n = 0;
   GF_CALL(VecGetLocalSize(uGlobal_, &n));
   if (n != 3 * mesh.ownedBlocks()) throw std::runtime_error("plate mesh: displacement and state layouts differ");
+}
+
+void ElasticOperator::shuffleCellOrder(unsigned seed) {
+  if (seed == 0) return;
+  const PetscInt cells = mesh_.localCells();
+  std::vector<PetscInt> order(cells);
+  std::iota(order.begin(), order.end(), 0);
+  std::shuffle(order.begin(), order.end(), std::mt19937(seed));
+  std::vector<PetscInt> offsets(cellDispOff_.size());
+  std::vector<double> modulus(cells);
+  for (PetscInt c = 0; c < cells; ++c) {
+    std::copy_n(cellDispOff_.begin() + 8 * order[c], 8, offsets.begin() + 8 * c);
+    modulus[c] = cellModulus_[order[c]];
+  }
+  cellDispOff_ = std::move(offsets);
+  shuffledModulus_ = std::move(modulus);
 }
 
 void ElasticOperator::setForce(Vec X, Vec F) {
@@ -173,10 +192,13 @@ void ElasticOperator::kernelForce(Vec uLocal, Vec fLocal) {
 
 void ElasticOperator::applyKernel(const std::vector<PetscInt>& cellOffsets, const double* u, double* f) const {
   const PetscInt cells = mesh_.localCells();
+  // The displacement DM's offsets follow shuffleCellOrder; the state's (energy fallback) do not.
+  const double* modulus =
+      !shuffledModulus_.empty() && &cellOffsets == &cellDispOff_ ? shuffledModulus_.data() : cellModulus_.data();
   if (blocked_)
-    elasticKernelBlocked(cells, cellOffsets.data(), cellModulus_.data(), blocks_.data(), u, f);
+    elasticKernelBlocked(cells, cellOffsets.data(), modulus, blocks_.data(), u, f);
   else
-    elasticKernel(cells, cellOffsets.data(), cellModulus_.data(), element_.stiffness.data(), u, nullptr, 0.0, f);
+    elasticKernel(cells, cellOffsets.data(), modulus, element_.stiffness.data(), u, nullptr, 0.0, f);
 }
 
 void ElasticOperator::forceSpecialised(Vec u, Vec f) {

@@ -54,6 +54,10 @@ io::EnsembleLayout layoutOf(const FemSweep& s) {
                            "mu_s_ci95_high", "mu_s_relative", "mu_s_relative_error", "mu_k_mean",
                            "mu_k_std",       "mu_k_stderr",   "mu_k_ci95_low",       "mu_k_ci95_high",
                            "mu_k_relative",  "mu_k_relative_error"};
+  // The FEM's own: each point's discretisation error bar (error_estimate.hpp), relative, NaN where
+  // no study measured it (sweep_run.cpp writes them with the statistics).
+  layout.statisticsReal.push_back("mu_s_discretisation_error");
+  layout.statisticsReal.push_back("mu_k_discretisation_error");
   layout.statisticsInteger = {"finished", "mu_s_count", "mu_k_count", "peaks_unconfirmed"};
   return layout;
 }

@@ -3,8 +3,10 @@
 #include "gradfric/core/petsc_call.hpp"
 #include "gradfric/ensemble/scene_file.hpp"
 #include "gradfric/ensemble/scene_report.hpp"
+#include "gradfric/fem/error_estimate.hpp"
 #include "gradfric/fem/plate_model.hpp"
 #include "gradfric/fem/simulation.hpp"
+#include "gradfric/fem/stable_step.hpp"
 #include "gradfric/fem/sweep.hpp"
 #include "gradfric/io/collective_file.hpp"
 #include "gradfric/io/output_plan.hpp"
@@ -12,7 +14,9 @@
 
 #include <petscsys.h>
 
+#include <cmath>
 #include <cstdio>
+#include <limits>
 #include <cstdlib>
 #include <string>
 
@@ -112,13 +116,36 @@ void printPlan(MPI_Comm comm, const FemSweep& s, const GroupComm& groups, long p
                       s.options.ranksPerRun, s.params.nx, s.params.ny, s.params.nz));
 }
 
-void printTable(MPI_Comm comm, const FemSweep& s, const std::vector<ensemble::PointStatistics>& stats) {
-  GF_CALL(PetscPrintf(comm, "FEM sweep results (one run per point; relative variation against the non-graded point):\n"
-                            "  point sweep                         mu_s     rel. var. [%%]        mu_k     rel. var. [%%]\n"));
+// Each point's discretisation error bar (relative; NaN: not measured), the same rule as a single
+// run's (error_estimate.hpp): it depends on the point's settings only, not on its run.
+struct ErrorBars {
+  std::vector<double> muStatic, muKinetic;
+};
+
+ErrorBars errorBarsOf(const FemSweep& s) {
+  ErrorBars bars;
+  for (int p = 0; p < s.points(); ++p) {
+    FemParameters q = s.pointParameters(p);
+    q.resolveDerived();
+    const Grading g = s.pointGrading(p);
+    const DiscretisationError e = discretisationError(q, g, chooseTimeStep(q, g) / stableTimeStep(q, g));
+    bars.muStatic.push_back(e.measured ? e.relative : std::numeric_limits<double>::quiet_NaN());
+    bars.muKinetic.push_back(std::numeric_limits<double>::quiet_NaN());  // no study bounds mu_k (e.kineticBasis)
+  }
+  return bars;
+}
+
+void printTable(MPI_Comm comm, const FemSweep& s, const std::vector<ensemble::PointStatistics>& stats,
+                const ErrorBars& bars) {
+  GF_CALL(PetscPrintf(comm, "FEM sweep results (one run per point; relative variation against the non-graded point;\n"
+                            "discretisation error bar of mu_s, 'n/m' where no study measured it):\n"
+                            "  point sweep                         mu_s   error [%%]   rel. var. [%%]        mu_k     rel. var. [%%]\n"));
   for (int p = 0; p < s.points(); ++p) {
     const auto& st = stats[p];
-    GF_CALL(PetscPrintf(comm, "  %-5d %-24s %10.6f %+14.3f   %10.6f %+14.3f%s\n", p,
-                        ensemble::pointLabel(s.sweep, p).c_str(), st.muStatic.mean, 100 * st.muStaticRelative.value,
+    char bar[32] = "      n/m";
+    if (std::isfinite(bars.muStatic[p])) std::snprintf(bar, sizeof bar, "%9.2f", 100 * bars.muStatic[p]);
+    GF_CALL(PetscPrintf(comm, "  %-5d %-24s %10.6f %s %+14.3f   %10.6f %+14.3f%s\n", p,
+                        ensemble::pointLabel(s.sweep, p).c_str(), st.muStatic.mean, bar, 100 * st.muStaticRelative.value,
                         st.muKinetic.mean, 100 * st.muKineticRelative.value,
                         st.peaksUnconfirmed > 0 ? "  (peak not confirmed)" : ""));
   }
@@ -181,8 +208,11 @@ void runFemSweep(MPI_Comm comm, const FemSweep& s, const RunParameters& record) 
                           ", continue with -fem_sweep_resume");
   }
   const auto stats = ensemble::writeStatistics(file, 1, s.sweep.reference, false);
+  const ErrorBars bars = errorBarsOf(s);
+  file.writeStatistics({{"mu_s_discretisation_error", bars.muStatic}, {"mu_k_discretisation_error", bars.muKinetic}},
+                       {});
   ensemble::finishResultsFile(comm, file, plan);  // complete: renamed into place
-  printTable(comm, s, stats);
+  printTable(comm, s, stats, bars);
   GF_CALL(PetscPrintf(comm, "FEM sweep: %zu run(s) in %.2f s wall; results in %s\n", pending.size(),
                       MPI_Wtime() - wall0, plan.path().c_str()));
 }

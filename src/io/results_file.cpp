@@ -119,6 +119,8 @@ std::string statisticDescription(const std::string& name) {
   if (what == "ci95_high") return "upper end of the 95 % confidence interval of the mean of " + of;
   if (what == "relative") return "(" + of + " - " + of + "_0) / " + of + "_0 against /sweep/reference_point";
   if (what == "relative_error") return "propagated error of " + of + "_relative";
+  if (what == "discretisation_error")  // FEM sweeps
+    return "relative discretisation error bound of " + of + " at the point's settings (NaN: not measured)";
   return name;
 }
 

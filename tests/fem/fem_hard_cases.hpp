@@ -32,8 +32,13 @@ struct HardCase {
   std::string name;
   std::function<void(FemParameters&, Grading&)> setup;
   double muSTolerance = 0.01;     // relative, dt vs dt/2
-  // mu_k is the mean of an undamped, oscillating mu(t) over a window after the peak: it converges
-  // more slowly in dt than mu_s (measured dt vs dt/2 on these meshes: up to 4 %).
+  // mu_k is the mean of an oscillating mu(t) over a window after the peak: it converges more
+  // slowly in dt than mu_s (measured dt vs dt/2 on these meshes: up to 4 %), and round-off alone
+  // moves it: bench_fem_roundoff on the stiff-penalty case (16 x 16 x 2, k = 100 E0/hz, cells in 4
+  // shuffled orders, dense and blocked kernel) spreads mu_k by up to 1.5 % at one dt (mu_s by
+  // 5e-14), and dt vs dt/2 ranged from -0.6 to +1.2 % over those orders; the blocked kernel (the
+  // default) stays within the same spread as the dense one. 6 % = the dt effect + the round-off
+  // spread at both steps, with room.
   double muKTolerance = 0.06;
   double energyTolerance = 0.02;  // relative to the energy put in
   // false: nodes of a soft band never slip within the run, so the shared peak rule (every site

@@ -53,6 +53,28 @@ timeout 300 "$sbm_driver" "${grading[@]}" -sbm_N 10 -ensemble_realisations 2 -ou
   fail "the spring-block ensemble failed: $(tail -3 sbm.out)"
 $python "$source_dir/tests/fem/check_sweep_layout.py" sbm.h5 one.h5 || fail "layout"
 
+# Each point's discretisation error bar: finite on a studied setting (25x25x5 at dt_safety 0.9,
+# friction grading |Delta| <= 0.2: mesh 3.1 / 3.3 %, dt 1.0 %, contact 0.4 %), NaN where no study
+# measured it (Delta 0.4), NaN for mu_k; printed in the table and drawn by the plotting tool.
+fem bars 1 0 -grading_profile linear -grading_property friction -ensemble_delta 0,0.2,0.4 -fem_nx 25 -fem_ny 25 \
+  -fem_nz 5 -fem_dt_safety 0.9 -friction_observables mu_s -fem_output bars.h5
+$python - bars.h5 <<'PY' || fail "bars: the error bars in the file are not the measured ones"
+import math, sys, h5py
+f = h5py.File(sys.argv[1], "r")
+s, k = f["statistics/mu_s_discretisation_error"][:], f["statistics/mu_k_discretisation_error"][:]
+assert abs(s[0] - 0.045) < 1e-12 and abs(s[1] - 0.047) < 1e-12, f"measured points: {s[:2]}"
+assert math.isnan(s[2]), f"Delta 0.4 was not studied: {s[2]}"
+assert all(math.isnan(x) for x in k), f"mu_k has no measured bar: {k}"
+assert all(math.isfinite(x) for x in f["statistics/mu_s_mean"][:]), "a point without mu_s"
+PY
+grep -Eq "^  2 +Delta=0\.4 +0\.[0-9]+ +n/m" bars.out || fail "bars: the table does not say n/m: $(cat bars.out)"
+grep -Eq "^  1 +Delta=0\.2 +0\.[0-9]+ +4\.70 " bars.out || fail "bars: the table lacks the bar: $(cat bars.out)"
+timeout 300 "$sbm_driver" -grading_profile linear -grading_property friction -ensemble_delta 0,0.2,0.4 -sbm_N 10 \
+  -ensemble_realisations 2 -output sbm_bars.h5 >sbm_bars.out 2>&1 || fail "sbm_bars: $(tail -3 sbm_bars.out)"
+$python "$source_dir/scripts/gradfric_plot.py" sbm_bars.h5 --fem bars.h5 --out bars_plots >bars_plot.out 2>&1 ||
+  fail "bars plot: $(cat bars_plot.out)"
+[ -s bars_plots/sbm_bars_variation.png ] || fail "bars plot: no variation figure: $(ls bars_plots)"
+
 # Resume after a kill: the same file.
 fem killed 1 86 "${sweep[@]}" -fem_output resumed.h5 -fem_sweep_abort_after 1
 [ -f resumed.h5.partial ] && [ ! -e resumed.h5 ] || fail "killed: expected only resumed.h5.partial"

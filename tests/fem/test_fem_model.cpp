@@ -156,6 +156,7 @@ TEST(FemModel, ReflectionBlockKernelEqualsDenseKernel) {
 TEST(FemModel, BlockedKernelOptionGivesTheDenseForce) {
   FemParameters q = test::coarse(9, 7, 3);
   const Grading g = test::linear(GradedProperty::YoungsModulus, 0.4);
+  q.blockedKernel = false;
   PlateModel dense(PETSC_COMM_WORLD, q, g);
   q.blockedKernel = true;
   PlateModel blocked(PETSC_COMM_WORLD, q, g);

@@ -55,6 +55,11 @@ public:
   void forceSpecialised(Vec u, Vec f);
   void forceGeneric(Vec u, Vec f);
 
+  // Round-off studies (bench_fem_roundoff): the cells of this rank taken in a shuffled order
+  // (pattern seed; 0 keeps the mesh's order), so every node sums its cells' forces in another
+  // order, as on another number of ranks. The same forces to round-off.
+  void shuffleCellOrder(unsigned seed);
+
   const BoxElement& element() const { return element_; }
   const std::vector<double>& cellModulus() const { return cellModulus_; }
 
@@ -69,6 +74,7 @@ private:
   BoxElement element_;
   double beta_;
   std::vector<double> cellModulus_;
+  std::vector<double> shuffledModulus_;  // in the order of cellDispOff_ after shuffleCellOrder (else empty)
   std::array<double, 72> blocks_{};
   bool blocked_ = false;  // K_hat is block diagonal in the mirror basis (every box cell)
   std::vector<PetscInt> cellDispOff_;  // 8 offsets into a local displacement vector per cell

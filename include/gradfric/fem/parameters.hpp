@@ -22,7 +22,7 @@ struct FemParameters {
   // Mesh and geometry
   int nx = 100, ny = 100, nz = 5;
   ElementType element = ElementType::Trilinear;  // -fem_element q1 | q1i (docs/fem.md)
-  bool blockedKernel = false;  // -fem_kernel dense | blocked (mirror-basis kernel, docs/accuracy_fem.md "Cost")
+  bool blockedKernel = true;  // -fem_kernel blocked | dense (mirror-basis kernel, docs/accuracy_fem.md "Cost")
   // The physical plate (-plate_ options, shared with the spring-block model): size L, thickness
   // H, material, pressure, sliding speed and angle, mean local mu_s and mu_k (graded by -grading_).
   Plate plate;

@@ -1,0 +1,38 @@
+#include "gradfric/fem/scene_options.hpp"
+
+#include "gradfric/fem/plate_ts.hpp"
+#include "gradfric/fem/stable_step.hpp"
+#include "gradfric/physics/field_options.hpp"
+#include "gradfric/physics/grading_options.hpp"
+#include "gradfric/physics/plate_options.hpp"
+
+namespace gradfric::fem {
+
+FemScene readFemScene(MPI_Comm comm, RunParameters* record) {
+  FemScene scene;
+  scene.grading = readGrading(comm, record);
+  scene.plate = readPlate(comm, record);  // one plate for both models
+  scene.params = readFemParameters(comm, record, scene.plate);
+  scene.grading.fields = readPlateFields(comm, record, scene.plate, scene.grading);  // sampled at cells and nodes
+  return scene;
+}
+
+void checkFemScene(MPI_Comm comm, const FemScene& scene, RunParameters* record,
+                   const std::vector<std::string>& extraPrefixes) {
+  checkPlateFields(scene.grading, scene.plate, static_cast<int>(scene.params.nx), static_cast<int>(scene.params.ny));
+  readPlateTSOptions(comm);  // the -ts_ options: checked here, used by the run's TS
+  std::vector<std::string> prefixes = {"plate_", "friction_", "fem_", "grading_", "field_"};
+  prefixes.insert(prefixes.end(), extraPrefixes.begin(), extraPrefixes.end());
+  checkUnusedOptions(comm, prefixes);
+  requireFemRunLength(scene.params, scene.grading, record);  // refuses a dt above the stable step, an endless run
+}
+
+std::optional<FemScene> readCheckedFemScene(MPI_Comm comm, RunParameters* record,
+                                            const std::vector<std::string>& extraPrefixes) {
+  FemScene scene = readFemScene(comm, record);
+  if (helpRequested()) return std::nullopt;
+  checkFemScene(comm, scene, record, extraPrefixes);
+  return scene;
+}
+
+}  // namespace gradfric::fem
