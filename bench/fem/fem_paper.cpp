@@ -84,16 +84,19 @@ int main(int argc, char** argv) {
     const long slideSteps = static_cast<long>(r.mu.size());
     const long pressureSteps = r.steps - slideSteps;
     const double wall = r.wallPressure + r.wallSliding;
+    const std::string staticNote =
+        r.staticPressureStep ? " (" + std::to_string(r.pressureIterations) + " CG iterations)" : "";
     PetscPrintf(comm,
                 "bench_fem_paper: mesh %dx%dx%d, element %s, kernel %s, %d ranks, dt %.4e s (stable %.4e s)\n"
                 "  load average before %s, after %s\n"
                 "  set-up %.2f s\n"
-                "  step 1 (pressure): %ld steps, %.2f s wall, %.3f ms/step\n"
+                "  step 1 (pressure, %s): %ld steps%s, %.2f s wall, %.3f ms/step\n"
                 "  step 2 (sliding):  %ld steps, %.2f s wall, %.3f ms/step\n"
                 "  total: %ld steps, %.2f s wall (%.3f ms/step); CPU of the busiest rank %.2f s (%.3f ms/step)\n"
                 "  results: mu_s %.6f (peak at %.6e s, confirmed %d), mu_k %.6f, settled normal force %.6f p L^2\n",
                 params.nx, params.ny, params.nz, elementTypeName(params.element), params.blockedKernel ? "blocked" : "dense", ranks, r.dt, r.stableDt,
-                loadBefore.c_str(), loadAfter.c_str(), setup, pressureSteps, r.wallPressure,
+                loadBefore.c_str(), loadAfter.c_str(), setup, r.staticPressureStep ? "static" : "dynamic", pressureSteps,
+                staticNote.c_str(), r.wallPressure,
                 1e3 * r.wallPressure / std::max(1L, pressureSteps), slideSteps, r.wallSliding,
                 1e3 * r.wallSliding / std::max(1L, slideSteps), r.steps, wall, 1e3 * wall / std::max(1L, r.steps), cpu, 1e3 * cpu / std::max(1L, r.steps),
                 r.friction.muStatic, r.friction.peakTime, r.friction.peakConfirmed ? 1 : 0, r.friction.muKinetic,

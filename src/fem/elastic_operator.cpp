@@ -214,4 +214,21 @@ void ElasticOperator::forceSpecialised(Vec u, Vec f) {
   GF_CALL(DMRestoreLocalVector(dmU_, &b));
 }
 
+void ElasticOperator::addStiffnessDiagonal(Vec diag) {
+  OwnedVec local;
+  GF_CALL(DMGetLocalVector(dmU_, local.out()));
+  GF_CALL(VecZeroEntries(local));
+  PetscScalar* d = nullptr;
+  GF_CALL(VecGetArray(local, &d));
+  const std::vector<double>& modulus = shuffledModulus_.empty() ? cellModulus_ : shuffledModulus_;
+  for (PetscInt c = 0; c < mesh_.localCells(); ++c)
+    for (int a = 0; a < 8; ++a)
+      for (int k = 0; k < 3; ++k)
+        d[cellDispOff_[8 * c + a] + k] += modulus[c] * element_.stiffness[25 * (3 * a + k)];
+  GF_CALL(VecRestoreArray(local, &d));
+  GF_CALL(DMLocalToGlobal(dmU_, local, ADD_VALUES, diag));
+  Vec v = local.release();
+  GF_CALL(DMRestoreLocalVector(dmU_, &v));
+}
+
 }  // namespace gradfric::fem

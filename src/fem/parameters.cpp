@@ -119,6 +119,10 @@ FemParameters readFemParameters(MPI_Comm comm, RunParameters* record, const Plat
   q.blockedKernel = o.choice("kernel", q.blockedKernel ? "blocked" : "dense", {"dense", "blocked"},
                              "elastic cell kernel: blocked in the cell's mirror basis (0.58 x the dense time), or the "
                              "dense 24x24 product (the reference; equal to round-off)") == "blocked";
+  q.staticPressureStep =
+      o.choice("pressure_step", q.staticPressureStep ? "static" : "dynamic", {"static", "dynamic"},
+               "step 1: static (the pressed equilibrium solved by CG, then sliding from rest; penalty contact, "
+               "else dynamic) or dynamic (pressure ramp and hold in time)") == "static";
   q.vC = o.real("v_c", q.vC, "m/s", "critical velocity v_c of Eq. 1");
   const std::string contact =
       o.choice("contact", "penalty", {"penalty", "kinematic", "none"},

@@ -16,9 +16,11 @@
 
 #include "gradfric/core/petsc_call.hpp"
 #include "gradfric/fem/log_events.hpp"
+#include "gradfric/fem/pressed_equilibrium.hpp"
 
 #include <cmath>
 #include <optional>
+#include <string>
 
 namespace gradfric::fem {
 
@@ -49,6 +51,7 @@ public:
     if (observer_) GF_CALL(TSMonitorSet(ts, snapshotMonitor, this, nullptr));
     if (q_.verbose) GF_CALL(TSMonitorSet(ts, progressMonitor, this, nullptr));
     wall0_ = MPI_Wtime();
+    if (q_.staticPressureStep) startFromPressedEquilibrium(X);
     solvePlateTS(ts);
     if (model_.phase() == Phase::Sliding)
       r_.wallSliding = MPI_Wtime() - wall0_;
@@ -140,6 +143,33 @@ private:
     GF_CALL(TSRestartStep(ts));  // the solution changed outside the integrator
     r_.slideStart = t;
     wall0_ = MPI_Wtime();
+  }
+
+  // -fem_pressure_step static: step 1 without time steps: the pressed equilibrium, the plate at
+  // rest, then sliding from t = 0. Where it does not hold (penalty contact only; a node that would
+  // slip or lift off), the dynamic step runs as usual.
+  void startFromPressedEquilibrium(Vec X) {
+    std::string why = "only with the penalty contact";
+    if (q_.contact && q_.contactMethod == ContactMethod::Penalty) {
+      const PressedEquilibrium e = solvePressedEquilibrium(model_, X);
+      r_.pressureIterations = e.iterations;
+      if (e.holds) {
+        r_.staticPressureStep = true;
+        r_.settledNormalForce = e.normalForce / normal_;
+        r_.wallPressure = MPI_Wtime() - wall0_;
+        if (q_.verbose)
+          GF_CALL(PetscPrintf(model_.comm(),
+                              "  step 1 done (static): %d CG iterations (residual %.1e), normal force %.6f p L^2\n",
+                              e.iterations, e.residual, r_.settledNormalForce));
+        model_.startSliding(X);
+        monitor_->startSliding(X, 0.0);
+        r_.slideStart = 0.0;
+        wall0_ = MPI_Wtime();
+        return;
+      }
+      why = e.why;
+    }
+    GF_CALL(PetscPrintf(model_.comm(), "  static pressure step not used (%s): the dynamic step runs\n", why.c_str()));
   }
 
   void afterStep(TS ts) {

@@ -53,6 +53,9 @@ public:
   // and PETSc's generic PetscFE residual (the reference the kernel is tested against).
   DM displacementDM() const { return dmU_; }
   void forceSpecialised(Vec u, Vec f);
+  // diag += the diagonal of K on a global vector of the displacement DM (Jacobi preconditioner of
+  // the static pressure step).
+  void addStiffnessDiagonal(Vec diag);
   void forceGeneric(Vec u, Vec f);
 
   // Round-off studies (bench_fem_roundoff): the cells of this rank taken in a shuffled order

@@ -23,6 +23,11 @@ struct FemParameters {
   int nx = 100, ny = 100, nz = 5;
   ElementType element = ElementType::Trilinear;  // -fem_element q1 | q1i (docs/fem.md)
   bool blockedKernel = true;  // -fem_kernel blocked | dense (mirror-basis kernel, docs/accuracy_fem.md "Cost")
+  // -fem_pressure_step static | dynamic: step 1 as the pressed equilibrium solved directly
+  // (pressed_equilibrium.hpp; penalty contact only) or as the ramp and hold in time (the
+  // default: CG's sums over ranks make the static state differ between rank counts by ~1e-14,
+  // which the post-peak history amplifies past the 1 vs 2 ranks tolerance; docs/accuracy_fem.md "Cost").
+  bool staticPressureStep = false;
   // The physical plate (-plate_ options, shared with the spring-block model): size L, thickness
   // H, material, pressure, sliding speed and angle, mean local mu_s and mu_k (graded by -grading_).
   Plate plate;

@@ -24,6 +24,8 @@ struct FemRunResult {
   bool stoppedByTS = false;  // the TS's own limits (-ts_max_steps, -ts_max_time) ended the run first
   double slideStart = 0;     // absolute time of the start of sliding [s]
   double settledNormalForce = 0;  // total contact normal force / (p L^2) at the end of step 1
+  bool staticPressureStep = false;  // step 1 was the pressed equilibrium (no time steps)
+  int pressureIterations = 0;       // its CG iterations (-fem_pressure_step static)
   double peakDampingStart = -1;   // time after the start of sliding the peak damping began [s]; < 0: never
   double dt = 0, stableDt = 0;
   long steps = 0;

@@ -1,0 +1,153 @@
+#include "gradfric/fem/pressed_equilibrium.hpp"
+
+#include "gradfric/core/petsc_call.hpp"
+#include "gradfric/core/petsc_handle.hpp"
+
+#include <petscksp.h>
+
+namespace gradfric::fem {
+
+namespace {
+
+using OwnedKSP = PetscHandle<KSP, KSPDestroy>;
+
+// y = (K + P) x on the displacement DM: K from the specialised kernel (f = -K x), P the diagonal
+// penalty springs of the bottom nodes.
+struct PressedOperator {
+  ElasticOperator* elastic = nullptr;
+  Vec penalty = nullptr, stiffnessDiagonal = nullptr;
+};
+
+PetscErrorCode multiply(Mat A, Vec x, Vec y) {
+  PressedOperator* op = nullptr;
+  PetscFunctionBeginUser;
+  PetscCall(MatShellGetContext(A, &op));
+  try {
+    op->elastic->forceSpecialised(x, y);  // y = -K x
+  } catch (...) {
+    SETERRQ(PETSC_COMM_SELF, PETSC_ERR_LIB, "static pressure step: the elastic force failed");
+  }
+  PetscInt n = 0;
+  PetscCall(VecGetLocalSize(y, &n));
+  const PetscScalar *xx = nullptr, *p = nullptr;
+  PetscScalar* yy = nullptr;
+  PetscCall(VecGetArrayRead(x, &xx));
+  PetscCall(VecGetArrayRead(op->penalty, &p));
+  PetscCall(VecGetArray(y, &yy));
+  for (PetscInt i = 0; i < n; ++i) yy[i] = p[i] * xx[i] - yy[i];
+  PetscCall(VecRestoreArray(y, &yy));
+  PetscCall(VecRestoreArrayRead(op->penalty, &p));
+  PetscCall(VecRestoreArrayRead(x, &xx));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode diagonal(Mat A, Vec d) {
+  PressedOperator* op = nullptr;
+  PetscFunctionBeginUser;
+  PetscCall(MatShellGetContext(A, &op));
+  PetscCall(VecCopy(op->stiffnessDiagonal, d));
+  PetscFunctionReturn(0);
+}
+
+}  // namespace
+
+PressedEquilibrium solvePressedEquilibrium(PlateModel& model, Vec X, double relativeTolerance) {
+  PressedEquilibrium out;
+  const FemParameters& q = model.params();
+  DM dmU = model.elastic().displacementDM();
+  OwnedVec u, load, penalty, diag;
+  GF_CALL(DMCreateGlobalVector(dmU, u.out()));
+  GF_CALL(VecDuplicate(u, load.out()));
+  GF_CALL(VecDuplicate(u, penalty.out()));
+  GF_CALL(VecDuplicate(u, diag.out()));
+  PetscInt n = 0;
+  GF_CALL(VecGetLocalSize(u, &n));
+  {  // the load: the top pressure at its full value, from the top loading itself
+    OwnedVec stateForce;
+    GF_CALL(VecDuplicate(X, stateForce.out()));
+    GF_CALL(VecZeroEntries(stateForce));
+    model.top().addPressure(0.0, true, stateForce);
+    const PetscScalar* f = nullptr;
+    PetscScalar* b = nullptr;
+    GF_CALL(VecGetArrayRead(stateForce, &f));
+    GF_CALL(VecGetArray(load, &b));
+    for (PetscInt k = 0; k < n / 3; ++k)
+      for (int d = 0; d < 3; ++d) b[3 * k + d] = f[6 * k + 3 + d];
+    GF_CALL(VecRestoreArray(load, &b));
+    GF_CALL(VecRestoreArrayRead(stateForce, &f));
+  }
+  {  // the contact springs at rest: k A per bottom node, tangential and normal
+    GF_CALL(VecZeroEntries(penalty));
+    PetscScalar* p = nullptr;
+    GF_CALL(VecGetArray(penalty, &p));
+    for (const ContactBoundary::Node& node : model.contact().nodes()) {
+      p[3 * node.block + 0] = p[3 * node.block + 1] = q.kt * node.area;
+      p[3 * node.block + 2] = q.kn * node.area;
+    }
+    GF_CALL(VecRestoreArray(penalty, &p));
+  }
+  GF_CALL(VecCopy(penalty, diag));
+  model.elastic().addStiffnessDiagonal(diag);
+  PressedOperator op{&model.elastic(), penalty, diag};
+  OwnedMat A;
+  GF_CALL(MatCreateShell(model.comm(), n, n, PETSC_DETERMINE, PETSC_DETERMINE, &op, A.out()));
+  GF_CALL(MatShellSetOperation(A, MATOP_MULT, reinterpret_cast<void (*)(void)>(multiply)));
+  GF_CALL(MatShellSetOperation(A, MATOP_GET_DIAGONAL, reinterpret_cast<void (*)(void)>(diagonal)));
+  GF_CALL(MatSetOption(A, MAT_SYMMETRIC, PETSC_TRUE));
+  OwnedKSP ksp;
+  GF_CALL(KSPCreate(model.comm(), ksp.out()));
+  GF_CALL(KSPSetOperators(ksp, A, A));
+  GF_CALL(KSPSetType(ksp, KSPCG));
+  PC pc = nullptr;
+  GF_CALL(KSPGetPC(ksp, &pc));
+  GF_CALL(PCSetType(pc, PCJACOBI));
+  GF_CALL(KSPSetTolerances(ksp, relativeTolerance, 0.0, PETSC_DEFAULT, 100000));
+  GF_CALL(KSPSetNormType(ksp, KSP_NORM_UNPRECONDITIONED));
+  GF_CALL(VecZeroEntries(u));
+  GF_CALL(KSPSolve(ksp, load, u));
+  KSPConvergedReason reason = KSP_CONVERGED_ITERATING;
+  GF_CALL(KSPGetConvergedReason(ksp, &reason));
+  PetscInt iterations = 0;
+  GF_CALL(KSPGetIterationNumber(ksp, &iterations));
+  out.iterations = static_cast<int>(iterations);
+  PetscReal rnorm = 0, bnorm = 0;
+  GF_CALL(KSPGetResidualNorm(ksp, &rnorm));
+  GF_CALL(VecNorm(load, NORM_2, &bnorm));
+  out.residual = bnorm > 0 ? rnorm / bnorm : 0.0;
+  if (reason < 0) {
+    out.why = std::string("CG did not converge (") + KSPConvergedReasons[reason] + ")";
+    return out;
+  }
+  {  // X = [u, 0]
+    const PetscScalar* uu = nullptr;
+    PetscScalar* x = nullptr;
+    GF_CALL(VecGetArrayRead(u, &uu));
+    GF_CALL(VecGetArray(X, &x));
+    for (PetscInt k = 0; k < n / 3; ++k)
+      for (int d = 0; d < 3; ++d) {
+        x[6 * k + d] = uu[3 * k + d];
+        x[6 * k + 3 + d] = 0.0;
+      }
+    GF_CALL(VecRestoreArray(X, &x));
+    GF_CALL(VecRestoreArrayRead(u, &uu));
+  }
+  // The contact law on the solution (anchors at rest, as the springs above): stick everywhere?
+  OwnedVec F;
+  GF_CALL(VecDuplicate(X, F.out()));
+  model.rhs(q.rampTime, X, F);  // step 1 at full pressure
+  const ContactTotals totals = model.contactTotals();
+  out.normalForce = totals.fn;
+  out.slipping = totals.slip;
+  out.open = totals.open;
+  if (totals.slip > 0 || totals.open > 0) {
+    out.why = std::to_string(totals.slip) + " bottom node(s) would slip and " + std::to_string(totals.open) +
+              " lose contact under the static load";
+    GF_CALL(VecZeroEntries(X));
+    return out;
+  }
+  model.commitContact();
+  out.holds = true;
+  return out;
+}
+
+}  // namespace gradfric::fem
