@@ -296,6 +296,9 @@ std::optional<Scene> readScene(MPI_Comm comm, RunParameters* record) {
       const auto at = std::find(allLists.fieldValues.begin(), allLists.fieldValues.end(), q.fieldValue);
       s.pointFields.push_back(valueFields[at - allLists.fieldValues.begin()]);
     }
+  for (int p = 0; p < s.points(); ++p)  // -pressure_response_select grading: a g for every point
+    (void)selectedFor(s.parameters.pressureResponse, s.pointGrading(p), s.pointParameters(p).plate.slidingAngle,
+                      "sweep point " + std::to_string(p));
   if (static_cast<double>(s.points()) * s.realisations > 2e9)
     throw InputError("too many tasks: sweep points x realisations > 2e9");
   if (s.target.active() && s.target.kind == TargetKind::Variation)

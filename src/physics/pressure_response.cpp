@@ -1,9 +1,12 @@
 // The shape g of the load-dependent pressure (pressure_response.hpp).
 #include "gradfric/physics/pressure_response.hpp"
 
+#include "gradfric/core/input_error.hpp"
+
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 namespace gradfric {
 
@@ -36,11 +39,72 @@ std::string PressureResponse::describe() const {
         << edgeLength << " m";
       return s.str();
     case PressureResponseSource::Fem:
-      s << "load-dependent pressure p_i = p_i^0 (1 + mu(t) g_i), g measured by gradfric-fem ("
-        << (map ? map->source : std::string("?")) << ")";
+      s << "load-dependent pressure p_i = p_i^0 (1 + mu(t) g_i), g measured by gradfric-fem (";
+      if (perGrading)
+        s << "per sweep point, the g measured under its grading: " << describeMeasured(*this) << ")";
+      else
+        s << (map ? map->source : std::string("?")) << ")";
       return s.str();
   }
   return {};
+}
+
+std::string ResponseGrading::describe() const {
+  std::ostringstream s;
+  if (graded)
+    s << property << " " << profile << " Delta = " << delta << ", " << bands << " bands";
+  else
+    s << "non-graded";
+  s << ", theta = " << theta;
+  return s.str();
+}
+
+ResponseGrading responseGradingOf(const Grading& g, double thetaDegrees) {
+  ResponseGrading k;
+  k.theta = thetaDegrees;
+  if (!g.active()) return k;
+  k.graded = true;
+  k.property = toString(g.property);
+  k.profile = toString(g.profile);
+  k.delta = g.delta;
+  k.bands = g.bands;
+  return k;
+}
+
+bool sameGrading(const ResponseGrading& a, const ResponseGrading& b) {
+  const double tolerance = 1e-9;
+  if (std::fabs(a.theta - b.theta) > tolerance || a.graded != b.graded) return false;
+  if (!a.graded) return true;
+  return a.property == b.property && a.profile == b.profile && a.bands == b.bands &&
+         std::fabs(a.delta - b.delta) <= tolerance;
+}
+
+std::string describeMeasured(const PressureResponse& r) {
+  std::string text;
+  for (const MeasuredResponse& m : r.measured) {
+    if (!text.empty()) text += "; ";
+    text += m.grading.describe() + " (" + m.file + ")";
+  }
+  return text;
+}
+
+PressureResponse selectedFor(const PressureResponse& r, const Grading& grading, double thetaDegrees,
+                             const std::string& run) {
+  if (!r.perGrading) return r;
+  const ResponseGrading key = responseGradingOf(grading, thetaDegrees);
+  for (const MeasuredResponse& m : r.measured)
+    if (sameGrading(m.grading, key)) {
+      PressureResponse one = r;
+      one.perGrading = false;
+      one.measured = {m};
+      one.map = m.map;
+      return one;
+    }
+  std::string files;
+  for (const MeasuredResponse& m : r.measured) files += (files.empty() ? "" : ",") + m.file;
+  throw InputError("-pressure_response_file", files,
+                   "a g measured under the grading of every run (-pressure_response_select grading): " + run + " (" +
+                       key.describe() + ") has none; the files hold " + describeMeasured(r));
 }
 
 std::vector<double> slidingCoordinates(int nb, double length, double angleDegrees) {

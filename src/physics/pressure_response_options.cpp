@@ -3,14 +3,135 @@
 
 #include "gradfric/core/format.hpp"
 #include "gradfric/core/input_error.hpp"
+#include "gradfric/io/hdf5_attributes.hpp"
 #include "gradfric/physics/field_options.hpp"
+
+#include <hdf5.h>
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <memory>
 #include <sstream>
+#include <utility>
 
 namespace gradfric {
+
+namespace {
+
+std::vector<std::string> splitCommas(const std::string& text) {
+  std::vector<std::string> parts;
+  std::string part;
+  std::istringstream in(text);
+  while (std::getline(in, part, ',')) parts.push_back(part);
+  if (!text.empty() && text.back() == ',') parts.push_back("");
+  return parts;
+}
+
+// The grading a gradfric-fem run measured its g under, from the run's /scene record (every
+// option with its resolved value); refused when the file has none or the plate had property fields.
+ResponseGrading gradingOfFemFile(const std::string& option, const std::string& optionValue, const std::string& path) {
+  auto refuse = [&](const std::string& what) { throw InputError(option, optionValue, path + ": " + what); };
+  H5E_auto2_t handler = nullptr;
+  void* data = nullptr;
+  H5Eget_auto2(H5E_DEFAULT, &handler, &data);
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  struct Restore {
+    H5E_auto2_t h;
+    void* d;
+    ~Restore() { H5Eset_auto2(H5E_DEFAULT, h, d); }
+  } restore{handler, data};
+  std::map<std::string, std::string> scene;
+  {
+    const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+    if (file < 0) refuse("a readable HDF5 file");
+    io::H5File closeFile(file);
+    if (H5Lexists(file, "scene", H5P_DEFAULT) <= 0)
+      refuse("a gradfric-fem results file with its /scene record (the grading g was measured under; "
+             "-pressure_response_select grading needs it)");
+    const hid_t group = H5Gopen2(file, "scene", H5P_DEFAULT);
+    if (group < 0) refuse("a readable /scene group");
+    io::H5Group closeGroup(group);
+    for (const auto& [k, v] : io::readStringAttributes(group)) scene[k] = v;
+  }
+  auto value = [&](const std::string& name) {
+    const auto at = scene.find(name);
+    if (at == scene.end()) refuse("a /scene record with '" + name + "' (written by gradfric-fem)");
+    return at->second;
+  };
+  auto number = [&](const std::string& name) {
+    const std::string text = value(name);
+    char* end = nullptr;
+    const double v = std::strtod(text.c_str(), &end);
+    if (end == text.c_str() || *end != '\0' || !std::isfinite(v)) refuse("a number for /scene " + name + " (it is '" + text + "')");
+    return v;
+  };
+  for (const char* field : {"field_E_profile", "field_mu_profile", "field_mu_s_profile", "field_mu_k_profile", "field_p_profile"}) {
+    const auto at = scene.find(field);
+    if (at != scene.end() && at->second != "none")
+      refuse(std::string("a g measured without property fields (the run set -") + field + " " + at->second + ")");
+  }
+  Grading g;
+  const std::string profile = value("grading_profile"), property = value("grading_property");
+  g.profile = profile == "linear" ? GradingProfile::Linear : profile == "triangular" ? GradingProfile::Triangular
+                                                                                       : GradingProfile::None;
+  g.property = property == "friction" ? GradedProperty::Friction : property == "both" ? GradedProperty::Both
+                                                                                        : GradedProperty::YoungsModulus;
+  g.delta = number("grading_delta");
+  g.bands = static_cast<int>(number("grading_bands"));
+  return responseGradingOf(g, number("plate_theta"));
+}
+
+// The top of the loading window gradfric-fem fitted the file's g on (the attribute mu_window of
+// /pressure_response/g), or 0 when the file has none.
+double measuredUpTo(const std::string& path) {
+  H5E_auto2_t handler = nullptr;
+  void* data = nullptr;
+  H5Eget_auto2(H5E_DEFAULT, &handler, &data);
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  double window[2] = {0.0, 0.0};
+  const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  if (file >= 0) {
+    const hid_t set = H5Dopen2(file, kPressureResponseDataset, H5P_DEFAULT);
+    if (set >= 0) {
+      if (H5Aexists(set, "mu_window") > 0) {
+        const hid_t a = H5Aopen(set, "mu_window", H5P_DEFAULT);
+        const hid_t space = H5Aget_space(a);
+        if (H5Sget_simple_extent_npoints(space) != 2 || H5Aread(a, H5T_NATIVE_DOUBLE, window) < 0) window[1] = 0.0;
+        H5Sclose(space);
+        H5Aclose(a);
+      }
+      H5Dclose(set);
+    }
+    H5Fclose(file);
+  }
+  H5Eset_auto2(H5E_DEFAULT, handler, data);
+  return std::isfinite(window[1]) && window[1] > 0.0 ? window[1] : 0.0;
+}
+
+// One file's g, refused when it is not a finite map covering the plate (value: the option's whole text).
+FieldMap readResponseMap(const std::string& option, const std::string& value, const std::string& path,
+                         const Plate& plate) {
+  const std::string where = value == path ? "" : path + ": ";
+  FieldMap map = readHdf5Map(option, path, kPressureResponseDataset, "written by gradfric-fem -fem_output");
+  for (std::size_t k = 0; k < map.values.size(); ++k)
+    if (!std::isfinite(map.values[k])) {
+      std::ostringstream text;
+      text << where << "a finite g everywhere (pixel " << k % map.nx << ", " << k / map.nx << " is not)";
+      throw InputError(option, value, text.str());
+    }
+  const double tolerance = 1e-9 * plate.length;
+  if (map.x0 > tolerance || map.y0 > tolerance || map.x1 < plate.length - tolerance ||
+      map.y1 < plate.length - tolerance) {
+    std::ostringstream box;
+    box << where << "a map covering the plate [0, " << plate.length << "]^2 m (its extent is " << map.x0 << ", "
+        << map.x1 << ", " << map.y0 << ", " << map.y1 << "; -plate_L as in the FEM run)";
+    throw InputError(option, value, box.str());
+  }
+  return map;
+}
+
+}  // namespace
 
 PressureResponse readPressureResponse(MPI_Comm comm, RunParameters* record, const Plate& plate, int nb) {
   OptionReader o(comm, "pressure_", "Load-dependent pressure of the spring-block model (docs/fields.md)", record);
@@ -25,7 +146,16 @@ PressureResponse readPressureResponse(MPI_Comm comm, RunParameters* record, cons
                                            "leading and trailing edges (in (0, L/2])",
                                            formatReal(kDefaultEdgeOverThickness) + " H");
   const std::string file =
-      o.text("response_file", "", "fem: gradfric-fem results file whose /pressure_response/g is the shape g");
+      o.text("response_file", "",
+             "fem: gradfric-fem results file(s) whose /pressure_response/g is the shape g (comma-separated with "
+             "-pressure_response_select grading)");
+  const std::string select =
+      o.choice("response_select", "same", {"same", "grading"},
+               "fem: same (the one file's g at every sweep point) or grading (each sweep point takes the file whose "
+               "FEM run had its grading: property, profile, Delta, bands, theta)");
+  const std::string selectOption = o.fullName("response_select");
+  if (source != "fem" && o.wasSet("response_select"))
+    throw InputError(selectOption, select, "only with -pressure_response fem");
   if (source == "none") {
     if (edge) throw InputError(edgeOption, formatReal(*edge), "only with -pressure_response moment");
     if (!file.empty()) throw InputError(fileOption, file, "only with -pressure_response fem");
@@ -51,36 +181,59 @@ PressureResponse readPressureResponse(MPI_Comm comm, RunParameters* record, cons
     if (edge) throw InputError(edgeOption, formatReal(*edge), "only with -pressure_response moment");
     if (file.empty()) throw InputError(fileOption, "(not set)", "a gradfric-fem results file with -pressure_response fem");
     r.source = PressureResponseSource::Fem;
-    FieldMap map = readHdf5Map(fileOption, file, kPressureResponseDataset, "written by gradfric-fem -fem_output");
-    for (std::size_t k = 0; k < map.values.size(); ++k)
-      if (!std::isfinite(map.values[k])) {
-        std::ostringstream where;
-        where << "a finite g everywhere (pixel " << k % map.nx << ", " << k / map.nx << " is not)";
-        throw InputError(fileOption, file, where.str());
+    const std::vector<std::string> files = splitCommas(file);
+    r.perGrading = select == "grading";
+    if (!r.perGrading && files.size() != 1)
+      throw InputError(fileOption, file,
+                       "one file with -pressure_response_select same (several with -pressure_response_select grading)");
+    for (const std::string& path : files) {
+      if (path.empty()) throw InputError(fileOption, file, "comma-separated file names, none empty");
+      MeasuredResponse m;
+      m.file = path;
+      m.measuredUpTo = measuredUpTo(path);
+      m.map = std::make_shared<const FieldMap>(readResponseMap(fileOption, file, path, plate));
+      if (r.perGrading) {
+        m.grading = gradingOfFemFile(fileOption, file, path);
+        for (const MeasuredResponse& earlier : r.measured)
+          if (sameGrading(earlier.grading, m.grading))
+            throw InputError(fileOption, file,
+                             "one file per grading (" + earlier.file + " and " + path + " both hold " +
+                                 m.grading.describe() + ")");
       }
-    const double tolerance = 1e-9 * plate.length;
-    if (map.x0 > tolerance || map.y0 > tolerance || map.x1 < plate.length - tolerance ||
-        map.y1 < plate.length - tolerance) {
-      std::ostringstream box;
-      box << "a map covering the plate [0, " << plate.length << "]^2 m (its extent is " << map.x0 << ", " << map.x1
-          << ", " << map.y0 << ", " << map.y1 << "; -plate_L as in the FEM run)";
-      throw InputError(fileOption, file, box.str());
+      r.measured.push_back(std::move(m));
     }
-    r.map = std::make_shared<const FieldMap>(std::move(map));
+    if (!r.perGrading) r.map = r.measured.front().map;
     blameOption = fileOption;
     blameValue = file;
   }
-  // The trailing edge unloads: its pressure must stay positive at least up to the plate's mean mu_s
-  // (beyond, a block whose factor would turn negative lifts off: strength zero).
-  const std::vector<double> g = pressureResponseShape(r, nb, plate.length, plate.thickness, plate.slidingAngle);
-  const auto smallest = std::min_element(g.begin(), g.end());
-  if (1.0 + plate.muStatic * *smallest <= 0.0) {
-    const std::size_t i = std::size_t(smallest - g.begin());
-    std::ostringstream allowed;
-    allowed << "a shape whose pressure stays positive up to mu = -plate_mu_s = " << plate.muStatic << " (g = "
-            << *smallest << " at the block x = " << (i % nb + 0.5) * plate.length / nb
-            << " m, y = " << (i / nb + 0.5) * plate.length / nb << " m: 1 + mu_s g <= 0)";
-    throw InputError(blameOption, blameValue, allowed.str());
+  // The trailing edge unloads: its pressure must stay positive at least up to the top of the window
+  // the FEM measures g on, 0.8 mu_s (beyond, a block whose factor would turn negative lifts off:
+  // strength zero, counted by the coupling's record).
+  // Every file's shape under -pressure_response_select grading; a measured g up to the top of the
+  // window the FEM fitted it on (its own mu_s times 0.8), when the file says.
+  std::vector<std::pair<PressureResponse, double>> shapes;
+  for (const MeasuredResponse& m : r.measured) {
+    PressureResponse one = r;
+    one.perGrading = false;
+    one.map = m.map;
+    shapes.push_back({one, m.measuredUpTo > 0.0 ? m.measuredUpTo : kResponseWindowHigh * plate.muStatic});
+  }
+  if (r.measured.empty()) shapes.push_back({r, kResponseWindowHigh * plate.muStatic});
+  for (const auto& [one, muChecked] : shapes) {
+    const std::vector<double> g = pressureResponseShape(one, nb, plate.length, plate.thickness, plate.slidingAngle);
+    const auto smallest = std::min_element(g.begin(), g.end());
+    if (1.0 + muChecked * *smallest <= 0.0) {
+      const std::size_t i = std::size_t(smallest - g.begin());
+      std::ostringstream allowed;
+      if (r.perGrading) allowed << one.map->source << ": ";
+      allowed << "a shape whose pressure stays positive up to mu = "
+              << (r.measured.empty() ? formatReal(kResponseWindowHigh) + " -plate_mu_s = " : std::string("")) << muChecked
+              << (r.measured.empty() ? "" : " (the top of the FEM's loading window; 0.8 -plate_mu_s without one)")
+              << " (g = " << *smallest << " at the block x = "
+              << (i % nb + 0.5) * plate.length / nb << " m, y = " << (i / nb + 0.5) * plate.length / nb
+              << " m: 1 + " << muChecked << " g <= 0)";
+      throw InputError(blameOption, blameValue, allowed.str());
+    }
   }
   return r;
 }

@@ -140,8 +140,9 @@ std::optional<PressureCoupling> pressureCouplingFor(const Parameters& p, const G
     for (double& w : weights) w /= p.plate.pressure;
   }
   const double angle = p.plate.slidingAngle;
-  std::vector<double> shape =
-      pressureResponseShape(p.pressureResponse, nb, p.plate.length, p.plate.thickness, angle, weights);
+  // Under -pressure_response_select grading: the g measured under this run's grading.
+  std::vector<double> shape = pressureResponseShape(selectedFor(p.pressureResponse, grading, angle), nb,
+                                                    p.plate.length, p.plate.thickness, angle, weights);
   return PressureCoupling(friction, nb, std::move(shape), slidingCoordinates(nb, p.plate.length, angle),
                           std::move(weights), p.plate.thickness);
 }
@@ -239,16 +240,24 @@ std::vector<std::string> activeEffects(const Parameters& p, const Grading& g, co
                       "; mu(t) of the previous step (explicit), strengths mu_s,i F_n,i and mu_k,i F_n,i rescaled every step");
     const int nb = p.blocksPerSide;
     const double angle = p.plate.slidingAngle;
-    const std::vector<double> g =
-        pressureResponseShape(p.pressureResponse, nb, p.plate.length, p.plate.thickness, angle);
-    const ShapeMoments m = shapeMoments(g, slidingCoordinates(nb, p.plate.length, angle));
-    const auto [lo, hi] = std::minmax_element(g.begin(), g.end());
-    std::ostringstream shape;
-    shape.precision(4);
-    shape << "pressure response g on the blocks: " << *lo << " (most unloaded) to " << *hi
-          << " (most loaded), first moment " << m.moment / p.plate.thickness << " H along the sliding direction, mean "
-          << m.mean;
-    effects.push_back(shape.str());
+    // Under -pressure_response_select grading the shape of this grading, if a file holds one.
+    const ResponseGrading key = responseGradingOf(g, angle);
+    const auto& measured = p.pressureResponse.measured;
+    const bool shown = !p.pressureResponse.perGrading ||
+                       std::any_of(measured.begin(), measured.end(),
+                                   [&](const MeasuredResponse& m) { return sameGrading(m.grading, key); });
+    if (shown) {
+      const std::vector<double> shape = pressureResponseShape(selectedFor(p.pressureResponse, g, angle), nb,
+                                                              p.plate.length, p.plate.thickness, angle);
+      const ShapeMoments m = shapeMoments(shape, slidingCoordinates(nb, p.plate.length, angle));
+      const auto [lo, hi] = std::minmax_element(shape.begin(), shape.end());
+      std::ostringstream text;
+      text.precision(4);
+      text << "pressure response g on the blocks" << (p.pressureResponse.perGrading ? " (" + key.describe() + ")" : "")
+           << ": " << *lo << " (most unloaded) to " << *hi << " (most loaded), first moment "
+           << m.moment / p.plate.thickness << " H along the sliding direction, mean " << m.mean;
+      effects.push_back(text.str());
+    }
     effects.push_back(p.skipIdle ? "idle work skipped: the quiet phase before the first slip in closed form, ended at "
                                    "or before the first slip under the rising load (bit for bit)"
                                  : "every block stepped from t = 0 (-sbm_skip_idle false)");

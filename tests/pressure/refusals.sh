@@ -50,12 +50,33 @@ s "-pressure_response_file" "dataset '/pressure_response/g'" "gradfric-fem -fem_
 s "-pressure_response_file" "finite g everywhere (pixel 1, 4" -- -pressure_response fem -pressure_response_file "$scratch/nan.h5"
 s "-pressure_response_file" "covering the plate" -- -pressure_response fem -pressure_response_file "$scratch/small.h5"
 # The unloaded trailing edge: a concentration so sharp that a block's pressure turns negative
-# before mu(t) reaches -plate_mu_s (120 blocks, lambda = H / 10: g = -1.17 at the trailing edge).
-s "-pressure_response_edge = 5e-06" "pressure stays positive up to mu = -plate_mu_s = 1" "x = 2.08333e-05 m" -- -sbm_N 120 -pressure_response moment -pressure_response_edge 5e-6
+# before mu(t) reaches 0.8 -plate_mu_s, the top of the FEM's regression window (200 blocks,
+# lambda = H / 10: g = -2.0 at the trailing edge).
+s "-pressure_response_edge = 5e-06" "pressure stays positive up to mu = 0.8 -plate_mu_s = 0.8" "x = 1.25e-05 m" -- -sbm_N 200 -pressure_response moment -pressure_response_edge 5e-6
 s "-pressure_respons" "did you mean -pressure_response" -- -pressure_respons moment
+# -pressure_response_select grading: a g for every sweep point's grading, each file once, with its
+# /scene record (tests/pressure/make_response_files.py writes the stand-ins).
+/usr/bin/python3 "$source_dir/tests/pressure/make_response_files.py" "$scratch" || exit 1
+d=$scratch
+pair="$d/none.h5,$d/E+0.2.h5"
+s "-pressure_response_select = delta" "same, grading" -- -pressure_response fem -pressure_response_file "$d/none.h5" -pressure_response_select delta
+s "-pressure_response_select = grading" "only with -pressure_response fem" -- -pressure_response moment -pressure_response_select grading
+s "-pressure_response_file = $pair" "one file with -pressure_response_select same" -- -pressure_response fem -pressure_response_file "$pair"
+s "-pressure_response_file = $pair," "comma-separated file names, none empty" -- -pressure_response fem -pressure_response_select grading -pressure_response_file "$pair,"
+s "-pressure_response_file = $d/noscene.h5" "/scene record" -- -pressure_response fem -pressure_response_select grading -pressure_response_file "$d/noscene.h5"
+s "-pressure_response_file = $d/fields.h5" "without property fields" "-field_E_profile power" -- -pressure_response fem -pressure_response_select grading -pressure_response_file "$d/fields.h5"
+s "-pressure_response_file = $pair,$d/E+0.2-copy.h5" "one file per grading" -- -pressure_response fem -pressure_response_select grading -pressure_response_file "$pair,$d/E+0.2-copy.h5"
+missing=(-grading_profile linear -grading_property E -ensemble_delta 0,0.2,-0.2 -pressure_response fem
+         -pressure_response_select grading -pressure_response_file "$pair")
+s "-pressure_response_file = $pair" "sweep point 2 (E linear Delta = -0.2, 10 bands, theta = 0) has none" \
+  "the files hold non-graded, theta = 0 ($d/none.h5); E linear Delta = 0.2, 10 bands, theta = 0 ($d/E+0.2.h5)" -- "${missing[@]}"
+s "sweep point 0 (friction linear Delta = 0.2" "has none" -- -grading_profile linear -grading_property friction -grading_delta 0.2 -pressure_response fem -pressure_response_select grading -pressure_response_file "$pair"
+s "sweep point 1 (non-graded, theta = 90) has none" -- -ensemble_theta 0,90 -pressure_response fem -pressure_response_select grading -pressure_response_file "$pair"
+sbm_expect 2 "-pressure_response_file = $pair" "sweep point 2 (E linear Delta = -0.2" "has none" -- "${missing[@]}"
+
 # Every rank refuses (no hang, no file).
 sbm_expect 2 "-pressure_response_file = (not set)" -- -pressure_response fem
-sbm_expect 2 "-pressure_response_edge = 5e-06" "pressure stays positive" -- -sbm_N 120 -pressure_response moment -pressure_response_edge 5e-6
+sbm_expect 2 "-pressure_response_edge = 5e-06" "pressure stays positive" -- -sbm_N 200 -pressure_response moment -pressure_response_edge 5e-6
 
 if [ $failures -ne 0 ]; then echo "$failures refusal(s) wrong"; exit 1; fi
 echo "all pressure-response refusals correct"

@@ -2,8 +2,11 @@
 // sbm/pressure_coupling.hpp): a zero shape is the uniform model bit for bit; the moment-balance
 // shape has zero mean and first moment H at any angle and under a static pressure field; a run
 // with it keeps the total normal force p L^2 and the moment balance H F at every step, and starts
-// slipping at the trailing edge.
+// slipping at the trailing edge. Under -pressure_response_select grading each run takes the g of
+// its grading (or is refused naming the option), zero shapes stay the uniform model bit for bit,
+// and each g keeps the total normal force.
 #include "../sbm/sbm_support.hpp"
+#include "gradfric/core/input_error.hpp"
 #include "gradfric/physics/pressure_response.hpp"
 #include "gradfric/sbm/lattice.hpp"
 
@@ -12,6 +15,8 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <string>
+#include <utility>
 
 using namespace gradfric;
 using namespace gradfric::sbm;
@@ -171,4 +176,123 @@ TEST(PressureResponse, QuietPhaseJumpStaysExactUnderTheRisingLoad) {
     // The first slip comes well into the loading: there was a quiet phase to jump over.
     EXPECT_GT(a.friction.firstSlipTime, 0.2 * jump.loadingTime());
   }
+}
+
+// -pressure_response_select grading: a g per grading, selected by each run's grading and angle.
+namespace {
+
+// A map on a 21 x 21 node grid (pixel centres on the nodes, as gradfric-fem writes it) of the
+// edge-concentrated tilt g = amplitude ((2x/L - 1)^9 + shift); shift 0 and amplitude 0: zero.
+std::shared_ptr<const FieldMap> tiltMap(double amplitude, double shift, const std::string& name) {
+  const double L = Plate{}.length, h = L / 20;
+  auto map = std::make_shared<FieldMap>();
+  map->nx = map->ny = 21;
+  map->x0 = map->y0 = -0.5 * h;
+  map->x1 = map->y1 = L + 0.5 * h;
+  for (int j = 0; j < 21; ++j)
+    for (int i = 0; i < 21; ++i) map->values.push_back(amplitude * (std::pow(2.0 * i / 20 - 1.0, 9) + shift));
+  map->source = name;
+  return map;
+}
+
+ResponseGrading keyOf(GradedProperty property, double delta) {
+  return responseGradingOf(Grading{GradingProfile::Linear, property, delta, 10}, 0.0);
+}
+
+// Non-graded, E +0.2 and E -0.2, each its own map.
+PressureResponse perGrading(double scale) {
+  PressureResponse r;
+  r.source = PressureResponseSource::Fem;
+  r.perGrading = true;
+  r.measured = {{tiltMap(0.8 * scale, 0.0, "none.h5"), responseGradingOf(Grading{}, 0.0), "none.h5"},
+                {tiltMap(0.6 * scale, 0.01 * scale, "E+0.2.h5"), keyOf(GradedProperty::YoungsModulus, 0.2), "E+0.2.h5"},
+                {tiltMap(1.0 * scale, -0.01 * scale, "E-0.2.h5"), keyOf(GradedProperty::YoungsModulus, -0.2), "E-0.2.h5"}};
+  return r;
+}
+
+const std::vector<Grading> kSweep = {Grading{}, Grading{GradingProfile::Linear, GradedProperty::YoungsModulus, 0.2, 10},
+                                     Grading{GradingProfile::Linear, GradedProperty::YoungsModulus, -0.2, 10}};
+
+}  // namespace
+
+TEST(PressureResponsePerGrading, EachRunTakesTheGOfItsGrading) {
+  const PressureResponse r = perGrading(1.0);
+  for (std::size_t k = 0; k < kSweep.size(); ++k) {
+    const PressureResponse one = selectedFor(r, kSweep[k], 0.0, "point");
+    EXPECT_FALSE(one.perGrading);
+    EXPECT_EQ(one.map, r.measured[k].map) << k;
+  }
+  // Every non-graded plate has the non-graded g: Delta = 0 under any profile and property.
+  EXPECT_EQ(selectedFor(r, Grading{GradingProfile::Linear, GradedProperty::Friction, 0.0, 10}, 0.0).map,
+            r.measured[0].map);
+  // One g for every run without the selection.
+  PressureResponse same = r;
+  same.perGrading = false;
+  same.map = r.measured[1].map;
+  EXPECT_EQ(selectedFor(same, kSweep[2], 0.0).map, r.measured[1].map);
+  // None for another property, Delta, band count or angle: the option, its value, the run and
+  // the gradings the files hold.
+  const Grading friction{GradingProfile::Linear, GradedProperty::Friction, 0.2, 10};
+  const Grading wider{GradingProfile::Linear, GradedProperty::YoungsModulus, 0.4, 10};
+  const Grading fewerBands{GradingProfile::Linear, GradedProperty::YoungsModulus, 0.2, 5};
+  for (const auto& [grading, theta] : {std::pair{friction, 0.0}, std::pair{wider, 0.0}, std::pair{fewerBands, 0.0},
+                                       std::pair{kSweep[1], 90.0}, std::pair{Grading{}, 90.0}}) {
+    try {
+      (void)selectedFor(r, grading, theta, "sweep point 7");
+      ADD_FAILURE() << describe(grading) << " at theta " << theta << " was given a g";
+    } catch (const InputError& e) {
+      const std::string m = e.what();
+      EXPECT_EQ(e.option(), "-pressure_response_file");
+      EXPECT_NE(m.find("-pressure_response_file = none.h5,E+0.2.h5,E-0.2.h5"), std::string::npos) << m;
+      EXPECT_NE(m.find("sweep point 7 (" + responseGradingOf(grading, theta).describe() + ") has none"),
+                std::string::npos) << m;
+      EXPECT_NE(m.find("E linear Delta = -0.2, 10 bands, theta = 0 (E-0.2.h5)"), std::string::npos) << m;
+    }
+  }
+}
+
+TEST(PressureResponsePerGrading, ZeroShapesAreTheUniformModelBitForBit) {
+  const PressureResponse zeros = perGrading(0.0);
+  for (const Grading& g : kSweep) {
+    const Parameters uniform = sbm::testing::paperParameters(16, 0.028, g);
+    Parameters coupled = uniform;
+    coupled.pressureResponse = zeros;
+    const Result a = run(uniform, g), b = run(coupled, g);
+    EXPECT_TRUE(b.pressureCoupling.active);
+    EXPECT_EQ(a.friction.muStatic, b.friction.muStatic) << describe(g);
+    EXPECT_EQ(a.friction.peakTime, b.friction.peakTime);
+    EXPECT_EQ(a.steps, b.steps);
+    ASSERT_EQ(a.friction.mu.size(), b.friction.mu.size());
+    for (std::size_t i = 0; i < a.friction.mu.size(); ++i) ASSERT_EQ(a.friction.mu[i], b.friction.mu[i]) << i;
+  }
+}
+
+TEST(PressureResponsePerGrading, EveryShapeKeepsTheNormalForceAndIsTheOneSelected) {
+  const PressureResponse r = perGrading(1.0);
+  std::vector<double> peaks;
+  for (std::size_t k = 0; k < kSweep.size(); ++k) {
+    const Grading& g = kSweep[k];
+    Parameters p = sbm::testing::paperParameters(16, 0.028, g);
+    p.pressureResponse = r;
+    const Result coupled = run(p, g);
+    const PressureCouplingRecord& c = coupled.pressureCoupling;
+    ASSERT_TRUE(c.active);
+    EXPECT_GT(c.updates, coupled.steps / 2);
+    EXPECT_LT(c.largestForceError, 1e-13) << describe(g);  // sum F_n,i = p L^2 with this point's g
+    EXPECT_LT(c.smallestFactor, 1.0);
+    // The same run as with that one file for every point: the selection hands the run its g.
+    Parameters one = p;
+    one.pressureResponse.perGrading = false;
+    one.pressureResponse.map = r.measured[k].map;
+    const Result alone = run(one, g);
+    EXPECT_EQ(coupled.friction.muStatic, alone.friction.muStatic) << describe(g);
+    EXPECT_EQ(coupled.steps, alone.steps);
+    peaks.push_back(coupled.friction.muStatic);
+  }
+  // The three g differ, and so do the runs with them (the test can see a wrong selection).
+  Parameters p = sbm::testing::paperParameters(16, 0.028, kSweep[1]);
+  p.pressureResponse = perGrading(1.0);
+  p.pressureResponse.perGrading = false;
+  p.pressureResponse.map = p.pressureResponse.measured[2].map;  // E -0.2's g on the E +0.2 plate
+  EXPECT_NE(run(p, kSweep[1]).friction.muStatic, peaks[1]);
 }

@@ -9,6 +9,7 @@
 // grid, with the `extent` of a property-field map (pixel centres on the nodes): the SBM reads it
 // with -pressure_response fem -pressure_response_file run.h5.
 #include "gradfric/fem/plate_model.hpp"
+#include "gradfric/physics/pressure_response.hpp"
 
 #include <vector>
 
@@ -27,7 +28,7 @@ struct PressureResponseMap {
 class PressureResponseRecorder {
 public:
   static constexpr double kBinWidth = 0.02;
-  static constexpr double kWindowLow = 0.2, kWindowHigh = 0.8;  // fractions of mu_s
+  static constexpr double kWindowLow = kResponseWindowLow, kWindowHigh = kResponseWindowHigh;  // fractions of mu_s
 
   explicit PressureResponseRecorder(const PlateModel& model);  // collective
   // After a step of the sliding phase (collective: the total contact force over ranks).
