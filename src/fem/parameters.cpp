@@ -35,6 +35,13 @@ std::string describeContact(const FemParameters& given) {
   return text;
 }
 
+std::string describeFrictionState(const FemParameters& q) {
+  if (!(q.slipLength > 0)) return "no slip length (a stopped node is back at mu_s)";
+  char text[160];
+  std::snprintf(text, sizeof text, "slip state: strength follows Eq. 1 over D_c %.3g m of slip", q.slipLength);
+  return text;
+}
+
 std::string describeDamping(const FemParameters& q) {
   std::string text;
   auto add = [&](const std::string& part) { text += (text.empty() ? "" : ", ") + part; };
@@ -120,6 +127,9 @@ FemParameters readFemParameters(MPI_Comm comm, RunParameters* record, const Plat
                              "elastic cell kernel: dense 24x24 product, or blocked in the cell's mirror basis "
                              "(~1.7x faster, equal to round-off)") == "blocked";
   q.vC = o.real("v_c", q.vC, "m/s", "critical velocity v_c of Eq. 1");
+  q.slipLength = o.real("slip_length", q.slipLength, "m",
+                        "slip length D_c of the friction state: a node's strength follows Eq. 1's steady value over "
+                        "this slip (0: Eq. 1 at once, a stopped node back at mu_s)");
   const std::string contact =
       o.choice("contact", "penalty", {"penalty", "kinematic", "none"},
                "contact with the rigid plane: penalty springs, kinematic (exact, predictor-corrector; gfverlet only), "
@@ -179,6 +189,7 @@ FemParameters readFemParameters(MPI_Comm comm, RunParameters* record, const Plat
   o.requireAtLeast("ny", q.ny, 1);
   o.requireAtLeast("nz", q.nz, 1);
   o.requirePositive("v_c", q.vC, "m/s");
+  o.requireRange("slip_length", q.slipLength, 0.0, q.plate.thickness, "0 <= D_c <= H (the plate's thickness)");
   if (o.wasSet("kn")) o.requirePositive("kn", q.kn, "Pa/m");
   if (o.wasSet("kt")) o.requirePositive("kt", q.kt, "Pa/m");
   if (o.wasSet("settle_damping")) o.requireNonNegative("settle_damping", q.settleDamping, "1/s");

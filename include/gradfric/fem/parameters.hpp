@@ -28,6 +28,10 @@ struct FemParameters {
   Plate plate;
   // Friction law (paper Eq. 1)
   double vC = 1e-4;      // critical velocity v_c [m/s]
+  // Slip length D_c of the nodes' friction state [m] (physics/slip_state_law.hpp): a node's
+  // strength relaxes to Eq. 1's steady value over this slip; 0: Eq. 1 at once (docs/accuracy_fem.md,
+  // "Steady sliding after the peak").
+  double slipLength = 0.0;
   bool contact = true;   // false: free bottom face (-fem_contact none, testing)
   ContactMethod contactMethod = ContactMethod::Penalty;
   // Penalty stiffnesses [Pa/m]; 0 = derived penaltyFactor G/H (docs/accuracy_fem.md, "Contact"):
@@ -104,6 +108,7 @@ struct FemParameters {
 // the slope error they carry) and the damping of the sliding step.
 std::string describeContact(const FemParameters& q);
 std::string describeDamping(const FemParameters& q);
+std::string describeFrictionState(const FemParameters& q);  // -fem_slip_length in words
 
 // Reads and validates every -fem_ option (derived defaults recorded as such).
 FemParameters readFemParameters(MPI_Comm comm, RunParameters* record, const Plate& plate);
