@@ -10,7 +10,8 @@
 namespace gradfric::fem {
 
 ContactBoundary::ContactBoundary(const PlateMesh& mesh, const PenaltyStiffness& stiffness, double muStatic,
-                                 double muKinetic, double criticalVelocity, const Grading& grading, double slipLength)
+                                 double muKinetic, double criticalVelocity, const Grading& grading, double slipLength,
+                                 bool healingOnly)
     : comm_(mesh.comm()), stiffness_(stiffness) {
   const double length = mesh.size().length;
   const std::vector<double> area = mesh.sumOverFaces(FaceSet::Bottom);
@@ -36,7 +37,8 @@ ContactBoundary::ContactBoundary(const PlateMesh& mesh, const PenaltyStiffness& 
   sites.columns = static_cast<int>(nodes_.size());
   FrictionLawSettings settings;
   settings.criticalVelocity = criticalVelocity;
-  law_ = ContactLaw::make(ExponentialVelocityWeakening::make(std::move(sites), settings), slipLength, nodes_.size());
+  law_ = ContactLaw::make(ExponentialVelocityWeakening::make(std::move(sites), settings), slipLength, nodes_.size(),
+                          healingOnly);
 }
 
 ContactTotals ContactBoundary::addForce(Vec X, Vec F) {

@@ -38,7 +38,8 @@ std::string describeContact(const FemParameters& given) {
 std::string describeFrictionState(const FemParameters& q) {
   if (!(q.slipLength > 0)) return "no slip length (a stopped node is back at mu_s)";
   char text[160];
-  std::snprintf(text, sizeof text, "slip state: strength follows Eq. 1 over D_c %.3g m of slip", q.slipLength);
+  std::snprintf(text, sizeof text, "slip state: strength follows Eq. 1 over D_c %.3g m of slip (%s)", q.slipLength,
+                q.slipHealingOnly ? "weakening at once, healing over D_c" : "slip law");
   return text;
 }
 
@@ -130,6 +131,9 @@ FemParameters readFemParameters(MPI_Comm comm, RunParameters* record, const Plat
   q.slipLength = o.real("slip_length", q.slipLength, "m",
                         "slip length D_c of the friction state: a node's strength follows Eq. 1's steady value over "
                         "this slip (0: Eq. 1 at once, a stopped node back at mu_s)");
+  q.slipHealingOnly = o.choice("slip_evolution", q.slipHealingOnly ? "healing" : "slip", {"slip", "healing"},
+                               "how the slip state follows Eq. 1: slip (Ruina's slip law, weakening and healing over "
+                               "D_c) or healing (weakening at once as Eq. 1, only the healing over D_c)") == "healing";
   const std::string contact =
       o.choice("contact", "penalty", {"penalty", "kinematic", "none"},
                "contact with the rigid plane: penalty springs, kinematic (exact, predictor-corrector; gfverlet only), "

@@ -118,3 +118,34 @@ TEST(SlipStateLaw, ASiteThatStopsKeepsItsWeakenedStrength) {
   // Other sites are untouched.
   EXPECT_EQ(law.strength[1], 0.8);
 }
+
+// Healing only (the FEM's default): the strength falls with the slip rate at once, exactly as
+// the law, and only its rise back as the site slows down takes the slip D_c.
+TEST(SlipStateLaw, HealingOnlyWeakensAtOnceAsTheLawAndHealsOverTheSlipLength) {
+  const ExponentialVelocityWeakening plain = equationOne();
+  const double dc = 1e-8;
+  auto law = WithSlipLength<ExponentialVelocityWeakening>::make(plain, dc, 3, true);
+  // From mu_s, sliding at any speed gives the law's value at once, bit for bit, whatever the slip.
+  for (double v : {1e-6, 1e-4, 1e-3})
+    for (double slip : {0.0, 1e-12, 1e-6})
+      EXPECT_EQ(law.strengthAfter(0, v, slip, true), plain.slidingStrength(kMuS, kMuK, v));
+  slide(law, 1e-3, 1e-11, 1);
+  EXPECT_EQ(law.strength[0], plain.slidingStrength(kMuS, kMuK, 1e-3));
+  // Slowing down to v_c / 2: the strength rises towards Eq. 1 there over D_c, exactly.
+  const double before = law.strength[0], after = eq1(kMuS, kMuK, 5e-5);
+  auto coarse = law, fine = law;
+  slide(coarse, 5e-5, dc, 1);
+  slide(fine, 5e-5, dc, 100);
+  EXPECT_NEAR((coarse.strength[0] - after) / (before - after), std::exp(-1.0), 1e-12);
+  EXPECT_NEAR((fine.strength[0] - after) / (before - after), std::exp(-1.0), 1e-12);
+  // Speeding up again: back to the law's value at once.
+  slide(fine, 1e-3, 1e-12, 1);
+  EXPECT_EQ(fine.strength[0], plain.slidingStrength(kMuS, kMuK, 1e-3));
+  // Stopped (sticking): it keeps its weakened strength; steady sliding gives Eq. 1.
+  for (int i = 0; i < 100; ++i) {
+    fine.setPending(0, fine.strengthAfter(0, 0.0, 0.0, false));
+    fine.commit();
+  }
+  EXPECT_EQ(fine.strength[0], plain.slidingStrength(kMuS, kMuK, 1e-3));
+  EXPECT_NEAR(fine.strength[0], 0.6 + 0.4 * std::exp(-10.0), 1e-15);
+}

@@ -46,9 +46,11 @@ public:
   };
 
   // muStatic, muKinetic: the plate's mean coefficients, graded by grading's friction factor;
-  // slipLength: D_c of the nodes' slip state [m] (0: Eq. 1 without state).
+  // slipLength: D_c of the nodes' slip state [m] (0: Eq. 1 without state); healingOnly: Eq. 1's
+  // weakening at once, only the healing over D_c (slip_state_law.hpp).
   ContactBoundary(const PlateMesh& mesh, const PenaltyStiffness& stiffness, double muStatic, double muKinetic,
-                  double criticalVelocity, const Grading& grading, double slipLength = 0.0);
+                  double criticalVelocity, const Grading& grading, double slipLength = 0.0,
+                  bool healingOnly = false);
 
   // Adds the contact force of the state X (global) to the force slots of F and returns the
   // totals of this rank; the new contact state is pending.

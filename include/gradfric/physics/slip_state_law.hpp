@@ -13,6 +13,11 @@
 // scale of one site at every mesh size (docs/accuracy_fem.md, "Steady sliding after the peak").
 // D_c = 0 is the underlying law itself, the same arithmetic bit for bit.
 //
+// Healing only (healingOnly = true): the strength drops to the law's value at once, as the law
+// itself (the static peak and every first slip are the law's), and only its rise back towards
+// mu_s as a site slows down takes the slip D_c: psi' = mu_ss(v) if mu_ss(v) <= psi, else the
+// relaxation above. A site that stops keeps its strength in both forms.
+//
 // The state is per site and is pending until commit() (a model may evaluate its forces more than
 // once per step). Pure arithmetic, no PETSc.
 #include "gradfric/physics/friction_law.hpp"
@@ -28,11 +33,12 @@ template <class Law>
 struct WithSlipLength {
   Law steady;               // the law whose sliding strength at v is the steady value mu_ss(v)
   double slipLength = 0.0;  // D_c [m]; 0: no state, the law itself
+  bool healingOnly = false;  // weakening at once (the law's), only healing over D_c
   std::vector<double> strength;  // per site: committed psi (starts at the site's static strength)
   std::vector<double> pending;   // per site: psi after the last evaluation
 
-  static WithSlipLength make(Law law, double slipLength, std::size_t siteCount) {
-    WithSlipLength w{std::move(law), slipLength, {}, {}};
+  static WithSlipLength make(Law law, double slipLength, std::size_t siteCount, bool healingOnly = false) {
+    WithSlipLength w{std::move(law), slipLength, healingOnly, {}, {}};
     w.strength.resize(siteCount);
     for (std::size_t i = 0; i < siteCount; ++i)
       w.strength[i] = w.steady.sites.staticAt(w.steady.sites.slotOfSite(static_cast<int>(i)));
@@ -51,8 +57,10 @@ struct WithSlipLength {
     const double staticStrength = steady.sites.staticAt(slot);
     if (!hasState())
       return sliding ? steady.slidingStrength(staticStrength, steady.sites.kineticAt(slot), speed) : staticStrength;
-    if (!sliding || !(slip > 0.0)) return strength[site];
+    if (!sliding) return strength[site];
     const double target = steady.slidingStrength(staticStrength, steady.sites.kineticAt(slot), speed);
+    if (healingOnly && target <= strength[site]) return target;
+    if (!(slip > 0.0)) return strength[site];
     return target + (strength[site] - target) * std::exp(-slip / slipLength);
   }
   void setPending(int site, double value) {
