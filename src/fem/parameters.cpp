@@ -129,8 +129,8 @@ FemParameters readFemParameters(MPI_Comm comm, RunParameters* record, const Plat
                              "(~1.7x faster, equal to round-off)") == "blocked";
   q.vC = o.real("v_c", q.vC, "m/s", "critical velocity v_c of Eq. 1");
   q.slipLength = o.real("slip_length", q.slipLength, "m",
-                        "slip length D_c of the friction state: a node's strength follows Eq. 1's steady value over "
-                        "this slip (0: Eq. 1 at once, a stopped node back at mu_s)");
+                        "slip length D_c of the friction memory: a node's strength follows Eq. 1's value over this "
+                        "slip (-fem_slip_evolution); 0: Eq. 1 alone, a stopped node back at mu_s");
   q.slipHealingOnly = o.choice("slip_evolution", q.slipHealingOnly ? "healing" : "slip", {"slip", "healing"},
                                "how the slip state follows Eq. 1: slip (Ruina's slip law, weakening and healing over "
                                "D_c) or healing (weakening at once as Eq. 1, only the healing over D_c)") == "healing";
