@@ -84,18 +84,20 @@ void printPlan(MPI_Comm comm, const FemRun& run, const PlateModel& model, RunPar
                "loading slope lost to the penalty springs' compliance: G/(H k_t) + 12 G H/(k_n L^2)",
                OptionOrigin::Derived});
   record->add({"damping", describeDamping(params), "", "damping active in the sliding step", OptionOrigin::Derived});
+  record->add({"friction_state", describeFrictionState(params), "", "the friction law's slip state (-fem_slip_length)",
+               OptionOrigin::Derived});
   record->print(comm, "gradfric-fem: resolved parameters");
   int size = 1;
   MPI_Comm_size(comm, &size);
   PetscPrintf(comm,
               "Active effects: grading %s; %d x %d x %d hexahedra (%d cells) on %d rank(s), partitioner %s;\n"
               "  pressure ramp %.3g s + settle %.3g s (mass damping %.3g 1/s), sliding at %.3g m/s, theta %.3g deg;\n"
-              "  contact %s; Eq. 1 friction, v_c %.3g m/s; dt %.4g s (stable %.4g s);\n"
+              "  contact %s; Eq. 1 friction, v_c %.3g m/s, %s; dt %.4g s (stable %.4g s);\n"
               "  damping while sliding: %s\n",
               describe(run.grading).c_str(), params.nx, params.ny, params.nz, static_cast<int>(model.mesh().globalCells()),
               size, params.partitioner.c_str(), params.rampTime, params.settleTime, params.settleDamping,
               params.plate.velocity, params.plate.slidingAngle, describeContact(params).c_str(), params.vC,
-              model.timeStep(), model.stableTimeStep(), describeDamping(params).c_str());
+              describeFrictionState(params).c_str(), model.timeStep(), model.stableTimeStep(), describeDamping(params).c_str());
   if (run.grading.fields)
     for (const auto& line : describeFields(*run.grading.fields)) PetscPrintf(comm, "  %s\n", line.c_str());
 }

@@ -4,12 +4,14 @@
 #include "gradfric/physics/property_sampler.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <utility>
 
 namespace gradfric::fem {
 
 ContactBoundary::ContactBoundary(const PlateMesh& mesh, const PenaltyStiffness& stiffness, double muStatic,
-                                 double muKinetic, double criticalVelocity, const Grading& grading)
+                                 double muKinetic, double criticalVelocity, const Grading& grading, double slipLength,
+                                 bool healingOnly)
     : comm_(mesh.comm()), stiffness_(stiffness) {
   const double length = mesh.size().length;
   const std::vector<double> area = mesh.sumOverFaces(FaceSet::Bottom);
@@ -35,7 +37,8 @@ ContactBoundary::ContactBoundary(const PlateMesh& mesh, const PenaltyStiffness& 
   sites.columns = static_cast<int>(nodes_.size());
   FrictionLawSettings settings;
   settings.criticalVelocity = criticalVelocity;
-  law_ = ContactLaw::make(std::move(sites), settings);
+  law_ = ContactLaw::make(ExponentialVelocityWeakening::make(std::move(sites), settings), slipLength, nodes_.size(),
+                          healingOnly);
 }
 
 ContactTotals ContactBoundary::addForce(Vec X, Vec F) {
@@ -47,8 +50,11 @@ ContactTotals ContactBoundary::addForce(Vec X, Vec F) {
   for (std::size_t site = 0; site < nodes_.size(); ++site) {
     Node& n = nodes_[site];
     const PetscScalar* xb = x + 6 * n.block;
+    const bool wasSlipping = n.state == ContactState::Slip;
+    const double slip = wasSlipping && law_.hasState() ? tangentialStep(n, xb) : 0.0;
     const ContactTraction r = penaltyContact(stiffness_, law_, static_cast<int>(site), xb[2], xb[0], xb[1], n.anchorX,
-                                             n.anchorY, xb[3], xb[4], n.state == ContactState::Slip);
+                                             n.anchorY, xb[3], xb[4], wasSlipping, slip);
+    keepSlipState(static_cast<int>(site), r.state, r.strength);
     n.pendingX = r.anchorX;
     n.pendingY = r.anchorY;
     n.pendingState = r.state;
@@ -78,7 +84,9 @@ ContactTotals ContactBoundary::addKinematicForce(Vec X, Vec F, const std::vector
     const double v[3] = {xb[3], xb[4], xb[5]};
     const double aFree[3] = {fb[3] / m + damping.acceleration(v, 0), fb[4] / m + damping.acceleration(v, 1),
                              fb[5] / m + damping.acceleration(v, 2)};
-    const KinematicContactForce r = kinematicContact(law_, static_cast<int>(site), m, dt, xb[2], v, aFree);
+    const double slip = law_.hasState() ? tangentialStep(n, xb) : 0.0;
+    const KinematicContactForce r = kinematicContact(law_, static_cast<int>(site), m, dt, xb[2], v, aFree, slip);
+    keepSlipState(static_cast<int>(site), r.state, r.strength);
     n.pendingState = r.state;
     n.pressure = r.fn / n.area;
     n.tx = r.fx / n.area;
@@ -111,6 +119,17 @@ void ContactBoundary::applyNodeForce(Node& n, const PetscScalar* xb, PetscScalar
   if (n.everSlipped || n.pendingState != ContactState::Stick) ++totals.everSlipped;
 }
 
+// The node's tangential displacement since the last commit: its slip over the step when it slides.
+double ContactBoundary::tangentialStep(const Node& n, const PetscScalar* xb) {
+  return std::hypot(xb[0] - n.u[0], xb[1] - n.u[1]);
+}
+
+// A node in contact takes the strength it slid with; an open node keeps its state.
+void ContactBoundary::keepSlipState(int site, ContactState state, double strength) {
+  if (!law_.hasState()) return;
+  law_.setPending(site, state == ContactState::Open ? law_.strength[site] : strength);
+}
+
 double ContactBoundary::work() const {
   double total = 0;
   GF_CALL_MPI(MPI_Allreduce(&work_, &total, 1, MPI_DOUBLE, MPI_SUM, comm_));
@@ -119,12 +138,13 @@ double ContactBoundary::work() const {
 
 double ContactBoundary::largestStaticCoefficient() const {
   double local = 0, global = 0;
-  for (double s : law_.sites.staticStrength) local = std::max(local, s);
+  for (double s : law_.sites().staticStrength) local = std::max(local, s);
   GF_CALL_MPI(MPI_Allreduce(&local, &global, 1, MPI_DOUBLE, MPI_MAX, comm_));
   return global;
 }
 
 void ContactBoundary::commit() {
+  law_.commit();
   for (Node& n : nodes_) {
     n.anchorX = n.pendingX;
     n.anchorY = n.pendingY;

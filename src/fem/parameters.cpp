@@ -35,6 +35,14 @@ std::string describeContact(const FemParameters& given) {
   return text;
 }
 
+std::string describeFrictionState(const FemParameters& q) {
+  if (!(q.slipLength > 0)) return "no slip length (a stopped node is back at mu_s)";
+  char text[160];
+  std::snprintf(text, sizeof text, "slip state: strength follows Eq. 1 over D_c %.3g m of slip (%s)", q.slipLength,
+                q.slipHealingOnly ? "weakening at once, healing over D_c" : "slip law");
+  return text;
+}
+
 std::string describeDamping(const FemParameters& q) {
   std::string text;
   auto add = [&](const std::string& part) { text += (text.empty() ? "" : ", ") + part; };
@@ -124,6 +132,12 @@ FemParameters readFemParameters(MPI_Comm comm, RunParameters* record, const Plat
                "step 1: static (the pressed equilibrium solved by CG, then sliding from rest; penalty contact, "
                "else dynamic) or dynamic (pressure ramp and hold in time)") == "static";
   q.vC = o.real("v_c", q.vC, "m/s", "critical velocity v_c of Eq. 1");
+  q.slipLength = o.real("slip_length", q.slipLength, "m",
+                        "slip length D_c of the friction memory: a node's strength follows Eq. 1's value over this "
+                        "slip (-fem_slip_evolution); 0: Eq. 1 alone, a stopped node back at mu_s");
+  q.slipHealingOnly = o.choice("slip_evolution", q.slipHealingOnly ? "healing" : "slip", {"slip", "healing"},
+                               "how the slip state follows Eq. 1: slip (Ruina's slip law, weakening and healing over "
+                               "D_c) or healing (weakening at once as Eq. 1, only the healing over D_c)") == "healing";
   const std::string contact =
       o.choice("contact", "penalty", {"penalty", "kinematic", "none"},
                "contact with the rigid plane: penalty springs, kinematic (exact, predictor-corrector; gfverlet only), "
@@ -183,6 +197,9 @@ FemParameters readFemParameters(MPI_Comm comm, RunParameters* record, const Plat
   o.requireAtLeast("ny", q.ny, 1);
   o.requireAtLeast("nz", q.nz, 1);
   o.requirePositive("v_c", q.vC, "m/s");
+  o.requireNonNegative("slip_length", q.slipLength, "m");
+  if (o.wasSet("slip_length"))  // the default is not checked against H: a bad -plate_H is refused by its own name
+    o.requireRange("slip_length", q.slipLength, 0.0, q.plate.thickness, "0 <= D_c <= H (the plate's thickness)");
   if (o.wasSet("kn")) o.requirePositive("kn", q.kn, "Pa/m");
   if (o.wasSet("kt")) o.requirePositive("kt", q.kt, "Pa/m");
   if (o.wasSet("settle_damping")) o.requireNonNegative("settle_damping", q.settleDamping, "1/s");

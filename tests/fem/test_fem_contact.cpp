@@ -31,7 +31,7 @@ using namespace gradfric::fem;
 
 namespace {
 
-ContactLaw oneSiteLaw(double muS, double muK, double vC) {
+ExponentialVelocityWeakening oneSiteLaw(double muS, double muK, double vC) {
   FrictionSites sites;
   sites.layout = SiteLayout::PerSite;
   sites.columns = 1;
@@ -39,14 +39,14 @@ ContactLaw oneSiteLaw(double muS, double muK, double vC) {
   sites.kineticStrength = {muK};
   FrictionLawSettings settings;
   settings.criticalVelocity = vC;
-  return ContactLaw::make(sites, settings);
+  return ExponentialVelocityWeakening::make(sites, settings);
 }
 
 }  // namespace
 
 TEST(FemContact, KinematicNodePressedAndPulledSticksOrSlidesExactlyAtMuS) {
   const double muS = 0.8, muK = 0.5, m = 3e-11, dt = 4e-8, press = 2.5e-5;
-  const ContactLaw law = oneSiteLaw(muS, muK, 1e-4);
+  const ExponentialVelocityWeakening law = oneSiteLaw(muS, muK, 1e-4);
   const double v[3] = {0, 0, 0};
   for (double ratio : {0.0, 0.5, 1.0 - 1e-9, 1.0 + 1e-9, 1.5}) {
     const double pull = ratio * muS * press;

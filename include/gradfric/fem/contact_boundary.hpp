@@ -11,13 +11,15 @@
 #include "gradfric/fem/plate_mesh.hpp"
 #include "gradfric/physics/exponential_law.hpp"
 #include "gradfric/physics/grading.hpp"
+#include "gradfric/physics/slip_state_law.hpp"
 
 #include <vector>
 
 namespace gradfric::fem {
 
-// The friction law of the contact boundary (paper Eq. 1).
-using ContactLaw = ExponentialVelocityWeakening;
+// The friction law of the contact boundary: paper Eq. 1, with the per-node slip state of
+// -fem_slip_length (slip_state_law.hpp; D_c = 0: Eq. 1 itself).
+using ContactLaw = WithSlipLength<ExponentialVelocityWeakening>;
 
 // Totals of one evaluation on this rank (ContactBoundary) or summed over ranks (PlateModel).
 struct ContactTotals {
@@ -43,9 +45,12 @@ public:
     double pendingForce[3] = {0, 0, 0}, pendingU[3] = {0, 0, 0};
   };
 
-  // muStatic, muKinetic: the plate's mean coefficients, graded by grading's friction factor.
+  // muStatic, muKinetic: the plate's mean coefficients, graded by grading's friction factor;
+  // slipLength: D_c of the nodes' slip state [m] (0: Eq. 1 without state); healingOnly: Eq. 1's
+  // weakening at once, only the healing over D_c (slip_state_law.hpp).
   ContactBoundary(const PlateMesh& mesh, const PenaltyStiffness& stiffness, double muStatic, double muKinetic,
-                  double criticalVelocity, const Grading& grading);
+                  double criticalVelocity, const Grading& grading, double slipLength = 0.0,
+                  bool healingOnly = false);
 
   // Adds the contact force of the state X (global) to the force slots of F and returns the
   // totals of this rank; the new contact state is pending.
@@ -62,6 +67,7 @@ public:
   double work() const;
 
   const std::vector<Node>& nodes() const { return nodes_; }
+  const ContactLaw& law() const { return law_; }  // its per-node slip state (with -fem_slip_length)
   double largestStaticCoefficient() const;  // over the nodes and ranks
   // Mean penetration and its spread over the bottom nodes, over ranks (for tests).
   void penetration(Vec X, double* mean, double* minimum, double* maximum) const;
@@ -76,6 +82,8 @@ private:
   // to the totals, and keeps it pending until commit.
   void applyNodeForce(Node& n, const PetscScalar* xb, PetscScalar* fb, double fx, double fy, double fz,
                       ContactTotals& totals);
+  static double tangentialStep(const Node& n, const PetscScalar* xb);
+  void keepSlipState(int site, ContactState state, double strength);
 };
 
 }  // namespace gradfric::fem

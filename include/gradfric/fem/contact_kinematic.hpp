@@ -22,13 +22,15 @@ namespace gradfric::fem {
 struct KinematicContactForce {
   double fn = 0, fx = 0, fy = 0;  // force of the plane on the node [N]
   ContactState state = ContactState::Open;
+  double strength = 0;            // the friction coefficient available (in contact)
 };
 
 // site: the node's index among the law's sites; mass [kg]; dt [s]; gap: z of the node;
-// v: its velocity (half step); aFree: its acceleration from every other force.
+// v: its velocity (half step); aFree: its acceleration from every other force; slip: its
+// tangential displacement since the last commit (a slip-length law's state evolves over it).
 template <class Law>
 inline KinematicContactForce kinematicContact(const Law& law, int site, double mass, double dt, double gap,
-                                              const double v[3], const double aFree[3]) {
+                                              const double v[3], const double aFree[3], double slip = 0.0) {
   KinematicContactForce r;
   const double predicted = gap + dt * (v[2] + dt * aFree[2]);
   if (predicted >= 0.0) return r;  // open: the node stays on or above the plane by itself
@@ -36,14 +38,13 @@ inline KinematicContactForce kinematicContact(const Law& law, int site, double m
   const double stickX = -mass * (v[0] + dt * aFree[0]) / dt;
   const double stickY = -mass * (v[1] + dt * aFree[1]) / dt;
   const double stickSquared = stickX * stickX + stickY * stickY;
-  const int slot = law.sites.slotOfSite(site);
-  const double staticStrength = law.sites.staticAt(slot);
   // The friction available: mu(|v_t|) f_n, mu_s f_n at rest (Eq. 1 at v = 0). A node at rest
   // sticks while the static threshold holds; a sliding node stops (sticks) only if the friction it
   // feels can stop it within the step, else it slides on.
   const double slipSpeed = std::sqrt(v[0] * v[0] + v[1] * v[1]);
-  const double strength = law.slidingStrength(staticStrength, law.sites.kineticAt(slot), slipSpeed) * r.fn;
-  if (law.holds(stickSquared, strength)) {
+  r.strength = contactStrength(law, site, slipSpeed, slip, true);
+  const double strength = r.strength * r.fn;
+  if (StaticThreshold::holds(stickSquared, strength)) {
     r.fx = stickX;
     r.fy = stickY;
     r.state = ContactState::Stick;

@@ -5,6 +5,7 @@
 // friction cone). The law is the one the spring-block kernels use (physics/friction_laws.hpp),
 // its sites the bottom nodes, its strengths the nodes' coefficients mu_s,i, mu_k,i.
 #include "gradfric/physics/friction_laws.hpp"
+#include "gradfric/physics/slip_state_law.hpp"
 
 #include <cmath>
 
@@ -23,17 +24,34 @@ struct ContactTraction {
   double tx = 0, ty = 0;          // tangential traction on the plate
   double anchorX = 0, anchorY = 0;  // tangential position where the elastic slip is zero
   ContactState state = ContactState::Open;
+  double strength = 0;            // the friction coefficient that capped the traction (in contact)
 };
+
+// The friction coefficient of a contact node: with a plain law, a sticking node holds up to its
+// static strength and a sliding one feels the law's sliding strength at its speed; with a slip
+// length (slip_state_law.hpp) the node's state after slipping `slip` [m] since the last commit.
+template <class Law>
+inline double contactStrength(const Law& law, int site, double speed, double /*slip*/, bool sliding) {
+  const int slot = law.sites.slotOfSite(site);
+  const double staticStrength = law.sites.staticAt(slot);
+  return sliding ? law.slidingStrength(staticStrength, law.sites.kineticAt(slot), speed) : staticStrength;
+}
+template <class Law>
+inline double contactStrength(const WithSlipLength<Law>& law, int site, double speed, double slip, bool sliding) {
+  return law.strengthAfter(site, speed, slip, sliding);
+}
 
 // site: the node's index among the law's sites; gap: z of the node (negative = penetration);
 // ux, uy: tangential displacement; anchor: the committed anchor; vx, vy: tangential velocity of
 // the node (the plane is at rest). A node that was sticking holds up to the law's static
 // threshold mu_s p (its velocity is only elastic motion of the penalty spring); a node that was
-// slipping feels the law's sliding strength at its tangential speed, the slip rate.
+// slipping feels the law's sliding strength at its tangential speed, the slip rate. slip: the
+// node's tangential displacement since the last commit when it was slipping (a slip-length law's
+// state evolves over it; plain laws ignore it).
 template <class Law>
 inline ContactTraction penaltyContact(const PenaltyStiffness& k, const Law& law, int site, double gap, double ux,
                                       double uy, double anchorX, double anchorY, double vx, double vy,
-                                      bool wasSlipping) {
+                                      bool wasSlipping, double slip = 0.0) {
   ContactTraction r;
   if (gap >= 0.0) {  // open: no traction, the elastic slip is released
     r.anchorX = ux;
@@ -44,11 +62,8 @@ inline ContactTraction penaltyContact(const PenaltyStiffness& k, const Law& law,
   const double trialX = -k.tangential * (ux - anchorX);
   const double trialY = -k.tangential * (uy - anchorY);
   const double trial = std::sqrt(trialX * trialX + trialY * trialY);
-  const int slot = law.sites.slotOfSite(site);
-  const double staticStrength = law.sites.staticAt(slot);
-  const double strength =
-      wasSlipping ? law.slidingStrength(staticStrength, law.sites.kineticAt(slot), std::sqrt(vx * vx + vy * vy))
-                  : staticStrength;
+  const double strength = contactStrength(law, site, std::sqrt(vx * vx + vy * vy), slip, wasSlipping);
+  r.strength = strength;
   const double cap = strength * r.pressure;
   if (trial <= cap) {
     r.tx = trialX;

@@ -33,6 +33,15 @@ struct FemParameters {
   Plate plate;
   // Friction law (paper Eq. 1)
   double vC = 1e-4;      // critical velocity v_c [m/s]
+  // Slip length D_c of the nodes' friction state [m] (physics/slip_state_law.hpp). By default
+  // (healing) a node's strength drops with its slip rate at once as Eq. 1 says, but regains mu_s
+  // as it slows down only over a slip D_c, so a node that stops keeps its kinetic strength: this
+  // ends Eq. 1's node-scale stick-slip after the peak (steady mu = Eq. 1 at v) and leaves mu_s
+  // unchanged; slip: Ruina's slip law, weakening over D_c too (raises mu_s by 2-3 % at 1e-8 m).
+  // 0: Eq. 1 alone, a stopped node back at mu_s (docs/accuracy_fem.md, "Steady sliding after the
+  // peak": 1e-9 m leaves 2.2-2.4 % of stick-slip on 10 x 10 x 5, 1e-8 and 1e-7 none).
+  double slipLength = 1e-8;
+  bool slipHealingOnly = true;  // -fem_slip_evolution healing (true) | slip
   bool contact = true;   // false: free bottom face (-fem_contact none, testing)
   ContactMethod contactMethod = ContactMethod::Penalty;
   // Penalty stiffnesses [Pa/m]; 0 = derived penaltyFactor G/H (docs/accuracy_fem.md, "Contact"):
@@ -109,6 +118,7 @@ struct FemParameters {
 // the slope error they carry) and the damping of the sliding step.
 std::string describeContact(const FemParameters& q);
 std::string describeDamping(const FemParameters& q);
+std::string describeFrictionState(const FemParameters& q);  // -fem_slip_length in words
 
 // Reads and validates every -fem_ option (derived defaults recorded as such).
 FemParameters readFemParameters(MPI_Comm comm, RunParameters* record, const Plate& plate);

@@ -12,7 +12,8 @@
 // force at all in steady sliding (every node moves at v_slider), so neither the friction nor the
 // normal force of the steady state is biased. A dashpot towards rest (gamma_lab,
 // -fem_slide_damping) drags by gamma rho H v instead. It does not remove the node-scale
-// stick-slip of Eq. 1 (a stopped node is back at mu_s): see the docs. Pure arithmetic, no PETSc.
+// stick-slip of Eq. 1 alone (a stopped node is back at mu_s); the friction law's healing length
+// does (physics/slip_state_law.hpp, -fem_slip_length): see the docs. Pure arithmetic, no PETSc.
 namespace gradfric::fem {
 
 struct SlidingDamping {
