@@ -97,13 +97,15 @@ def table(runs):
     print(head + " | bar of 100x100x5 | how |")
     print("|---" * (len(meshes) + 3) + "|")
     for prop, delta in [("none", "0")] + GRADINGS:
+        if not any(runs.get((n, nz, s, prop, delta, "linear", 0.0)) for n, nz, s in meshes):
+            continue
         cells = []
         for n, nz, s in meshes:
             r = runs.get((n, nz, s, prop, delta, "linear", 0.0))
             cells.append(f"{r['mu']:.5f} ({r['steps']} st, {r['wall']:.0f} s)" if r else "")
         bar, how = estimate(runs, prop, delta) if prop != "none" else (None, "")
         print(f"| {prop} {delta} | " + " | ".join(cells) + f" | {'' if bar is None else f'{100 * bar:.2f} %'} | {how} |")
-    print()
+    print("\n```")
     for n, nz, s in meshes:
         pair = [mu(runs, n, nz, s, "E", d) for d in ("0.2", "-0.2")]
         if None not in pair:
@@ -119,6 +121,7 @@ def table(runs):
     others = sorted(k for k in runs if k[5] != "linear" or k[6] != 0 or k[4] in ("0.4", "-0.4"))
     for k in others:
         print(f"other: {k}: mu_s {runs[k]['mu']:.5f}, {runs[k]['steps']} steps, {runs[k]['wall']:.0f} s")
+    print("```")
 
 
 def plot(runs, png):
