@@ -1,0 +1,70 @@
+#!/bin/bash
+# The FEM graded convergence study of docs/accuracy_fem.md ("Graded convergence"), and the FEM
+# mu_s runs of docs/reproduction.md: mu_s of the paper's plate (the current defaults: q1,
+# penalty 250 G/H, dt_safety 0.6) with linear E or friction grading, Delta = +-0.2 (10 bands
+# along x, sliding along x), on 50x50x5, 100x100x5, 100x100x10, 200x200x5 and on 100x100x5 at
+# dt_safety 0.3. Each run stops at its confirmed peak (-friction_observables mu_s), on ONE rank,
+# niced, one at a time (the machine is shared). Resumable: a run whose tag is already in the
+# output file is skipped, so the script can be stopped and started again; each finished run
+# appends one line "<tag> | <bench_fem_element_study line> | load".
+#   bash scripts/fem_graded_study.sh build results/fem_graded_study.txt [stage ...]
+# Stages (default: m50 m100 dt m100z10 m200 ref repro):
+#   m50, m50z10, m100, dt (100x100x5 at dt_safety 0.3), m100z10, m200: the four gradings
+#   (a suffix _E or _friction: that property only, e.g. m200_E);
+#   ref: non-graded 100x100x5, 50x50x5, 100x100x10;
+#   repro: the paper-mesh points of docs/reproduction.md (friction and E +-0.4, triangular E
+#          +-0.2, friction 0.2 at 90 degrees).
+set -euo pipefail
+build=${1:-build}
+out=${2:-results/fem_graded_study.txt}
+shift $(( $# >= 2 ? 2 : $# ))
+stages=("$@")
+[ ${#stages[@]} -eq 0 ] && stages=(m50 m100 dt m100z10 m200 ref repro)
+mkdir -p "$(dirname "$out")"
+touch "$out"
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+study="$build/bench/fem/bench_fem_element_study"
+[ -x "$study" ] || { echo "no $study: build first" >&2; exit 2; }
+
+# run <n> <nz> <dt_safety> <profile|none> [property delta [theta]]
+run() {
+  local n=$1 nz=$2 safety=$3 profile=$4 prop=${5:-none} delta=${6:-0} theta=${7:-0}
+  local tag="mesh ${n}x${n}x${nz} dt_safety ${safety} grading ${prop} ${delta}"
+  [ "$profile" != linear ] && [ "$profile" != none ] && tag+=" ${profile}"
+  [ "$theta" != 0 ] && tag+=" theta ${theta}"
+  if grep -qF "$tag |" "$out"; then echo "skip: $tag"; return; fi
+  local args=(-friction_observables mu_s -fem_element q1 -fem_nx "$n" -fem_ny "$n" -fem_nz "$nz" -fem_dt_safety "$safety")
+  [ "$profile" != none ] && args+=(-grading_profile "$profile" -grading_property "$prop" -grading_delta "$delta")
+  [ "$theta" != 0 ] && args+=(-plate_theta "$theta")
+  echo "run:  $tag  (start $(date -u +%H:%M:%S), load $(cut -d' ' -f1-3 /proc/loadavg))"
+  local line
+  line=$(nice -n 10 "$study" "${args[@]}" | grep '^element')
+  echo "$tag | $line | load $(cut -d' ' -f1-3 /proc/loadavg)" | tee -a "$out"
+}
+
+gradings() {  # linear gradings Delta = +-0.2 on mesh $1 x $1 x $2 at dt_safety $3, property $4 (or both)
+  local p
+  for p in E friction; do
+    [ "$4" = all ] || [ "$4" = "$p" ] || continue
+    run "$1" "$2" "$3" linear "$p" 0.2; run "$1" "$2" "$3" linear "$p" -0.2
+  done
+}
+
+for stage in "${stages[@]}"; do
+  property=all  # a stage name may end in _E or _friction: that property only
+  case $stage in *_E) property=E stage=${stage%_E} ;; *_friction) property=friction stage=${stage%_friction} ;; esac
+  case $stage in
+    m50) gradings 50 5 0.6 $property ;;
+    m50z10) gradings 50 10 0.6 $property ;;
+    m100) gradings 100 5 0.6 $property ;;
+    dt) gradings 100 5 0.3 $property ;;
+    m100z10) gradings 100 10 0.6 $property ;;
+    m200) gradings 200 5 0.6 $property ;;
+    ref) run 100 5 0.6 none; run 50 5 0.6 none; run 100 10 0.6 none ;;
+    repro)
+      for d in 0.4 -0.4; do run 100 5 0.6 linear friction $d; run 100 5 0.6 linear E $d; done
+      run 100 5 0.6 triangular E 0.2; run 100 5 0.6 triangular E -0.2
+      run 100 5 0.6 linear friction 0.2 90 ;;
+    *) echo "unknown stage $stage (m50 m50z10 m100 dt m100z10 m200 ref repro)" >&2; exit 2 ;;
+  esac
+done
