@@ -207,6 +207,85 @@ GF_ALWAYS_INLINE void openKickAndDrift(int nb, double half, double h, double inv
   }
 }
 
+// The per-block arrays of one row that the fused Verlet update reads and writes; all distinct.
+struct VerletRow {
+  const double* __restrict fx;  // F_mot at t_n
+  const double* __restrict fy;
+  const double* __restrict staticStrength;   // offset to the row (per site) or the columns
+  const double* __restrict kineticStrength;
+  double* __restrict mobile;
+  double* __restrict vx;
+  double* __restrict vy;
+  double* __restrict ux;
+  double* __restrict uy;
+  double* __restrict kfx;  // friction of the last step on entry, of this step on exit
+  double* __restrict kfy;
+};
+
+// Velocity Verlet's whole update of one row in one pass, branch-free so that it vectorises: close
+// the last step's kick, the reversal test against that step's friction, the stick/slip decision
+// at t_n (as blends: a stuck block that the threshold does not hold starts to slip, a reversed one
+// that it holds re-sticks at zero velocity), this step's friction vector, the open kick and the
+// drift. The arithmetic is closeKick, markReversals, transitions, frictionVector and
+// openKickAndDrift in that order, so the numbers are theirs bit for bit. Returns whether a block
+// of the row started to slip or re-stuck (the caller's bookkeeping of states and first slips).
+template <class Law, SiteLayout L>
+GF_ALWAYS_INLINE bool verletRowUpdate(const Law& law, int nb, double half, double h, double invMass, double gamma,
+                                      VerletRow a) {
+  const double* __restrict fx = a.fx;
+  const double* __restrict fy = a.fy;
+  const double* __restrict staticStrength = a.staticStrength;
+  const double* __restrict kineticStrength = a.kineticStrength;
+  double* __restrict mobile = a.mobile;
+  double* __restrict vx = a.vx;
+  double* __restrict vy = a.vy;
+  double* __restrict ux = a.ux;
+  double* __restrict uy = a.uy;
+  double* __restrict kfx = a.kfx;
+  double* __restrict kfy = a.kfy;
+  std::int64_t changed = 0;
+  for (int c = 0; c < nb; ++c) {
+    const double m = mobile[c];
+    const double fxc = fx[c], fyc = fy[c];
+    const double oldKx = kfx[c], oldKy = kfy[c];
+    double wx = vx[c] + half * m * ((fxc - oldKx) * invMass - gamma * vx[c]);
+    double wy = vy[c] + half * m * ((fyc - oldKy) * invMass - gamma * vy[c]);
+    const bool reversed = wx * oldKx + wy * oldKy < 0.0;
+    const double threshold = L == SiteLayout::Uniform ? staticStrength[0] : staticStrength[c];
+    const double kinetic = L == SiteLayout::Uniform ? kineticStrength[0] : kineticStrength[c];
+    const double force2 = fxc * fxc + fyc * fyc;
+    const bool holds = Law::holds(force2, threshold);
+    const bool starts = (m == 0.0) & !holds;
+    const bool resticks = reversed & holds;
+    const double newM = starts ? 1.0 : resticks ? 0.0 : m;
+    wx = resticks ? 0.0 : wx;
+    wy = resticks ? 0.0 : wy;
+    changed |= std::int64_t(starts | resticks);
+    // The friction vector (frictionPerDirection, written without a branch around the division).
+    const double speed2 = wx * wx + wy * wy;
+    const bool moving = speed2 > 0.0;
+    const double dirX = moving ? wx : fxc;
+    const double dirY = moving ? wy : fyc;
+    const double norm2 = moving ? speed2 : force2;
+    const double speed = Law::weakensWithSpeed && moving ? std::sqrt(speed2) : 0.0;
+    const double sliding = law.slidingStrength(threshold, kinetic, speed);
+    const bool directed = norm2 > 0.0;
+    const double perNorm = (directed ? newM * sliding : 0.0) / std::sqrt(directed ? norm2 : 1.0);
+    const double kx = perNorm * dirX, ky = perNorm * dirY;
+    // Open this step's kick and drift.
+    wx += half * newM * ((fxc - kx) * invMass - gamma * wx);
+    wy += half * newM * ((fyc - ky) * invMass - gamma * wy);
+    mobile[c] = newM;
+    kfx[c] = kx;
+    kfy[c] = ky;
+    vx[c] = wx;
+    vy[c] = wy;
+    ux[c] += h * wx;
+    uy[c] += h * wy;
+  }
+  return changed != 0;
+}
+
 }  // namespace
 
 // Forces F_mot on row r at positions (px, py) and time t into fx_, fy_: slider springs, the
@@ -225,12 +304,12 @@ GF_ALWAYS_INLINE void FastLattice<Law>::rowForces(int r, const double* px, const
   const double* kH = stiffness_.horizontal.data();
   const double* kS = stiffness_.slider.data();
   const double kH0 = kH[0], kS0 = kS[0];
-  double* fx = fx_.data();
-  double* fy = fy_.data();
-  double* hx = springX_.data();
-  double* hy = springY_.data();
-  const double* rx = px + r * nb;
-  const double* ry = py + r * nb;
+  double* __restrict fx = fx_.data();
+  double* __restrict fy = fy_.data();
+  double* __restrict hx = springX_.data();
+  double* __restrict hy = springY_.data();
+  const double* __restrict rx = px + r * nb;
+  const double* __restrict ry = py + r * nb;
   for (int c = 0; c < nb; ++c) {
     const double k = Graded ? kS[c] : kS0;
     fx[c] = k * (drivenX - rx[c]) + carryX[c];
@@ -430,17 +509,48 @@ GF_ALWAYS_INLINE void FastLattice<Law>::verletStep(double t, double& sumX, doubl
   const double h = motion_.timeStep;
   const double invMass = 1.0 / motion_.mass;
   const double gamma = motion_.damping;
-  this->template sweepRows<Graded, true>(ux_.data(), uy_.data(), t, sumX, sumY, [&](int r) {
+  double* carryX = carryX_.data();
+  double* carryY = carryY_.data();
+  double* nextX = nextX_.data();
+  double* nextY = nextY_.data();
+  std::fill(carryX, carryX + nb, 0.0);
+  std::fill(carryY, carryY + nb, 0.0);
+  for (int r = 0; r < nb; ++r) {
     const int base = r * nb;
-    closeKick(nb, half, invMass, gamma, fx_.data(), fy_.data(), frictionX_.data() + base, frictionY_.data() + base,
-              mobile_.data() + base, vx_.data() + base, vy_.data() + base);
-    markReversals(r);
-    this->template transitions<L>(r, t);
-    this->template frictionVector<L>(r);
-    openKickAndDrift(nb, half, h, invMass, gamma, fx_.data(), fy_.data(), frictionX_.data() + base,
-                     frictionY_.data() + base, mobile_.data() + base, vx_.data() + base, vy_.data() + base,
-                     ux_.data() + base, uy_.data() + base);
-  });
+    this->template rowForces<Graded, true>(r, ux_.data(), uy_.data(), t, carryX, carryY, nextX, nextY, sumX, sumY);
+    const int sites = L == SiteLayout::PerSite ? base : 0;
+    const VerletRow row{fx_.data(),
+                        fy_.data(),
+                        law_.sites.staticStrength.data() + sites,
+                        law_.sites.kineticStrength.data() + sites,
+                        mobile_.data() + base,
+                        vx_.data() + base,
+                        vy_.data() + base,
+                        ux_.data() + base,
+                        uy_.data() + base,
+                        frictionX_.data() + base,
+                        frictionY_.data() + base};
+    if (verletRowUpdate<Law, L>(law_, nb, half, h, invMass, gamma, row)) syncStates(r, t);
+    std::swap(carryX, nextX);
+    std::swap(carryY, nextY);
+  }
+}
+
+// After the fused update changed a stick state in row r: the states (Stuck where mobile is zero)
+// and the first slips of blocks that slip for the first time, at t_n.
+template <class Law>
+void FastLattice<Law>::syncStates(int r, double t) {
+  const int base = r * nb_;
+  for (int c = 0; c < nb_; ++c) {
+    const int i = base + c;
+    const bool slips = mobile_[i] != 0.0;
+    state_[i] = slips ? Slipping : Stuck;
+    if (slips && !everSlipped_[i]) {
+      everSlipped_[i] = 1;
+      ++slipped_;
+      if (firstSlip_) firstSlip_[i] = t;
+    }
+  }
 }
 
 // Velocity Verlet on the active set (see integrator.hpp): the same step as verletStep, with the
