@@ -316,11 +316,15 @@ GF_ALWAYS_INLINE void FastLattice<Law>::rowForces(int r, const double* px, const
     fy[c] = k * (drivenY - ry[c]) + carryY[c];
   }
   if (WantSum) {  // the macroscopic friction force: the sum of the slider forces
+    // In registers: through the references every addition would wait on a store and a load.
+    double x = sumX, y = sumY;
     for (int c = 0; c < nb; ++c) {
       const double k = Graded ? kS[c] : kS0;
-      sumX += k * (drivenX - rx[c]);
-      sumY += k * (drivenY - ry[c]);
+      x += k * (drivenX - rx[c]);
+      y += k * (drivenY - ry[c]);
     }
+    sumX = x;
+    sumY = y;
   }
   for (int c = 0; c + 1 < nb; ++c) {
     const Force2 f = springForce(Graded ? kH[c] : kH0, l, 0.0, l, rx[c + 1] - rx[c], ry[c + 1] - ry[c]);
