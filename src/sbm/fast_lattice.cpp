@@ -4,6 +4,7 @@
 // spring is evaluated once per stage. Loops run along a row over structure-of-arrays data and
 // vectorise; the stick/slip transitions, which branch, sit in a short scalar loop of their own.
 #include "gradfric/sbm/integrator.hpp"
+#include "gradfric/sbm/kernel_isa.hpp"
 #include "gradfric/sbm/quiet_phase.hpp"
 #include "gradfric/sbm/spring.hpp"
 
@@ -13,9 +14,11 @@
 #include <utility>
 
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
-#define GF_KERNEL_CLONES __attribute__((target_clones("avx512f", "avx2", "default")))
+#define GF_KERNEL_ISA_CLONES 1
+#define GF_TARGET(isa) __attribute__((target(isa)))
 #else
-#define GF_KERNEL_CLONES
+#define GF_KERNEL_ISA_CLONES 0
+#define GF_TARGET(isa)
 #endif
 #define GF_ALWAYS_INLINE __attribute__((always_inline)) inline
 
@@ -75,7 +78,7 @@ namespace {
 // The springs from row r (rx, ry) to row r+1 (qx, qy): vertical, diagonal (c -> c+1 above) and
 // anti-diagonal (c+1 -> c above). Adds their forces to row r (fx, fy) and writes the reactions on
 // row r+1 into (nextX, nextY). The arrays are distinct: __restrict lets the loops vectorise.
-template <bool Graded>
+template <bool Graded, bool Small>
 GF_ALWAYS_INLINE void springsToRowAbove(int nb, double l, double diagonalLength, const double* __restrict kV,
                                         const double* __restrict kD, const double* __restrict rx,
                                         const double* __restrict ry, const double* __restrict qx,
@@ -83,21 +86,21 @@ GF_ALWAYS_INLINE void springsToRowAbove(int nb, double l, double diagonalLength,
                                         double* __restrict nextX, double* __restrict nextY) {
   const double kV0 = kV[0], kD0 = kD[0];
   for (int c = 0; c < nb; ++c) {
-    const auto [ax, ay] = springForce(Graded ? kV[c] : kV0, 0.0, l, l, qx[c] - rx[c], qy[c] - ry[c]);
+    const auto [ax, ay] = latticeSpringForce<Small>(Graded ? kV[c] : kV0, 0.0, l, l, qx[c] - rx[c], qy[c] - ry[c]);
     fx[c] += ax;
     fy[c] += ay;
     nextX[c] = -ax;
     nextY[c] = -ay;
   }
   for (int c = 0; c + 1 < nb; ++c) {
-    const auto [ax, ay] = springForce(Graded ? kD[c] : kD0, l, l, diagonalLength, qx[c + 1] - rx[c], qy[c + 1] - ry[c]);
+    const auto [ax, ay] = latticeSpringForce<Small>(Graded ? kD[c] : kD0, l, l, diagonalLength, qx[c + 1] - rx[c], qy[c + 1] - ry[c]);
     fx[c] += ax;
     fy[c] += ay;
     nextX[c + 1] -= ax;
     nextY[c + 1] -= ay;
   }
   for (int c = 0; c + 1 < nb; ++c) {
-    const auto [ax, ay] = springForce(Graded ? kD[c] : kD0, -l, l, diagonalLength, qx[c] - rx[c + 1], qy[c] - ry[c + 1]);
+    const auto [ax, ay] = latticeSpringForce<Small>(Graded ? kD[c] : kD0, -l, l, diagonalLength, qx[c] - rx[c + 1], qy[c] - ry[c + 1]);
     fx[c + 1] += ax;
     fy[c + 1] += ay;
     nextX[c] -= ax;
@@ -286,6 +289,109 @@ GF_ALWAYS_INLINE bool verletRowUpdate(const Law& law, int nb, double half, doubl
   return changed != 0;
 }
 
+// The internal springs of one row: its horizontal springs and those to the row above.
+struct RowSprings {
+  int nb;
+  bool above;  // a row above exists
+  double l, diagonalLength;
+  const double* kH;
+  const double* kV;
+  const double* kD;
+  const double* rx;  // positions of the row (the row above follows at + nb)
+  const double* ry;
+  double* hx;  // horizontal spring forces (work space)
+  double* hy;
+  double* fx;  // forces on the row
+  double* fy;
+  double* nextX;  // reactions on the row above
+  double* nextY;
+};
+
+// Adds the row's springs to its forces, in the kernel's fixed order (horizontal, then the springs
+// to the row above).
+template <bool Graded, bool Small>
+GF_ALWAYS_INLINE void rowSprings(const RowSprings& s) {
+  const int nb = s.nb;
+  const double l = s.l;
+  const double* __restrict kH = s.kH;
+  const double* __restrict rx = s.rx;
+  const double* __restrict ry = s.ry;
+  double* __restrict hx = s.hx;
+  double* __restrict hy = s.hy;
+  double* __restrict fx = s.fx;
+  double* __restrict fy = s.fy;
+  const double kH0 = kH[0];
+  for (int c = 0; c + 1 < nb; ++c) {
+    const Force2 f = latticeSpringForce<Small>(Graded ? kH[c] : kH0, l, 0.0, l, rx[c + 1] - rx[c], ry[c + 1] - ry[c]);
+    hx[c] = f.x;
+    hy[c] = f.y;
+  }
+  for (int c = 0; c + 1 < nb; ++c) {
+    fx[c] += hx[c];
+    fy[c] += hy[c];
+  }
+  for (int c = 0; c + 1 < nb; ++c) {
+    fx[c + 1] -= hx[c];
+    fy[c + 1] -= hy[c];
+  }
+  if (s.above)
+    springsToRowAbove<Graded, Small>(nb, l, s.diagonalLength, s.kV, s.kD, rx, ry, rx + nb, ry + nb, fx, fy, s.nextX,
+                                     s.nextY);
+}
+
+// The springs a tile of the active set owns (columns c0 <= c < c1 of row r): horizontal, and
+// with a row above vertical, diagonal and anti-diagonal, stored as pieces.
+struct TilePieces {
+  double* hx;
+  double* hy;
+  double* vx;
+  double* vy;
+  double* dx;
+  double* dy;
+  double* ax;
+  double* ay;
+};
+
+template <bool Graded, bool Small>
+GF_ALWAYS_INLINE void tileSprings(int c0, int c1, int springEnd, bool above, double l, double diagonalLength,
+                                  const double* __restrict kH, const double* __restrict kV,
+                                  const double* __restrict kD, const double* __restrict rx,
+                                  const double* __restrict ry, const double* __restrict qx,
+                                  const double* __restrict qy, TilePieces p) {
+  const double kH0 = kH[0], kV0 = kV[0], kD0 = kD[0];
+  double* __restrict hx = p.hx;
+  double* __restrict hy = p.hy;
+  double* __restrict vx = p.vx;
+  double* __restrict vy = p.vy;
+  double* __restrict dx = p.dx;
+  double* __restrict dy = p.dy;
+  double* __restrict ax = p.ax;
+  double* __restrict ay = p.ay;
+  for (int c = c0; c < springEnd; ++c) {
+    const Force2 f = latticeSpringForce<Small>(Graded ? kH[c] : kH0, l, 0.0, l, rx[c + 1] - rx[c], ry[c + 1] - ry[c]);
+    hx[c] = f.x;
+    hy[c] = f.y;
+  }
+  if (!above) return;
+  for (int c = c0; c < c1; ++c) {
+    const Force2 f = latticeSpringForce<Small>(Graded ? kV[c] : kV0, 0.0, l, l, qx[c] - rx[c], qy[c] - ry[c]);
+    vx[c] = f.x;
+    vy[c] = f.y;
+  }
+  for (int c = c0; c < springEnd; ++c) {
+    const Force2 f =
+        latticeSpringForce<Small>(Graded ? kD[c] : kD0, l, l, diagonalLength, qx[c + 1] - rx[c], qy[c + 1] - ry[c]);
+    dx[c] = f.x;
+    dy[c] = f.y;
+  }
+  for (int c = c0; c < springEnd; ++c) {
+    const Force2 f =
+        latticeSpringForce<Small>(Graded ? kD[c] : kD0, -l, l, diagonalLength, qx[c] - rx[c + 1], qy[c] - ry[c + 1]);
+    ax[c] = f.x;
+    ay[c] = f.y;
+  }
+}
+
 }  // namespace
 
 // Forces F_mot on row r at positions (px, py) and time t into fx_, fy_: slider springs, the
@@ -303,7 +409,7 @@ GF_ALWAYS_INLINE void FastLattice<Law>::rowForces(int r, const double* px, const
   const double drivenY = motion_.sliderVelocityY * t;
   const double* kH = stiffness_.horizontal.data();
   const double* kS = stiffness_.slider.data();
-  const double kH0 = kH[0], kS0 = kS[0];
+  const double kS0 = kS[0];
   double* __restrict fx = fx_.data();
   double* __restrict fy = fy_.data();
   double* __restrict hx = springX_.data();
@@ -326,22 +432,10 @@ GF_ALWAYS_INLINE void FastLattice<Law>::rowForces(int r, const double* px, const
     sumX = x;
     sumY = y;
   }
-  for (int c = 0; c + 1 < nb; ++c) {
-    const Force2 f = springForce(Graded ? kH[c] : kH0, l, 0.0, l, rx[c + 1] - rx[c], ry[c + 1] - ry[c]);
-    hx[c] = f.x;
-    hy[c] = f.y;
-  }
-  for (int c = 0; c + 1 < nb; ++c) {
-    fx[c] += hx[c];
-    fy[c] += hy[c];
-  }
-  for (int c = 0; c + 1 < nb; ++c) {
-    fx[c + 1] -= hx[c];
-    fy[c + 1] -= hy[c];
-  }
-  if (r + 1 < nb)
-    springsToRowAbove<Graded>(nb, l, diagonalLength, stiffness_.vertical.data(), stiffness_.diagonal.data(), rx, ry,
-                              rx + nb, ry + nb, fx, fy, nextX, nextY);
+  const RowSprings springs{nb, r + 1 < nb, l, diagonalLength, kH, stiffness_.vertical.data(), stiffness_.diagonal.data(),
+                           rx, ry, hx, hy, fx, fy, nextX, nextY};
+  if (stiffness_.smallStrain) rowSprings<Graded, true>(springs);
+  else rowSprings<Graded, false>(springs);
 }
 
 // Stick/slip transitions of row r with its driving forces at t_n (see integrator.hpp). Branches,
@@ -579,7 +673,7 @@ GF_ALWAYS_INLINE void FastLattice<Law>::verletStepActive(double t, double& sumX,
   const double* kV = stiffness_.vertical.data();
   const double* kD = stiffness_.diagonal.data();
   const double* kS = stiffness_.slider.data();
-  const double kH0 = kH[0], kV0 = kV[0], kD0 = kD[0], kS0 = kS[0];
+  const double kS0 = kS[0];
   double* carryX = carryX_.data();
   double* carryY = carryY_.data();
   double* nextX = nextX_.data();
@@ -616,29 +710,10 @@ GF_ALWAYS_INLINE void FastLattice<Law>::verletStepActive(double t, double& sumX,
       evaluated = n;
       ++stale;
       const int c0 = tile * kTile, c1 = std::min(c0 + kTile, nb), springEnd = std::min(c1, nb - 1);
-      for (int c = c0; c < springEnd; ++c) {
-        const Force2 f = springForce(Graded ? kH[c] : kH0, l, 0.0, l, rx[c + 1] - rx[c], ry[c + 1] - ry[c]);
-        hx[c] = f.x;
-        hy[c] = f.y;
-      }
-      if (!above) continue;
-      for (int c = c0; c < c1; ++c) {
-        const Force2 f = springForce(Graded ? kV[c] : kV0, 0.0, l, l, qx[c] - rx[c], qy[c] - ry[c]);
-        vx[c] = f.x;
-        vy[c] = f.y;
-      }
-      for (int c = c0; c < springEnd; ++c) {
-        const Force2 f =
-            springForce(Graded ? kD[c] : kD0, l, l, diagonalLength, qx[c + 1] - rx[c], qy[c + 1] - ry[c]);
-        dx[c] = f.x;
-        dy[c] = f.y;
-      }
-      for (int c = c0; c < springEnd; ++c) {
-        const Force2 f =
-            springForce(Graded ? kD[c] : kD0, -l, l, diagonalLength, qx[c] - rx[c + 1], qy[c] - ry[c + 1]);
-        ax[c] = f.x;
-        ay[c] = f.y;
-      }
+      const TilePieces pieces{hx, hy, vx, vy, dx, dy, ax, ay};
+      if (stiffness_.smallStrain)
+        tileSprings<Graded, true>(c0, c1, springEnd, above, l, diagonalLength, kH, kV, kD, rx, ry, qx, qy, pieces);
+      else tileSprings<Graded, false>(c0, c1, springEnd, above, l, diagonalLength, kH, kV, kD, rx, ry, qx, qy, pieces);
     }
     // Assemble F_mot of the row and the reactions on the row above as rowForces does.
     for (int c = 0; c < nb; ++c) {
@@ -736,12 +811,31 @@ GF_ALWAYS_INLINE void fullStep(FastLattice<Law>& lattice, bool verlet, bool acti
   lattice.template rk4Stage<Graded, L, 4>(t + h, sumX, sumY);
 }
 
-// One compiled entry per law x (uniform|graded stiffness) x (friction layout), each cloned for
-// AVX-512, AVX2 and baseline x86-64 and chosen at load time: portable and fast.
+// One compiled entry per law x (uniform|graded stiffness) x (friction layout), each compiled for
+// AVX-512, AVX2 and baseline x86-64; the one the processor supports best is chosen at run time
+// (kernel_isa.hpp: a test may force each in turn to check that they agree bit for bit).
 template <class Law, bool Graded, SiteLayout L>
-GF_KERNEL_CLONES void stepVariant(FastLattice<Law>& lattice, bool verlet, bool active, double t, double h,
-                                  double& sumX, double& sumY) {
+GF_TARGET("avx512f") void stepAvx512(FastLattice<Law>& lattice, bool verlet, bool active, double t, double h,
+                                     double& sumX, double& sumY) {
   fullStep<Law, Graded, L>(lattice, verlet, active, t, h, sumX, sumY);
+}
+template <class Law, bool Graded, SiteLayout L>
+GF_TARGET("avx2") void stepAvx2(FastLattice<Law>& lattice, bool verlet, bool active, double t, double h,
+                                double& sumX, double& sumY) {
+  fullStep<Law, Graded, L>(lattice, verlet, active, t, h, sumX, sumY);
+}
+template <class Law, bool Graded, SiteLayout L>
+void stepBaseline(FastLattice<Law>& lattice, bool verlet, bool active, double t, double h, double& sumX, double& sumY) {
+  fullStep<Law, Graded, L>(lattice, verlet, active, t, h, sumX, sumY);
+}
+
+template <class Law, bool Graded, SiteLayout L>
+void stepVariant(FastLattice<Law>& lattice, bool verlet, bool active, double t, double h, double& sumX, double& sumY) {
+  switch (kernelIsaInUse()) {
+    case KernelIsa::Avx512: stepAvx512<Law, Graded, L>(lattice, verlet, active, t, h, sumX, sumY); return;
+    case KernelIsa::Avx2: stepAvx2<Law, Graded, L>(lattice, verlet, active, t, h, sumX, sumY); return;
+    default: stepBaseline<Law, Graded, L>(lattice, verlet, active, t, h, sumX, sumY); return;
+  }
 }
 
 template <class Law, bool Graded>
@@ -822,6 +916,49 @@ StepObservation FastLattice<Law>::step() {
   dispatch(observation.sliderForceX, observation.sliderForceY);
   ++steps_;
   return observation;
+}
+
+namespace {
+KernelIsa forcedIsa = KernelIsa::Automatic;
+
+KernelIsa bestIsa() {
+#if GF_KERNEL_ISA_CLONES
+  __builtin_cpu_init();
+  if (__builtin_cpu_supports("avx512f")) return KernelIsa::Avx512;
+  if (__builtin_cpu_supports("avx2")) return KernelIsa::Avx2;
+#endif
+  return KernelIsa::Baseline;
+}
+}  // namespace
+
+bool kernelIsaSupported(KernelIsa isa) {
+  switch (isa) {
+    case KernelIsa::Automatic:
+    case KernelIsa::Baseline: return true;
+    case KernelIsa::Avx2: return bestIsa() != KernelIsa::Baseline;
+    case KernelIsa::Avx512: return bestIsa() == KernelIsa::Avx512;
+  }
+  return false;
+}
+
+bool forceKernelIsa(KernelIsa isa) {
+  if (!kernelIsaSupported(isa)) return false;
+  forcedIsa = isa;
+  return true;
+}
+
+KernelIsa kernelIsaInUse() {
+  static const KernelIsa best = bestIsa();
+  return forcedIsa == KernelIsa::Automatic ? best : forcedIsa;
+}
+
+const char* kernelIsaName(KernelIsa isa) {
+  switch (isa) {
+    case KernelIsa::Avx512: return "avx512f";
+    case KernelIsa::Avx2: return "avx2";
+    case KernelIsa::Baseline: return "baseline x86-64";
+    default: return "automatic";
+  }
 }
 
 #define GF_INSTANTIATE_FAST_LATTICE(Law) template class FastLattice<Law>;
