@@ -183,33 +183,6 @@ GF_ALWAYS_INLINE void updateRow(int nb, double toNext, double sixth, double invM
   }
 }
 
-// Velocity Verlet, second half kick of the previous step: v_n = v_{n-1/2} + h/2 a_n.
-GF_ALWAYS_INLINE void closeKick(int nb, double half, double invMass, double gamma, const double* __restrict fx,
-                                const double* __restrict fy, const double* __restrict kfx,
-                                const double* __restrict kfy, const double* __restrict mobile,
-                                double* __restrict vx, double* __restrict vy) {
-  for (int c = 0; c < nb; ++c) {
-    const double m = mobile[c];
-    vx[c] += half * m * ((fx[c] - kfx[c]) * invMass - gamma * vx[c]);
-    vy[c] += half * m * ((fy[c] - kfy[c]) * invMass - gamma * vy[c]);
-  }
-}
-
-// Velocity Verlet, first half kick and drift: v_{n+1/2} = v_n + h/2 a_n, u_{n+1} = u_n + h v_{n+1/2}.
-GF_ALWAYS_INLINE void openKickAndDrift(int nb, double half, double h, double invMass, double gamma,
-                                       const double* __restrict fx, const double* __restrict fy,
-                                       const double* __restrict kfx, const double* __restrict kfy,
-                                       const double* __restrict mobile, double* __restrict vx, double* __restrict vy,
-                                       double* __restrict ux, double* __restrict uy) {
-  for (int c = 0; c < nb; ++c) {
-    const double m = mobile[c];
-    vx[c] += half * m * ((fx[c] - kfx[c]) * invMass - gamma * vx[c]);
-    vy[c] += half * m * ((fy[c] - kfy[c]) * invMass - gamma * vy[c]);
-    ux[c] += h * vx[c];
-    uy[c] += h * vy[c];
-  }
-}
-
 // The per-block arrays of one row that the fused Verlet update reads and writes; all distinct.
 struct VerletRow {
   const double* __restrict fx;  // F_mot at t_n
@@ -229,8 +202,9 @@ struct VerletRow {
 // the last step's kick, the reversal test against that step's friction, the stick/slip decision
 // at t_n (as blends: a stuck block that the threshold does not hold starts to slip, a reversed one
 // that it holds re-sticks at zero velocity), this step's friction vector, the open kick and the
-// drift. The arithmetic is closeKick, markReversals, transitions, frictionVector and
-// openKickAndDrift in that order, so the numbers are theirs bit for bit. Returns whether a block
+// drift (v_{n+1/2} = v_n + h/2 a_n, u_{n+1} = u_n + h v_{n+1/2}). The arithmetic is that of the
+// separate passes it replaced (and of markReversals, transitions and frictionVector, which RK4
+// keeps), in the same order: the same numbers bit for bit. Returns whether a block
 // of the row started to slip or re-stuck (the caller's bookkeeping of states and first slips).
 template <class Law, SiteLayout L>
 GF_ALWAYS_INLINE bool verletRowUpdate(const Law& law, int nb, double half, double h, double invMass, double gamma,
@@ -749,23 +723,31 @@ GF_ALWAYS_INLINE void FastLattice<Law>::verletStepActive(double t, double& sumX,
         nextY[c] -= ay[c];
       }
     }
-    // The row's update, tile by tile where blocks slip (before or after the transitions).
-    std::int64_t* mobileRow = mobileStep_.data() + r * tiles;
-    for (int tile = 0; tile < tiles; ++tile) {
-      if (mobileRow[tile] != n - 1) continue;  // no block slipped in the last step
-      const int c0 = tile * kTile, w = std::min(kTile, nb - c0);
-      closeKick(w, half, invMass, gamma, fx + c0, fy + c0, frictionX_.data() + base + c0,
-                frictionY_.data() + base + c0, mobile_.data() + base + c0, vx_.data() + base + c0,
-                vy_.data() + base + c0);
-      markReversalsRange(r, c0, c0 + w);
-    }
-    // The transitions, with the slider-force sum in the kernel's order (the positions are u_n
-    // until the drift below).
-    this->template transitionsWith<L>(r, t, [&](int c) {
+    // The slider-force sum in the kernel's order (the positions are still u_n), then the row's
+    // update as in verletStep. On a tile without a slipping block it changes nothing (velocity
+    // and mobile zero); it is one vector pass over the row, cheaper than sorting the tiles out.
+    double x = sumX, y = sumY;
+    for (int c = 0; c < nb; ++c) {
       const double k = Graded ? kS[c] : kS0;
-      sumX += k * (drivenX - rx[c]);
-      sumY += k * (drivenY - ry[c]);
-    });
+      x += k * (drivenX - rx[c]);
+      y += k * (drivenY - ry[c]);
+    }
+    sumX = x;
+    sumY = y;
+    const int sites = L == SiteLayout::PerSite ? base : 0;
+    const VerletRow update{fx,
+                           fy,
+                           law_.sites.staticStrength.data() + sites,
+                           law_.sites.kineticStrength.data() + sites,
+                           mobile_.data() + base,
+                           vx_.data() + base,
+                           vy_.data() + base,
+                           ux_.data() + base,
+                           uy_.data() + base,
+                           frictionX_.data() + base,
+                           frictionY_.data() + base};
+    if (verletRowUpdate<Law, L>(law_, nb, half, h, invMass, gamma, update)) syncStates(r, t);
+    std::int64_t* mobileRow = mobileStep_.data() + r * tiles;
     const std::uint8_t* state = state_.data() + base;  // Stuck = 0: mobile where non-zero
     for (int tile = 0; tile < tiles; ++tile) {
       const int c0 = tile * kTile, c1 = std::min(c0 + kTile, nb);
@@ -778,13 +760,7 @@ GF_ALWAYS_INLINE void FastLattice<Law>::verletStepActive(double t, double& sumX,
       } else {
         for (int c = c0; c < c1; ++c) slips |= state[c] != Stuck;
       }
-      if (!slips) continue;
-      mobileRow[tile] = n;
-      const int w = c1 - c0;
-      this->template frictionVectorRange<L>(r, c0, c1);
-      openKickAndDrift(w, half, h, invMass, gamma, fx + c0, fy + c0, frictionX_.data() + base + c0,
-                       frictionY_.data() + base + c0, mobile_.data() + base + c0, vx_.data() + base + c0,
-                       vy_.data() + base + c0, ux_.data() + base + c0, uy_.data() + base + c0);
+      if (slips) mobileRow[tile] = n;
     }
     std::swap(carryX, nextX);
     std::swap(carryY, nextY);
