@@ -6,6 +6,7 @@
 // The lattice (N_b = 120 by default, paper parameters, sigma = 2.8 %) is first driven past its
 // static peak so that blocks stick and slip as in a real run; then whole RK4 steps are timed.
 #include "gradfric/sbm/integrator.hpp"
+#include "gradfric/sbm/kernel_isa.hpp"
 #include "gradfric/sbm/lattice.hpp"
 #include "gradfric/sbm/model.hpp"
 
@@ -43,9 +44,10 @@ Setup makeSetup() {
 }
 
 template <template <class> class Lattice, Integrator scheme = Integrator::RK4, class Law = CoulombStickSlip,
-          bool SkipIdle = false>
+          bool SkipIdle = false, bool SmallStrain = false>
 void benchmarkStep(benchmark::State& state) {
   Setup s = makeSetup();
+  s.stiffness.smallStrain = SmallStrain;
   s.motion.integrator = scheme;
   s.motion.skipIdle = SkipIdle;  // false: the full sweep every step
   Lattice<Law> lattice(s.stiffness, Law::make(s.friction, FrictionLawSettings{}), s.motion);
@@ -65,6 +67,10 @@ void BM_FastLatticeVerlet(benchmark::State& state) { benchmarkStep<FastLattice, 
 void BM_FastLatticeVerletSkipIdle(benchmark::State& state) {
   benchmarkStep<FastLattice, Integrator::VelocityVerlet, CoulombStickSlip, true>(state);
 }
+// The same sliding lattice with small-strain springs (-sbm_spring small_strain): no square roots.
+void BM_FastLatticeVerletSmallStrain(benchmark::State& state) {
+  benchmarkStep<FastLattice, Integrator::VelocityVerlet, CoulombStickSlip, false, true>(state);
+}
 void BM_FastLatticeExponential(benchmark::State& state) {
   benchmarkStep<FastLattice, Integrator::RK4, ExponentialVelocityWeakening>(state);
 }
@@ -72,6 +78,7 @@ BENCHMARK(BM_FastLattice)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FastLatticeExponential)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FastLatticeVerlet)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FastLatticeVerletSkipIdle)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_FastLatticeVerletSmallStrain)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ReferenceLattice)->Unit(benchmark::kMillisecond);
 
 // Whole realisations of the default scene's graded plate (friction, linear, Delta = 0.2, the
@@ -163,6 +170,11 @@ int main(int argc, char** argv) {
   if (verlet > 0 && plain > 0)
     std::printf("N_b = %d: velocity Verlet full sweep %.1f ns per block per step, plain reference (RK4) %.1f ns\n",
                 blocksPerSide, verlet, plain);
+  const double small = reporter.nsPerBlockStep["BM_FastLatticeVerletSmallStrain"];
+  if (verlet > 0 && small > 0)
+    std::printf("N_b = %d: velocity Verlet full sweep, small-strain springs %.1f ns per block per step (%.2fx the exact springs' cost)\n",
+                blocksPerSide, small, small / verlet);
+  std::printf("kernel version in use: %s\n", kernelIsaName(kernelIsaInUse()));
   if (verlet > 0 && fast > 0)
     std::printf("N_b = %d: velocity Verlet %.1f ns per block per step, %.2fx cheaper per step than fast RK4\n",
                 blocksPerSide, verlet, fast / verlet);

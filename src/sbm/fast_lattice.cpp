@@ -4,6 +4,7 @@
 // spring is evaluated once per stage. Loops run along a row over structure-of-arrays data and
 // vectorise; the stick/slip transitions, which branch, sit in a short scalar loop of their own.
 #include "gradfric/sbm/integrator.hpp"
+#include "gradfric/sbm/kernel_isa.hpp"
 #include "gradfric/sbm/quiet_phase.hpp"
 #include "gradfric/sbm/spring.hpp"
 
@@ -13,9 +14,11 @@
 #include <utility>
 
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
-#define GF_KERNEL_CLONES __attribute__((target_clones("avx512f", "avx2", "default")))
+#define GF_KERNEL_ISA_CLONES 1
+#define GF_TARGET(isa) __attribute__((target(isa)))
 #else
-#define GF_KERNEL_CLONES
+#define GF_KERNEL_ISA_CLONES 0
+#define GF_TARGET(isa)
 #endif
 #define GF_ALWAYS_INLINE __attribute__((always_inline)) inline
 
@@ -75,7 +78,7 @@ namespace {
 // The springs from row r (rx, ry) to row r+1 (qx, qy): vertical, diagonal (c -> c+1 above) and
 // anti-diagonal (c+1 -> c above). Adds their forces to row r (fx, fy) and writes the reactions on
 // row r+1 into (nextX, nextY). The arrays are distinct: __restrict lets the loops vectorise.
-template <bool Graded>
+template <bool Graded, bool Small>
 GF_ALWAYS_INLINE void springsToRowAbove(int nb, double l, double diagonalLength, const double* __restrict kV,
                                         const double* __restrict kD, const double* __restrict rx,
                                         const double* __restrict ry, const double* __restrict qx,
@@ -83,21 +86,21 @@ GF_ALWAYS_INLINE void springsToRowAbove(int nb, double l, double diagonalLength,
                                         double* __restrict nextX, double* __restrict nextY) {
   const double kV0 = kV[0], kD0 = kD[0];
   for (int c = 0; c < nb; ++c) {
-    const auto [ax, ay] = springForce(Graded ? kV[c] : kV0, 0.0, l, l, qx[c] - rx[c], qy[c] - ry[c]);
+    const auto [ax, ay] = latticeSpringForce<Small>(Graded ? kV[c] : kV0, 0.0, l, l, qx[c] - rx[c], qy[c] - ry[c]);
     fx[c] += ax;
     fy[c] += ay;
     nextX[c] = -ax;
     nextY[c] = -ay;
   }
   for (int c = 0; c + 1 < nb; ++c) {
-    const auto [ax, ay] = springForce(Graded ? kD[c] : kD0, l, l, diagonalLength, qx[c + 1] - rx[c], qy[c + 1] - ry[c]);
+    const auto [ax, ay] = latticeSpringForce<Small>(Graded ? kD[c] : kD0, l, l, diagonalLength, qx[c + 1] - rx[c], qy[c + 1] - ry[c]);
     fx[c] += ax;
     fy[c] += ay;
     nextX[c + 1] -= ax;
     nextY[c + 1] -= ay;
   }
   for (int c = 0; c + 1 < nb; ++c) {
-    const auto [ax, ay] = springForce(Graded ? kD[c] : kD0, -l, l, diagonalLength, qx[c] - rx[c + 1], qy[c] - ry[c + 1]);
+    const auto [ax, ay] = latticeSpringForce<Small>(Graded ? kD[c] : kD0, -l, l, diagonalLength, qx[c] - rx[c + 1], qy[c] - ry[c + 1]);
     fx[c + 1] += ax;
     fy[c + 1] += ay;
     nextX[c] -= ax;
@@ -180,30 +183,186 @@ GF_ALWAYS_INLINE void updateRow(int nb, double toNext, double sixth, double invM
   }
 }
 
-// Velocity Verlet, second half kick of the previous step: v_n = v_{n-1/2} + h/2 a_n.
-GF_ALWAYS_INLINE void closeKick(int nb, double half, double invMass, double gamma, const double* __restrict fx,
-                                const double* __restrict fy, const double* __restrict kfx,
-                                const double* __restrict kfy, const double* __restrict mobile,
-                                double* __restrict vx, double* __restrict vy) {
+// The per-block arrays of one row that the fused Verlet update reads and writes; all distinct.
+struct VerletRow {
+  const double* __restrict fx;  // F_mot at t_n
+  const double* __restrict fy;
+  const double* __restrict staticStrength;   // offset to the row (per site) or the columns
+  const double* __restrict kineticStrength;
+  double* __restrict mobile;
+  double* __restrict vx;
+  double* __restrict vy;
+  double* __restrict ux;
+  double* __restrict uy;
+  double* __restrict kfx;  // friction of the last step on entry, of this step on exit
+  double* __restrict kfy;
+};
+
+// Velocity Verlet's whole update of one row in one pass, branch-free so that it vectorises: close
+// the last step's kick, the reversal test against that step's friction, the stick/slip decision
+// at t_n (as blends: a stuck block that the threshold does not hold starts to slip, a reversed one
+// that it holds re-sticks at zero velocity), this step's friction vector, the open kick and the
+// drift (v_{n+1/2} = v_n + h/2 a_n, u_{n+1} = u_n + h v_{n+1/2}). The arithmetic is that of the
+// separate passes it replaced (and of markReversals, transitions and frictionVector, which RK4
+// keeps), in the same order: the same numbers bit for bit. Returns whether a block
+// of the row started to slip or re-stuck (the caller's bookkeeping of states and first slips).
+template <class Law, SiteLayout L>
+GF_ALWAYS_INLINE bool verletRowUpdate(const Law& law, int nb, double half, double h, double invMass, double gamma,
+                                      VerletRow a) {
+  const double* __restrict fx = a.fx;
+  const double* __restrict fy = a.fy;
+  const double* __restrict staticStrength = a.staticStrength;
+  const double* __restrict kineticStrength = a.kineticStrength;
+  double* __restrict mobile = a.mobile;
+  double* __restrict vx = a.vx;
+  double* __restrict vy = a.vy;
+  double* __restrict ux = a.ux;
+  double* __restrict uy = a.uy;
+  double* __restrict kfx = a.kfx;
+  double* __restrict kfy = a.kfy;
+  std::int64_t changed = 0;
   for (int c = 0; c < nb; ++c) {
     const double m = mobile[c];
-    vx[c] += half * m * ((fx[c] - kfx[c]) * invMass - gamma * vx[c]);
-    vy[c] += half * m * ((fy[c] - kfy[c]) * invMass - gamma * vy[c]);
+    const double fxc = fx[c], fyc = fy[c];
+    const double oldKx = kfx[c], oldKy = kfy[c];
+    double wx = vx[c] + half * m * ((fxc - oldKx) * invMass - gamma * vx[c]);
+    double wy = vy[c] + half * m * ((fyc - oldKy) * invMass - gamma * vy[c]);
+    const bool reversed = wx * oldKx + wy * oldKy < 0.0;
+    const double threshold = L == SiteLayout::Uniform ? staticStrength[0] : staticStrength[c];
+    const double kinetic = L == SiteLayout::Uniform ? kineticStrength[0] : kineticStrength[c];
+    const double force2 = fxc * fxc + fyc * fyc;
+    const bool holds = Law::holds(force2, threshold);
+    const bool starts = (m == 0.0) & !holds;
+    const bool resticks = reversed & holds;
+    const double newM = starts ? 1.0 : resticks ? 0.0 : m;
+    wx = resticks ? 0.0 : wx;
+    wy = resticks ? 0.0 : wy;
+    changed |= std::int64_t(starts | resticks);
+    // The friction vector (frictionPerDirection, written without a branch around the division).
+    const double speed2 = wx * wx + wy * wy;
+    const bool moving = speed2 > 0.0;
+    const double dirX = moving ? wx : fxc;
+    const double dirY = moving ? wy : fyc;
+    const double norm2 = moving ? speed2 : force2;
+    const double speed = Law::weakensWithSpeed && moving ? std::sqrt(speed2) : 0.0;
+    const double sliding = law.slidingStrength(threshold, kinetic, speed);
+    const bool directed = norm2 > 0.0;
+    const double perNorm = (directed ? newM * sliding : 0.0) / std::sqrt(directed ? norm2 : 1.0);
+    const double kx = perNorm * dirX, ky = perNorm * dirY;
+    // Open this step's kick and drift.
+    wx += half * newM * ((fxc - kx) * invMass - gamma * wx);
+    wy += half * newM * ((fyc - ky) * invMass - gamma * wy);
+    mobile[c] = newM;
+    kfx[c] = kx;
+    kfy[c] = ky;
+    vx[c] = wx;
+    vy[c] = wy;
+    ux[c] += h * wx;
+    uy[c] += h * wy;
   }
+  return changed != 0;
 }
 
-// Velocity Verlet, first half kick and drift: v_{n+1/2} = v_n + h/2 a_n, u_{n+1} = u_n + h v_{n+1/2}.
-GF_ALWAYS_INLINE void openKickAndDrift(int nb, double half, double h, double invMass, double gamma,
-                                       const double* __restrict fx, const double* __restrict fy,
-                                       const double* __restrict kfx, const double* __restrict kfy,
-                                       const double* __restrict mobile, double* __restrict vx, double* __restrict vy,
-                                       double* __restrict ux, double* __restrict uy) {
-  for (int c = 0; c < nb; ++c) {
-    const double m = mobile[c];
-    vx[c] += half * m * ((fx[c] - kfx[c]) * invMass - gamma * vx[c]);
-    vy[c] += half * m * ((fy[c] - kfy[c]) * invMass - gamma * vy[c]);
-    ux[c] += h * vx[c];
-    uy[c] += h * vy[c];
+// The internal springs of one row: its horizontal springs and those to the row above.
+struct RowSprings {
+  int nb;
+  bool above;  // a row above exists
+  double l, diagonalLength;
+  const double* kH;
+  const double* kV;
+  const double* kD;
+  const double* rx;  // positions of the row (the row above follows at + nb)
+  const double* ry;
+  double* hx;  // horizontal spring forces (work space)
+  double* hy;
+  double* fx;  // forces on the row
+  double* fy;
+  double* nextX;  // reactions on the row above
+  double* nextY;
+};
+
+// Adds the row's springs to its forces, in the kernel's fixed order (horizontal, then the springs
+// to the row above).
+template <bool Graded, bool Small>
+GF_ALWAYS_INLINE void rowSprings(const RowSprings& s) {
+  const int nb = s.nb;
+  const double l = s.l;
+  const double* __restrict kH = s.kH;
+  const double* __restrict rx = s.rx;
+  const double* __restrict ry = s.ry;
+  double* __restrict hx = s.hx;
+  double* __restrict hy = s.hy;
+  double* __restrict fx = s.fx;
+  double* __restrict fy = s.fy;
+  const double kH0 = kH[0];
+  for (int c = 0; c + 1 < nb; ++c) {
+    const Force2 f = latticeSpringForce<Small>(Graded ? kH[c] : kH0, l, 0.0, l, rx[c + 1] - rx[c], ry[c + 1] - ry[c]);
+    hx[c] = f.x;
+    hy[c] = f.y;
+  }
+  for (int c = 0; c + 1 < nb; ++c) {
+    fx[c] += hx[c];
+    fy[c] += hy[c];
+  }
+  for (int c = 0; c + 1 < nb; ++c) {
+    fx[c + 1] -= hx[c];
+    fy[c + 1] -= hy[c];
+  }
+  if (s.above)
+    springsToRowAbove<Graded, Small>(nb, l, s.diagonalLength, s.kV, s.kD, rx, ry, rx + nb, ry + nb, fx, fy, s.nextX,
+                                     s.nextY);
+}
+
+// The springs a tile of the active set owns (columns c0 <= c < c1 of row r): horizontal, and
+// with a row above vertical, diagonal and anti-diagonal, stored as pieces.
+struct TilePieces {
+  double* hx;
+  double* hy;
+  double* vx;
+  double* vy;
+  double* dx;
+  double* dy;
+  double* ax;
+  double* ay;
+};
+
+template <bool Graded, bool Small>
+GF_ALWAYS_INLINE void tileSprings(int c0, int c1, int springEnd, bool above, double l, double diagonalLength,
+                                  const double* __restrict kH, const double* __restrict kV,
+                                  const double* __restrict kD, const double* __restrict rx,
+                                  const double* __restrict ry, const double* __restrict qx,
+                                  const double* __restrict qy, TilePieces p) {
+  const double kH0 = kH[0], kV0 = kV[0], kD0 = kD[0];
+  double* __restrict hx = p.hx;
+  double* __restrict hy = p.hy;
+  double* __restrict vx = p.vx;
+  double* __restrict vy = p.vy;
+  double* __restrict dx = p.dx;
+  double* __restrict dy = p.dy;
+  double* __restrict ax = p.ax;
+  double* __restrict ay = p.ay;
+  for (int c = c0; c < springEnd; ++c) {
+    const Force2 f = latticeSpringForce<Small>(Graded ? kH[c] : kH0, l, 0.0, l, rx[c + 1] - rx[c], ry[c + 1] - ry[c]);
+    hx[c] = f.x;
+    hy[c] = f.y;
+  }
+  if (!above) return;
+  for (int c = c0; c < c1; ++c) {
+    const Force2 f = latticeSpringForce<Small>(Graded ? kV[c] : kV0, 0.0, l, l, qx[c] - rx[c], qy[c] - ry[c]);
+    vx[c] = f.x;
+    vy[c] = f.y;
+  }
+  for (int c = c0; c < springEnd; ++c) {
+    const Force2 f =
+        latticeSpringForce<Small>(Graded ? kD[c] : kD0, l, l, diagonalLength, qx[c + 1] - rx[c], qy[c + 1] - ry[c]);
+    dx[c] = f.x;
+    dy[c] = f.y;
+  }
+  for (int c = c0; c < springEnd; ++c) {
+    const Force2 f =
+        latticeSpringForce<Small>(Graded ? kD[c] : kD0, -l, l, diagonalLength, qx[c] - rx[c + 1], qy[c] - ry[c + 1]);
+    ax[c] = f.x;
+    ay[c] = f.y;
   }
 }
 
@@ -224,41 +383,33 @@ GF_ALWAYS_INLINE void FastLattice<Law>::rowForces(int r, const double* px, const
   const double drivenY = motion_.sliderVelocityY * t;
   const double* kH = stiffness_.horizontal.data();
   const double* kS = stiffness_.slider.data();
-  const double kH0 = kH[0], kS0 = kS[0];
-  double* fx = fx_.data();
-  double* fy = fy_.data();
-  double* hx = springX_.data();
-  double* hy = springY_.data();
-  const double* rx = px + r * nb;
-  const double* ry = py + r * nb;
+  const double kS0 = kS[0];
+  double* __restrict fx = fx_.data();
+  double* __restrict fy = fy_.data();
+  double* __restrict hx = springX_.data();
+  double* __restrict hy = springY_.data();
+  const double* __restrict rx = px + r * nb;
+  const double* __restrict ry = py + r * nb;
   for (int c = 0; c < nb; ++c) {
     const double k = Graded ? kS[c] : kS0;
     fx[c] = k * (drivenX - rx[c]) + carryX[c];
     fy[c] = k * (drivenY - ry[c]) + carryY[c];
   }
   if (WantSum) {  // the macroscopic friction force: the sum of the slider forces
+    // In registers: through the references every addition would wait on a store and a load.
+    double x = sumX, y = sumY;
     for (int c = 0; c < nb; ++c) {
       const double k = Graded ? kS[c] : kS0;
-      sumX += k * (drivenX - rx[c]);
-      sumY += k * (drivenY - ry[c]);
+      x += k * (drivenX - rx[c]);
+      y += k * (drivenY - ry[c]);
     }
+    sumX = x;
+    sumY = y;
   }
-  for (int c = 0; c + 1 < nb; ++c) {
-    const Force2 f = springForce(Graded ? kH[c] : kH0, l, 0.0, l, rx[c + 1] - rx[c], ry[c + 1] - ry[c]);
-    hx[c] = f.x;
-    hy[c] = f.y;
-  }
-  for (int c = 0; c + 1 < nb; ++c) {
-    fx[c] += hx[c];
-    fy[c] += hy[c];
-  }
-  for (int c = 0; c + 1 < nb; ++c) {
-    fx[c + 1] -= hx[c];
-    fy[c + 1] -= hy[c];
-  }
-  if (r + 1 < nb)
-    springsToRowAbove<Graded>(nb, l, diagonalLength, stiffness_.vertical.data(), stiffness_.diagonal.data(), rx, ry,
-                              rx + nb, ry + nb, fx, fy, nextX, nextY);
+  const RowSprings springs{nb, r + 1 < nb, l, diagonalLength, kH, stiffness_.vertical.data(), stiffness_.diagonal.data(),
+                           rx, ry, hx, hy, fx, fy, nextX, nextY};
+  if (stiffness_.smallStrain) rowSprings<Graded, true>(springs);
+  else rowSprings<Graded, false>(springs);
 }
 
 // Stick/slip transitions of row r with its driving forces at t_n (see integrator.hpp). Branches,
@@ -430,17 +581,48 @@ GF_ALWAYS_INLINE void FastLattice<Law>::verletStep(double t, double& sumX, doubl
   const double h = motion_.timeStep;
   const double invMass = 1.0 / motion_.mass;
   const double gamma = motion_.damping;
-  this->template sweepRows<Graded, true>(ux_.data(), uy_.data(), t, sumX, sumY, [&](int r) {
+  double* carryX = carryX_.data();
+  double* carryY = carryY_.data();
+  double* nextX = nextX_.data();
+  double* nextY = nextY_.data();
+  std::fill(carryX, carryX + nb, 0.0);
+  std::fill(carryY, carryY + nb, 0.0);
+  for (int r = 0; r < nb; ++r) {
     const int base = r * nb;
-    closeKick(nb, half, invMass, gamma, fx_.data(), fy_.data(), frictionX_.data() + base, frictionY_.data() + base,
-              mobile_.data() + base, vx_.data() + base, vy_.data() + base);
-    markReversals(r);
-    this->template transitions<L>(r, t);
-    this->template frictionVector<L>(r);
-    openKickAndDrift(nb, half, h, invMass, gamma, fx_.data(), fy_.data(), frictionX_.data() + base,
-                     frictionY_.data() + base, mobile_.data() + base, vx_.data() + base, vy_.data() + base,
-                     ux_.data() + base, uy_.data() + base);
-  });
+    this->template rowForces<Graded, true>(r, ux_.data(), uy_.data(), t, carryX, carryY, nextX, nextY, sumX, sumY);
+    const int sites = L == SiteLayout::PerSite ? base : 0;
+    const VerletRow row{fx_.data(),
+                        fy_.data(),
+                        law_.sites.staticStrength.data() + sites,
+                        law_.sites.kineticStrength.data() + sites,
+                        mobile_.data() + base,
+                        vx_.data() + base,
+                        vy_.data() + base,
+                        ux_.data() + base,
+                        uy_.data() + base,
+                        frictionX_.data() + base,
+                        frictionY_.data() + base};
+    if (verletRowUpdate<Law, L>(law_, nb, half, h, invMass, gamma, row)) syncStates(r, t);
+    std::swap(carryX, nextX);
+    std::swap(carryY, nextY);
+  }
+}
+
+// After the fused update changed a stick state in row r: the states (Stuck where mobile is zero)
+// and the first slips of blocks that slip for the first time, at t_n.
+template <class Law>
+void FastLattice<Law>::syncStates(int r, double t) {
+  const int base = r * nb_;
+  for (int c = 0; c < nb_; ++c) {
+    const int i = base + c;
+    const bool slips = mobile_[i] != 0.0;
+    state_[i] = slips ? Slipping : Stuck;
+    if (slips && !everSlipped_[i]) {
+      everSlipped_[i] = 1;
+      ++slipped_;
+      if (firstSlip_) firstSlip_[i] = t;
+    }
+  }
 }
 
 // Velocity Verlet on the active set (see integrator.hpp): the same step as verletStep, with the
@@ -465,7 +647,7 @@ GF_ALWAYS_INLINE void FastLattice<Law>::verletStepActive(double t, double& sumX,
   const double* kV = stiffness_.vertical.data();
   const double* kD = stiffness_.diagonal.data();
   const double* kS = stiffness_.slider.data();
-  const double kH0 = kH[0], kV0 = kV[0], kD0 = kD[0], kS0 = kS[0];
+  const double kS0 = kS[0];
   double* carryX = carryX_.data();
   double* carryY = carryY_.data();
   double* nextX = nextX_.data();
@@ -502,29 +684,10 @@ GF_ALWAYS_INLINE void FastLattice<Law>::verletStepActive(double t, double& sumX,
       evaluated = n;
       ++stale;
       const int c0 = tile * kTile, c1 = std::min(c0 + kTile, nb), springEnd = std::min(c1, nb - 1);
-      for (int c = c0; c < springEnd; ++c) {
-        const Force2 f = springForce(Graded ? kH[c] : kH0, l, 0.0, l, rx[c + 1] - rx[c], ry[c + 1] - ry[c]);
-        hx[c] = f.x;
-        hy[c] = f.y;
-      }
-      if (!above) continue;
-      for (int c = c0; c < c1; ++c) {
-        const Force2 f = springForce(Graded ? kV[c] : kV0, 0.0, l, l, qx[c] - rx[c], qy[c] - ry[c]);
-        vx[c] = f.x;
-        vy[c] = f.y;
-      }
-      for (int c = c0; c < springEnd; ++c) {
-        const Force2 f =
-            springForce(Graded ? kD[c] : kD0, l, l, diagonalLength, qx[c + 1] - rx[c], qy[c + 1] - ry[c]);
-        dx[c] = f.x;
-        dy[c] = f.y;
-      }
-      for (int c = c0; c < springEnd; ++c) {
-        const Force2 f =
-            springForce(Graded ? kD[c] : kD0, -l, l, diagonalLength, qx[c] - rx[c + 1], qy[c] - ry[c + 1]);
-        ax[c] = f.x;
-        ay[c] = f.y;
-      }
+      const TilePieces pieces{hx, hy, vx, vy, dx, dy, ax, ay};
+      if (stiffness_.smallStrain)
+        tileSprings<Graded, true>(c0, c1, springEnd, above, l, diagonalLength, kH, kV, kD, rx, ry, qx, qy, pieces);
+      else tileSprings<Graded, false>(c0, c1, springEnd, above, l, diagonalLength, kH, kV, kD, rx, ry, qx, qy, pieces);
     }
     // Assemble F_mot of the row and the reactions on the row above as rowForces does.
     for (int c = 0; c < nb; ++c) {
@@ -560,23 +723,31 @@ GF_ALWAYS_INLINE void FastLattice<Law>::verletStepActive(double t, double& sumX,
         nextY[c] -= ay[c];
       }
     }
-    // The row's update, tile by tile where blocks slip (before or after the transitions).
-    std::int64_t* mobileRow = mobileStep_.data() + r * tiles;
-    for (int tile = 0; tile < tiles; ++tile) {
-      if (mobileRow[tile] != n - 1) continue;  // no block slipped in the last step
-      const int c0 = tile * kTile, w = std::min(kTile, nb - c0);
-      closeKick(w, half, invMass, gamma, fx + c0, fy + c0, frictionX_.data() + base + c0,
-                frictionY_.data() + base + c0, mobile_.data() + base + c0, vx_.data() + base + c0,
-                vy_.data() + base + c0);
-      markReversalsRange(r, c0, c0 + w);
-    }
-    // The transitions, with the slider-force sum in the kernel's order (the positions are u_n
-    // until the drift below).
-    this->template transitionsWith<L>(r, t, [&](int c) {
+    // The slider-force sum in the kernel's order (the positions are still u_n), then the row's
+    // update as in verletStep. On a tile without a slipping block it changes nothing (velocity
+    // and mobile zero); it is one vector pass over the row, cheaper than sorting the tiles out.
+    double x = sumX, y = sumY;
+    for (int c = 0; c < nb; ++c) {
       const double k = Graded ? kS[c] : kS0;
-      sumX += k * (drivenX - rx[c]);
-      sumY += k * (drivenY - ry[c]);
-    });
+      x += k * (drivenX - rx[c]);
+      y += k * (drivenY - ry[c]);
+    }
+    sumX = x;
+    sumY = y;
+    const int sites = L == SiteLayout::PerSite ? base : 0;
+    const VerletRow update{fx,
+                           fy,
+                           law_.sites.staticStrength.data() + sites,
+                           law_.sites.kineticStrength.data() + sites,
+                           mobile_.data() + base,
+                           vx_.data() + base,
+                           vy_.data() + base,
+                           ux_.data() + base,
+                           uy_.data() + base,
+                           frictionX_.data() + base,
+                           frictionY_.data() + base};
+    if (verletRowUpdate<Law, L>(law_, nb, half, h, invMass, gamma, update)) syncStates(r, t);
+    std::int64_t* mobileRow = mobileStep_.data() + r * tiles;
     const std::uint8_t* state = state_.data() + base;  // Stuck = 0: mobile where non-zero
     for (int tile = 0; tile < tiles; ++tile) {
       const int c0 = tile * kTile, c1 = std::min(c0 + kTile, nb);
@@ -589,13 +760,7 @@ GF_ALWAYS_INLINE void FastLattice<Law>::verletStepActive(double t, double& sumX,
       } else {
         for (int c = c0; c < c1; ++c) slips |= state[c] != Stuck;
       }
-      if (!slips) continue;
-      mobileRow[tile] = n;
-      const int w = c1 - c0;
-      this->template frictionVectorRange<L>(r, c0, c1);
-      openKickAndDrift(w, half, h, invMass, gamma, fx + c0, fy + c0, frictionX_.data() + base + c0,
-                       frictionY_.data() + base + c0, mobile_.data() + base + c0, vx_.data() + base + c0,
-                       vy_.data() + base + c0, ux_.data() + base + c0, uy_.data() + base + c0);
+      if (slips) mobileRow[tile] = n;
     }
     std::swap(carryX, nextX);
     std::swap(carryY, nextY);
@@ -622,12 +787,31 @@ GF_ALWAYS_INLINE void fullStep(FastLattice<Law>& lattice, bool verlet, bool acti
   lattice.template rk4Stage<Graded, L, 4>(t + h, sumX, sumY);
 }
 
-// One compiled entry per law x (uniform|graded stiffness) x (friction layout), each cloned for
-// AVX-512, AVX2 and baseline x86-64 and chosen at load time: portable and fast.
+// One compiled entry per law x (uniform|graded stiffness) x (friction layout), each compiled for
+// AVX-512, AVX2 and baseline x86-64; the one the processor supports best is chosen at run time
+// (kernel_isa.hpp: a test may force each in turn to check that they agree bit for bit).
 template <class Law, bool Graded, SiteLayout L>
-GF_KERNEL_CLONES void stepVariant(FastLattice<Law>& lattice, bool verlet, bool active, double t, double h,
-                                  double& sumX, double& sumY) {
+GF_TARGET("avx512f") void stepAvx512(FastLattice<Law>& lattice, bool verlet, bool active, double t, double h,
+                                     double& sumX, double& sumY) {
   fullStep<Law, Graded, L>(lattice, verlet, active, t, h, sumX, sumY);
+}
+template <class Law, bool Graded, SiteLayout L>
+GF_TARGET("avx2") void stepAvx2(FastLattice<Law>& lattice, bool verlet, bool active, double t, double h,
+                                double& sumX, double& sumY) {
+  fullStep<Law, Graded, L>(lattice, verlet, active, t, h, sumX, sumY);
+}
+template <class Law, bool Graded, SiteLayout L>
+void stepBaseline(FastLattice<Law>& lattice, bool verlet, bool active, double t, double h, double& sumX, double& sumY) {
+  fullStep<Law, Graded, L>(lattice, verlet, active, t, h, sumX, sumY);
+}
+
+template <class Law, bool Graded, SiteLayout L>
+void stepVariant(FastLattice<Law>& lattice, bool verlet, bool active, double t, double h, double& sumX, double& sumY) {
+  switch (kernelIsaInUse()) {
+    case KernelIsa::Avx512: stepAvx512<Law, Graded, L>(lattice, verlet, active, t, h, sumX, sumY); return;
+    case KernelIsa::Avx2: stepAvx2<Law, Graded, L>(lattice, verlet, active, t, h, sumX, sumY); return;
+    default: stepBaseline<Law, Graded, L>(lattice, verlet, active, t, h, sumX, sumY); return;
+  }
 }
 
 template <class Law, bool Graded>
@@ -708,6 +892,49 @@ StepObservation FastLattice<Law>::step() {
   dispatch(observation.sliderForceX, observation.sliderForceY);
   ++steps_;
   return observation;
+}
+
+namespace {
+KernelIsa forcedIsa = KernelIsa::Automatic;
+
+KernelIsa bestIsa() {
+#if GF_KERNEL_ISA_CLONES
+  __builtin_cpu_init();
+  if (__builtin_cpu_supports("avx512f")) return KernelIsa::Avx512;
+  if (__builtin_cpu_supports("avx2")) return KernelIsa::Avx2;
+#endif
+  return KernelIsa::Baseline;
+}
+}  // namespace
+
+bool kernelIsaSupported(KernelIsa isa) {
+  switch (isa) {
+    case KernelIsa::Automatic:
+    case KernelIsa::Baseline: return true;
+    case KernelIsa::Avx2: return bestIsa() != KernelIsa::Baseline;
+    case KernelIsa::Avx512: return bestIsa() == KernelIsa::Avx512;
+  }
+  return false;
+}
+
+bool forceKernelIsa(KernelIsa isa) {
+  if (!kernelIsaSupported(isa)) return false;
+  forcedIsa = isa;
+  return true;
+}
+
+KernelIsa kernelIsaInUse() {
+  static const KernelIsa best = bestIsa();
+  return forcedIsa == KernelIsa::Automatic ? best : forcedIsa;
+}
+
+const char* kernelIsaName(KernelIsa isa) {
+  switch (isa) {
+    case KernelIsa::Avx512: return "avx512f";
+    case KernelIsa::Avx2: return "avx2";
+    case KernelIsa::Baseline: return "baseline x86-64";
+    default: return "automatic";
+  }
 }
 
 #define GF_INSTANTIATE_FAST_LATTICE(Law) template class FastLattice<Law>;

@@ -31,6 +31,7 @@ LatticeStiffness buildStiffness(const Parameters& p, const Grading& grading) {
   s.spacing = p.spacing();
   const PropertySampler sampler(grading, nb, nb);
   s.graded = sampler.gradesModulus();
+  s.smallStrain = p.smallStrain;
   std::vector<double> modulus(nb);
   for (int c = 0; c < nb; ++c) modulus[c] = p.plate.youngsModulus * sampler.modulus(columnCentre(c, nb), kMiddleRow);
   s.vertical.resize(nb);
@@ -141,7 +142,8 @@ LatticeEnergy latticeEnergy(const LatticeStiffness& s, double mass, const double
     const double dx = restX + ux[j] - ux[i], dy = restY + uy[j] - uy[i];
     const double length = std::sqrt(dx * dx + dy * dy);
     const double dux = ux[j] - ux[i], duy = uy[j] - uy[i];
-    const double extension = (2.0 * (restX * dux + restY * duy) + dux * dux + duy * duy) / (length + restLength);
+    const double extension = s.smallStrain ? (restX * dux + restY * duy) / restLength  // e . du
+                                           : (2.0 * (restX * dux + restY * duy) + dux * dux + duy * duy) / (length + restLength);
     e.internal += 0.5 * k * extension * extension;
   };
   for (int r = 0; r < nb; ++r) {
@@ -172,7 +174,8 @@ void blockStress(const LatticeStiffness& s, double thickness, const double* ux, 
   auto add = [&](int rr, int cc, double k, double restX, double restY, double restLength) {
     if (rr < 0 || rr >= nb || cc < 0 || cc >= nb) return;
     const int i = r * nb + c, j = rr * nb + cc;
-    const auto [fx, fy] = springForce(k, restX, restY, restLength, ux[j] - ux[i], uy[j] - uy[i]);
+    const auto [fx, fy] = s.smallStrain ? latticeSpringForce<true>(k, restX, restY, restLength, ux[j] - ux[i], uy[j] - uy[i])
+                                        : latticeSpringForce<false>(k, restX, restY, restLength, ux[j] - ux[i], uy[j] - uy[i]);
     const double dx = restX + ux[j] - ux[i], dy = restY + uy[j] - uy[i];
     sxx += dx * fx;
     syy += dy * fy;

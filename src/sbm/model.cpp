@@ -265,6 +265,8 @@ std::vector<std::string> activeEffects(const Parameters& p, const Grading& g, co
     effects.push_back(p.skipIdle ? "idle work skipped: the phase before the first slip in closed form (bit for bit)"
                                  : "every block stepped from t = 0 (-sbm_skip_idle false)");
   }
+  effects.push_back(p.smallStrain ? "small-strain springs: forces linearised about the rest directions (-sbm_spring)"
+                                  : "exact springs: force along the current direction of each spring");
   effects.push_back("sliding angle theta = " + formatReal(p.plate.slidingAngle) + " degree");
   std::string observed = "observables: mu_s";
   if (q.measurement.kinetic) observed += ", mu_k";

@@ -38,6 +38,9 @@ Parameters readParameters(MPI_Comm comm, RunParameters* record, const Plate& pla
   const std::string integrator = o.choice("integrator", "verlet", {"rk4", "verlet"},
                                           "time integrator, fixed step: classical RK4 (4 force evaluations a step) or velocity Verlet (1)");
   p.integrator = integrator == "verlet" ? Integrator::VelocityVerlet : Integrator::RK4;
+  p.smallStrain = o.choice("spring", "exact", {"exact", "small_strain"},
+                           "spring force: exact (k (|d| - l0) d/|d|) or small_strain (k (e.du) e, linearised about the "
+                           "rest direction e: no square root; docs/accuracy.md)") == "small_strain";
   p.skipIdle = o.flag("skip_idle", p.skipIdle,
                       "skip work that cannot change the results: jump over the phase before the first slip "
                       "(bit for bit the stepped run; false: step every block from t = 0)");

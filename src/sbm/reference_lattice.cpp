@@ -54,7 +54,9 @@ void ReferenceLattice<Law>::forces(const std::vector<Block>& y, double t, std::v
           k = stiffness_.diagonal[std::min(c, cc)];
           restLength = ld;
         }
-        const Force2 f = springForce(k, n.dc * l, n.dr * l, restLength, y[j].ux - y[i].ux, y[j].uy - y[i].uy);
+        const double dux = y[j].ux - y[i].ux, duy = y[j].uy - y[i].uy;
+        const Force2 f = stiffness_.smallStrain ? latticeSpringForce<true>(k, n.dc * l, n.dr * l, restLength, dux, duy)
+                                                : latticeSpringForce<false>(k, n.dc * l, n.dr * l, restLength, dux, duy);
         Fx += f.x;
         Fy += f.y;
       }

@@ -124,6 +124,7 @@ private:
   void frictionVectorRange(int r, int c0, int c1);
   void markReversals(int r);
   void markReversalsRange(int r, int c0, int c1);
+  void syncStates(int r, double t);
   LatticeStiffness stiffness_;
   Law law_;  // owns the per-block friction strengths
   Motion motion_;

@@ -15,6 +15,7 @@ struct LatticeStiffness {
   int blocksPerSide = 0;
   double spacing = 0.0;
   bool graded = false;              // false: each kind of spring has one stiffness everywhere
+  bool smallStrain = false;         // springs linearised about their rest direction (Parameters)
   std::vector<double> horizontal;   // [N_b - 1] axial spring between columns c and c+1 [N/m]
   std::vector<double> vertical;     // [N_b] axial springs inside column c
   std::vector<double> diagonal;     // [N_b - 1] both diagonals between columns c and c+1

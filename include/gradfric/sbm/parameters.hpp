@@ -41,6 +41,9 @@ struct Parameters {
   // phase before the first slip, bit for bit the stepped run. It relies on a load linear in time
   // and a constant normal force: turn it off for anything else.
   bool skipIdle = true;
+  // Springs linearised about their rest direction (-sbm_spring small_strain): no square root,
+  // F = k (e . du) e. Exact (large-rotation) springs by default; docs/accuracy.md has the study.
+  bool smallStrain = false;
   // The load-dependent pressure p_i(t) = p_i^0 (1 + mu(t) g_i) (-pressure_response; none by
   // default: every block keeps its static normal force). It switches skipIdle off.
   PressureResponse pressureResponse;

@@ -22,4 +22,18 @@ inline Force2 springForce(double k, double restX, double restY, double restLengt
   return {scale * dx, scale * dy};
 }
 
+// The same spring linearised about its rest direction (small strain): F = k (e . du) e with the
+// unit vector e = (unitX, unitY) from i to j at rest. No square root, no division.
+inline Force2 smallStrainSpringForce(double k, double unitX, double unitY, double dux, double duy) {
+  const double scale = k * (unitX * dux + unitY * duy);
+  return {scale * unitX, scale * unitY};
+}
+
+// One spring of the lattice, exact or small strain (chosen at compile time in the kernels).
+template <bool SmallStrain>
+inline Force2 latticeSpringForce(double k, double restX, double restY, double restLength, double dux, double duy) {
+  if constexpr (SmallStrain) return smallStrainSpringForce(k, restX / restLength, restY / restLength, dux, duy);
+  else return springForce(k, restX, restY, restLength, dux, duy);
+}
+
 }  // namespace gradfric::sbm
