@@ -26,6 +26,8 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <cstdio>
+#include <string>
 
 static const char help[] =
     "gradfric-fem: explicit 3D FEM of an elastic plate sliding on a rigid plane with penalty contact and the\n"
@@ -102,6 +104,23 @@ void printPlan(MPI_Comm comm, const FemRun& run, const PlateModel& model, RunPar
     for (const auto& line : describeFields(*run.grading.fields)) PetscPrintf(comm, "  %s\n", line.c_str());
 }
 
+// The mu_k window used and its steadiness (docs/accuracy_fem.md, "The steady kinetic window").
+std::string describeKineticWindow(const FrictionSummary& f, const FrictionMeasurement& m, double load) {
+  if (!m.kinetic || !f.kineticComplete) return "";
+  char text[400];
+  const int n = std::snprintf(text, sizeof text,
+                              "  mu_k window                     %.4e-%.4e s (%.2f-%.2f t_load after the peak), "
+                              "quarters' means spread %.3f %%",
+                              f.kineticFrom, f.kineticTo, (f.kineticFrom - f.peakTime) / load,
+                              (f.kineticTo - f.peakTime) / load, 100 * f.kineticSpread);
+  const std::string verdict =
+      !f.kineticSteadyTested ? ": fixed window, steadiness not required (-friction_muk_steady_tol 0)\n"
+      : f.kineticSteady      ? ": steady (tolerance " + formatReal(100 * m.kineticSteadyTolerance) + " %)\n"
+                             : ": NOT steady by the latest start (-friction_muk_latest_delay; tolerance " +
+                              formatReal(100 * m.kineticSteadyTolerance) + " %)\n";
+  return std::string(text, std::min<std::size_t>(n, sizeof text - 1)) + verdict;
+}
+
 void printResults(MPI_Comm comm, const FemRun& run, const FemRunResult& r, double wall) {
   const double eq2 = run.params.eq2PeakTime();
   const FrictionSummary& f = r.friction;
@@ -115,6 +134,7 @@ void printResults(MPI_Comm comm, const FemRun& run, const FemRunResult& r, doubl
               "  peak time after sliding start   %.6e s   (Eq. 2: %.6e s, ratio %.4f)\n"
               "  first slip after sliding start  %.6e s\n"
               "  mu_k (kinetic window)           %s%s\n"
+              "%s"
               "  steps %ld, dt %.4e s, wall %.2f s (pressure %.2f s, sliding %.2f s), %.3f ms/step\n",
               r.settledNormalForce, withErrorBar(f.muStatic, error).c_str(),
               f.peakConfirmed ? "" : "  (peak not confirmed)", f.peakTime, eq2, f.peakTime / eq2, f.firstSlipTime,
@@ -122,7 +142,7 @@ void printResults(MPI_Comm comm, const FemRun& run, const FemRunResult& r, doubl
               !run.params.measurement.kinetic ? "  (not asked: -friction_observables)"
               : f.kineticComplete             ? ""
                                               : "  (window incomplete)",
-              r.steps, r.dt, wall, r.wallPressure, r.wallSliding, 1e3 * wall / std::max(1L, r.steps));
+              describeKineticWindow(f, resolved.measurement, eq2).c_str(), r.steps, r.dt, wall, r.wallPressure, r.wallSliding, 1e3 * wall / std::max(1L, r.steps));
   if (r.stoppedByTS)
     PetscPrintf(comm, "  (the TS's limits -ts_max_steps / -ts_max_time ended the run %s)\n",
                 r.time.empty() ? "before the sliding step" : "before the observables were known");

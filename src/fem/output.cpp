@@ -277,6 +277,14 @@ void OutputFiles::writeHistory(const PlateModel& model, const FemRunResult& r, c
       writeRealAttribute(results, "settled_normal_force", r.settledNormalForce);
       writeIntAttribute(results, "peak_confirmed", r.friction.peakConfirmed ? 1 : 0);
       writeIntAttribute(results, "kinetic_window_complete", r.friction.kineticComplete ? 1 : 0);
+      {  // the mu_k window used and its steadiness (docs/accuracy_fem.md, "The steady kinetic window")
+        const FrictionSummary& f = r.friction;
+        writeRealAttribute(results, "mu_k_window_start", f.kineticFrom);
+        writeRealAttribute(results, "mu_k_window_end", f.kineticTo);
+        writeRealAttribute(results, "mu_k_window_spread", f.kineticSpread);
+        writeIntAttribute(results, "mu_k_window_steady", !f.kineticSteadyTested ? -1 : f.kineticSteady ? 1 : 0);
+        writeRealAttribute(results, "mu_k_steady_tolerance", model.params().measurement.kineticSteadyTolerance);
+      }
       writeRealAttribute(results, "dt", r.dt);
       writeRealAttribute(results, "stable_dt", r.stableDt);
       writeIntAttribute(results, "steps", static_cast<int>(r.steps));
@@ -285,6 +293,9 @@ void OutputFiles::writeHistory(const PlateModel& model, const FemRunResult& r, c
       for (const char* name : {"peak_time", "eq2_peak_time", "first_slip_time", "slide_start", "dt", "stable_dt",
                                "wall_seconds"})
         writeStringAttribute(units, name, "s");
+      for (const char* name : {"mu_k_window_start", "mu_k_window_end"}) writeStringAttribute(units, name, "s");
+      for (const char* name : {"mu_k_window_spread", "mu_k_window_steady", "mu_k_steady_tolerance"})
+        writeStringAttribute(units, name, "1");
       for (const char* name : {"mu_s", "mu_k", "mu_s_discretisation_error", "mu_k_discretisation_error", "settled_normal_force", "peak_confirmed", "kinetic_window_complete",
                                "steps"})
         writeStringAttribute(units, name, "1");

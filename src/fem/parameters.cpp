@@ -5,6 +5,7 @@
 #include "gradfric/physics/friction_options.hpp"
 
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -98,18 +99,26 @@ void FemParameters::resolveDerived() {
   if (rampTime < 0) rampTime = 20 * H / cs;
   if (settleTime < 0) settleTime = 10 * H / cs;
   const double ts = eq2PeakTime();
-  if (slideTime < 0) slideTime = 3.0 * ts;
-  // The defaults of readFrictionMeasurement (friction_options.cpp), with t_load = Eq. 2.
+  // The defaults of readFrictionMeasurement (friction_options.cpp) with the FEM's steady window,
+  // t_load = Eq. 2.
   FrictionMeasurement& m = measurement;
   if (m.historyInterval < 0) m.historyInterval = 1e-3 * ts;
   if (m.kineticDelay < 0) m.kineticDelay = 0.5 * ts;
   if (m.kineticWidth < 0) m.kineticWidth = 1.0 * ts;
+  if (m.kineticSteadyTolerance < 0) m.kineticSteadyTolerance = kMukSteadyTolerance;
+  if (m.kineticLatestDelay < 0) m.kineticLatestDelay = std::max(kMukLatestDelay * ts, m.kineticDelay);
   if (m.peakHold < 0) m.peakHold = 0.25 * ts;
+  // Long enough for the latest window: 1.5 t_load for the peak and its confirmation, then the
+  // window (3 t_load with the fixed window, as before the steady rule).
+  if (slideTime < 0)
+    slideTime = 1.5 * ts + (m.kineticSteadyTolerance > 0 ? std::max(m.kineticLatestDelay, m.kineticDelay) : m.kineticDelay) +
+                m.kineticWidth;
 }
 
 FrictionMeasurement derivedMeasurement() {
   FrictionMeasurement m;
   m.historyInterval = m.kineticDelay = m.kineticWidth = m.peakHold = -1.0;
+  m.kineticSteadyTolerance = m.kineticLatestDelay = -1.0;
   return m;
 }
 
@@ -184,7 +193,7 @@ FemParameters readFemParameters(MPI_Comm comm, RunParameters* record, const Plat
                            "blow-up monitor: stop when kinetic + elastic energy exceeds this x (energy put in + p^2 L^2 H / 2E)");
   if (auto t = o.realIfSet("ramp_time", "s", "pressure ramp duration", "20 H/c_s")) q.rampTime = *t;
   if (auto t = o.realIfSet("settle_time", "s", "hold under pressure before sliding", "10 H/c_s")) q.settleTime = *t;
-  if (auto t = o.realIfSet("slide_time", "s", "longest sliding duration", "3 * Eq. 2 peak time")) q.slideTime = *t;
+  if (auto t = o.realIfSet("slide_time", "s", "longest sliding duration", "1.5 t_load + the latest mu_k window's end (Eq. 2 t_load)")) q.slideTime = *t;
   q.stopWhenKnown = o.flag("stop_when_known", true, "stop once the -friction_observables are known");
   q.partitioner = o.choice("partitioner", "metis", {"metis", "ptscotch", "simple"}, "mesh partitioner");
   q.output = o.text("output", "", "HDF5 results file (empty: none); snapshots go to <name>_fields.h5 + .xmf");
@@ -233,6 +242,10 @@ FemParameters readFemParameters(MPI_Comm comm, RunParameters* record, const Plat
   o.requireAtLeast("monitor_every", q.monitorEvery, 1);
   o.requireRange("monitor_factor", q.monitorFactor, 1.0, 1e300, ">= 1");
 
+  // The shared friction measurement, its times derived from the FEM's loading time (Eq. 2 with H)
+  // and the FEM's steady mu_k window (docs/accuracy_fem.md, "The steady kinetic window").
+  q.measurement = readFrictionMeasurement(comm, record, q.eq2PeakTime(),
+                                          KineticWindowDefaults{kMukSteadyTolerance, kMukLatestDelay});
   FemParameters derived = q;
   derived.resolveDerived();
   if (!o.wasSet("kn")) o.recordDerived("kn", derived.kn, "Pa/m", "normal penalty stiffness k_n");
@@ -244,8 +257,6 @@ FemParameters readFemParameters(MPI_Comm comm, RunParameters* record, const Plat
   if (!o.wasSet("ramp_time")) o.recordDerived("ramp_time", derived.rampTime, "s", "pressure ramp duration");
   if (!o.wasSet("settle_time")) o.recordDerived("settle_time", derived.settleTime, "s", "hold under pressure");
   if (!o.wasSet("slide_time")) o.recordDerived("slide_time", derived.slideTime, "s", "longest sliding duration");
-  // The shared friction measurement, its times derived from the FEM's loading time (Eq. 2 with H).
-  derived.measurement = readFrictionMeasurement(comm, record, derived.eq2PeakTime());
   return derived;
 }
 

@@ -1,5 +1,6 @@
 #include "gradfric/physics/friction_options.hpp"
 
+#include "gradfric/core/format.hpp"
 #include "gradfric/core/input_error.hpp"
 
 #include <petscsys.h>
@@ -23,7 +24,8 @@ void refuseOldNames() {
 
 }  // namespace
 
-FrictionMeasurement readFrictionMeasurement(MPI_Comm comm, RunParameters* record, double load) {
+FrictionMeasurement readFrictionMeasurement(MPI_Comm comm, RunParameters* record, double load,
+                                            const KineticWindowDefaults& window) {
   refuseOldNames();
   OptionReader o(comm, "friction_", "Friction measurement (both models): mu(t) = |F|/(p L^2), mu_s, mu_k", record);
   FrictionMeasurement m;
@@ -43,6 +45,25 @@ FrictionMeasurement readFrictionMeasurement(MPI_Comm comm, RunParameters* record
   m.historyInterval = derived("history_interval", 1e-3, "sampling interval of the stored mu(t) history", "t_load / 1000");
   m.kineticDelay = derived("muk_delay", 0.5, "start of the mu_k window after the peak", "0.5 t_load");
   m.kineticWidth = derived("muk_width", 1.0, "width of the mu_k window", "t_load");
+  m.kineticSteadyTolerance =
+      o.real("muk_steady_tol", window.steadyTolerance, "1",
+             "steady mu_k window: the means of its 4 quarters spread by at most this fraction of its mean, else "
+             "it slides later (the run goes on); 0: the fixed window");
+  o.requireRange("muk_steady_tol", m.kineticSteadyTolerance, 0.0, 1.0, "0 <= muk_steady_tol <= 1");
+  {  // derived: the model's factor of t_load, never before the window's first start
+    const char* help = "latest start of a sliding mu_k window after the peak (then: not steady)";
+    if (auto v = o.realIfSet("muk_latest_delay", "s", help, formatReal(window.latestDelayFactor) + " t_load")) {
+      o.requireNonNegative("muk_latest_delay", *v, "s");
+      m.kineticLatestDelay = *v;
+      if (m.kineticSteadyTolerance > 0 && m.kineticLatestDelay < m.kineticDelay)
+        throw InputError(o.fullName("muk_latest_delay"), formatReal(m.kineticLatestDelay),
+                         ">= -friction_muk_delay = " + formatReal(m.kineticDelay) + " [s]");
+    } else {
+      m.kineticLatestDelay = std::max(window.latestDelayFactor * load, m.kineticDelay);
+      o.recordDerived("muk_latest_delay", m.kineticLatestDelay, "s",
+                      std::string(help) + " = max(" + formatReal(window.latestDelayFactor) + " t_load, muk_delay)");
+    }
+  }
   m.peakHold = derived("peak_hold", 0.25, "peak confirmed once every site slid and no new maximum for this long",
                        "0.25 t_load");
   m.peakDrop = o.real("peak_drop", m.peakDrop, "1", "peak confirmed once every site slid and mu(t) fell this fraction below it");

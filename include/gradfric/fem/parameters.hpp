@@ -13,6 +13,12 @@ namespace gradfric::fem {
 // A FrictionMeasurement whose times are all derived (negative placeholders, see resolveDerived).
 FrictionMeasurement derivedMeasurement();
 
+// The FEM's steady mu_k window (docs/accuracy_fem.md, "The steady kinetic window"): the window
+// (0.5-1.5 t_load after the peak at first) slides on until its quarters' means agree within this
+// fraction, starting at most kMukLatestDelay t_load after the peak.
+constexpr double kMukSteadyTolerance = 0.002;
+constexpr double kMukLatestDelay = 4.0;
+
 // How the bottom face meets the rigid plane (-fem_contact): penalty springs (the paper's and the
 // default), exact predictor-corrector contact (kinematic, the reference), or none (free face).
 enum class ContactMethod { Penalty, Kinematic };
@@ -86,7 +92,7 @@ struct FemParameters {
   double monitorFactor = 10.0;
   double rampTime = -1;     // < 0: derived 20 H/c_s
   double settleTime = -1;   // < 0: derived 10 H/c_s
-  double slideTime = -1;    // < 0: derived 3 * Eq. 2 estimate (upper bound; stops earlier)
+  double slideTime = -1;    // < 0: derived 1.5 t_load + the latest mu_k window's end (upper bound; stops earlier)
   // How friction is measured: the shared rule of both models (-friction_ options). Negative
   // times: derived from the Eq. 2 loading time as readFrictionMeasurement does (for code that
   // builds parameters without options).

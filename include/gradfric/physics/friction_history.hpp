@@ -17,6 +17,11 @@ struct FrictionMeasurement {
   double peakHold = 0.0;         // ... or has not been exceeded for this long [s], once every site slipped
   double kineticDelay = 0.0;     // the kinetic window starts this long after the peak [s]
   double kineticWidth = 0.0;     // and lasts this long [s]
+  // Steady window (0: off, the fixed window above, the SBM's default): the window is steady once
+  // the means of its kSteadyBatches equal parts spread by at most this fraction of its mean; until
+  // then it slides forward (the run goes on), its start at most kineticLatestDelay after the peak.
+  double kineticSteadyTolerance = 0.0;
+  double kineticLatestDelay = 0.0;  // [s]; below kineticDelay: kineticDelay
   double historyInterval = 0.0;  // sampling of the stored history [s]; 0: every observation
 };
 
@@ -27,10 +32,18 @@ struct FrictionSummary {
   bool peakConfirmed = false;    // false: the run ended before the rule confirmed the peak
   double muKinetic = kNaN;       // mean of mu(t) over the kinetic window; NaN if not asked or incomplete
   bool kineticComplete = false;  // the window was observed to its end
+  double kineticFrom = kNaN, kineticTo = kNaN;  // the window averaged [s]
+  // Spread of the window's batch means, (max - min)/mean: the steadiness and error bar of mu_k.
+  double kineticSpread = kNaN;
+  bool kineticSteadyTested = false;  // the steady rule was on (tolerance > 0)
+  bool kineticSteady = false;        // ... and the window met it (false at the cap: not steady)
   double firstSlipTime = kNaN;   // first observation at which some site had slipped [s]
   // The sampled history: time [s], mu, and the tangential force components [N].
   std::vector<double> time, mu, forceX, forceY;
 };
+
+// The kinetic window is split into this many equal batches for its steadiness and error bar.
+constexpr int kSteadyBatches = 4;
 
 class FrictionHistory {
 public:
@@ -51,13 +64,23 @@ public:
   FrictionSummary summary() const;
 
 private:
+  struct Window {
+    double from, to, mean, spread;
+  };
+  Window windowStats(double from, double to) const;  // mean and batch spread of the samples in [from, to]
+  void advanceSteadyWindow(double t);                 // steady rule: test the window ending at t
+  double latestStart() const;
+
   FrictionMeasurement rule_;
   double normalForce_, timeStep_;
   double maximum_ = -1.0, peakTime_ = 0.0, lastTime_ = 0.0, firstSlip_ = FrictionSummary::kNaN;
   bool confirmed_ = false, observed_ = false;
+  bool windowDecided_ = false, windowSteady_ = false;  // steady rule: the window is chosen
+  double windowFrom_ = 0.0;
   double nextSample_ = 0.0;
   // Observations since the current maximum (the kinetic window lies after it).
   std::vector<double> sinceTime_, sinceMu_;
+  std::vector<double> prefix_ = {0.0};  // steady rule: running sums of sinceMu_ (batch means in O(1))
   FrictionSummary history_;
 };
 
