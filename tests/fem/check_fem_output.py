@@ -32,6 +32,17 @@ with h5py.File(out, "r") as f:
     res = f["results"].attrs
     assert abs(res["mu_s"] - mu.max()) < 1e-12, (res["mu_s"], mu.max())
     assert 0.5 < res["mu_s"] <= 1.02
+    # The mu_k window as stored: mu_k is the history's mean over it, the spread its quarters' means
+    # (max - min)/mean, the steady flag that spread against the tolerance, and the run stopped at its end.
+    a, b = res["mu_k_window_start"], res["mu_k_window_end"]
+    inside = (t >= a) & (t <= b)
+    assert abs(mu[inside].mean() - res["mu_k"]) < 1e-12, (mu[inside].mean(), res["mu_k"])
+    edges = a + (b - a) * np.arange(5) / 4
+    quarters = [mu[(t >= edges[k]) & ((t < edges[k + 1]) if k < 3 else (t <= b))].mean() for k in range(4)]
+    spread = (max(quarters) - min(quarters)) / res["mu_k"]
+    assert abs(spread - res["mu_k_window_spread"]) < 1e-9, (spread, res["mu_k_window_spread"])
+    assert res["mu_k_window_steady"] == (1 if spread <= res["mu_k_steady_tolerance"] else 0), dict(res)
+    assert res["mu_k_steady_tolerance"] > 0 and abs(t[-1] - b) < 2 * res["dt"], (t[-1], b)
     scene = f["scene"].attrs
     assert "fem_nx" in scene and f["scene/units"].attrs["fem_nx"] == "1", dict(f["scene/units"].attrs)
     assert f["scene/origin"].attrs["fem_nx"] == "set"
