@@ -1,5 +1,6 @@
 // Running an FEM sweep over groups of ranks (include/gradfric/fem/sweep.hpp).
 #include "gradfric/core/collective_error.hpp"
+#include "gradfric/core/format.hpp"
 #include "gradfric/core/petsc_call.hpp"
 #include "gradfric/ensemble/scene_file.hpp"
 #include "gradfric/ensemble/scene_report.hpp"
@@ -177,9 +178,13 @@ void runFemSweep(MPI_Comm comm, const FemSweep& s, const RunParameters& record) 
       const io::TaskOutput o = runPoint(s, point, groups.comm(), rank);
       if (groups.leader()) {
         file.writeTask(o);
-        std::printf("[group %d] point %d (%s): mu_s = %.6f, mu_k = %.6f%s  run %.2f s, %lld steps\n", groups.group(),
-                    point, ensemble::pointLabel(s.sweep, point).c_str(), o.friction.muStatic, o.friction.muKinetic,
-                    o.friction.peakConfirmed ? "" : " (peak not confirmed)", o.wallSeconds,
+        const FrictionSummary& f = o.friction;  // mu_k with its window's spread, and whether it was steady
+        const std::string window = !f.kineticComplete ? ""
+                                   : " (window spread " + formatReal(100 * f.kineticSpread) + " %" +
+                                         (!f.kineticSteadyTested ? ")" : f.kineticSteady ? ", steady)" : ", NOT steady)");
+        std::printf("[group %d] point %d (%s): mu_s = %.6f, mu_k = %.6f%s%s  run %.2f s, %lld steps\n", groups.group(),
+                    point, ensemble::pointLabel(s.sweep, point).c_str(), f.muStatic, f.muKinetic, window.c_str(),
+                    f.peakConfirmed ? "" : " (peak not confirmed)", o.wallSeconds,
                     static_cast<long long>(o.steps));
         std::fflush(stdout);
       }
