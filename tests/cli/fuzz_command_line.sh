@@ -183,6 +183,8 @@ fem)
   run 2 -fem_nx "$F" -fem_nx 0
   run 2 -fem_nz "$F" -fem_nz -1
   run 2 -fem_nx "$F" -fem_nx 100000 -fem_ny 100000
+  run 2 -friction_muk_steady_tol "$F" -friction_muk_steady_tol 2
+  run 2 -friction_muk_latest_delay "$F" -friction_muk_latest_delay 1e-6
   run 2 -fem_ny "$F" -fem_ny 1.5
   run 2 -fem_monitor_every "$F" -fem_monitor_every 0
   run 2 -fem_history_every "$F" -fem_history_every 99999999999
