@@ -109,10 +109,10 @@ void FemParameters::resolveDerived() {
   if (m.kineticLatestDelay < 0) m.kineticLatestDelay = std::max(kMukLatestDelay * ts, m.kineticDelay);
   if (m.peakHold < 0) m.peakHold = 0.25 * ts;
   // Long enough for the latest window: 1.5 t_load for the peak and its confirmation, then the
-  // window (3 t_load with the fixed window, as before the steady rule).
+  // window (3 t_load with the fixed window or for mu_s alone, as before the steady rule).
+  const bool sliding = m.kinetic && m.kineticSteadyTolerance > 0;
   if (slideTime < 0)
-    slideTime = 1.5 * ts + (m.kineticSteadyTolerance > 0 ? std::max(m.kineticLatestDelay, m.kineticDelay) : m.kineticDelay) +
-                m.kineticWidth;
+    slideTime = 1.5 * ts + (sliding ? std::max(m.kineticLatestDelay, m.kineticDelay) : m.kineticDelay) + m.kineticWidth;
 }
 
 FrictionMeasurement derivedMeasurement() {
