@@ -166,10 +166,10 @@ Law quietPhaseLaw(const Law& law, const PressureCoupling& coupling, const Lattic
   double sliderSum = 0.0;
   for (int r = 0; r < nb; ++r)
     for (int c = 0; c < nb; ++c) {
-      sliderSum += stiffness.slider[c];
+      sliderSum += stiffness.sliderAt(r, c);
       const std::size_t i = std::size_t(r) * nb + c;
       if (coupling.shape()[i] <= 0.0)
-        latest = std::min(latest, firstSlipStepAtRest<Law>(stiffness.slider[c], base.staticStrength[i], motion, latest));
+        latest = std::min(latest, firstSlipStepAtRest<Law>(stiffness.sliderAt(r, c), base.staticStrength[i], motion, latest));
     }
   const double speed = std::hypot(motion.sliderVelocityX, motion.sliderVelocityY);
   const double muBound = sliderSum * speed * double(latest + 1) * motion.timeStep / normalForce * (1.0 + 1e-9);
