@@ -218,7 +218,8 @@ std::vector<std::string> activeEffects(const Parameters& p, const Grading& g, co
   const bool fieldE = g.fields && g.fields->modulus;
   const bool fieldMu = g.fields && (g.fields->muStatic || g.fields->muKinetic || g.fields->pressure);
   effects.push_back(g.gradesModulus() ? "graded Young's modulus (" + describe(g) + "), series spring stiffness"
-                    : fieldE          ? "Young's modulus from a property field, series spring stiffness"
+                    : fieldE          ? std::string("Young's modulus from a property field, series spring stiffness ") +
+                                   (g.fields->modulus->variesAlongY() ? "per block (E varies along y)" : "per block column")
                                       : "uniform Young's modulus: uniform-stiffness kernel");
   effects.push_back(g.gradesFriction() ? "graded friction coefficients (" + describe(g) + ")"
                     : fieldMu          ? "friction strengths mu p l^2 from property fields"
