@@ -1,11 +1,13 @@
 // Spring stiffness per block (an E field that varies along y, lattice.hpp): built per block, an E
 // that is constant along y is the per-column lattice bit for bit on every kernel path; the fast
-// kernel agrees with the plain reference on E fields that vary along y; the 90-degree E grading
-// slid at 90 degrees is the 0-degree case transposed; the first block to slip is the one with
-// the stiffest slider; the load-dependent pressure keeps its force and moment balance.
+// kernel agrees with the plain reference on E fields that vary along y, and its instruction-set
+// versions agree bit for bit; the 90-degree E grading slid at 90 degrees is the 0-degree case
+// transposed; the first block to slip is the one with the stiffest slider; the load-dependent
+// pressure keeps its force and moment balance.
 #include "gradfric/physics/field.hpp"
 #include "gradfric/physics/pressure_response.hpp"
 #include "gradfric/sbm/integrator.hpp"
+#include "gradfric/sbm/kernel_isa.hpp"
 #include "gradfric/sbm/lattice.hpp"
 #include "sbm_support.hpp"
 
@@ -177,6 +179,36 @@ TEST(PerBlockStiffness, TheFastKernelIsThePlainReferenceOnEFieldsAlongY) {
         for (std::size_t i = 0; i < fast.firstSlipTime.size(); ++i)
           EXPECT_EQ(fast.firstSlipTime[i], plain.firstSlipTime[i]) << where << " block " << i;
       }
+    }
+  }
+}
+
+TEST(PerBlockStiffness, EveryKernelVersionGivesTheSameNumbersBitForBit) {
+  // The per-block row pointers through every compiled instruction set the processor has: a radial
+  // E, velocity Verlet with the active set and RK4.
+  const Grading g = withE(radialE(0.4));
+  std::vector<KernelIsa> versions;
+  for (KernelIsa isa : {KernelIsa::Baseline, KernelIsa::Avx2, KernelIsa::Avx512})
+    if (kernelIsaSupported(isa)) versions.push_back(isa);
+  for (Integrator integrator : {Integrator::VelocityVerlet, Integrator::RK4}) {
+    Parameters p = sbm::testing::paperParameters(24, 0.03, g);
+    p.integrator = integrator;
+    p.timeStep = defaultTimeStep(p, g);
+    const Request q = sbm::testing::defaultRequest(p);
+    std::vector<Result> results;
+    for (KernelIsa isa : versions) {
+      ASSERT_TRUE(forceKernelIsa(isa)) << kernelIsaName(isa);
+      results.push_back(simulate(p, g, q, {7, 0, 1}, Kernel::Fast));
+    }
+    forceKernelIsa(KernelIsa::Automatic);
+    const Result& base = results.front();
+    ASSERT_TRUE(base.friction.peakConfirmed);
+    for (std::size_t v = 1; v < results.size(); ++v) {
+      const std::string where = std::string(name(integrator)) + ", " + kernelIsaName(versions[v]) + " against baseline";
+      ASSERT_EQ(results[v].friction.mu.size(), base.friction.mu.size()) << where;
+      EXPECT_TRUE(sameBits(results[v].friction.mu.data(), base.friction.mu.data(), base.friction.mu.size())) << where;
+      EXPECT_TRUE(sameBits(results[v].firstSlipTime.data(), base.firstSlipTime.data(), base.firstSlipTime.size()))
+          << where;
     }
   }
 }
