@@ -1,9 +1,9 @@
 // Spring stiffness per block (an E field that varies along y, lattice.hpp): built per block, an E
 // that is constant along y is the per-column lattice bit for bit on every kernel path; the fast
 // kernel agrees with the plain reference on E fields that vary along y, and its instruction-set
-// versions agree bit for bit; the 90-degree E grading slid at 90 degrees is the 0-degree case
-// transposed; the first block to slip is the one with the stiffest slider; the load-dependent
-// pressure keeps its force and moment balance.
+// versions agree bit for bit, as does the quiet-phase jump with the stepped run; the 90-degree E
+// grading slid at 90 degrees is the 0-degree case transposed; the first block to slip is the one
+// with the stiffest slider; the load-dependent pressure keeps its force and moment balance.
 #include "gradfric/physics/field.hpp"
 #include "gradfric/physics/pressure_response.hpp"
 #include "gradfric/sbm/integrator.hpp"
@@ -179,6 +179,30 @@ TEST(PerBlockStiffness, TheFastKernelIsThePlainReferenceOnEFieldsAlongY) {
         for (std::size_t i = 0; i < fast.firstSlipTime.size(); ++i)
           EXPECT_EQ(fast.firstSlipTime[i], plain.firstSlipTime[i]) << where << " block " << i;
       }
+    }
+  }
+}
+
+TEST(PerBlockStiffness, TheQuietPhaseJumpIsTheSteppedRunBitForBit) {
+  // The jump predicts the first slip from each block's own slider K_s,i: with E along y it ends
+  // where the stepped run's first slip is, and the run is the same bits (Verlet with the active
+  // set, and RK4).
+  for (const PropertyField& field : {linearE(0.4, 45), radialE(-0.3)}) {
+    const Grading g = withE(field);
+    for (Integrator integrator : {Integrator::VelocityVerlet, Integrator::RK4}) {
+      Parameters jump = sbm::testing::paperParameters(20, 0.028, g);
+      jump.integrator = integrator;
+      jump.timeStep = defaultTimeStep(jump, g);
+      Parameters stepped = jump;
+      stepped.skipIdle = false;
+      const Request q = sbm::testing::defaultRequest(jump);
+      const Result a = simulate(jump, g, q, {5, 0, 2}), b = simulate(stepped, g, q, {5, 0, 2});
+      const std::string where = std::string(field.radial ? "radial " : "45 degrees ") + name(integrator);
+      ASSERT_EQ(a.friction.mu.size(), b.friction.mu.size()) << where;
+      EXPECT_TRUE(sameBits(a.friction.mu.data(), b.friction.mu.data(), a.friction.mu.size())) << where;
+      EXPECT_TRUE(sameBits(a.firstSlipTime.data(), b.firstSlipTime.data(), a.firstSlipTime.size())) << where;
+      EXPECT_EQ(a.steps, b.steps) << where;
+      EXPECT_GT(a.friction.firstSlipTime, 0.1 * jump.loadingTime()) << where << ": a quiet phase to jump over";
     }
   }
 }
