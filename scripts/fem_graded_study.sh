@@ -8,18 +8,21 @@
 # output file is skipped, so the script can be stopped and started again; each finished run
 # appends one line "<tag> | <bench_fem_element_study line> | load".
 #   bash scripts/fem_graded_study.sh build results/fem_graded_study.txt [stage ...]
-# Stages (default: m50 m100 dt m100z10 m200 ref repro):
+# Stages (default: m50 m100 dt m100z10 m200 ref repro reprofine):
 #   m50, m50z10, m100, dt (100x100x5 at dt_safety 0.3), m100z10, m200: the four gradings
 #   (a suffix _E or _friction: that property only, e.g. m200_E);
 #   ref: non-graded 100x100x5, 50x50x5, 100x100x10;
 #   repro: the paper-mesh points of docs/reproduction.md (friction and E +-0.4, triangular E
-#          +-0.2, friction 0.2 at 90 degrees).
+#          +-0.2, friction 0.2 at 90 degrees);
+#   reprofine: the same points' mesh error bars: 50x50x5 (cheap, for the in-plane order) first,
+#          then each point on 100x100x10 and 200x200x5 (|Delta| 0.4 first, then triangular, 90 deg);
+#          GF_STUDY_NO_M200_AFTER=HH:MM (UTC) skips 200x200x5 runs that would start later.
 set -euo pipefail
 build=${1:-build}
 out=${2:-results/fem_graded_study.txt}
 shift $(( $# >= 2 ? 2 : $# ))
 stages=("$@")
-[ ${#stages[@]} -eq 0 ] && stages=(m50 m100 dt m100z10 m200 ref repro)
+[ ${#stages[@]} -eq 0 ] && stages=(m50 m100 dt m100z10 m200 ref repro reprofine)
 mkdir -p "$(dirname "$out")"
 touch "$out"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
@@ -33,6 +36,9 @@ run() {
   [ "$profile" != linear ] && [ "$profile" != none ] && tag+=" ${profile}"
   [ "$theta" != 0 ] && tag+=" theta ${theta}"
   if grep -qF "$tag |" "$out"; then echo "skip: $tag"; return; fi
+  if [ "$n" = 200 ] && [ -n "${GF_STUDY_NO_M200_AFTER:-}" ] && [[ "$(date -u +%H:%M)" > "$GF_STUDY_NO_M200_AFTER" ]]; then
+    echo "late: $tag (not started after $GF_STUDY_NO_M200_AFTER UTC)"; return
+  fi
   local args=(-friction_observables mu_s -fem_element q1 -fem_nx "$n" -fem_ny "$n" -fem_nz "$nz" -fem_dt_safety "$safety")
   [ "$profile" != none ] && args+=(-grading_profile "$profile" -grading_property "$prop" -grading_delta "$delta")
   [ "$theta" != 0 ] && args+=(-plate_theta "$theta")
@@ -65,6 +71,14 @@ for stage in "${stages[@]}"; do
       for d in 0.4 -0.4; do run 100 5 0.6 linear friction $d; run 100 5 0.6 linear E $d; done
       run 100 5 0.6 triangular E 0.2; run 100 5 0.6 triangular E -0.2
       run 100 5 0.6 linear friction 0.2 90 ;;
-    *) echo "unknown stage $stage (m50 m50z10 m100 dt m100z10 m200 ref repro)" >&2; exit 2 ;;
+    reprofine)
+      for d in 0.4 -0.4; do run 50 5 0.6 linear friction $d; run 50 5 0.6 linear E $d; done
+      run 50 5 0.6 triangular E 0.2; run 50 5 0.6 triangular E -0.2; run 50 5 0.6 linear friction 0.2 90
+      for point in "linear E -0.4" "linear E 0.4" "linear friction -0.4" "linear friction 0.4" \
+                   "triangular E 0.2" "triangular E -0.2" "linear friction 0.2 90"; do
+        # shellcheck disable=SC2086
+        run 100 10 0.6 $point; run 200 5 0.6 $point
+      done ;;
+    *) echo "unknown stage $stage (m50 m50z10 m100 dt m100z10 m200 ref repro reprofine)" >&2; exit 2 ;;
   esac
 done
