@@ -11,7 +11,7 @@
 # Stages (default: m50 m100 dt m100z10 m200 ref repro reprofine):
 #   m50, m50z10, m100, dt (100x100x5 at dt_safety 0.3), m100z10, m200: the four gradings
 #   (a suffix _E or _friction: that property only, e.g. m200_E);
-#   ref: non-graded 100x100x5, 50x50x5, 100x100x10;
+#   ref: non-graded 100x100x5, 50x50x5, 100x100x10, 200x200x5;
 #   repro: the paper-mesh points of docs/reproduction.md (friction and E +-0.4, triangular E
 #          +-0.2, friction 0.2 at 90 degrees);
 #   reprofine: the same points' mesh error bars: 50x50x5 (cheap, for the in-plane order) first,
@@ -67,7 +67,7 @@ for stage in "${stages[@]}"; do
     dt) gradings 100 5 0.3 $property ;;
     m100z10) gradings 100 10 0.6 $property ;;
     m200) gradings 200 5 0.6 $property ;;
-    ref) run 100 5 0.6 none; run 50 5 0.6 none; run 100 10 0.6 none ;;
+    ref) run 100 5 0.6 none; run 50 5 0.6 none; run 100 10 0.6 none; run 200 5 0.6 none ;;
     repro)
       for d in 0.4 -0.4; do run 100 5 0.6 linear friction $d; run 100 5 0.6 linear E $d; done
       run 100 5 0.6 triangular E 0.2; run 100 5 0.6 triangular E -0.2
