@@ -67,7 +67,7 @@ for stage in "${stages[@]}"; do
     dt) gradings 100 5 0.3 $property ;;
     m100z10) gradings 100 10 0.6 $property ;;
     m200) gradings 200 5 0.6 $property ;;
-    ref) run 100 5 0.6 none; run 50 5 0.6 none; run 100 10 0.6 none; run 200 5 0.6 none ;;
+    ref) run 100 5 0.6 none; run 200 5 0.6 none; run 50 5 0.6 none; run 100 10 0.6 none ;;
     repro)
       for d in 0.4 -0.4; do run 100 5 0.6 linear friction $d; run 100 5 0.6 linear E $d; done
       run 100 5 0.6 triangular E 0.2; run 100 5 0.6 triangular E -0.2

@@ -25,6 +25,10 @@ Grading linear(GradedProperty property, double delta) {
   return g;
 }
 
+// The mesh terms of docs/accuracy_fem.md, "Error bar", for the remaining paper-mesh points.
+constexpr double kModulusLarge = KMODLARGE, kFrictionLarge = KFRICLARGE, kModulusTriangular = KMODTRI,
+                 kFrictionAcross = KFRICACROSS;
+
 }  // namespace
 
 TEST(FemErrorBar, PaperMeshAtTheDefaultsIsMeasured) {
@@ -82,6 +86,32 @@ TEST(FemErrorBar, GradedPaperMeshIsMeasured) {
             discretisationError(q, linear(GradedProperty::YoungsModulus, 0.2), 0.6).relative);
 }
 
+// The remaining paper-mesh points of the graded study: linear |Delta| up to 0.4, triangular E up to
+// 0.2, friction up to 0.2 sliding across the grading (90 degrees). Each has its own row, and the
+// larger gradings carry at least the bar of the +-0.2 row they extend.
+TEST(FemErrorBar, LargerAndOtherGradingsOnThePaperMeshAreMeasured) {
+  FemParameters q = paperDefaults();
+  auto mesh = [&](const FemParameters& p, const Grading& g, const char* basis) {
+    const DiscretisationError e = discretisationError(p, g, 0.6);
+    EXPECT_TRUE(e.measured) << e.basis;
+    EXPECT_NE(e.mesh.basis.find(basis), std::string::npos) << e.mesh.basis;
+    return e.mesh.relative;
+  };
+  for (double delta : {0.4, -0.4, 0.3}) {
+    EXPECT_NEAR(mesh(q, linear(GradedProperty::YoungsModulus, delta), "E grading 0.2 < |Delta| <= 0.4"), kModulusLarge, 1e-12);
+    EXPECT_NEAR(mesh(q, linear(GradedProperty::Friction, delta), "friction grading 0.2 < |Delta| <= 0.4"), kFrictionLarge,
+                1e-12);
+  }
+  EXPECT_GE(kModulusLarge, discretisationError(q, linear(GradedProperty::YoungsModulus, 0.2), 0.6).mesh.relative);
+  EXPECT_GE(kFrictionLarge, discretisationError(q, linear(GradedProperty::Friction, 0.2), 0.6).mesh.relative);
+  Grading triangular = linear(GradedProperty::YoungsModulus, -0.2);
+  triangular.profile = GradingProfile::Triangular;
+  EXPECT_NEAR(mesh(q, triangular, "triangular E"), kModulusTriangular, 1e-12);
+  q.plate.slidingAngle = 90;
+  for (double delta : {0.2, -0.2})
+    EXPECT_NEAR(mesh(q, linear(GradedProperty::Friction, delta), "friction grading at 90 degrees"), kFrictionAcross, 1e-12);
+}
+
 TEST(FemErrorBar, OutsideTheStudiesItIsNotMeasured) {
   auto notMeasured = [](const FemParameters& q, const Grading& g, double dtRatio, const char* why) {
     const DiscretisationError e = discretisationError(q, g, dtRatio);
@@ -97,6 +127,22 @@ TEST(FemErrorBar, OutsideTheStudiesItIsNotMeasured) {
   notMeasured(q, linear(GradedProperty::YoungsModulus, 0.2), 0.6, "mesh 100x100x10 q1 (graded) not in the mesh study");
   q = paperDefaults();
   notMeasured(q, linear(GradedProperty::Friction, 0.5), 0.6, "grading other than");
+  Grading triangular = linear(GradedProperty::Friction, 0.2);  // triangular was studied for E only
+  triangular.profile = GradingProfile::Triangular;
+  notMeasured(q, triangular, 0.6, "grading other than");
+  triangular.property = GradedProperty::YoungsModulus;
+  triangular.delta = 0.4;
+  notMeasured(q, triangular, 0.6, "grading other than");
+  q.plate.slidingAngle = 90;  // across the grading: friction +-0.2 only
+  notMeasured(q, linear(GradedProperty::YoungsModulus, 0.2), 0.6, "sliding angle other than 0");
+  notMeasured(q, linear(GradedProperty::Friction, 0.4), 0.6, "sliding angle other than 0");
+  notMeasured(q, Grading{}, 0.6, "sliding angle other than 0");
+  q.plate.slidingAngle = 45;
+  notMeasured(q, linear(GradedProperty::Friction, 0.2), 0.6, "sliding angle other than 0");
+  q = paperDefaults();
+  q.nx = q.ny = 50;  // the larger gradings have rows on the paper mesh only
+  notMeasured(q, linear(GradedProperty::YoungsModulus, 0.4), 0.6, "mesh 50x50x5 q1 (graded) not in the mesh study");
+  q = paperDefaults();
   q.nx = q.ny = 10;
   notMeasured(q, Grading{}, 0.6, "mesh 10x10x5 q1 not in the mesh study");
   q = paperDefaults();
