@@ -17,7 +17,8 @@
 #   reprofine: the same points' mesh error bars: 50x50x5 (cheap, for the in-plane order) first,
 #          then each point on 200x200x5 (|Delta| 0.4 first, then triangular, 90 deg: the in-plane term
 #          is the larger part of the bar), then each on 100x100x10;
-#          GF_STUDY_NO_M200_AFTER=HH:MM (UTC) skips 200x200x5 runs that would start later.
+#          GF_STUDY_NO_M200_AFTER=HH:MM (UTC) skips 200x200x5 runs that would start later;
+#          GF_STUDY_REF_THICKNESS_LAST=1 leaves ref's 100x100x10 to the end of reprofine.
 set -euo pipefail
 build=${1:-build}
 out=${2:-results/fem_graded_study.txt}
@@ -67,7 +68,8 @@ for stage in "${stages[@]}"; do
     dt) gradings 100 5 0.3 $property ;;
     m100z10) gradings 100 10 0.6 $property ;;
     m200) gradings 200 5 0.6 $property ;;
-    ref) run 100 5 0.6 none; run 200 5 0.6 none; run 50 5 0.6 none; run 100 10 0.6 none ;;
+    ref) run 100 5 0.6 none; run 200 5 0.6 none; run 50 5 0.6 none
+         [ "${GF_STUDY_REF_THICKNESS_LAST:-0}" = 1 ] || run 100 10 0.6 none ;;
     repro)
       for d in 0.4 -0.4; do run 100 5 0.6 linear friction $d; run 100 5 0.6 linear E $d; done
       run 100 5 0.6 triangular E 0.2; run 100 5 0.6 triangular E -0.2
@@ -80,7 +82,8 @@ for stage in "${stages[@]}"; do
       # shellcheck disable=SC2086
       for point in "${points[@]}"; do run 200 5 0.6 $point; done
       # shellcheck disable=SC2086
-      for point in "${points[@]}"; do run 100 10 0.6 $point; done ;;
+      for point in "${points[@]}"; do run 100 10 0.6 $point; done
+      run 100 10 0.6 none ;;
     *) echo "unknown stage $stage (m50 m50z10 m100 dt m100z10 m200 ref repro reprofine)" >&2; exit 2 ;;
   esac
 done
