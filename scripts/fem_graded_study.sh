@@ -7,6 +7,8 @@
 # niced, one at a time (the machine is shared). Resumable: a run whose tag is already in the
 # output file is skipped, so the script can be stopped and started again; each finished run
 # appends one line "<tag> | <bench_fem_element_study line> | load".
+# Friction memory: -fem_slip_length 0 (no memory, the setting of the study's first runs) unless
+# GF_STUDY_SLIP_LENGTH is set (e.g. 1e-8, the current default), which the tag then carries.
 #   bash scripts/fem_graded_study.sh build results/fem_graded_study.txt [stage ...]
 # Stages (default: m50 m100 dt m100z10 m200 ref repro reprofine):
 #   m50, m50z10, m100, dt (100x100x5 at dt_safety 0.3), m100z10, m200: the four gradings
@@ -34,14 +36,16 @@ study="$build/bench/fem/bench_fem_element_study"
 # run <n> <nz> <dt_safety> <profile|none> [property delta [theta]]
 run() {
   local n=$1 nz=$2 safety=$3 profile=$4 prop=${5:-none} delta=${6:-0} theta=${7:-0}
+  local slip=${GF_STUDY_SLIP_LENGTH:-0}
   local tag="mesh ${n}x${n}x${nz} dt_safety ${safety} grading ${prop} ${delta}"
   [ "$profile" != linear ] && [ "$profile" != none ] && tag+=" ${profile}"
   [ "$theta" != 0 ] && tag+=" theta ${theta}"
+  [ "$slip" != 0 ] && tag+=" slip ${slip}"
   if grep -qF "$tag |" "$out"; then echo "skip: $tag"; return; fi
   if [ "$n" = 200 ] && [ -n "${GF_STUDY_NO_M200_AFTER:-}" ] && [[ "$(date -u +%H:%M)" > "$GF_STUDY_NO_M200_AFTER" ]]; then
     echo "late: $tag (not started after $GF_STUDY_NO_M200_AFTER UTC)"; return
   fi
-  local args=(-friction_observables mu_s -fem_element q1 -fem_nx "$n" -fem_ny "$n" -fem_nz "$nz" -fem_dt_safety "$safety")
+  local args=(-friction_observables mu_s -fem_slip_length "$slip" -fem_element q1 -fem_nx "$n" -fem_ny "$n" -fem_nz "$nz" -fem_dt_safety "$safety")
   [ "$profile" != none ] && args+=(-grading_profile "$profile" -grading_property "$prop" -grading_delta "$delta")
   [ "$theta" != 0 ] && args+=(-plate_theta "$theta")
   echo "run:  $tag  (start $(date -u +%H:%M:%S), load $(cut -d' ' -f1-3 /proc/loadavg))"
