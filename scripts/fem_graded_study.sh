@@ -16,6 +16,7 @@
 #   ref: non-graded 100x100x5, 50x50x5, 100x100x10, 200x200x5;
 #   repro: the paper-mesh points of docs/reproduction.md (friction and E +-0.4, triangular E
 #          +-0.2, friction 0.2 at 90 degrees);
+#   n,nz,profile,property,delta[,theta]: one run at dt_safety 0.6, e.g. 100,5,linear,friction,0.2;
 #   reprofine: the same points' mesh error bars: 50x50x5 (cheap, for the in-plane order) first,
 #          then each point on 200x200x5 (|Delta| 0.4 first, then triangular, 90 deg: the in-plane term
 #          is the larger part of the bar), then each on 100x100x10;
@@ -88,6 +89,7 @@ for stage in "${stages[@]}"; do
       # shellcheck disable=SC2086
       for point in "${points[@]}"; do run 100 10 0.6 $point; done
       run 100 10 0.6 none ;;
+    *,*) IFS=, read -r -a point <<< "$stage"; run "${point[0]}" "${point[1]}" 0.6 "${point[@]:2}" ;;
     *) echo "unknown stage $stage (m50 m50z10 m100 dt m100z10 m200 ref repro reprofine)" >&2; exit 2 ;;
   esac
 done
