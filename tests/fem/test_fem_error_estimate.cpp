@@ -34,12 +34,12 @@ constexpr double kModulusLarge = 0.056, kFrictionLarge = 0.113, kModulusTriangul
 TEST(FemErrorBar, PaperMeshAtTheDefaultsIsMeasured) {
   const DiscretisationError e = discretisationError(paperDefaults(), Grading{}, 0.6);
   ASSERT_TRUE(e.measured) << e.basis;
-  EXPECT_NEAR(e.mesh.relative, 0.005, 1e-12);
+  EXPECT_NEAR(e.mesh.relative, 0.057, 1e-12);
   EXPECT_NEAR(e.timeStep.relative, 0.004, 1e-12);
   EXPECT_NEAR(e.contact.relative, 0.004, 1e-12);
-  EXPECT_NEAR(e.relative, 0.013, 1e-12);
-  const std::string text = withErrorBar(0.883912, e);
-  EXPECT_EQ(text.rfind("0.883912 +- 1.3 % (discretisation: mesh 0.5 %, dt 0.4 %, contact 0.4 %; 100x100x5 q1", 0), 0u)
+  EXPECT_NEAR(e.relative, 0.065, 1e-12);
+  const std::string text = withErrorBar(0.886046, e);
+  EXPECT_EQ(text.rfind("0.886046 +- 6.5 % (discretisation: mesh 5.7 %, dt 0.4 %, contact 0.4 %; 100x100x5 q1", 0), 0u)
       << text;
   EXPECT_FALSE(e.kineticMeasured);
   EXPECT_NE(withKineticErrorBar(0.39, e).find("not measured"), std::string::npos);
@@ -51,7 +51,7 @@ TEST(FemErrorBar, EachTermFollowsItsStudy) {
   EXPECT_NEAR(discretisationError(q, Grading{}, 0.9).timeStep.relative, 0.010, 1e-12);
   EXPECT_NEAR(discretisationError(q, linear(GradedProperty::Friction, -0.2), 0.6).relative, 0.085, 1e-12);
   q.contactMethod = ContactMethod::Kinematic;
-  EXPECT_NEAR(discretisationError(q, Grading{}, 0.6).relative, 0.009, 1e-12);
+  EXPECT_NEAR(discretisationError(q, Grading{}, 0.6).relative, 0.061, 1e-12);
   q = paperDefaults();
   q.nx = q.ny = 25;
   EXPECT_NEAR(discretisationError(q, Grading{}, 0.6).mesh.relative, 0.031, 1e-12);
@@ -79,9 +79,8 @@ TEST(FemErrorBar, GradedPaperMeshIsMeasured) {
   coarse.nx = coarse.ny = 50;
   EXPECT_NEAR(discretisationError(coarse, linear(GradedProperty::YoungsModulus, -0.2), 0.6).mesh.relative, 0.073, 1e-12);
   EXPECT_NEAR(discretisationError(coarse, linear(GradedProperty::Friction, 0.2), 0.6).mesh.relative, 0.085, 1e-12);
-  // The graded bars are larger than the non-graded plate's, and the coarser mesh's than the paper mesh's.
-  EXPECT_GT(discretisationError(q, linear(GradedProperty::YoungsModulus, 0.2), 0.6).relative,
-            discretisationError(q, Grading{}, 0.6).relative);
+  // The coarser mesh's graded bar is larger than the paper mesh's. (Graded and non-graded peaks
+  // fall together with the refinement at the current penalty: neither bar bounds the other.)
   EXPECT_GT(discretisationError(coarse, linear(GradedProperty::YoungsModulus, 0.2), 0.6).relative,
             discretisationError(q, linear(GradedProperty::YoungsModulus, 0.2), 0.6).relative);
 }
