@@ -42,7 +42,7 @@ FURTHER = [("E", "0.4", "linear", 0.0, MEMORY), ("E", "-0.4", "linear", 0.0, MEM
 # barely shrink) and an extrapolation would put the limit anywhere: the plain 100 -> 200 difference
 # is given instead, a lower bound on the error.
 MIN_ORDER = 0.5
-NONGRADED_MU_S, NONGRADED_BAR = 0.883912, 0.013  # the non-graded paper mesh without friction memory, its printed bar
+NONGRADED_MU_S, NONGRADED_BAR = 0.883912, 0.065  # the non-graded paper mesh without friction memory, its printed bar
 OTHER_TERMS = 0.004 + 0.004  # the printed bar's dt (dt_safety 0.6) and contact (250 G/H) terms
 
 
