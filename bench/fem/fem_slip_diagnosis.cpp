@@ -12,9 +12,8 @@
 #include "gradfric/fem/parameters.hpp"
 #include "gradfric/fem/plate_model.hpp"
 #include "gradfric/fem/plate_ts.hpp"
+#include "gradfric/fem/scene_options.hpp"
 #include "gradfric/fem/simulation.hpp"
-#include "gradfric/physics/grading_options.hpp"
-#include "gradfric/physics/plate_options.hpp"
 
 #include <petscsys.h>
 
@@ -46,19 +45,17 @@ int main(int argc, char** argv) {
   using namespace gradfric::fem;
   return runDriver(argc, argv, help, [](MPI_Comm comm) {
     RunParameters record;
-    const Grading grading = readGrading(comm, &record);
-    const Plate plate = readPlate(comm, &record);
-    FemParameters params = readFemParameters(comm, &record, plate);
+    FemScene scene = readFemScene(comm, &record);  // gradfric-fem's options, fields included
+    const Plate& plate = scene.plate;
+    FemParameters& params = scene.params;
     OptionReader o(comm, "diag_", "Slip diagnosis window", &record);
     const double from = o.real("from", params.measurement.kineticDelay, "s", "window start after the confirmed peak");
     const double to = o.real("to", params.measurement.kineticDelay + params.measurement.kineticWidth, "s",
                              "window end after the confirmed peak");
     if (helpRequested()) return;
+    checkFemScene(comm, scene, &record, {"diag_"});  // the driver's checks, before any work
     params.verbose = false;
-    readPlateTSOptions(comm);
-    checkUnusedOptions(comm, {"plate_", "friction_", "fem_", "grading_", "diag_"});
-    requireFemRunLength(params, grading, &record);
-    PlateModel model(comm, params, grading);
+    PlateModel model(comm, params, scene.grading);
     const double v = plate.velocity;
     double confirmed = -1;  // time after the start of sliding the damping (the confirmed peak) began
     Tally tally;

@@ -5,6 +5,7 @@
 #include "gradfric/physics/field_options.hpp"
 #include "gradfric/physics/grading_options.hpp"
 #include "gradfric/physics/plate_options.hpp"
+#include "gradfric/physics/pressure_response.hpp"
 #include "gradfric/sbm/parameter_options.hpp"
 
 #include <petscsys.h>
@@ -89,6 +90,8 @@ std::optional<Calibration> readCalibration(MPI_Comm comm, RunParameters* record)
   c.scene.base = sbm::readParameters(comm, record, plate, c.scene.grading);
   (void)sbm::readRequest(comm, record, c.scene.base);  // -help lists them; each evaluation re-derives them
   if (helpRequested()) return std::nullopt;
+  // -pressure_response_select grading: the g of the calibrated grading, checked before any work.
+  (void)selectedFor(c.scene.base.pressureResponse, c.scene.grading, c.scene.base.plate.slidingAngle, "the calibrated scene");
 
   if (s.source.path.empty())
     throw InputError(o.fullName("reference"), "(not set)",

@@ -179,6 +179,11 @@ std::optional<Problem> readProblem(MPI_Comm comm, RunParameters* record) {
   s.request = sbm::readRequest(comm, record, s.parameters);
   if (verifyFem || helpRequested()) s.fem = readFemCheck(comm, plate);
   if (helpRequested()) return std::nullopt;
+  // Every evaluation moves the grading continuously: no measured g can match them all.
+  if (s.parameters.pressureResponse.perGrading)
+    throw InputError("-pressure_response_select", "grading",
+                     "same under gradfric-design (its free parameters change the grading continuously, so no g "
+                     "measured under one grading matches every evaluation)");
   for (const auto& c : corners(s.free)) {  // the family on the lattice at every corner, before any work
     try {
       checkSpringBlockFields(s.gradingAt(c), plate, s.parameters.blocksPerSide);

@@ -9,6 +9,7 @@
 #include "gradfric/core/petsc_call.hpp"
 #include "gradfric/physics/grading_options.hpp"
 #include "gradfric/physics/plate_options.hpp"
+#include "gradfric/physics/pressure_response.hpp"
 #include "gradfric/sbm/model.hpp"
 #include "gradfric/sbm/parameter_options.hpp"
 
@@ -69,6 +70,8 @@ std::optional<Study> readStudy(MPI_Comm comm, RunParameters* record) {
   const Plate plate = readPlate(comm, record);
   s.base = sbm::readParameters(comm, record, plate, s.grading);
   s.request = sbm::readRequest(comm, record, s.base);
+  if (!helpRequested())  // -pressure_response_select grading: the g of the study's grading, before any work
+    (void)selectedFor(s.base.pressureResponse, s.grading, s.base.plate.slidingAngle, "the study's scene");
   s.request.endTime = 0.0;
   s.request.measurement.historyInterval = 1e3;  // the study keeps no histories
   OptionReader o(comm, "study_", "Accuracy-cost study (spring-block model)", record);

@@ -73,6 +73,10 @@ bad flat 1 "invalid option -calibrate_reference = flat.csv: allowed a curve that
 bad lz 2 "invalid option -sbm_lz = 5e-5: allowed not set in a calibration: the calibration fits it" -calibrate_reference fem.h5 -sbm_lz 5e-5
 bad window 1 "invalid option -calibrate_window = \(2 values\): allowed lo,hi with 0 < lo < hi < 1" -calibrate_reference fem.h5 -calibrate_window 0.6,0.2
 bad realisations 1 "invalid option -calibrate_realisations = 1" -calibrate_reference fem.h5 -calibrate_realisations 1
+# A per-grading g must exist for the calibrated grading: checked before the first evaluation.
+bad pressure 2 "invalid option -pressure_response_file = .*E_\+0.2.h5: allowed a g measured under the grading of every run .*the calibrated scene \(non-graded" \
+  -calibrate_reference fem.h5 -pressure_response fem -pressure_response_select grading \
+  -pressure_response_file "$source_dir/input/fields/pressure_response_fem100_E_+0.2.h5"
 bad plate 2 "invalid option -plate_E = 20000000: allowed the reference's value 10000000 \(fem.h5\)" -calibrate_reference fem.h5 -plate_E 2e7
 echo "earlier" >kept.opts
 run kept 2 2 "$calibrate" -calibrate_reference fem.h5 "${fit[@]}" -calibrate_output kept.opts

@@ -133,6 +133,9 @@ refuse)
   refused 1 -design_parameters -grading_profile none
   refused 1 -design_method -options_file "$src/input/design_E_mu_tao.opts" -design_method root
   refused 1 -design_upper -options_file "$src/input/design_E_mu_tao.opts" -design_upper 0.5,1.5
+  # A g per grading cannot follow a grading that moves with every evaluation.
+  refused 2 -pressure_response_select -pressure_response fem -pressure_response_select grading \
+    -pressure_response_file "$src/input/fields/pressure_response_fem100.h5"
   ;;
 *)
   fail "unknown check $check"

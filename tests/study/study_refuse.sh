@@ -28,4 +28,14 @@ for scene in study_sbm_reduced.opts study_fem_reduced.opts; do
   [ "$(ls "$scratch/dir")" = inside ] || fail "$tag: the directory was changed"
   check "${tag}_missing" "$scene" "$scratch/no/such/folder/s.h5" "existing, writable folder \(.*no/such/folder does not exist\)"
 done
+# -pressure_response_select grading without a g for the study's grading: refused before any run.
+f="$source_dir/input/fields/pressure_response_fem100_E_+0.2.h5"
+timeout 300 mpiexec --oversubscribe -n 2 "$driver" -options_file "$source_dir/input/study_sbm_reduced.opts" \
+  -pressure_response fem -pressure_response_select grading -pressure_response_file "$f" -output "$scratch/g.h5" \
+  >"$scratch/g.out" 2>"$scratch/g.err"
+[ $? -eq 2 ] || { cat "$scratch/g.err" >&2; fail "per-grading g: not exit 2"; }
+[ "$(grep -c '^gradfric: error:' "$scratch/g.err")" -eq 1 ] || fail "per-grading g: not one message"
+grep -q "invalid option -pressure_response_file = $f: .*the study's scene (friction linear Delta = 0.2" "$scratch/g.err" ||
+  { cat "$scratch/g.err" >&2; fail "per-grading g: message"; }
+! grep -q "accuracy-cost study" "$scratch/g.out" && [ ! -e "$scratch/g.h5" ] || fail "per-grading g: the study ran or wrote"
 echo "study refusals OK"

@@ -73,6 +73,8 @@ inline double frictionPerDirection(const Law& law, double staticStrength, double
   return norm2 > 0.0 ? mobile * sliding / std::sqrt(norm2) : 0.0;
 }
 
+struct VerletRow;  // the arrays of one row for Verlet's fused update (src/sbm/verlet_row.hpp)
+
 template <class Law>
 class FastLattice {
 public:
@@ -125,6 +127,8 @@ private:
   void markReversals(int r);
   void markReversalsRange(int r, int c0, int c1);
   void syncStates(int r, double t);
+  template <SiteLayout L>
+  VerletRow verletRow(int r);  // the one builder of row r's VerletRow, for both Verlet sweeps
   LatticeStiffness stiffness_;
   Law law_;  // owns the per-block friction strengths
   Motion motion_;
@@ -137,7 +141,7 @@ private:
   std::int64_t quietUntil_ = 0;
   std::int64_t quietBatchStart_ = -1;
   std::vector<double> quietSumX_, quietSumY_;
-  // The active set (Verlet, Motion::skipIdle; fast_lattice.cpp): each row is cut into tiles of
+  // The active set (Verlet, Motion::skipIdle; src/sbm/active_set.hpp): each row is cut into tiles of
   // kTile columns. The springs a tile owns (its horizontal springs and those to the row above,
   // "pieces") are kept from the step they were evaluated at (pieceStep_) while no block of the
   // tile, of the tile to its right or of the two tiles above moved since (mobileStep_: the last

@@ -1,0 +1,108 @@
+#pragma once
+// Private to the fast spring-block kernel: the full sweep over the rows. Once row r's forces are
+// complete (the springs to row r+1 added), its update follows at once, while the row is still in
+// cache; the springs to row r+1 leave their reaction in a carry buffer. Every spring is evaluated
+// once per force evaluation. Velocity Verlet's step is one such sweep (verletStep).
+#include "row_springs.hpp"
+#include "verlet_row.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+namespace gradfric::sbm {
+
+// Forces F_mot on row r at positions (px, py) and time t into fx_, fy_: slider springs, the
+// reactions carried from the row below, the row's horizontal springs and the springs to the row
+// above (whose reactions go to next*). With WantSum, adds the slider forces to (sumX, sumY).
+template <class Law>
+template <bool Graded, bool WantSum>
+GF_ALWAYS_INLINE void FastLattice<Law>::rowForces(int r, const double* px, const double* py, double t, const double* carryX,
+                                             const double* carryY, double* nextX, double* nextY, double& sumX,
+                                             double& sumY) {
+  const int nb = nb_;
+  const double l = stiffness_.spacing;
+  const double diagonalLength = std::sqrt(2.0) * l;
+  const double drivenX = motion_.sliderVelocityX * t;
+  const double drivenY = motion_.sliderVelocityY * t;
+  const RowStiffness rowStiffness = rowStiffnessOf(stiffness_, r);
+  const double* kS = rowStiffness.slider;
+  const double kS0 = kS[0];
+  double* __restrict fx = fx_.data();
+  double* __restrict fy = fy_.data();
+  double* __restrict hx = springX_.data();
+  double* __restrict hy = springY_.data();
+  const double* __restrict rx = px + r * nb;
+  const double* __restrict ry = py + r * nb;
+  for (int c = 0; c < nb; ++c) {
+    const double k = Graded ? kS[c] : kS0;
+    fx[c] = k * (drivenX - rx[c]) + carryX[c];
+    fy[c] = k * (drivenY - ry[c]) + carryY[c];
+  }
+  if (WantSum) {  // the macroscopic friction force: the sum of the slider forces
+    // In registers: through the references every addition would wait on a store and a load.
+    double x = sumX, y = sumY;
+    for (int c = 0; c < nb; ++c) {
+      const double k = Graded ? kS[c] : kS0;
+      x += k * (drivenX - rx[c]);
+      y += k * (drivenY - ry[c]);
+    }
+    sumX = x;
+    sumY = y;
+  }
+  const RowSprings springs{nb, r + 1 < nb, l, diagonalLength, rowStiffness.horizontal, rowStiffness.vertical,
+                           rowStiffness.diagonal, rx, ry, hx, hy, fx, fy, nextX, nextY};
+  if (stiffness_.smallStrain) rowSprings<Graded, true>(springs);
+  else rowSprings<Graded, false>(springs);
+}
+
+// One sweep over the rows at positions (px, py): once row r's forces are complete (fx_, fy_),
+// update(r) advances that row while it is in cache; the springs to the next row leave their
+// reactions in a carry buffer.
+template <class Law>
+template <bool Graded, bool WantSum, class RowUpdate>
+GF_ALWAYS_INLINE void FastLattice<Law>::sweepRows(const double* px, const double* py, double t, double& sumX, double& sumY,
+                                             RowUpdate update) {
+  const int nb = nb_;
+  double* carryX = carryX_.data();
+  double* carryY = carryY_.data();
+  double* nextX = nextX_.data();
+  double* nextY = nextY_.data();
+  std::fill(carryX, carryX + nb, 0.0);
+  std::fill(carryY, carryY + nb, 0.0);
+  for (int r = 0; r < nb; ++r) {
+    this->template rowForces<Graded, WantSum>(r, px, py, t, carryX, carryY, nextX, nextY, sumX, sumY);
+    update(r);
+    std::swap(carryX, nextX);
+    std::swap(carryY, nextY);
+  }
+}
+
+// Velocity Verlet, one force evaluation per step, fused in one sweep: with F(u_n) of a row
+// complete, close the previous step's kick (v_n = v_{n-1/2} + h/2 a_n, friction and damping of
+// that step), decide the stick/slip transitions at t_n, open this step's kick
+// (v_{n+1/2} = v_n + h/2 a_n) and drift (u_{n+1} = u_n + h v_{n+1/2}). Damping is evaluated with
+// the velocity at hand (explicit). vx_, vy_ hold the half-step velocity between steps.
+template <class Law>
+template <bool Graded, SiteLayout L>
+GF_ALWAYS_INLINE void FastLattice<Law>::verletStep(double t, double& sumX, double& sumY) {
+  const int nb = nb_;
+  const double half = 0.5 * motion_.timeStep;
+  const double h = motion_.timeStep;
+  const double invMass = 1.0 / motion_.mass;
+  const double gamma = motion_.damping;
+  double* carryX = carryX_.data();
+  double* carryY = carryY_.data();
+  double* nextX = nextX_.data();
+  double* nextY = nextY_.data();
+  std::fill(carryX, carryX + nb, 0.0);
+  std::fill(carryY, carryY + nb, 0.0);
+  for (int r = 0; r < nb; ++r) {
+    this->template rowForces<Graded, true>(r, ux_.data(), uy_.data(), t, carryX, carryY, nextX, nextY, sumX, sumY);
+    if (verletRowUpdate<Law, L>(law_, nb, half, h, invMass, gamma, this->template verletRow<L>(r))) syncStates(r, t);
+    std::swap(carryX, nextX);
+    std::swap(carryY, nextY);
+  }
+}
+
+}  // namespace gradfric::sbm
