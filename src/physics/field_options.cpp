@@ -284,13 +284,6 @@ void checkPlateFields(const Grading& grading, const Plate& plate, int nx, int ny
 
 void checkSpringBlockFields(const Grading& grading, const Plate& plate, int blocksPerSide) {
   if (!grading.fields) return;
-  if (const auto& e = grading.fields->modulus; e && e->variesAlongY()) {
-    const char* why = "an E field along x only in the spring-block model (its stiffness is per block column; the FEM "
-                      "takes any E field)";
-    if (e->shape == FieldShape::Map) throw InputError("-field_E_profile", "map", why);
-    if (e->radial) throw InputError("-field_E_centre", formatReal(e->centreX) + "," + formatReal(e->centreY), why);
-    throw InputError("-field_E_angle", formatReal(e->angle), std::string("0 or 180: ") + why);
-  }
   checkPlateFields(grading, plate, blocksPerSide, blocksPerSide);
 }
 

@@ -46,6 +46,7 @@ GF_ALWAYS_INLINE void FastLattice<Law>::verletStepActive(double t, double& sumX,
     const double* kH = rowStiffness.horizontal;
     const double* kV = rowStiffness.vertical;
     const double* kD = rowStiffness.diagonal;
+    const double* kA = rowStiffness.antiDiagonal;
     const double* kS = rowStiffness.slider;
     const double kS0 = kS[0];
     const double* __restrict rx = ux_.data() + base;
@@ -74,8 +75,8 @@ GF_ALWAYS_INLINE void FastLattice<Law>::verletStepActive(double t, double& sumX,
       const int c0 = tile * kTile, c1 = std::min(c0 + kTile, nb), springEnd = std::min(c1, nb - 1);
       const TilePieces pieces{hx, hy, vx, vy, dx, dy, ax, ay};
       if (stiffness_.smallStrain)
-        tileSprings<Graded, true>(c0, c1, springEnd, above, l, diagonalLength, kH, kV, kD, rx, ry, qx, qy, pieces);
-      else tileSprings<Graded, false>(c0, c1, springEnd, above, l, diagonalLength, kH, kV, kD, rx, ry, qx, qy, pieces);
+        tileSprings<Graded, true>(c0, c1, springEnd, above, l, diagonalLength, kH, kV, kD, kA, rx, ry, qx, qy, pieces);
+      else tileSprings<Graded, false>(c0, c1, springEnd, above, l, diagonalLength, kH, kV, kD, kA, rx, ry, qx, qy, pieces);
     }
     // Assemble F_mot of the row and the reactions on the row above as rowForces does.
     for (int c = 0; c < nb; ++c) {

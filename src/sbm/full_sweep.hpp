@@ -51,7 +51,7 @@ GF_ALWAYS_INLINE void FastLattice<Law>::rowForces(int r, const double* px, const
     sumY = y;
   }
   const RowSprings springs{nb, r + 1 < nb, l, diagonalLength, rowStiffness.horizontal, rowStiffness.vertical,
-                           rowStiffness.diagonal, rx, ry, hx, hy, fx, fy, nextX, nextY};
+                           rowStiffness.diagonal, rowStiffness.antiDiagonal, rx, ry, hx, hy, fx, fy, nextX, nextY};
   if (stiffness_.smallStrain) rowSprings<Graded, true>(springs);
   else rowSprings<Graded, false>(springs);
 }

@@ -13,8 +13,40 @@ namespace {
 double seriesStiffness(double a, double b) { return 2.0 * a * b / (a + b); }
 
 double columnCentre(int column, int blocksPerSide) { return (column + 0.5) / blocksPerSide; }
-// The stiffness is per column: an E field varies along x only (the scene refuses others), so any row will do.
+// Per-column properties: an E field that varies along x only is the same on every row, so any
+// row will do.
 constexpr double kMiddleRow = 0.5;
+
+// The vertical spring between two blocks of a column: k itself when they have the same E (the
+// per-column lattice's rule, exact), their series stiffness otherwise.
+double verticalStiffness(double below, double above) { return below == above ? below : seriesStiffness(below, above); }
+
+// Per block: every spring from the axial stiffnesses k of its two blocks (see lattice.hpp).
+void buildPerBlock(const Parameters& p, const PropertySampler& sampler, LatticeStiffness& s) {
+  const int nb = p.blocksPerSide, inner = std::max(nb - 1, 0);
+  std::vector<double> k(std::size_t(nb) * nb);
+  s.slider.resize(k.size());
+  for (int r = 0; r < nb; ++r)
+    for (int c = 0; c < nb; ++c) {
+      const double modulus = p.plate.youngsModulus * sampler.modulus(columnCentre(c, nb), columnCentre(r, nb));
+      k[std::size_t(r) * nb + c] = p.axialStiffness(modulus);
+      s.slider[std::size_t(r) * nb + c] = p.sliderStiffness(modulus);
+    }
+  s.horizontal.assign(std::size_t(nb) * inner, 0.0);
+  s.vertical.assign(std::size_t(nb) * nb, 0.0);
+  s.diagonal.assign(std::size_t(nb) * inner, 0.0);
+  s.antiDiagonal.assign(std::size_t(nb) * inner, 0.0);
+  auto at = [&](int r, int c) { return k[std::size_t(r) * nb + c]; };
+  for (int r = 0; r < nb; ++r) {
+    for (int c = 0; c + 1 < nb; ++c) s.horizontal[std::size_t(r) * inner + c] = seriesStiffness(at(r, c), at(r, c + 1));
+    if (r + 1 == nb) continue;  // the top row has no row above
+    for (int c = 0; c < nb; ++c) s.vertical[std::size_t(r) * nb + c] = verticalStiffness(at(r, c), at(r + 1, c));
+    for (int c = 0; c + 1 < nb; ++c) {
+      s.diagonal[std::size_t(r) * inner + c] = seriesStiffness(0.5 * at(r, c), 0.5 * at(r + 1, c + 1));
+      s.antiDiagonal[std::size_t(r) * inner + c] = seriesStiffness(0.5 * at(r, c + 1), 0.5 * at(r + 1, c));
+    }
+  }
+}
 
 }  // namespace
 
@@ -24,7 +56,7 @@ double LatticeStiffness::largestAxial() const {
   return largest;
 }
 
-LatticeStiffness buildStiffness(const Parameters& p, const Grading& grading) {
+LatticeStiffness buildStiffness(const Parameters& p, const Grading& grading, bool forcePerBlock) {
   const int nb = p.blocksPerSide;
   LatticeStiffness s;
   s.blocksPerSide = nb;
@@ -32,6 +64,12 @@ LatticeStiffness buildStiffness(const Parameters& p, const Grading& grading) {
   const PropertySampler sampler(grading, nb, nb);
   s.graded = sampler.gradesModulus();
   s.smallStrain = p.smallStrain;
+  s.perBlock = forcePerBlock || sampler.modulusVariesAlongY();
+  if (s.perBlock) {
+    s.graded = true;  // the per-block row pointers need the graded kernels
+    buildPerBlock(p, sampler, s);
+    return s;
+  }
   std::vector<double> modulus(nb);
   for (int c = 0; c < nb; ++c) modulus[c] = p.plate.youngsModulus * sampler.modulus(columnCentre(c, nb), kMiddleRow);
   s.vertical.resize(nb);
@@ -151,13 +189,14 @@ LatticeEnergy latticeEnergy(const LatticeStiffness& s, double mass, const double
       const int i = r * nb + c;
       e.kinetic += 0.5 * mass * (vx[i] * vx[i] + vy[i] * vy[i]);
       const double sx = sliderX - ux[i], sy = sliderY - uy[i];
-      e.slider += 0.5 * s.slider[c] * (sx * sx + sy * sy);
-      if (c + 1 < nb) spring(i, i + 1, s.horizontal[c], l, 0, l);
+      const RowStiffness k = s.row(r);
+      e.slider += 0.5 * k.slider[c] * (sx * sx + sy * sy);
+      if (c + 1 < nb) spring(i, i + 1, k.horizontal[c], l, 0, l);
       if (r + 1 < nb) {
-        spring(i, i + nb, s.vertical[c], 0, l, l);
+        spring(i, i + nb, k.vertical[c], 0, l, l);
         if (c + 1 < nb) {
-          spring(i, i + nb + 1, s.diagonal[c], l, l, ld);
-          spring(i + 1, i + nb, s.diagonal[c], -l, l, ld);
+          spring(i, i + nb + 1, k.diagonal[c], l, l, ld);
+          spring(i + 1, i + nb, k.antiDiagonal[c], -l, l, ld);
         }
       }
     }
@@ -181,17 +220,19 @@ void blockStress(const LatticeStiffness& s, double thickness, const double* ux, 
     syy += dy * fy;
     sxy += 0.5 * (dx * fy + dy * fx);
   };
-  if (c + 1 < nb) add(r, c + 1, s.horizontal[c], l, 0, l);
-  if (c > 0) add(r, c - 1, s.horizontal[c - 1], -l, 0, l);
-  add(r + 1, c, s.vertical[c], 0, l, l);
-  add(r - 1, c, s.vertical[c], 0, -l, l);
+  // Row r's springs, and the row below's for those that reach down to r.
+  const RowStiffness here = s.row(r), below = s.row(std::max(r - 1, 0));
+  if (c + 1 < nb) add(r, c + 1, here.horizontal[c], l, 0, l);
+  if (c > 0) add(r, c - 1, here.horizontal[c - 1], -l, 0, l);
+  add(r + 1, c, here.vertical[c], 0, l, l);
+  if (r > 0) add(r - 1, c, below.vertical[c], 0, -l, l);
   if (c + 1 < nb) {
-    add(r + 1, c + 1, s.diagonal[c], l, l, diagonalLength);
-    add(r - 1, c + 1, s.diagonal[c], l, -l, diagonalLength);
+    add(r + 1, c + 1, here.diagonal[c], l, l, diagonalLength);
+    if (r > 0) add(r - 1, c + 1, below.antiDiagonal[c], l, -l, diagonalLength);
   }
   if (c > 0) {
-    add(r + 1, c - 1, s.diagonal[c - 1], -l, l, diagonalLength);
-    add(r - 1, c - 1, s.diagonal[c - 1], -l, -l, diagonalLength);
+    add(r + 1, c - 1, here.antiDiagonal[c - 1], -l, l, diagonalLength);
+    if (r > 0) add(r - 1, c - 1, below.diagonal[c - 1], -l, -l, diagonalLength);
   }
   // Each spring is shared by two blocks: half of its virial belongs to this block.
   const double volume = l * l * thickness;

@@ -166,10 +166,10 @@ Law quietPhaseLaw(const Law& law, const PressureCoupling& coupling, const Lattic
   double sliderSum = 0.0;
   for (int r = 0; r < nb; ++r)
     for (int c = 0; c < nb; ++c) {
-      sliderSum += stiffness.slider[c];
+      sliderSum += stiffness.sliderAt(r, c);
       const std::size_t i = std::size_t(r) * nb + c;
       if (coupling.shape()[i] <= 0.0)
-        latest = std::min(latest, firstSlipStepAtRest<Law>(stiffness.slider[c], base.staticStrength[i], motion, latest));
+        latest = std::min(latest, firstSlipStepAtRest<Law>(stiffness.sliderAt(r, c), base.staticStrength[i], motion, latest));
     }
   const double speed = std::hypot(motion.sliderVelocityX, motion.sliderVelocityY);
   const double muBound = sliderSum * speed * double(latest + 1) * motion.timeStep / normalForce * (1.0 + 1e-9);
@@ -218,7 +218,8 @@ std::vector<std::string> activeEffects(const Parameters& p, const Grading& g, co
   const bool fieldE = g.fields && g.fields->modulus;
   const bool fieldMu = g.fields && (g.fields->muStatic || g.fields->muKinetic || g.fields->pressure);
   effects.push_back(g.gradesModulus() ? "graded Young's modulus (" + describe(g) + "), series spring stiffness"
-                    : fieldE          ? "Young's modulus from a property field, series spring stiffness"
+                    : fieldE          ? std::string("Young's modulus from a property field, series spring stiffness ") +
+                                   (g.fields->modulus->variesAlongY() ? "per block (E varies along y)" : "per block column")
                                       : "uniform Young's modulus: uniform-stiffness kernel");
   effects.push_back(g.gradesFriction() ? "graded friction coefficients (" + describe(g) + ")"
                     : fieldMu          ? "friction strengths mu p l^2 from property fields"

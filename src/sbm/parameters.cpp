@@ -14,7 +14,12 @@ double stableTimeStep(const Parameters& p, const Grading& grading) {
   // on the imaginary axis up to |omega dt| = 2 sqrt(2), velocity Verlet up to omega dt = 2.
   const LatticeStiffness s = buildStiffness(p, grading);
   double largest = 0.0;
-  for (int c = 0; c < p.blocksPerSide; ++c) largest = std::max(largest, 6.0 * s.vertical[c] + s.slider[c]);
+  if (!s.perBlock) {
+    for (int c = 0; c < p.blocksPerSide; ++c) largest = std::max(largest, 6.0 * s.vertical[c] + s.slider[c]);
+  } else {  // the stiffest block's own k_i (both K_int and K_s are proportional to E_i)
+    const double axialPerSlider = p.axialStiffness(1.0) / p.sliderStiffness(1.0);
+    for (double slider : s.slider) largest = std::max(largest, 6.0 * axialPerSlider * slider + slider);
+  }
   const bool verlet = p.integrator == Integrator::VelocityVerlet;
   const double oscillation = (verlet ? 2.0 : 2.0 * std::sqrt(2.0)) / std::sqrt(largest / p.blockMass());
   // The damping alone, on the real axis: RK4 is stable for gamma dt <= 2.785, our explicit

@@ -13,12 +13,13 @@ namespace gradfric::sbm {
 
 namespace {
 
-GF_QUIET_CLONES void sumRows(int nb, const double* slider, const double* drivenX, const double* drivenY,
+// slider: per column [N_b] (rowStride 0) or per block [N_b^2] (rowStride N_b).
+GF_QUIET_CLONES void sumRows(int nb, const double* slider, int rowStride, const double* drivenX, const double* drivenY,
                              double* __restrict sumX, double* __restrict sumY) {
   double ax[kQuietBatch] = {}, ay[kQuietBatch] = {};
   for (int r = 0; r < nb; ++r)
     for (int c = 0; c < nb; ++c) {
-      const double k = slider[c];
+      const double k = slider[std::size_t(r) * rowStride + c];
       for (int s = 0; s < kQuietBatch; ++s) {
         ax[s] += k * (drivenX[s] - 0.0);
         ay[s] += k * (drivenY[s] - 0.0);
@@ -40,7 +41,8 @@ void restSliderForceSums(const LatticeStiffness& stiffness, const Motion& m, std
     drivenX[s] = m.sliderVelocityX * t;
     drivenY[s] = m.sliderVelocityY * t;
   }
-  sumRows(stiffness.blocksPerSide, stiffness.slider.data(), drivenX, drivenY, sumX, sumY);
+  const int nb = stiffness.blocksPerSide;
+  sumRows(nb, stiffness.slider.data(), stiffness.perBlock ? nb : 0, drivenX, drivenY, sumX, sumY);
 }
 
 }  // namespace gradfric::sbm

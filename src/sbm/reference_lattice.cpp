@@ -36,22 +36,24 @@ void ReferenceLattice<Law>::forces(const std::vector<Block>& y, double t, std::v
   for (int r = 0; r < nb; ++r) {
     for (int c = 0; c < nb; ++c) {
       const int i = r * nb + c;
-      const double ks = stiffness_.slider[c];
+      const double ks = stiffness_.sliderAt(r, c);
       double Fx = ks * (motion_.sliderVelocityX * t - y[i].ux);
       double Fy = ks * (motion_.sliderVelocityY * t - y[i].uy);
       for (const auto& n : neighbours) {
         const int rr = r + n.dr, cc = c + n.dc;
         if (rr < 0 || rr >= nb || cc < 0 || cc >= nb) continue;
         const int j = rr * nb + cc;
+        // Each spring belongs to the lower of its two rows, and to the left of its two columns.
+        const RowStiffness springs = stiffness_.row(std::min(r, rr));
         double k, restLength;
         if (n.dr == 0) {
-          k = stiffness_.horizontal[std::min(c, cc)];
+          k = springs.horizontal[std::min(c, cc)];
           restLength = l;
         } else if (n.dc == 0) {
-          k = stiffness_.vertical[c];
+          k = springs.vertical[c];
           restLength = l;
         } else {
-          k = stiffness_.diagonal[std::min(c, cc)];
+          k = n.dr == n.dc ? springs.diagonal[std::min(c, cc)] : springs.antiDiagonal[std::min(c, cc)];
           restLength = ld;
         }
         const double dux = y[j].ux - y[i].ux, duy = y[j].uy - y[i].uy;
@@ -128,8 +130,8 @@ StepObservation ReferenceLattice<Law>::step() {
   for (int r = 0; r < nb_; ++r) {
     for (int c = 0; c < nb_; ++c) {
       const int i = r * nb_ + c;
-      observation.sliderForceX += stiffness_.slider[c] * (motion_.sliderVelocityX * t - blocks_[i].ux);
-      observation.sliderForceY += stiffness_.slider[c] * (motion_.sliderVelocityY * t - blocks_[i].uy);
+      observation.sliderForceX += stiffness_.sliderAt(r, c) * (motion_.sliderVelocityX * t - blocks_[i].ux);
+      observation.sliderForceY += stiffness_.sliderAt(r, c) * (motion_.sliderVelocityY * t - blocks_[i].uy);
       const double threshold = law_.sites.staticAt(law_.sites.slot(r, c));
       switch (stickSlipChange(state_[i], Law::holds(fx[i] * fx[i] + fy[i] * fy[i], threshold))) {
         case StickSlipChange::StartsToSlip:

@@ -8,31 +8,22 @@
 
 namespace gradfric::sbm {
 
-// The stiffnesses of the springs of row r, indexed by column: horizontal (c -> c+1), vertical
-// (to row r+1), diagonal (both, c <-> c+1 in row r+1) and slider. Without grading (Graded false)
-// the kernels read only element 0.
-struct RowStiffness {
-  const double* horizontal;
-  const double* vertical;
-  const double* diagonal;
-  const double* slider;
-};
-
-// Grading is along x only (lattice.hpp): every row has the same per-column stiffnesses.
-inline RowStiffness rowStiffnessOf(const LatticeStiffness& s, int /*row*/) {
-  return {s.horizontal.data(), s.vertical.data(), s.diagonal.data(), s.slider.data()};
-}
+// The stiffness pointers of row r (RowStiffness, lattice.hpp): per column every row points at the
+// same column arrays, per block row r at its own. The kernels index them by column alone, so both
+// layouts run the same arithmetic. Without grading (Graded false) they read only element 0.
+inline RowStiffness rowStiffnessOf(const LatticeStiffness& s, int row) { return s.row(row); }
 
 // The springs from row r (rx, ry) to row r+1 (qx, qy): vertical, diagonal (c -> c+1 above) and
 // anti-diagonal (c+1 -> c above). Adds their forces to row r (fx, fy) and writes the reactions on
 // row r+1 into (nextX, nextY). The arrays are distinct: __restrict lets the loops vectorise.
 template <bool Graded, bool Small>
 GF_ALWAYS_INLINE void springsToRowAbove(int nb, double l, double diagonalLength, const double* __restrict kV,
-                                        const double* __restrict kD, const double* __restrict rx,
+                                        const double* __restrict kD, const double* __restrict kA,
+                                        const double* __restrict rx,
                                         const double* __restrict ry, const double* __restrict qx,
                                         const double* __restrict qy, double* __restrict fx, double* __restrict fy,
                                         double* __restrict nextX, double* __restrict nextY) {
-  const double kV0 = kV[0], kD0 = kD[0];
+  const double kV0 = kV[0], kD0 = kD[0], kA0 = kA[0];
   for (int c = 0; c < nb; ++c) {
     const auto [ax, ay] = latticeSpringForce<Small>(Graded ? kV[c] : kV0, 0.0, l, l, qx[c] - rx[c], qy[c] - ry[c]);
     fx[c] += ax;
@@ -48,7 +39,7 @@ GF_ALWAYS_INLINE void springsToRowAbove(int nb, double l, double diagonalLength,
     nextY[c + 1] -= ay;
   }
   for (int c = 0; c + 1 < nb; ++c) {
-    const auto [ax, ay] = latticeSpringForce<Small>(Graded ? kD[c] : kD0, -l, l, diagonalLength, qx[c] - rx[c + 1], qy[c] - ry[c + 1]);
+    const auto [ax, ay] = latticeSpringForce<Small>(Graded ? kA[c] : kA0, -l, l, diagonalLength, qx[c] - rx[c + 1], qy[c] - ry[c + 1]);
     fx[c + 1] += ax;
     fy[c + 1] += ay;
     nextX[c] -= ax;
@@ -64,6 +55,7 @@ struct RowSprings {
   const double* kH;
   const double* kV;
   const double* kD;
+  const double* kA;  // anti-diagonal (per column: the diagonal's array)
   const double* rx;  // positions of the row (the row above follows at + nb)
   const double* ry;
   double* hx;  // horizontal spring forces (work space)
@@ -102,8 +94,8 @@ GF_ALWAYS_INLINE void rowSprings(const RowSprings& s) {
     fy[c + 1] -= hy[c];
   }
   if (s.above)
-    springsToRowAbove<Graded, Small>(nb, l, s.diagonalLength, s.kV, s.kD, rx, ry, rx + nb, ry + nb, fx, fy, s.nextX,
-                                     s.nextY);
+    springsToRowAbove<Graded, Small>(nb, l, s.diagonalLength, s.kV, s.kD, s.kA, rx, ry, rx + nb, ry + nb, fx, fy,
+                                     s.nextX, s.nextY);
 }
 
 // The springs a tile of the active set owns (columns c0 <= c < c1 of row r): horizontal, and
@@ -122,10 +114,10 @@ struct TilePieces {
 template <bool Graded, bool Small>
 GF_ALWAYS_INLINE void tileSprings(int c0, int c1, int springEnd, bool above, double l, double diagonalLength,
                                   const double* __restrict kH, const double* __restrict kV,
-                                  const double* __restrict kD, const double* __restrict rx,
-                                  const double* __restrict ry, const double* __restrict qx,
-                                  const double* __restrict qy, TilePieces p) {
-  const double kH0 = kH[0], kV0 = kV[0], kD0 = kD[0];
+                                  const double* __restrict kD, const double* __restrict kA,
+                                  const double* __restrict rx, const double* __restrict ry,
+                                  const double* __restrict qx, const double* __restrict qy, TilePieces p) {
+  const double kH0 = kH[0], kV0 = kV[0], kD0 = kD[0], kA0 = kA[0];
   double* __restrict hx = p.hx;
   double* __restrict hy = p.hy;
   double* __restrict vx = p.vx;
@@ -153,7 +145,7 @@ GF_ALWAYS_INLINE void tileSprings(int c0, int c1, int springEnd, bool above, dou
   }
   for (int c = c0; c < springEnd; ++c) {
     const Force2 f =
-        latticeSpringForce<Small>(Graded ? kD[c] : kD0, -l, l, diagonalLength, qx[c] - rx[c + 1], qy[c] - ry[c + 1]);
+        latticeSpringForce<Small>(Graded ? kA[c] : kA0, -l, l, diagonalLength, qx[c] - rx[c + 1], qy[c] - ry[c + 1]);
     ax[c] = f.x;
     ay[c] = f.y;
   }

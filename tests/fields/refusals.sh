@@ -62,9 +62,10 @@ s "-field_mu_map" "cannot open" -- -field_mu_profile map -field_mu_map "$scratch
 s "-field_mu_map" ".png (greyscale image)" -- -field_mu_profile map -field_mu_map "$scratch/map.txt"
 s "-field_mu_map_extent" "covers the plate" -- -field_mu_profile map -field_mu_map "$source_dir/input/fields/pillars.png" -field_mu_map_extent 0,1e-3,0,5e-3
 s "-field_mu_map_range" "two values" -- -field_mu_profile map -field_mu_map "$source_dir/input/fields/pillars.png" -field_mu_map_range 1
+# An E field along y is taken by the spring-block model (per-block stiffness) and checked block by block.
+s "-field_E_delta = 1.5" "E > 0 [Pa] everywhere on the plate" "E = -" "y = 2.08333e-05 m" -- -field_E_profile linear -field_E_delta 1.5 -field_E_angle 90
+s "-field_E_delta = -1.2" "E > 0 [Pa] everywhere on the plate" -- -field_E_profile linear -field_E_delta -1.2 -field_E_centre 2.5e-3,2.5e-3
 # Options that cannot work together or would be ignored.
-s "-field_E_angle = 90" "per block column" -- -field_E_profile linear -field_E_delta 0.2 -field_E_angle 90
-s "-field_E_centre" "per block column" -- -field_E_profile linear -field_E_delta 0.2 -field_E_centre 0,0
 s "-field_E_profile = linear" "-grading_property" -- -grading_profile linear -grading_delta 0.2 -field_E_profile linear
 s "-field_mu_profile = none" "-field_mu_delta" -- -field_mu_delta 0.2
 s "-field_mu_s_profile" "-field_mu_profile" -- -field_mu_profile constant -field_mu_s_profile constant

@@ -52,7 +52,7 @@ struct PropertyField {
   // The normalisation factor for a model whose sites are the centres of an nx x ny grid of equal
   // cells (SBM blocks, FEM bottom faces): 1 / mean of the profile there, or 1.
   double scaleFor(int nx, int ny) const;
-  // Whether f changes along y (the SBM's stiffness is per block column: it needs f(x) only).
+  // Whether f changes along y (the SBM then needs its stiffnesses, or strengths, per block).
   bool variesAlongY() const;
   // The scalar parameters a sweep can set by name: delta, exponent, angle, position, period, duty.
   static const std::vector<std::string>& scalarParameters();

@@ -25,8 +25,8 @@ std::shared_ptr<const PlateFields> readPlateFields(MPI_Comm comm, RunParameters*
 // grid (E, mu_s, p <= 0, mu_k > mu_s): its value and where on the plate. Same on every rank.
 void checkPlateFields(const Grading& grading, const Plate& plate, int nx, int ny);
 
-// The spring-block model's check: the above on its block centres, and an E field that varies
-// along x only (its stiffnesses are per block column).
+// The spring-block model's check: the above on its block centres (an E field that varies along
+// y is taken: its stiffnesses are then per block, sbm/lattice.hpp).
 void checkSpringBlockFields(const Grading& grading, const Plate& plate, int blocksPerSide);
 
 }  // namespace gradfric

@@ -1,7 +1,8 @@
 #pragma once
 // The lattice's stiffnesses and local friction, built from the parameters, the grading and a
 // random stream. Blocks are indexed row-major, i = row * N_b + column, the column running along
-// the grading axis x. Grading is along x only, so every stiffness depends on columns alone.
+// x. The stiffnesses are per block column when E varies along x only (the paper's gradings, and
+// every E field at 0 or 180 degrees), per block when it varies along y too.
 #include "gradfric/core/random_stream.hpp"
 #include "gradfric/physics/friction_law.hpp"
 #include "gradfric/physics/grading.hpp"
@@ -11,21 +12,43 @@
 
 namespace gradfric::sbm {
 
+// The springs of row r, as pointers indexed by column c (see LatticeStiffness::row).
+struct RowStiffness {
+  const double* horizontal;    // [N_b - 1] (r, c) - (r, c+1)
+  const double* vertical;      // [N_b] (r, c) - (r+1, c); not read for the top row
+  const double* diagonal;      // [N_b - 1] (r, c) - (r+1, c+1); not read for the top row
+  const double* antiDiagonal;  // [N_b - 1] (r, c+1) - (r+1, c); not read for the top row
+  const double* slider;        // [N_b] slider spring of (r, c)
+};
+
 struct LatticeStiffness {
   int blocksPerSide = 0;
   double spacing = 0.0;
   bool graded = false;              // false: each kind of spring has one stiffness everywhere
+  bool perBlock = false;            // false: per column (every row the same), true: per block
   bool smallStrain = false;         // springs linearised about their rest direction (Parameters)
-  std::vector<double> horizontal;   // [N_b - 1] axial spring between columns c and c+1 [N/m]
-  std::vector<double> vertical;     // [N_b] axial springs inside column c
-  std::vector<double> diagonal;     // [N_b - 1] both diagonals between columns c and c+1
-  std::vector<double> slider;       // [N_b] slider spring of a block in column c
+  // Per column: horizontal [N_b - 1] between columns c and c+1, vertical [N_b] inside column c,
+  // diagonal [N_b - 1] both diagonals between columns c and c+1, slider [N_b]; antiDiagonal empty.
+  // Per block: row r's springs start at r (N_b - 1) (horizontal, diagonal, antiDiagonal) or r N_b
+  // (vertical, slider); the springs to the row above of the top row are zero and never read.
+  std::vector<double> horizontal, vertical, diagonal, antiDiagonal, slider;
   double largestAxial() const;
+  RowStiffness row(int r) const {
+    if (!perBlock) return {horizontal.data(), vertical.data(), diagonal.data(), diagonal.data(), slider.data()};
+    const std::size_t inner = std::size_t(r) * (blocksPerSide - 1), all = std::size_t(r) * blocksPerSide;
+    return {horizontal.data() + inner, vertical.data() + all, diagonal.data() + inner, antiDiagonal.data() + inner,
+            slider.data() + all};
+  }
+  double sliderAt(int r, int c) const { return row(r).slider[c]; }
 };
 
-// Axial K_int = 3/4 E l_z, diagonal K_int / 2; a spring between blocks of different E takes the
-// series (harmonic-mean) stiffness 2 k_i k_j / (k_i + k_j). Slider K_s = G l^2 / l_z.
-LatticeStiffness buildStiffness(const Parameters& parameters, const Grading& grading);
+// E_i = E f(x_i, y_i) at the block centres; axial K_int = 3/4 E_i l_z, diagonal K_int / 2; a spring
+// between blocks i and j takes the series (harmonic-mean) stiffness 2 k_i k_j / (k_i + k_j) of its
+// two half-springs, and a vertical spring between blocks of the same E takes k itself (the same
+// number up to round-off; exact, so that per-block stiffness of an E constant along y is the
+// per-column lattice bit for bit). Slider K_s,i = G_i l^2 / l_z. Per block when the E field varies
+// along y or when forcePerBlock is set (tests), per column otherwise.
+LatticeStiffness buildStiffness(const Parameters& parameters, const Grading& grading, bool forcePerBlock = false);
 
 // Local friction as forces, the per-site parameters of the friction law: static strength
 // mu_s,i F_n and kinetic strength mu_k,i F_n [N], stored as one value, one per column or one per

@@ -50,9 +50,9 @@ std::int64_t firstSlipStepAtRest(const LatticeStiffness& stiffness, const Law& l
   for (int r = 0; r < nb; ++r) {
     for (int c = 0; c < nb; ++c) {
       const double s = sites.staticAt(sites.slot(r, c));
-      first = std::min(first, firstSlipStepAtRest<Law>(stiffness.slider[c], s, m, first));
+      first = std::min(first, firstSlipStepAtRest<Law>(stiffness.sliderAt(r, c), s, m, first));
     }
-    if (sites.layout != SiteLayout::PerSite) break;  // every row is the same
+    if (sites.layout != SiteLayout::PerSite && !stiffness.perBlock) break;  // every row is the same
   }
   return first;
 }
