@@ -91,18 +91,10 @@ GF_ALWAYS_INLINE void FastLattice<Law>::verletStep(double t, double& sumX, doubl
   const double h = motion_.timeStep;
   const double invMass = 1.0 / motion_.mass;
   const double gamma = motion_.damping;
-  double* carryX = carryX_.data();
-  double* carryY = carryY_.data();
-  double* nextX = nextX_.data();
-  double* nextY = nextY_.data();
-  std::fill(carryX, carryX + nb, 0.0);
-  std::fill(carryY, carryY + nb, 0.0);
-  for (int r = 0; r < nb; ++r) {
-    this->template rowForces<Graded, true>(r, ux_.data(), uy_.data(), t, carryX, carryY, nextX, nextY, sumX, sumY);
+  // The row sweep of RK4's stages (sweepRows), with the Verlet row update.
+  this->template sweepRows<Graded, true>(ux_.data(), uy_.data(), t, sumX, sumY, [&](int r) {
     if (verletRowUpdate<Law, L>(law_, nb, half, h, invMass, gamma, this->template verletRow<L>(r))) syncStates(r, t);
-    std::swap(carryX, nextX);
-    std::swap(carryY, nextY);
-  }
+  });
 }
 
 }  // namespace gradfric::sbm
