@@ -4,6 +4,7 @@
 // rk4_sweep.hpp, entered through kernel_dispatch.cpp.
 #include "gradfric/sbm/integrator.hpp"
 #include "gradfric/sbm/quiet_phase.hpp"
+#include "row_springs.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -45,8 +46,12 @@ FastLattice<Law>::FastLattice(const LatticeStiffness& stiffness, Law law, const 
     v->assign(n, 0.0);
   state_.assign(n, Stuck);
   everSlipped_.assign(n, 0);
-  for (auto* v : {&fx_, &fy_, &carryX_, &carryY_, &nextX_, &nextY_, &springX_, &springY_})
+  for (auto* v : {&fx_, &fy_, &carryX_, &carryY_, &nextX_, &nextY_, &springX_, &springY_, &sliderRowX_, &sliderRowY_})
     v->assign(nb_, 0.0);
+  if (motion_.integrator == Integrator::VelocityVerlet) {
+    rowPieces_.assign(8 * std::size_t(nb_ + 1), 0.0);
+    padRowPieces(rowPieces(), nb_);
+  }
   if (motion_.skipIdle) {
     quietUntil_ = firstSlipStepAtRest(stiffness_, law_, motion_, std::int64_t(1) << 52);
     quietSumX_.assign(kQuietBatch, 0.0);
@@ -54,28 +59,47 @@ FastLattice<Law>::FastLattice(const LatticeStiffness& stiffness, Law law, const 
     if (motion_.integrator == Integrator::VelocityVerlet) {
       tiles_ = (nb_ + kTile - 1) / kTile;
       for (auto* v : {&pieceHx_, &pieceHy_, &pieceVx_, &pieceVy_, &pieceDx_, &pieceDy_, &pieceAx_, &pieceAy_})
-        v->assign(n, 0.0);
+        v->assign(std::size_t(nb_) * (nb_ + 1), 0.0);
+      for (int r = 0; r < nb_; ++r) padRowPieces(keptPieces(r), nb_);
       pieceStep_.assign(std::size_t(nb_) * tiles_, -1);
       mobileStep_.assign(std::size_t(nb_) * tiles_, -1);
     }
   }
 }
 
-// After the fused update changed a stick state in row r: the states (Stuck where mobile is zero)
-// and the first slips of blocks that slip for the first time, at t_n.
+// After a block of row r started to slip at t_n: the first slips of those that never slipped.
 template <class Law>
-void FastLattice<Law>::syncStates(int r, double t) {
+void FastLattice<Law>::firstSlips(int r, double t) {
   const int base = r * nb_;
   for (int c = 0; c < nb_; ++c) {
     const int i = base + c;
-    const bool slips = mobile_[i] != 0.0;
-    state_[i] = slips ? Slipping : Stuck;
-    if (slips && !everSlipped_[i]) {
-      everSlipped_[i] = 1;
-      ++slipped_;
-      if (firstSlip_) firstSlip_[i] = t;
-    }
+    if (mobile_[i] == 0.0 || everSlipped_[i]) continue;
+    everSlipped_[i] = 1;
+    ++slipped_;
+    if (firstSlip_) firstSlip_[i] = t;
   }
+}
+
+template <class Law>
+std::vector<std::uint8_t> FastLattice<Law>::blockStates() const {
+  std::vector<std::uint8_t> states(mobile_.size());
+  for (std::size_t i = 0; i < states.size(); ++i) states[i] = mobile_[i] != 0.0 ? Slipping : Stuck;
+  return states;
+}
+
+template <class Law>
+RowPieces FastLattice<Law>::rowPieces() {
+  const std::size_t stride = std::size_t(nb_) + 1;
+  double* p = rowPieces_.data() + 1;
+  return RowPieces{p, p + stride, p + 2 * stride, p + 3 * stride, p + 4 * stride, p + 5 * stride, p + 6 * stride,
+                   p + 7 * stride};
+}
+
+template <class Law>
+RowPieces FastLattice<Law>::keptPieces(int r) {
+  const std::size_t at = std::size_t(r) * (nb_ + 1) + 1;
+  return RowPieces{pieceHx_.data() + at, pieceHy_.data() + at, pieceVx_.data() + at, pieceVy_.data() + at,
+                   pieceDx_.data() + at, pieceDy_.data() + at, pieceAx_.data() + at, pieceAy_.data() + at};
 }
 
 // The active set pays while few tiles are stale; once more than half of them are, the full sweep

@@ -78,23 +78,33 @@ GF_ALWAYS_INLINE void FastLattice<Law>::sweepRows(const double* px, const double
   }
 }
 
-// Velocity Verlet, one force evaluation per step, fused in one sweep: with F(u_n) of a row
-// complete, close the previous step's kick (v_n = v_{n-1/2} + h/2 a_n, friction and damping of
-// that step), decide the stick/slip transitions at t_n, open this step's kick
-// (v_{n+1/2} = v_n + h/2 a_n) and drift (u_{n+1} = u_n + h v_{n+1/2}). Damping is evaluated with
-// the velocity at hand (explicit). vx_, vy_ hold the half-step velocity between steps.
+// Velocity Verlet, one force evaluation per step, in one sweep over the rows: row r's springs
+// (those it owns: horizontal and to the row above) are evaluated at u_n into the row's pieces,
+// then its whole step follows (verletRowStep: forces, the closing kick of the last step, the
+// stick/slip transitions at t_n, the opening kick and the drift) while the row is in cache.
+// vx_, vy_ hold the half-step velocity between steps.
 template <class Law>
 template <bool Graded, SiteLayout L>
 GF_ALWAYS_INLINE void FastLattice<Law>::verletStep(double t, double& sumX, double& sumY) {
   const int nb = nb_;
-  const double half = 0.5 * motion_.timeStep;
-  const double h = motion_.timeStep;
-  const double invMass = 1.0 / motion_.mass;
-  const double gamma = motion_.damping;
-  // The row sweep of RK4's stages (sweepRows), with the Verlet row update.
-  this->template sweepRows<Graded, true>(ux_.data(), uy_.data(), t, sumX, sumY, [&](int r) {
-    if (verletRowUpdate<Law, L>(law_, nb, half, h, invMass, gamma, this->template verletRow<L>(r))) syncStates(r, t);
-  });
+  const double l = stiffness_.spacing;
+  const double diagonalLength = std::sqrt(2.0) * l;
+  std::fill(carryX_.begin(), carryX_.end(), 0.0);
+  std::fill(carryY_.begin(), carryY_.end(), 0.0);
+  const RowPieces pieces = rowPieces();
+  for (int r = 0; r < nb; ++r) {
+    const RowStiffness s = rowStiffnessOf(stiffness_, r);
+    const double* rx = ux_.data() + r * nb;
+    const double* ry = uy_.data() + r * nb;
+    const bool above = r + 1 < nb;
+    if (stiffness_.smallStrain)
+      tileSprings<Graded, true>(0, nb, nb - 1, above, l, diagonalLength, s.horizontal, s.vertical, s.diagonal,
+                                s.antiDiagonal, rx, ry, rx + nb, ry + nb, pieces);
+    else
+      tileSprings<Graded, false>(0, nb, nb - 1, above, l, diagonalLength, s.horizontal, s.vertical, s.diagonal,
+                                 s.antiDiagonal, rx, ry, rx + nb, ry + nb, pieces);
+    this->template verletRowStep<Graded, L>(r, pieces, t, sumX, sumY);
+  }
 }
 
 }  // namespace gradfric::sbm

@@ -1,7 +1,7 @@
 #pragma once
-// Private to the fast spring-block kernel: the internal springs of one row of the lattice, as
-// the full sweep (rowSprings) and the active set (tileSprings) evaluate them, and the stiffness
-// pointers of a row (RowStiffness, the one place that says where a row's stiffnesses are).
+// Private to the fast spring-block kernel: the internal springs of one row of the lattice, added
+// to the row's forces (rowSprings, RK4) or kept as values (tileSprings, velocity Verlet), and the
+// stiffness pointers of a row (RowStiffness, the one place that says where a row's stiffnesses are).
 #include "gradfric/sbm/lattice.hpp"
 #include "gradfric/sbm/spring.hpp"
 #include "kernel_inline.hpp"
@@ -98,9 +98,13 @@ GF_ALWAYS_INLINE void rowSprings(const RowSprings& s) {
                                      s.nextX, s.nextY);
 }
 
-// The springs a tile of the active set owns (columns c0 <= c < c1 of row r): horizontal, and
-// with a row above vertical, diagonal and anti-diagonal, stored as pieces.
-struct TilePieces {
+// The springs a row owns, evaluated at u_n: horizontal h[c] (c -> c+1), and to the row above
+// vertical v[c], diagonal d[c] (c -> c+1 above) and anti-diagonal a[c] (c+1 -> c above), as the
+// fused Verlet step reads them (verlet_row.hpp). Each array is readable from index -1 to nb-1;
+// the entries no spring owns (-1 and nb-1 of h, d, a) hold the identity of the way the step uses
+// them: -0.0 where it adds them (x + -0.0 == x for every x, -0.0 included) and +0.0 where it
+// subtracts them (x - +0.0 == x), so the edge columns run the interior's arithmetic, bit for bit.
+struct RowPieces {
   double* hx;
   double* hy;
   double* vx;
@@ -111,12 +115,24 @@ struct TilePieces {
   double* ay;
 };
 
+// Writes those identities (see RowPieces); no spring evaluation ever overwrites them.
+inline void padRowPieces(const RowPieces& p, int nb) {
+  for (double* added : {p.hx, p.hy, p.dx, p.dy}) added[nb - 1] = -0.0;
+  for (double* subtracted : {p.hx, p.hy, p.dx, p.dy}) subtracted[-1] = +0.0;
+  for (double* added : {p.ax, p.ay}) added[-1] = -0.0;
+  for (double* subtracted : {p.ax, p.ay}) subtracted[nb - 1] = +0.0;
+}
+
+// Evaluates the springs of columns c0 <= c < c1 of row r into its pieces (the full sweep: the
+// whole row; the active set: one stale tile): horizontal and, with a row above, vertical,
+// diagonal and anti-diagonal. springEnd = min(c1, nb - 1): the last column owns no horizontal,
+// diagonal or anti-diagonal spring.
 template <bool Graded, bool Small>
 GF_ALWAYS_INLINE void tileSprings(int c0, int c1, int springEnd, bool above, double l, double diagonalLength,
                                   const double* __restrict kH, const double* __restrict kV,
                                   const double* __restrict kD, const double* __restrict kA,
                                   const double* __restrict rx, const double* __restrict ry,
-                                  const double* __restrict qx, const double* __restrict qy, TilePieces p) {
+                                  const double* __restrict qx, const double* __restrict qy, RowPieces p) {
   const double kH0 = kH[0], kV0 = kV[0], kD0 = kD[0], kA0 = kA[0];
   double* __restrict hx = p.hx;
   double* __restrict hy = p.hy;

@@ -1,20 +1,27 @@
 #pragma once
-// Private to the fast spring-block kernel: velocity Verlet's fused update of one row, shared by
-// the full sweep (full_sweep.hpp) and the active set (active_set.hpp), and the one builder of the
-// row's arrays (FastLattice::verletRow).
+// Private to the fast spring-block kernel: velocity Verlet's fused step of one row, shared by the
+// full sweep (full_sweep.hpp) and the active set (active_set.hpp): the row's driving forces
+// assembled from its springs' values (RowPieces, row_springs.hpp), then the whole update, in one
+// pass; and the one builder of the row's arrays (FastLattice::verletRow).
 #include "gradfric/sbm/integrator.hpp"
-#include "kernel_inline.hpp"
+#include "row_springs.hpp"
 
 #include <cmath>
 #include <cstdint>
 
 namespace gradfric::sbm {
 
-// The per-block arrays of one row that the fused Verlet update reads and writes; all distinct.
+// The per-block arrays of one row that the fused Verlet step reads and writes.
 struct VerletRow {
-  const double* __restrict fx;  // F_mot at t_n
-  const double* __restrict fy;
-  const double* __restrict staticStrength;   // offset to the row (per site) or the columns
+  const double* __restrict slider;  // slider stiffness per column (element 0 without grading)
+  const double* __restrict carryX;  // reactions of the springs from the row below
+  const double* __restrict carryY;
+  RowPieces pieces;
+  double* __restrict nextX;  // reactions on the row above (written when there is one)
+  double* __restrict nextY;
+  double* __restrict sliderX;  // the row's slider forces at t_n, for the history's sum
+  double* __restrict sliderY;
+  const double* __restrict staticStrength;  // offset to the row (per site) or the columns
   const double* __restrict kineticStrength;
   double* __restrict mobile;
   double* __restrict vx;
@@ -25,19 +32,33 @@ struct VerletRow {
   double* __restrict kfy;
 };
 
-// Velocity Verlet's whole update of one row in one pass, branch-free so that it vectorises: close
-// the last step's kick, the reversal test against that step's friction, the stick/slip decision
-// at t_n (as blends: a stuck block that the threshold does not hold starts to slip, a reversed one
-// that it holds re-sticks at zero velocity), this step's friction vector, the open kick and the
-// drift (v_{n+1/2} = v_n + h/2 a_n, u_{n+1} = u_n + h v_{n+1/2}). The arithmetic is that of the
-// separate passes it replaced (and of markReversals, transitions and frictionVector, which RK4
-// keeps), in the same order: the same numbers bit for bit. Returns whether a block
-// of the row started to slip or re-stuck (the caller's bookkeeping of states and first slips).
-template <class Law, SiteLayout L>
-GF_ALWAYS_INLINE bool verletRowUpdate(const Law& law, int nb, double half, double h, double invMass, double gamma,
-                                      VerletRow a) {
-  const double* __restrict fx = a.fx;
-  const double* __restrict fy = a.fy;
+// Velocity Verlet's whole step of one row in one pass, branch-free so that it vectorises: the
+// driving force F_mot at t_n (slider, carried reactions, the row's springs, in the order
+// slider + carry + h[c] - h[c-1] + v[c] + d[c] + a[c-1], and the reactions on the row above
+// -v[c] - d[c-1] - a[c]), then close the last step's kick, the reversal test against that step's
+// friction, the stick/slip decision at t_n (as blends: a stuck block that the threshold does not
+// hold starts to slip, a reversed one that it holds re-sticks at zero velocity), this step's
+// friction vector, the open kick and the drift (v_{n+1/2} = v_n + h/2 a_n, u_{n+1} = u_n + h
+// v_{n+1/2}). Returns whether a block of the row started to slip (the caller looks for first
+// slips).
+template <class Law, SiteLayout L, bool Graded, bool Above>
+GF_ALWAYS_INLINE bool fusedVerletRow(const Law& law, int nb, double drivenX, double drivenY, double half, double h,
+                                    double invMass, double gamma, VerletRow a) {
+  const double* __restrict slider = a.slider;
+  const double* __restrict carryX = a.carryX;
+  const double* __restrict carryY = a.carryY;
+  const double* __restrict hx = a.pieces.hx;
+  const double* __restrict hy = a.pieces.hy;
+  const double* __restrict pvx = a.pieces.vx;
+  const double* __restrict pvy = a.pieces.vy;
+  const double* __restrict dx = a.pieces.dx;
+  const double* __restrict dy = a.pieces.dy;
+  const double* __restrict ax = a.pieces.ax;
+  const double* __restrict ay = a.pieces.ay;
+  double* __restrict nextX = a.nextX;
+  double* __restrict nextY = a.nextY;
+  double* __restrict sliderX = a.sliderX;
+  double* __restrict sliderY = a.sliderY;
   const double* __restrict staticStrength = a.staticStrength;
   const double* __restrict kineticStrength = a.kineticStrength;
   double* __restrict mobile = a.mobile;
@@ -47,10 +68,38 @@ GF_ALWAYS_INLINE bool verletRowUpdate(const Law& law, int nb, double half, doubl
   double* __restrict uy = a.uy;
   double* __restrict kfx = a.kfx;
   double* __restrict kfy = a.kfy;
-  std::int64_t changed = 0;
+  const double slider0 = slider[0];
+  std::int64_t started = 0;
   for (int c = 0; c < nb; ++c) {
+    // F_mot at t_n.
+    const double k = Graded ? slider[c] : slider0;
+    const double sx = k * (drivenX - ux[c]);
+    const double sy = k * (drivenY - uy[c]);
+    sliderX[c] = sx;
+    sliderY[c] = sy;
+    double fxc = sx + carryX[c];
+    double fyc = sy + carryY[c];
+    fxc += hx[c];
+    fyc += hy[c];
+    fxc -= hx[c - 1];
+    fyc -= hy[c - 1];
+    if (Above) {
+      fxc += pvx[c];
+      fyc += pvy[c];
+      fxc += dx[c];
+      fyc += dy[c];
+      fxc += ax[c - 1];
+      fyc += ay[c - 1];
+      double nx = -pvx[c], ny = -pvy[c];
+      nx -= dx[c - 1];
+      ny -= dy[c - 1];
+      nx -= ax[c];
+      ny -= ay[c];
+      nextX[c] = nx;
+      nextY[c] = ny;
+    }
+    // The update.
     const double m = mobile[c];
-    const double fxc = fx[c], fyc = fy[c];
     const double oldKx = kfx[c], oldKy = kfy[c];
     double wx = vx[c] + half * m * ((fxc - oldKx) * invMass - gamma * vx[c]);
     double wy = vy[c] + half * m * ((fyc - oldKy) * invMass - gamma * vy[c]);
@@ -64,17 +113,19 @@ GF_ALWAYS_INLINE bool verletRowUpdate(const Law& law, int nb, double half, doubl
     const double newM = starts ? 1.0 : resticks ? 0.0 : m;
     wx = resticks ? 0.0 : wx;
     wy = resticks ? 0.0 : wy;
-    changed |= std::int64_t(starts | resticks);
-    // The friction vector (frictionPerDirection, written without a branch around the division).
+    started |= std::int64_t(starts);
+    // The friction vector (frictionPerDirection, written without a branch around the division;
+    // moving, the speed and the norm are one square root).
     const double speed2 = wx * wx + wy * wy;
     const bool moving = speed2 > 0.0;
     const double dirX = moving ? wx : fxc;
     const double dirY = moving ? wy : fyc;
     const double norm2 = moving ? speed2 : force2;
-    const double speed = Law::weakensWithSpeed && moving ? std::sqrt(speed2) : 0.0;
-    const double sliding = law.slidingStrength(threshold, kinetic, speed);
     const bool directed = norm2 > 0.0;
-    const double perNorm = (directed ? newM * sliding : 0.0) / std::sqrt(directed ? norm2 : 1.0);
+    const double norm = std::sqrt(directed ? norm2 : 1.0);
+    const double speed = Law::weakensWithSpeed && moving ? norm : 0.0;
+    const double sliding = law.slidingStrength(threshold, kinetic, speed);
+    const double perNorm = (directed ? newM * sliding : 0.0) / norm;
     const double kx = perNorm * dirX, ky = perNorm * dirY;
     // Open this step's kick and drift.
     wx += half * newM * ((fxc - kx) * invMass - gamma * wx);
@@ -87,17 +138,23 @@ GF_ALWAYS_INLINE bool verletRowUpdate(const Law& law, int nb, double half, doubl
     ux[c] += h * wx;
     uy[c] += h * wy;
   }
-  return changed != 0;
+  return started != 0;
 }
 
-// Row r's arrays for verletRowUpdate, with its driving forces in fx_, fy_.
+// Row r's arrays for fusedVerletRow, with its springs in `pieces`.
 template <class Law>
 template <SiteLayout L>
-GF_ALWAYS_INLINE VerletRow FastLattice<Law>::verletRow(int r) {
+GF_ALWAYS_INLINE VerletRow FastLattice<Law>::verletRow(int r, const RowPieces& pieces) {
   const int base = r * nb_;
   const int sites = L == SiteLayout::PerSite ? base : 0;
-  return VerletRow{fx_.data(),
-                   fy_.data(),
+  return VerletRow{stiffness_.row(r).slider,
+                   carryX_.data(),
+                   carryY_.data(),
+                   pieces,
+                   nextX_.data(),
+                   nextY_.data(),
+                   sliderRowX_.data(),
+                   sliderRowY_.data(),
                    law_.sites.staticStrength.data() + sites,
                    law_.sites.kineticStrength.data() + sites,
                    mobile_.data() + base,
@@ -107,6 +164,37 @@ GF_ALWAYS_INLINE VerletRow FastLattice<Law>::verletRow(int r) {
                    uy_.data() + base,
                    frictionX_.data() + base,
                    frictionY_.data() + base};
+}
+
+// Row r's whole Verlet step on its springs' pieces (both sweeps): the fused step, the row's slider
+// forces added to the history's sums in the kernel's order, the first slips of the blocks that
+// started, and the reactions on the row above handed on as the next row's carry.
+template <class Law>
+template <bool Graded, SiteLayout L>
+GF_ALWAYS_INLINE void FastLattice<Law>::verletRowStep(int r, const RowPieces& pieces, double t, double& sumX,
+                                                      double& sumY) {
+  const int nb = nb_;
+  const double half = 0.5 * motion_.timeStep;
+  const double drivenX = motion_.sliderVelocityX * t;
+  const double drivenY = motion_.sliderVelocityY * t;
+  const VerletRow row = this->template verletRow<L>(r, pieces);
+  const bool started =
+      r + 1 < nb
+          ? fusedVerletRow<Law, L, Graded, true>(law_, nb, drivenX, drivenY, half, motion_.timeStep,
+                                                1.0 / motion_.mass, motion_.damping, row)
+          : fusedVerletRow<Law, L, Graded, false>(law_, nb, drivenX, drivenY, half, motion_.timeStep,
+                                                 1.0 / motion_.mass, motion_.damping, row);
+  // In registers: through the references every addition would wait on a store and a load.
+  double x = sumX, y = sumY;
+  for (int c = 0; c < nb; ++c) {
+    x += row.sliderX[c];
+    y += row.sliderY[c];
+  }
+  sumX = x;
+  sumY = y;
+  if (started && slipped_ < nb * nb) firstSlips(r, t);
+  carryX_.swap(nextX_);
+  carryY_.swap(nextY_);
 }
 
 }  // namespace gradfric::sbm

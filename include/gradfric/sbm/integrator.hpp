@@ -73,7 +73,8 @@ inline double frictionPerDirection(const Law& law, double staticStrength, double
   return norm2 > 0.0 ? mobile * sliding / std::sqrt(norm2) : 0.0;
 }
 
-struct VerletRow;  // the arrays of one row for Verlet's fused update (src/sbm/verlet_row.hpp)
+struct VerletRow;  // the arrays of one row for Verlet's fused step (src/sbm/verlet_row.hpp)
+struct RowPieces;  // the springs a row owns, as Verlet's step reads them (src/sbm/row_springs.hpp)
 
 template <class Law>
 class FastLattice {
@@ -90,7 +91,7 @@ public:
   const double* displacementY() const { return uy_.data(); }
   const double* velocityX() const { return vx_.data(); }
   const double* velocityY() const { return vy_.data(); }  // half-step velocity with Verlet
-  const std::uint8_t* blockStates() const { return state_.data(); }
+  std::vector<std::uint8_t> blockStates() const;  // Stuck or Slipping, per block
   // The first step the kernel integrates: 0, or with Motion::skipIdle the step of the first slip.
   std::int64_t quietSteps() const { return quietUntil_; }
   // The friction law and its per-site strengths: a caller may change the strengths between steps
@@ -126,9 +127,13 @@ private:
   void frictionVectorRange(int r, int c0, int c1);
   void markReversals(int r);
   void markReversalsRange(int r, int c0, int c1);
-  void syncStates(int r, double t);
+  void firstSlips(int r, double t);
   template <SiteLayout L>
-  VerletRow verletRow(int r);  // the one builder of row r's VerletRow, for both Verlet sweeps
+  VerletRow verletRow(int r, const RowPieces& pieces);  // the one builder of row r's VerletRow
+  template <bool Graded, SiteLayout L>
+  void verletRowStep(int r, const RowPieces& pieces, double t, double& sumX, double& sumY);
+  RowPieces rowPieces();        // the full sweep's row of pieces (rowPieces_)
+  RowPieces keptPieces(int r);  // the active set's pieces of row r (piece*_)
   LatticeStiffness stiffness_;
   Law law_;  // owns the per-block friction strengths
   Motion motion_;
@@ -153,6 +158,7 @@ private:
   bool activeMode_ = false;
   std::int64_t activeSetSteps_ = 0, nextModeCheck_ = 0;
   int staleTiles_ = 0;  // tiles evaluated in the last active step
+  // Row r's pieces start at index r (N_b + 1) + 1 of piece*_: index -1 of every row is its own.
   std::vector<double> pieceHx_, pieceHy_, pieceVx_, pieceVy_, pieceDx_, pieceDy_, pieceAx_, pieceAy_;
   std::vector<std::int64_t> pieceStep_, mobileStep_;
   // State at t_n, stage evaluation point, RK accumulators (sum of weighted stage velocities and
@@ -162,10 +168,12 @@ private:
   std::vector<double> accUx_, accUy_, accVx_, accVy_;
   std::vector<double> mobile_;
   std::vector<double> frictionX_, frictionY_;  // friction force of the step [N]
-  std::vector<std::uint8_t> state_;
+  std::vector<std::uint8_t> state_;  // RK4's stick states (Verlet's are mobile_)
   std::vector<std::uint8_t> everSlipped_;
-  // Row work space: forces on the current row, carried forces for the next row, spring forces.
-  std::vector<double> fx_, fy_, carryX_, carryY_, nextX_, nextY_, springX_, springY_;
+  // Row work space: forces on the current row, carried forces for the next row, spring forces,
+  // the row's slider forces; Verlet's row of spring pieces (8 arrays of N_b + 1, RowPieces).
+  std::vector<double> fx_, fy_, carryX_, carryY_, nextX_, nextY_, springX_, springY_, sliderRowX_, sliderRowY_;
+  std::vector<double> rowPieces_;
 };
 
 template <class Law>
