@@ -241,8 +241,16 @@ def plot_variation(ensemble, fems, png, sweeps=()):
             reference = [f for f in fems if f.delta == 0.0]
             if reference:
                 base = reference[0].results.get(name, np.nan)
-                pts = sorted((f.delta, 100 * (f.results.get(name, np.nan) / base - 1)) for f in fems)
-                ax.plot([x for x, _ in pts], [y for _, y in pts], "s--", color="tab:red", label="FEM")
+                pts = sorted((f.delta, 100 * (f.results.get(name, np.nan) / base - 1),
+                              f.results.get(f"{name}_discretisation_error", np.nan)) for f in fems)
+                x, y, bar = (np.array(v, dtype=float) for v in zip(*pts))
+                ax.plot(x, y, "s--", color="tab:red", label="FEM")
+                # each run's own discretisation bar (relative bound of its mu, as for a FEM sweep;
+                # NaN where not measured, e.g. mu_k: no bar drawn there)
+                known = np.isfinite(bar) & np.isfinite(y)
+                if known.any():
+                    ax.errorbar(x[known], y[known], yerr=(100 + y[known]) * bar[known], fmt="none", capsize=3,
+                                color="tab:red")
         ax.axhline(0, color="grey", lw=0.8)
         ax.set_xlabel("Delta")
         ax.set_ylabel(f"({name} - {name},0) / {name},0  [%]")
