@@ -227,28 +227,28 @@ def convergence(ax, runs, gradings, title, first_runs=()):
     """mu_s against the in-plane resolution (nz 5), open markers the refinements of the paper mesh;
     dotted, the same grading's first runs without the friction memory."""
     for i, grading in enumerate(gradings):
-        colour, label = f"C{i}", name(grading)
-        for g, style, what in [(grading, "o-", "nz 5")] + [(f, "x:", "nz 5, no memory") for f in first_runs
-                                                         if f[:4] == tuple(grading[:4])]:
+        colour, label = f"C{i}", name(grading[:4] + ("0",))
+        for g, style, what in [(grading, "o-", "")] + [(f, "x:", ", no memory") for f in first_runs
+                                                      if f[:4] == tuple(grading[:4])]:
             ns = [n for n in (50, 100, 200) if mu(runs, n, 5, 0.6, g) is not None]
             ax.plot(ns, [mu(runs, n, 5, 0.6, g) for n in ns], style, color=colour, lw=1.5 if g is grading else 0.8,
-                    label=f"{name(g[:4] + (MEMORY,))}, {what}")
+                    label=f"{label}, nz 5{what}")
             for n, nz, s, marker, refinement in ((100, 10, 0.6, "s", "nz 10"), (100, 5, 0.3, "^", "dt_safety 0.3")):
                 f = mu(runs, n, nz, s, g)
                 if f is not None:
                     ax.plot([n * (1.04 if nz == 10 else 0.96)], [f], marker, color=colour, mfc="none",
-                            label=f"{label}, {refinement}" + ("" if g is grading else ", no memory"))
+                            mew=1.5 if g is grading else 0.8, label=f"{label}, {refinement}{what}")
     ax.set_xscale("log", base=2)
     ax.set_xticks([50, 100, 200], ["50", "100", "200"])
     ax.set_xlabel("elements per side in-plane")
     ax.set_ylabel("global mu_s")
     ax.set_title(title, fontsize=9)
-    ax.legend(fontsize=6, ncol=2)
+    ax.legend(fontsize=6, ncol=3, loc="upper center", bbox_to_anchor=(0.5, -0.13))
     ax.grid(True, alpha=0.3)
 
 
 def plot(runs, png):
-    fig, axes = plt.subplots(1, 3, figsize=(17, 5), gridspec_kw=dict(width_ratios=(1, 1, 0.8)))
+    fig, axes = plt.subplots(1, 3, figsize=(17, 6.5), gridspec_kw=dict(width_ratios=(1, 1, 0.8)))
     convergence(axes[0], runs, GRADINGS, "linear +-0.2: q1, penalty 250 G/H, dt_safety 0.6, memory 1e-8\n"
                 "(open: refinements of 100; dotted: the first runs, without memory)", FIRST_RUNS)
     convergence(axes[1], runs, FURTHER, "|Delta| 0.4, triangular E, friction 0.2 at 90 deg (memory 1e-8)")
@@ -256,12 +256,12 @@ def plot(runs, png):
         bar, _ = estimate(runs, grading)
         if mu(runs, 100, 5, 0.6, grading) is not None and bar is not None:
             colour = f"C{i if i < len(GRADINGS) else i - len(GRADINGS)}"
-            axes[2].bar(name(grading).replace(" ", "\n", 1), 100 * bar, color=colour,
+            axes[2].bar(name(grading[:4] + ("0",)), 100 * bar, color=colour,
                         hatch="" if i < len(GRADINGS) else "//", edgecolor="k", lw=0.3)
     axes[2].axhline(1.0, color="grey", ls="--", lw=0.8)
-    axes[2].tick_params(axis="x", labelsize=6)
+    axes[2].tick_params(axis="x", labelsize=7, labelrotation=60)
     axes[2].set_ylabel("mesh error bar of 100x100x5 [%]")
-    axes[2].set_title("paper mesh: mesh term of the error bar", fontsize=9)
+    axes[2].set_title("paper mesh: mesh term of the error bar (memory 1e-8)", fontsize=9)
     axes[2].grid(True, axis="y", alpha=0.3)
     fig.tight_layout()
     fig.savefig(png, dpi=110)
