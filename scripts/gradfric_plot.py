@@ -122,7 +122,9 @@ class FemHistory:
             raise ValueError(f"{path} is not a gradfric-fem history file")
         self.time = f["history/time"][:]
         self.mu = f["history/mu"][:]
-        self.results = {k: float(v) for k, v in f["results"].attrs.items() if np.ndim(v) == 0 and not isinstance(v, bytes)}
+        # the numbers only: /results also holds text (the error bars' basis, the window's description)
+        self.results = {k: float(v) for k, v in f["results"].attrs.items()
+                        if np.ndim(v) == 0 and isinstance(v, (int, float, np.number))}
         if "scene" in f:  # format 2: the option record, values as text
             self.parameters = {k: text(v) for k, v in f["scene"].attrs.items()}
         else:  # format 1: "value [unit] (origin)"
