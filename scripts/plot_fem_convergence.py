@@ -9,12 +9,11 @@ Estimates, per grading: where mu_s on 50 / 100 / 200 in-plane (nz 5) is monotone
 contracting difference, the Richardson extrapolation f_inf = f_200 + (f_200 - f_100) / (2^p - 1)
 with the observed order p = log2((f_50 - f_100) / (f_100 - f_200)) when p >= 0.5; otherwise (not
 monotone, differences that grow or barely shrink) the in-plane term is the plain 100 -> 200
-difference, said as such (a lower bound: the limit is not located); the
-thickness term 100x100x5 -> 100x100x10 is added (for a +-0.2 row with the friction memory that has no
-100x100x10 run, the ratio of the same grading's runs without memory, said as borrowed). The
-time-step term is |dt 0.3 / dt 0.6 - 1| (the first runs, without memory). Every row of the main
-table uses the current default friction memory (1e-8 m); the first +-0.2 runs without it follow
-in a table of their own.
+difference, said as such (a lower bound: the limit is not located); the thickness term
+100x100x5 -> 100x100x10 is added where that run was made. The time-step term is
+|dt 0.3 / dt 0.6 - 1| (the first runs, without memory). Every row of the main table uses the
+current default friction memory (1e-8 m); the first +-0.2 runs without it follow in a table of
+their own.
 Needs Debian's python3-matplotlib (installed by scripts/setup.sh).
 """
 import math
@@ -34,8 +33,7 @@ LINE = re.compile(
 # Every row of the table runs at the current default friction memory (1e-8 m): the linear +-0.2
 # gradings (stage pm02mem) and the remaining paper-mesh points of docs/reproduction.md. The first
 # +-0.2 runs, made without the memory (slip "0"), are kept as a record of their own (FIRST_RUNS):
-# they hold the study's time-step refinement, and the thickness refinement where the memory rows
-# have none (their thickness term is then borrowed, and said to be).
+# they hold the study's time-step refinement.
 MEMORY = "1e-8"
 GRADINGS = [("E", "0.2", "linear", 0.0, MEMORY), ("E", "-0.2", "linear", 0.0, MEMORY),
             ("friction", "0.2", "linear", 0.0, MEMORY), ("friction", "-0.2", "linear", 0.0, MEMORY)]
@@ -82,12 +80,7 @@ def estimate(runs, grading):
     (Richardson where 50/100/200 is monotone and contracting with p >= 0.5, else the 100 -> 200 difference) plus
     the thickness term (100x100x5 against 100x100x10); added, as the error bar adds its terms."""
     f50, f100, f200 = (mu(runs, n, 5, 0.6, grading) for n in (50, 100, 200))
-    f100z10, borrowed = mu(runs, 100, 10, 0.6, grading), ""
-    if f100 is not None and f100z10 is None and grading[4] != "0":  # the thickness term of the same grading without memory
-        first = tuple(grading[:4]) + ("0",)
-        g100, g100z10 = mu(runs, 100, 5, 0.6, first), mu(runs, 100, 10, 0.6, first)
-        if None not in (g100, g100z10):
-            f100z10, borrowed = f100 * g100z10 / g100, " (borrowed: the run without memory)"
+    f100z10 = mu(runs, 100, 10, 0.6, grading)
     if f100 is None or (f200 is None and f100z10 is None):
         return None, "not run"
     parts, how = 0.0, []
@@ -108,7 +101,7 @@ def estimate(runs, grading):
         how.append("no 200x200x5")
     if f100z10 is not None:
         parts += abs(f100 / f100z10 - 1)
-        how.append(f"thickness 100 vs nz 10 {100 * (f100 / f100z10 - 1):+.2f} %{borrowed}")
+        how.append(f"thickness 100 vs nz 10 {100 * (f100 / f100z10 - 1):+.2f} %")
     else:
         how.append("no 100x100x10")
     return parts, "; ".join(how)
