@@ -21,7 +21,11 @@
 #          then each point on 200x200x5 (|Delta| 0.4 first, then triangular, 90 deg: the in-plane term
 #          is the larger part of the bar), then each on 100x100x10;
 #          GF_STUDY_NO_M200_AFTER=HH:MM (UTC) skips 200x200x5 runs that would start later;
-#          GF_STUDY_REF_THICKNESS_LAST=1 leaves ref's 100x100x10 to the end of reprofine.
+#          GF_STUDY_REF_THICKNESS_LAST=1 leaves ref's 100x100x10 to the end of reprofine;
+#   pm02mem: the +-0.2 linear gradings (E and friction) again with the friction memory on
+#          (slip length 1e-8, the default; whatever GF_STUDY_SLIP_LENGTH says), on 50x50x5, then
+#          100x100x5, then 200x200x5, so that every row of the table uses one setting;
+#   pm02memz10: the same four points on 100x100x10 (the thickness term of the memory rows).
 set -euo pipefail
 build=${1:-build}
 out=${2:-results/fem_graded_study.txt}
@@ -37,7 +41,7 @@ study="$build/bench/fem/bench_fem_element_study"
 # run <n> <nz> <dt_safety> <profile|none> [property delta [theta]]
 run() {
   local n=$1 nz=$2 safety=$3 profile=$4 prop=${5:-none} delta=${6:-0} theta=${7:-0}
-  local slip=${GF_STUDY_SLIP_LENGTH:-0}
+  local slip=${stage_slip:-${GF_STUDY_SLIP_LENGTH:-0}}
   local tag="mesh ${n}x${n}x${nz} dt_safety ${safety} grading ${prop} ${delta}"
   [ "$profile" != linear ] && [ "$profile" != none ] && tag+=" ${profile}"
   [ "$theta" != 0 ] && tag+=" theta ${theta}"
@@ -64,6 +68,7 @@ gradings() {  # linear gradings Delta = +-0.2 on mesh $1 x $1 x $2 at dt_safety 
 }
 
 for stage in "${stages[@]}"; do
+  stage_slip=  # a stage may fix the friction memory (pm02mem)
   property=all  # a stage name may end in _E or _friction: that property only
   case $stage in *_E) property=E stage=${stage%_E} ;; *_friction) property=friction stage=${stage%_friction} ;; esac
   case $stage in
@@ -89,7 +94,10 @@ for stage in "${stages[@]}"; do
       # shellcheck disable=SC2086
       for point in "${points[@]}"; do run 100 10 0.6 $point; done
       run 100 10 0.6 none ;;
+    pm02mem) stage_slip=1e-8
+         for n in 50 100 200; do gradings "$n" 5 0.6 $property; done ;;
+    pm02memz10) stage_slip=1e-8; gradings 100 10 0.6 $property ;;
     *,*) IFS=, read -r -a point <<< "$stage"; run "${point[0]}" "${point[1]}" 0.6 "${point[@]:2}" ;;
-    *) echo "unknown stage $stage (m50 m50z10 m100 dt m100z10 m200 ref repro reprofine)" >&2; exit 2 ;;
+    *) echo "unknown stage $stage (m50 m50z10 m100 dt m100z10 m200 ref repro reprofine pm02mem pm02memz10)" >&2; exit 2 ;;
   esac
 done

@@ -122,7 +122,9 @@ class FemHistory:
             raise ValueError(f"{path} is not a gradfric-fem history file")
         self.time = f["history/time"][:]
         self.mu = f["history/mu"][:]
-        self.results = {k: float(v) for k, v in f["results"].attrs.items() if np.ndim(v) == 0 and not isinstance(v, bytes)}
+        # the numbers only: /results also holds text (the error bars' basis, the window's description)
+        self.results = {k: float(v) for k, v in f["results"].attrs.items()
+                        if np.ndim(v) == 0 and isinstance(v, (int, float, np.number))}
         if "scene" in f:  # format 2: the option record, values as text
             self.parameters = {k: text(v) for k, v in f["scene"].attrs.items()}
         else:  # format 1: "value [unit] (origin)"
@@ -241,8 +243,16 @@ def plot_variation(ensemble, fems, png, sweeps=()):
             reference = [f for f in fems if f.delta == 0.0]
             if reference:
                 base = reference[0].results.get(name, np.nan)
-                pts = sorted((f.delta, 100 * (f.results.get(name, np.nan) / base - 1)) for f in fems)
-                ax.plot([x for x, _ in pts], [y for _, y in pts], "s--", color="tab:red", label="FEM")
+                pts = sorted((f.delta, 100 * (f.results.get(name, np.nan) / base - 1),
+                              f.results.get(f"{name}_discretisation_error", np.nan)) for f in fems)
+                x, y, bar = (np.array(v, dtype=float) for v in zip(*pts))
+                ax.plot(x, y, "s--", color="tab:red", label="FEM")
+                # each run's own discretisation bar (relative bound of its mu, as for a FEM sweep;
+                # NaN where not measured, e.g. mu_k: no bar drawn there)
+                known = np.isfinite(bar) & np.isfinite(y)
+                if known.any():
+                    ax.errorbar(x[known], y[known], yerr=(100 + y[known]) * bar[known], fmt="none", capsize=3,
+                                color="tab:red")
         ax.axhline(0, color="grey", lw=0.8)
         ax.set_xlabel("Delta")
         ax.set_ylabel(f"({name} - {name},0) / {name},0  [%]")

@@ -9,8 +9,11 @@ Estimates, per grading: where mu_s on 50 / 100 / 200 in-plane (nz 5) is monotone
 contracting difference, the Richardson extrapolation f_inf = f_200 + (f_200 - f_100) / (2^p - 1)
 with the observed order p = log2((f_50 - f_100) / (f_100 - f_200)) when p >= 0.5; otherwise (not
 monotone, differences that grow or barely shrink) the in-plane term is the plain 100 -> 200
-difference, said as such (a lower bound: the limit is not located); the
-thickness term 100x100x5 -> 100x100x10 is added. The time-step term is |dt 0.3 / dt 0.6 - 1|.
+difference, said as such (a lower bound: the limit is not located); the thickness term
+100x100x5 -> 100x100x10 is added where that run was made. The time-step term is
+|dt 0.3 / dt 0.6 - 1| (the first runs, without memory). Every row of the main table uses the
+current default friction memory (1e-8 m); the first +-0.2 runs without it follow in a table of
+their own.
 Needs Debian's python3-matplotlib (installed by scripts/setup.sh).
 """
 import math
@@ -27,17 +30,18 @@ LINE = re.compile(
     r"mu_s ([\d.]+) peak .*?trailing ([\d.]+) centre ([\d.]+) leading ([\d.]+).*?, ([\d]+) steps, wall ([\d.]+) s"
 )
 # A grading: (property, Delta, profile, sliding angle in degrees, friction memory -fem_slip_length).
-# The first four are the study's linear +-0.2 gradings (no friction memory, as first run); the
-# others are the remaining paper-mesh points of docs/reproduction.md, run at the current default
-# friction memory (1e-8 m), with friction +-0.2 again at that setting.
+# Every row of the table runs at the current default friction memory (1e-8 m): the linear +-0.2
+# gradings (stage pm02mem) and the remaining paper-mesh points of docs/reproduction.md. The first
+# +-0.2 runs, made without the memory (slip "0"), are kept as a record of their own (FIRST_RUNS):
+# they hold the study's time-step refinement.
 MEMORY = "1e-8"
-GRADINGS = [("E", "0.2", "linear", 0.0, "0"), ("E", "-0.2", "linear", 0.0, "0"), ("friction", "0.2", "linear", 0.0, "0"),
-            ("friction", "-0.2", "linear", 0.0, "0")]
+GRADINGS = [("E", "0.2", "linear", 0.0, MEMORY), ("E", "-0.2", "linear", 0.0, MEMORY),
+            ("friction", "0.2", "linear", 0.0, MEMORY), ("friction", "-0.2", "linear", 0.0, MEMORY)]
 FURTHER = [("E", "0.4", "linear", 0.0, MEMORY), ("E", "-0.4", "linear", 0.0, MEMORY),
            ("friction", "0.4", "linear", 0.0, MEMORY), ("friction", "-0.4", "linear", 0.0, MEMORY),
            ("E", "0.2", "triangular", 0.0, MEMORY), ("E", "-0.2", "triangular", 0.0, MEMORY),
-           ("friction", "0.2", "linear", 90.0, MEMORY), ("friction", "0.2", "linear", 0.0, MEMORY),
-           ("friction", "-0.2", "linear", 0.0, MEMORY)]
+           ("friction", "0.2", "linear", 90.0, MEMORY)]
+FIRST_RUNS = [g[:4] + ("0",) for g in GRADINGS]
 # Below this observed order the 50/100/200 sequence is not in the asymptotic range (the differences
 # barely shrink) and an extrapolation would put the limit anywhere: the plain 100 -> 200 difference
 # is given instead, a lower bound on the error.
@@ -121,12 +125,12 @@ def finest_order(runs, prop, size="0.2", profile="linear", slip="0"):
                 "the ranges overlap: the order is not resolved"))
 
 
-def table(runs):
-    meshes = [(50, 5, 0.6), (100, 5, 0.6), (100, 5, 0.3), (100, 10, 0.6), (200, 5, 0.6)]
+def grid(runs, gradings, meshes):
+    """One Markdown row per grading: mu_s (steps, wall) on each mesh, the paper mesh's bar and how."""
     head = "| grading | " + " | ".join(f"{n}x{n}x{nz}" + (f" dt {s}" if s != 0.6 else "") for n, nz, s in meshes)
     print(head + " | bar of 100x100x5 | how |")
     print("|---" * (len(meshes) + 3) + "|")
-    for grading in [("none", "0", "linear", 0.0, "0"), ("none", "0", "linear", 0.0, MEMORY)] + GRADINGS + FURTHER:
+    for grading in gradings:
         if not any(mu(runs, n, nz, s, grading) is not None for n, nz, s in meshes):
             continue
         cells = []
@@ -135,9 +139,14 @@ def table(runs):
             cells.append(f"{r['mu']:.5f} ({r['steps']} st, {r['wall']:.0f} s)" if r else "")
         bar, how = estimate(runs, grading) if grading[0] != "none" else (None, "")
         print(f"| {name(grading)} | " + " | ".join(cells) + f" | {'' if bar is None else f'{100 * bar:.2f} %'} | {how} |")
+
+
+def table(runs):
+    meshes = [(50, 5, 0.6), (100, 5, 0.6), (100, 10, 0.6), (200, 5, 0.6)]
+    grid(runs, [("none", "0", "linear", 0.0, MEMORY)] + GRADINGS + FURTHER, meshes)
     print("\n```")
-    pairs = (("E", "0.2", "linear", "0"), ("friction", "0.2", "linear", "0"), ("E", "0.4", "linear", MEMORY),
-             ("friction", "0.4", "linear", MEMORY), ("E", "0.2", "triangular", MEMORY), ("friction", "0.2", "linear", MEMORY))
+    pairs = (("E", "0.2", "linear", MEMORY), ("friction", "0.2", "linear", MEMORY), ("E", "0.4", "linear", MEMORY),
+             ("friction", "0.4", "linear", MEMORY), ("E", "0.2", "triangular", MEMORY))
     for prop, size, profile, slip in pairs:
         for n, nz, s in meshes:
             pair = [mu(runs, n, nz, s, (prop, d, profile, 0.0, slip)) for d in (size, "-" + size)]
@@ -148,12 +157,25 @@ def table(runs):
         line = finest_order(runs, prop, size, profile, slip)
         if line:
             print("finest meshes, " + line)
-    for grading in GRADINGS:
+    for first in FIRST_RUNS:  # what the memory changed, run by run
+        for n, nz, s in meshes:
+            a, b = mu(runs, n, nz, s, first[:4] + (MEMORY,)), mu(runs, n, nz, s, first)
+            if None not in (a, b):
+                print(f"memory: {name(first)} on {n}x{n}x{nz}: with / without - 1 = {100 * (a / b - 1):+.2f} %")
+    print("```")
+    variations(runs)
+    print("\nThe first +-0.2 runs, without the friction memory (their thickness and time-step refinements):\n")
+    grid(runs, FIRST_RUNS, [(50, 5, 0.6), (100, 5, 0.6), (100, 5, 0.3), (100, 10, 0.6), (200, 5, 0.6)])
+    print("\n```")
+    for prop in ("E", "friction"):
+        line = finest_order(runs, prop)
+        if line:
+            print("finest meshes, without memory, " + line)
+    for grading in FIRST_RUNS:
         a, b = mu(runs, 100, 5, 0.6, grading), mu(runs, 100, 5, 0.3, grading)
         if None not in (a, b):
             print(f"dt: {name(grading)}: dt 0.6 / dt 0.3 - 1 = {100 * (a / b - 1):+.3f} %")
     print("```")
-    variations(runs)
 
 
 def nongraded(runs, n, nz, slip):
@@ -194,39 +216,45 @@ def variations(runs):
         print(f"| {name(grading)} | {f100:.5f} (ref. {base:.5f}) | {total} | {cell} | " + " | ".join(finer) + f" | {rich} |")
 
 
-def convergence(ax, runs, gradings, title):
-    """mu_s against the in-plane resolution (nz 5), open markers the refinements of the paper mesh."""
+def convergence(ax, runs, gradings, title, first_runs=()):
+    """mu_s against the in-plane resolution (nz 5), open markers the refinements of the paper mesh;
+    dotted, the same grading's first runs without the friction memory."""
     for i, grading in enumerate(gradings):
-        colour, label = f"C{i}", name(grading)
-        ns = [n for n in (50, 100, 200) if mu(runs, n, 5, 0.6, grading) is not None]
-        ax.plot(ns, [mu(runs, n, 5, 0.6, grading) for n in ns], "o-", color=colour, label=f"{label}, nz 5")
-        for n, nz, s, marker, what in ((100, 10, 0.6, "s", "nz 10"), (100, 5, 0.3, "^", "dt_safety 0.3")):
-            f = mu(runs, n, nz, s, grading)
-            if f is not None:
-                ax.plot([n * (1.04 if nz == 10 else 0.96)], [f], marker, color=colour, mfc="none", label=f"{label}, {what}")
+        colour, label = f"C{i}", name(grading[:4] + ("0",))
+        for g, style, what in [(grading, "o-", "")] + [(f, "x:", ", no memory") for f in first_runs
+                                                      if f[:4] == tuple(grading[:4])]:
+            ns = [n for n in (50, 100, 200) if mu(runs, n, 5, 0.6, g) is not None]
+            ax.plot(ns, [mu(runs, n, 5, 0.6, g) for n in ns], style, color=colour, lw=1.5 if g is grading else 0.8,
+                    label=f"{label}, nz 5{what}")
+            for n, nz, s, marker, refinement in ((100, 10, 0.6, "s", "nz 10"), (100, 5, 0.3, "^", "dt_safety 0.3")):
+                f = mu(runs, n, nz, s, g)
+                if f is not None:
+                    ax.plot([n * (1.04 if nz == 10 else 0.96)], [f], marker, color=colour, mfc="none",
+                            mew=1.5 if g is grading else 0.8, label=f"{label}, {refinement}{what}")
     ax.set_xscale("log", base=2)
     ax.set_xticks([50, 100, 200], ["50", "100", "200"])
     ax.set_xlabel("elements per side in-plane")
     ax.set_ylabel("global mu_s")
     ax.set_title(title, fontsize=9)
-    ax.legend(fontsize=6, ncol=2)
+    ax.legend(fontsize=6, ncol=3, loc="upper center", bbox_to_anchor=(0.5, -0.13))
     ax.grid(True, alpha=0.3)
 
 
 def plot(runs, png):
-    fig, axes = plt.subplots(1, 3, figsize=(17, 5), gridspec_kw=dict(width_ratios=(1, 1, 0.8)))
-    convergence(axes[0], runs, GRADINGS, "linear +-0.2: q1, penalty 250 G/H, dt_safety 0.6 (open: refinements of 100)")
-    convergence(axes[1], runs, FURTHER, "|Delta| 0.4, triangular E, friction 0.2 at 90 deg")
+    fig, axes = plt.subplots(1, 3, figsize=(17, 6.5), gridspec_kw=dict(width_ratios=(1, 1, 0.8)))
+    convergence(axes[0], runs, GRADINGS, "linear +-0.2: q1, penalty 250 G/H, dt_safety 0.6, memory 1e-8\n"
+                "(open: refinements of 100; dotted: the first runs, without memory)", FIRST_RUNS)
+    convergence(axes[1], runs, FURTHER, "|Delta| 0.4, triangular E, friction 0.2 at 90 deg (memory 1e-8)")
     for i, grading in enumerate(GRADINGS + FURTHER):
         bar, _ = estimate(runs, grading)
         if mu(runs, 100, 5, 0.6, grading) is not None and bar is not None:
             colour = f"C{i if i < len(GRADINGS) else i - len(GRADINGS)}"
-            axes[2].bar(name(grading).replace(" ", "\n", 1), 100 * bar, color=colour,
+            axes[2].bar(name(grading[:4] + ("0",)), 100 * bar, color=colour,
                         hatch="" if i < len(GRADINGS) else "//", edgecolor="k", lw=0.3)
     axes[2].axhline(1.0, color="grey", ls="--", lw=0.8)
-    axes[2].tick_params(axis="x", labelsize=6)
+    axes[2].tick_params(axis="x", labelsize=7, labelrotation=60)
     axes[2].set_ylabel("mesh error bar of 100x100x5 [%]")
-    axes[2].set_title("paper mesh: mesh term of the error bar", fontsize=9)
+    axes[2].set_title("paper mesh: mesh term of the error bar (memory 1e-8)", fontsize=9)
     axes[2].grid(True, axis="y", alpha=0.3)
     fig.tight_layout()
     fig.savefig(png, dpi=110)

@@ -74,6 +74,15 @@ timeout 300 "$sbm_driver" -grading_profile linear -grading_property friction -en
 $python "$source_dir/scripts/gradfric_plot.py" sbm_bars.h5 --fem bars.h5 --out bars_plots >bars_plot.out 2>&1 ||
   fail "bars plot: $(cat bars_plot.out)"
 [ -s bars_plots/sbm_bars_variation.png ] || fail "bars plot: no variation figure: $(ls bars_plots)"
+# Single-run history files with --fem (as scripts/reproduce_paper.sh draws the paper's figures): their
+# /results hold text next to the numbers (the bars' basis); each run's bar is drawn.
+for d in 0 0.2; do
+  fem "hist$d" 1 0 -grading_profile linear -grading_property friction -grading_delta "$d" -fem_nx 25 -fem_ny 25 \
+    -fem_nz 5 -fem_dt_safety 0.9 -friction_observables mu_s -fem_output "hist$d.h5"
+done
+$python "$source_dir/scripts/gradfric_plot.py" sbm_bars.h5 --fem hist0.h5 hist0.2.h5 --out hist_plots >hist_plot.out 2>&1 ||
+  fail "history plot: $(cat hist_plot.out)"
+[ -s hist_plots/sbm_bars_variation.png ] || fail "history plot: no variation figure: $(ls hist_plots)"
 
 # Resume after a kill: the same file.
 fem killed 1 86 "${sweep[@]}" -fem_output resumed.h5 -fem_sweep_abort_after 1
