@@ -20,16 +20,11 @@ template <bool Graded, SiteLayout L>
 GF_ALWAYS_INLINE void FastLattice<Law>::verletStepActive(double t, double& sumX, double& sumY) {
   const int nb = nb_, tiles = tiles_;
   const std::int64_t n = steps_;
-  const double l = stiffness_.spacing;
-  const double diagonalLength = std::sqrt(2.0) * l;
   std::fill(carryX_.begin(), carryX_.end(), 0.0);
   std::fill(carryY_.begin(), carryY_.end(), 0.0);
   int stale = 0;
   for (int r = 0; r < nb; ++r) {
     const bool above = r + 1 < nb;
-    const RowStiffness s = rowStiffnessOf(stiffness_, r);
-    const double* rx = ux_.data() + r * nb;
-    const double* ry = uy_.data() + r * nb;
     const RowPieces pieces = keptPieces(r);
     const std::int64_t* mobileHere = mobileStep_.data() + r * tiles;
     const std::int64_t* mobileAbove = above ? mobileHere + tiles : mobileHere;
@@ -42,13 +37,7 @@ GF_ALWAYS_INLINE void FastLattice<Law>::verletStepActive(double t, double& sumX,
       if (evaluated >= 0 && moved < evaluated) continue;
       evaluated = n;
       ++stale;
-      const int c0 = tile * kTile, c1 = std::min(c0 + kTile, nb), springEnd = std::min(c1, nb - 1);
-      if (stiffness_.smallStrain)
-        tileSprings<Graded, true>(c0, c1, springEnd, above, l, diagonalLength, s.horizontal, s.vertical, s.diagonal,
-                                  s.antiDiagonal, rx, ry, rx + nb, ry + nb, pieces);
-      else
-        tileSprings<Graded, false>(c0, c1, springEnd, above, l, diagonalLength, s.horizontal, s.vertical,
-                                   s.diagonal, s.antiDiagonal, rx, ry, rx + nb, ry + nb, pieces);
+      this->template ownSprings<Graded>(r, tile * kTile, std::min(tile * kTile + kTile, nb), pieces);
     }
     // The row's step as in verletStep, from the kept pieces. On a tile without a slipping block
     // the update changes nothing but the threshold test (velocity and mobile zero); it is one

@@ -2,7 +2,8 @@
 // Private to the fast spring-block kernel: the full sweep over the rows. Once row r's forces are
 // complete (the springs to row r+1 added), its update follows at once, while the row is still in
 // cache; the springs to row r+1 leave their reaction in a carry buffer. Every spring is evaluated
-// once per force evaluation. Velocity Verlet's step is one such sweep (verletStep).
+// once per force evaluation. RK4's stages are such sweeps (sweepRows); velocity Verlet's step
+// (verletStep) evaluates each row's own springs into pieces and runs its fused row pass on them.
 #include "row_springs.hpp"
 #include "verlet_row.hpp"
 
@@ -78,6 +79,27 @@ GF_ALWAYS_INLINE void FastLattice<Law>::sweepRows(const double* px, const double
   }
 }
 
+// The springs columns c0 <= c < c1 of row r own (tileSprings), evaluated at u_n into its pieces:
+// the full sweep's whole row, or one stale tile of the active set.
+template <class Law>
+template <bool Graded>
+GF_ALWAYS_INLINE void FastLattice<Law>::ownSprings(int r, int c0, int c1, const RowPieces& pieces) {
+  const int nb = nb_;
+  const double l = stiffness_.spacing;
+  const double diagonalLength = std::sqrt(2.0) * l;
+  const RowStiffness s = rowStiffnessOf(stiffness_, r);
+  const double* rx = ux_.data() + r * nb;
+  const double* ry = uy_.data() + r * nb;
+  const bool above = r + 1 < nb;
+  const int springEnd = std::min(c1, nb - 1);
+  if (stiffness_.smallStrain)
+    tileSprings<Graded, true>(c0, c1, springEnd, above, l, diagonalLength, s.horizontal, s.vertical, s.diagonal,
+                              s.antiDiagonal, rx, ry, rx + nb, ry + nb, pieces);
+  else
+    tileSprings<Graded, false>(c0, c1, springEnd, above, l, diagonalLength, s.horizontal, s.vertical, s.diagonal,
+                               s.antiDiagonal, rx, ry, rx + nb, ry + nb, pieces);
+}
+
 // Velocity Verlet, one force evaluation per step, in one sweep over the rows: row r's springs
 // (those it owns: horizontal and to the row above) are evaluated at u_n into the row's pieces,
 // then its whole step follows (verletRowStep: forces, the closing kick of the last step, the
@@ -87,22 +109,11 @@ template <class Law>
 template <bool Graded, SiteLayout L>
 GF_ALWAYS_INLINE void FastLattice<Law>::verletStep(double t, double& sumX, double& sumY) {
   const int nb = nb_;
-  const double l = stiffness_.spacing;
-  const double diagonalLength = std::sqrt(2.0) * l;
   std::fill(carryX_.begin(), carryX_.end(), 0.0);
   std::fill(carryY_.begin(), carryY_.end(), 0.0);
   const RowPieces pieces = rowPieces();
   for (int r = 0; r < nb; ++r) {
-    const RowStiffness s = rowStiffnessOf(stiffness_, r);
-    const double* rx = ux_.data() + r * nb;
-    const double* ry = uy_.data() + r * nb;
-    const bool above = r + 1 < nb;
-    if (stiffness_.smallStrain)
-      tileSprings<Graded, true>(0, nb, nb - 1, above, l, diagonalLength, s.horizontal, s.vertical, s.diagonal,
-                                s.antiDiagonal, rx, ry, rx + nb, ry + nb, pieces);
-    else
-      tileSprings<Graded, false>(0, nb, nb - 1, above, l, diagonalLength, s.horizontal, s.vertical, s.diagonal,
-                                 s.antiDiagonal, rx, ry, rx + nb, ry + nb, pieces);
+    this->template ownSprings<Graded>(r, 0, nb, pieces);
     this->template verletRowStep<Graded, L>(r, pieces, t, sumX, sumY);
   }
 }

@@ -132,6 +132,8 @@ private:
   VerletRow verletRow(int r, const RowPieces& pieces);  // the one builder of row r's VerletRow
   template <bool Graded, SiteLayout L>
   void verletRowStep(int r, const RowPieces& pieces, double t, double& sumX, double& sumY);
+  template <bool Graded>
+  void ownSprings(int r, int c0, int c1, const RowPieces& pieces);  // springs of columns [c0, c1) of row r
   RowPieces rowPieces();        // the full sweep's row of pieces (rowPieces_)
   RowPieces keptPieces(int r);  // the active set's pieces of row r (piece*_)
   LatticeStiffness stiffness_;
