@@ -63,6 +63,11 @@ FastLattice<Law>::FastLattice(const LatticeStiffness& stiffness, Law law, const 
       for (int r = 0; r < nb_; ++r) padRowPieces(keptPieces(r), nb_);
       pieceStep_.assign(std::size_t(nb_) * tiles_, -1);
       mobileStep_.assign(std::size_t(nb_) * tiles_, -1);
+      holdFrom_.assign(std::size_t(nb_) * tiles_, -1);
+      holdUntil_.assign(std::size_t(nb_) * tiles_, -1);
+      heldRow_.assign(tiles_, 0);
+      movedAround_.assign(tiles_, -1);
+      columnMoved_.assign(tiles_, -1);
     }
   }
 }
@@ -138,6 +143,7 @@ bool FastLattice<Law>::useActiveSet() {
   nextModeCheck_ = steps_ + 1;  // the first active step evaluates every tile: do not judge it
   std::fill(pieceStep_.begin(), pieceStep_.end(), -1);
   std::fill(mobileStep_.begin(), mobileStep_.end(), steps_ - 1);
+  std::fill(holdUntil_.begin(), holdUntil_.end(), -1);
   return true;
 }
 

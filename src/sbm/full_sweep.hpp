@@ -5,6 +5,7 @@
 // once per force evaluation. RK4's stages are such sweeps (sweepRows); velocity Verlet's step
 // (verletStep) evaluates each row's own springs into pieces and runs its fused row pass on them.
 #include "row_springs.hpp"
+#include "slider_sum.hpp"
 #include "verlet_row.hpp"
 
 #include <algorithm>
@@ -40,16 +41,16 @@ GF_ALWAYS_INLINE void FastLattice<Law>::rowForces(int r, const double* px, const
     fx[c] = k * (drivenX - rx[c]) + carryX[c];
     fy[c] = k * (drivenY - ry[c]) + carryY[c];
   }
-  if (WantSum) {  // the macroscopic friction force: the sum of the slider forces
-    // In registers: through the references every addition would wait on a store and a load.
-    double x = sumX, y = sumY;
+  if (WantSum) {  // the macroscopic friction force: the sum of the slider forces (slider_sum.hpp)
+    double* __restrict sx = sliderRowX_.data();
+    double* __restrict sy = sliderRowY_.data();
     for (int c = 0; c < nb; ++c) {
       const double k = Graded ? kS[c] : kS0;
-      x += k * (drivenX - rx[c]);
-      y += k * (drivenY - ry[c]);
+      sx[c] = k * (drivenX - rx[c]);
+      sy[c] = k * (drivenY - ry[c]);
     }
-    sumX = x;
-    sumY = y;
+    sumX += rowSum(sx, nb);
+    sumY += rowSum(sy, nb);
   }
   const RowSprings springs{nb, r + 1 < nb, l, diagonalLength, rowStiffness.horizontal, rowStiffness.vertical,
                            rowStiffness.diagonal, rowStiffness.antiDiagonal, rx, ry, hx, hy, fx, fy, nextX, nextY};

@@ -184,7 +184,8 @@ Result simulate(const Parameters& parameters, const Grading& grading, const Requ
   const LatticeStiffness stiffness = buildStiffness(p, grading);
   const FrictionField friction = buildFriction(p, grading, key);
   std::optional<PressureCoupling> coupling = pressureCouplingFor(p, grading, friction);
-  const Motion motion = motionOf(p, p.timeStep, p.damping);
+  Motion motion = motionOf(p, p.timeStep, p.damping);
+  motion.fixedStrengths = !coupling;  // the pressure rescales the strengths every step
   setup.reset();
   Result result;
   result.redrawnBlocks = friction.redrawnBlocks;

@@ -5,6 +5,7 @@
 // pass; and the one builder of the row's arrays (FastLattice::verletRow).
 #include "gradfric/sbm/integrator.hpp"
 #include "row_springs.hpp"
+#include "slider_sum.hpp"
 
 #include <cmath>
 #include <cstdint>
@@ -39,11 +40,11 @@ struct VerletRow {
 // friction, the stick/slip decision at t_n (as blends: a stuck block that the threshold does not
 // hold starts to slip, a reversed one that it holds re-sticks at zero velocity), this step's
 // friction vector, the open kick and the drift (v_{n+1/2} = v_n + h/2 a_n, u_{n+1} = u_n + h
-// v_{n+1/2}). Returns whether a block of the row started to slip (the caller looks for first
-// slips).
+// v_{n+1/2}), for the columns c0 <= c < c1. Returns whether one of those blocks started to slip
+// (the caller looks for first slips).
 template <class Law, SiteLayout L, bool Graded, bool Above>
-GF_ALWAYS_INLINE bool fusedVerletRow(const Law& law, int nb, double drivenX, double drivenY, double half, double h,
-                                    double invMass, double gamma, VerletRow a) {
+GF_ALWAYS_INLINE bool fusedVerletRow(const Law& law, int c0, int c1, double drivenX, double drivenY, double half,
+                                    double h, double invMass, double gamma, VerletRow a) {
   const double* __restrict slider = a.slider;
   const double* __restrict carryX = a.carryX;
   const double* __restrict carryY = a.carryY;
@@ -70,7 +71,7 @@ GF_ALWAYS_INLINE bool fusedVerletRow(const Law& law, int nb, double drivenX, dou
   double* __restrict kfy = a.kfy;
   const double slider0 = slider[0];
   std::int64_t started = 0;
-  for (int c = 0; c < nb; ++c) {
+  for (int c = c0; c < c1; ++c) {
     // F_mot at t_n.
     const double k = Graded ? slider[c] : slider0;
     const double sx = k * (drivenX - ux[c]);
@@ -141,6 +142,43 @@ GF_ALWAYS_INLINE bool fusedVerletRow(const Law& law, int nb, double drivenX, dou
   return started != 0;
 }
 
+// The same step for columns c0 <= c < c1 of held tiles (the active set's, slip_prediction.hpp):
+// their blocks are stuck and provably hold at t_n, so the update leaves them as they are (zero
+// velocity, no drift; the friction vector, +-0 for a stuck block, is never read while it stays
+// stuck). Only what the rest of the sweep reads is written, with fusedVerletRow's expressions:
+// the slider forces (the history's sum) and the reactions on the row above.
+template <bool Graded, bool Above>
+GF_ALWAYS_INLINE void heldVerletRow(int c0, int c1, double drivenX, double drivenY, VerletRow a) {
+  const double* __restrict slider = a.slider;
+  const double* __restrict pvx = a.pieces.vx;
+  const double* __restrict pvy = a.pieces.vy;
+  const double* __restrict dx = a.pieces.dx;
+  const double* __restrict dy = a.pieces.dy;
+  const double* __restrict ax = a.pieces.ax;
+  const double* __restrict ay = a.pieces.ay;
+  const double* __restrict ux = a.ux;
+  const double* __restrict uy = a.uy;
+  double* __restrict sliderX = a.sliderX;
+  double* __restrict sliderY = a.sliderY;
+  double* __restrict nextX = a.nextX;
+  double* __restrict nextY = a.nextY;
+  const double slider0 = slider[0];
+  for (int c = c0; c < c1; ++c) {
+    const double k = Graded ? slider[c] : slider0;
+    sliderX[c] = k * (drivenX - ux[c]);
+    sliderY[c] = k * (drivenY - uy[c]);
+    if (Above) {
+      double nx = -pvx[c], ny = -pvy[c];
+      nx -= dx[c - 1];
+      ny -= dy[c - 1];
+      nx -= ax[c];
+      ny -= ay[c];
+      nextX[c] = nx;
+      nextY[c] = ny;
+    }
+  }
+}
+
 // Row r's arrays for fusedVerletRow, with its springs in `pieces`.
 template <class Law>
 template <SiteLayout L>
@@ -166,32 +204,37 @@ GF_ALWAYS_INLINE VerletRow FastLattice<Law>::verletRow(int r, const RowPieces& p
                    frictionY_.data() + base};
 }
 
-// Row r's whole Verlet step on its springs' pieces (both sweeps): the fused step, the row's slider
-// forces added to the history's sums in the kernel's order, the first slips of the blocks that
-// started, and the reactions on the row above handed on as the next row's carry.
+// Row r's whole Verlet step on its springs' pieces (the full sweep): the fused step, then
+// finishRow.
 template <class Law>
 template <bool Graded, SiteLayout L>
 GF_ALWAYS_INLINE void FastLattice<Law>::verletRowStep(int r, const RowPieces& pieces, double t, double& sumX,
                                                       double& sumY) {
-  const int nb = nb_;
+  const VerletRow row = this->template verletRow<L>(r, pieces);
+  const bool started = this->template verletColumns<Graded, L>(r, row, 0, nb_, t);
+  finishRow(r, t, started, sumX, sumY);
+}
+
+// The fused step of columns [c0, c1) of row r at t_n (whether a block started to slip).
+template <class Law>
+template <bool Graded, SiteLayout L>
+GF_ALWAYS_INLINE bool FastLattice<Law>::verletColumns(int r, const VerletRow& row, int c0, int c1, double t) {
   const double half = 0.5 * motion_.timeStep;
   const double drivenX = motion_.sliderVelocityX * t;
   const double drivenY = motion_.sliderVelocityY * t;
-  const VerletRow row = this->template verletRow<L>(r, pieces);
-  const bool started =
-      r + 1 < nb
-          ? fusedVerletRow<Law, L, Graded, true>(law_, nb, drivenX, drivenY, half, motion_.timeStep,
-                                                1.0 / motion_.mass, motion_.damping, row)
-          : fusedVerletRow<Law, L, Graded, false>(law_, nb, drivenX, drivenY, half, motion_.timeStep,
-                                                 1.0 / motion_.mass, motion_.damping, row);
-  // In registers: through the references every addition would wait on a store and a load.
-  double x = sumX, y = sumY;
-  for (int c = 0; c < nb; ++c) {
-    x += row.sliderX[c];
-    y += row.sliderY[c];
-  }
-  sumX = x;
-  sumY = y;
+  return r + 1 < nb_ ? fusedVerletRow<Law, L, Graded, true>(law_, c0, c1, drivenX, drivenY, half, motion_.timeStep,
+                                                            1.0 / motion_.mass, motion_.damping, row)
+                     : fusedVerletRow<Law, L, Graded, false>(law_, c0, c1, drivenX, drivenY, half, motion_.timeStep,
+                                                             1.0 / motion_.mass, motion_.damping, row);
+}
+
+// After row r's step (both sweeps): its slider forces added to the history's sums (slider_sum.hpp), the first slips of the blocks that started, and the reactions on the row above handed
+// on as the next row's carry.
+template <class Law>
+GF_ALWAYS_INLINE void FastLattice<Law>::finishRow(int r, double t, bool started, double& sumX, double& sumY) {
+  const int nb = nb_;
+  sumX += rowSum(sliderRowX_.data(), nb);
+  sumY += rowSum(sliderRowY_.data(), nb);
   if (started && slipped_ < nb * nb) firstSlips(r, t);
   carryX_.swap(nextX_);
   carryY_.swap(nextY_);

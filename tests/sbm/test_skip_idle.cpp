@@ -163,36 +163,115 @@ TEST(SkipIdle, OneWeakBlockSlipsFirstAndAlone) {
   EXPECT_EQ(firstSlip[weak], double(lattice.quietSteps()) * p.timeStep);
 }
 
-TEST(SkipIdle, TheActiveSetIsTheFullSweepBitForBit) {
-  // Velocity Verlet on a graded, dispersed plate wider than a few tiles: the active set runs
-  // while the detachment front crosses, the full sweep once most tiles move, and the states and
-  // slider forces stay those of the full sweep at every step, bit for bit.
-  for (GradedProperty property : {GradedProperty::Friction, GradedProperty::YoungsModulus}) {
-    const Grading g = graded(GradingProfile::Linear, property, 0.4);
-    Parameters p = sbm::testing::paperParameters(30, 0.028, g);
-    const auto stiffness = buildStiffness(p, g);
-    const auto law = CoulombStickSlip::make(buildFriction(p, g, {4, 4, 4}), p.frictionLaw);
-    FastLattice<CoulombStickSlip> skipping(stiffness, law, motionOf(p, p.timeStep, p.damping));
-    Motion full = motionOf(p, p.timeStep, p.damping);
-    full.skipIdle = false;
-    FastLattice<CoulombStickSlip> stepped(stiffness, law, full);
-    const std::int64_t steps = std::int64_t(1.5 * p.loadingTime() / p.timeStep);
-    for (std::int64_t n = 0; n < steps; ++n) {
-      const StepObservation a = skipping.step(), b = stepped.step();
-      ASSERT_TRUE(sameBits(a.sliderForceX, b.sliderForceX) && sameBits(a.sliderForceY, b.sliderForceY)) << n;
-      ASSERT_EQ(skipping.slippedBlocks(), stepped.slippedBlocks()) << n;
-    }
-    const std::size_t blocks = 30 * 30;
-    const auto same = [&](const double* x, const double* y) {
-      return std::vector<double>(x, x + blocks) == std::vector<double>(y, y + blocks);
-    };
-    EXPECT_TRUE(same(skipping.displacementX(), stepped.displacementX()));
-    EXPECT_TRUE(same(skipping.displacementY(), stepped.displacementY()));
-    EXPECT_TRUE(same(skipping.velocityX(), stepped.velocityX()));
-    EXPECT_TRUE(same(skipping.velocityY(), stepped.velocityY()));
-    EXPECT_EQ(stepped.activeSetSteps(), 0);
-    // Both sweeps were used: the active set after the first slip, the full sweep once most move.
-    EXPECT_GT(skipping.activeSetSteps(), 10);
-    EXPECT_LT(skipping.activeSetSteps(), steps - skipping.quietSteps());
+namespace {
+
+// Steps a lattice with idle work skipped and one stepped over the whole plate side by side for
+// `steps` steps: the slider forces and slip counts agree at every step, the states at the end,
+// bit for bit. Returns the skipping lattice's counters.
+template <class Law>
+void expectActiveSetIsFullSweep(const Parameters& p, const Grading& g, std::int64_t steps, const std::string& where,
+                                std::int64_t& activeSteps, std::int64_t& heldTileSteps, std::int64_t& quietSteps) {
+  const auto stiffness = buildStiffness(p, g);
+  const auto law = Law::make(buildFriction(p, g, {4, 4, 4}), p.frictionLaw);
+  FastLattice<Law> skipping(stiffness, law, motionOf(p, p.timeStep, p.damping));
+  Motion full = motionOf(p, p.timeStep, p.damping);
+  full.skipIdle = false;
+  FastLattice<Law> stepped(stiffness, law, full);
+  for (std::int64_t n = 0; n < steps; ++n) {
+    const StepObservation a = skipping.step(), b = stepped.step();
+    ASSERT_TRUE(sameBits(a.sliderForceX, b.sliderForceX) && sameBits(a.sliderForceY, b.sliderForceY)) << where << " step " << n;
+    ASSERT_EQ(skipping.slippedBlocks(), stepped.slippedBlocks()) << where << " step " << n;
   }
+  const std::size_t blocks = std::size_t(p.blocksPerSide) * p.blocksPerSide;
+  const auto same = [&](const double* x, const double* y) {
+    for (std::size_t i = 0; i < blocks; ++i)
+      if (!sameBits(x[i], y[i])) return false;
+    return true;
+  };
+  EXPECT_TRUE(same(skipping.displacementX(), stepped.displacementX())) << where;
+  EXPECT_TRUE(same(skipping.displacementY(), stepped.displacementY())) << where;
+  EXPECT_TRUE(same(skipping.velocityX(), stepped.velocityX())) << where;
+  EXPECT_TRUE(same(skipping.velocityY(), stepped.velocityY())) << where;
+  EXPECT_EQ(skipping.blockStates(), stepped.blockStates()) << where;
+  EXPECT_EQ(stepped.activeSetSteps(), 0) << where;
+  EXPECT_EQ(stepped.heldTileSteps(), 0) << where;
+  activeSteps = skipping.activeSetSteps();
+  heldTileSteps = skipping.heldTileSteps();
+  quietSteps = skipping.quietSteps();
+}
+
+}  // namespace
+
+TEST(SkipIdle, TheActiveSetIsTheFullSweepBitForBit) {
+  // Velocity Verlet on graded, dispersed plates wider than a few tiles: the active set runs while
+  // the detachment front crosses (held tiles left out of the update), the full sweep once most
+  // tiles move, and the states and slider forces stay those of the full sweep at every step, bit
+  // for bit; for both laws, graded friction, E or both, sliding along x or at an angle.
+  struct Case {
+    GradedProperty property;
+    double delta, theta;
+    bool exponential;
+  };
+  const Case cases[] = {{GradedProperty::Friction, 0.4, 0.0, false},
+                        {GradedProperty::YoungsModulus, 0.4, 0.0, false},
+                        {GradedProperty::Both, -0.3, 30.0, true},
+                        {GradedProperty::Friction, 0.9, 135.0, false}};
+  for (const Case& c : cases) {
+    const Grading g = graded(GradingProfile::Linear, c.property, c.delta);
+    Parameters p = sbm::testing::paperParameters(30, 0.028, g);
+    p.plate.slidingAngle = c.theta;
+    if (c.exponential) p.frictionLaw.name = "exponential";
+    const std::int64_t steps = std::int64_t(1.5 * p.loadingTime() / p.timeStep);
+    const std::string where = "delta " + std::to_string(c.delta) + " theta " + std::to_string(c.theta) +
+                              (c.exponential ? " exponential" : " coulomb");
+    std::int64_t active = 0, held = 0, quiet = 0;
+    if (c.exponential)
+      expectActiveSetIsFullSweep<ExponentialVelocityWeakening>(p, g, steps, where, active, held, quiet);
+    else
+      expectActiveSetIsFullSweep<CoulombStickSlip>(p, g, steps, where, active, held, quiet);
+    // Both sweeps were used: the active set after the first slip, the full sweep once most move;
+    // and the active set held tiles.
+    EXPECT_GT(active, 10) << where;
+    EXPECT_LT(active, steps - quiet) << where;
+    EXPECT_GT(held, 0) << where;
+  }
+}
+
+TEST(SkipIdle, OneWeakBlockLeavesEveryOtherTileHeld) {
+  // A uniform 40 x 40 plate (5 tiles of 8 per row, 200 tiles) with one weak block inside: at its
+  // first slip the active set starts, evaluates every tile once and proves that the others hold.
+  // In the next step exactly the 3 x 3 tiles around the weak block's tile are updated, the other
+  // 191 are held; and the run stays the full sweep's bit for bit.
+  Parameters p = sbm::testing::paperParameters(40, 0.0);
+  p.integrator = Integrator::VelocityVerlet;
+  const auto stiffness = buildStiffness(p, {});
+  FrictionSites sites = buildFriction(p, {}, {});
+  const double strong = sites.staticStrength[0], kinetic = sites.kineticStrength[0];
+  sites.layout = SiteLayout::PerSite;
+  sites.columns = 40;
+  sites.staticStrength.assign(1600, strong);
+  sites.kineticStrength.assign(1600, kinetic);
+  sites.staticStrength[20 * 40 + 20] = 0.9 * strong;  // row 20, column 20: tile 2 of row 20
+  Motion motion = motionOf(p, p.timeStep, p.damping);
+  motion.integrator = Integrator::VelocityVerlet;
+  FastLattice<CoulombStickSlip> lattice(stiffness, CoulombStickSlip::make(sites, p.frictionLaw), motion);
+  Motion full = motion;
+  full.skipIdle = false;
+  FastLattice<CoulombStickSlip> stepped(stiffness, CoulombStickSlip::make(sites, p.frictionLaw), full);
+  ASSERT_EQ(FastLattice<CoulombStickSlip>::kTile, 8);
+  while (lattice.steps() <= lattice.quietSteps()) lattice.step();  // the first slip's step
+  EXPECT_EQ(lattice.slippedBlocks(), 1);
+  EXPECT_EQ(lattice.activeSetSteps(), 1);
+  EXPECT_EQ(lattice.heldTileSteps(), 0);  // the first active step evaluates every tile
+  lattice.step();
+  EXPECT_EQ(lattice.heldTileSteps(), 200 - 9);
+  while (stepped.steps() < lattice.steps()) stepped.step();
+  for (int n = 0; n < 200; ++n) {
+    const StepObservation a = lattice.step(), b = stepped.step();
+    ASSERT_TRUE(sameBits(a.sliderForceX, b.sliderForceX) && sameBits(a.sliderForceY, b.sliderForceY)) << n;
+    ASSERT_EQ(lattice.slippedBlocks(), stepped.slippedBlocks()) << n;
+  }
+  EXPECT_EQ(std::vector<double>(lattice.displacementX(), lattice.displacementX() + 1600),
+            std::vector<double>(stepped.displacementX(), stepped.displacementX() + 1600));
+  EXPECT_GT(lattice.heldTileSteps(), 191 * 10);
 }

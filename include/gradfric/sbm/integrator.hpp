@@ -45,6 +45,10 @@ struct Motion {
   // Skip work that cannot change the result (Parameters::skipIdle): FastLattice jumps over the
   // quiet phase before the first slip (quiet_phase.hpp). Off for a load that is not linear in t.
   bool skipIdle = true;
+  // The law's per-site strengths stay as built: the active set may hold tiles whose blocks provably
+  // stay stuck (slip_prediction.hpp). Off when a caller changes them between steps (the
+  // load-dependent pressure, pressure_coupling.hpp).
+  bool fixedStrengths = true;
 };
 
 Motion motionOf(const Parameters& parameters, double timeStep, double damping);
@@ -108,6 +112,10 @@ public:
   // Velocity Verlet steps taken on the active set (tiles of blocks that move or whose neighbours
   // moved), not the full sweep: for tests and benchmarks.
   std::int64_t activeSetSteps() const { return activeSetSteps_; }
+  // Tile-steps the active set left out of the update because the tile provably held (all its
+  // blocks stuck, nothing around moving; slip_prediction.hpp): for tests and benchmarks.
+  std::int64_t heldTileSteps() const { return heldTileSteps_; }
+  static constexpr int kTile = 8;  // columns per tile of the active set
   bool useActiveSet();  // decides, before a Verlet step, which of the two sweeps it takes
 
 private:
@@ -128,10 +136,16 @@ private:
   void markReversals(int r);
   void markReversalsRange(int r, int c0, int c1);
   void firstSlips(int r, double t);
+  void lastMovedAround(int r, std::int64_t* around);  // per tile of row r
   template <SiteLayout L>
   VerletRow verletRow(int r, const RowPieces& pieces);  // the one builder of row r's VerletRow
   template <bool Graded, SiteLayout L>
   void verletRowStep(int r, const RowPieces& pieces, double t, double& sumX, double& sumY);
+  template <bool Graded, SiteLayout L>
+  bool verletColumns(int r, const VerletRow& row, int c0, int c1, double t);
+  void finishRow(int r, double t, bool started, double& sumX, double& sumY);
+  template <bool Graded, SiteLayout L>
+  void holdTiles(int r, const VerletRow& row);  // the active set's held tiles (active_set.hpp)
   template <bool Graded>
   void ownSprings(int r, int c0, int c1, const RowPieces& pieces);  // springs of columns [c0, c1) of row r
   RowPieces rowPieces();        // the full sweep's row of pieces (rowPieces_)
@@ -155,7 +169,6 @@ private:
   // step a tile held a slipping block). Only tiles whose pieces are stale are evaluated; the
   // forces are assembled from the pieces in the kernel's order, so the results are the full
   // sweep's bit for bit. Most tiles stale: back to the full sweep, checked every few steps.
-  static constexpr int kTile = 8;
   int tiles_ = 0;
   bool activeMode_ = false;
   std::int64_t activeSetSteps_ = 0, nextModeCheck_ = 0;
@@ -163,6 +176,12 @@ private:
   // Row r's pieces start at index r (N_b + 1) + 1 of piece*_: index -1 of every row is its own.
   std::vector<double> pieceHx_, pieceHy_, pieceVx_, pieceVy_, pieceDx_, pieceDy_, pieceAx_, pieceAy_;
   std::vector<std::int64_t> pieceStep_, mobileStep_;
+  // Held tiles: all stuck at step holdFrom_ and proven to hold until holdUntil_ (exclusive) while
+  // nothing around them moves; heldRow_ marks the current row's tiles held this step.
+  std::vector<std::int64_t> holdFrom_, holdUntil_;
+  std::vector<std::uint8_t> heldRow_;
+  std::vector<std::int64_t> movedAround_, columnMoved_;  // row work space of lastMovedAround
+  std::int64_t heldTileSteps_ = 0;
   // State at t_n, stage evaluation point, RK accumulators (sum of weighted stage velocities and
   // accelerations); mobile_ is 1.0 for a slipping block, 0.0 for a stuck one.
   std::vector<double> ux_, uy_, vx_, vy_;

@@ -6,7 +6,7 @@
 // closed form, bit for bit:
 //   - the first step at which some block's driving force exceeds its static threshold (the
 //     law's own test, Law::holds, with the law's per-site strengths);
-//   - the slider-force sums of the history, summed in the kernel's order (row by row).
+//   - the slider-force sums of the history, summed in the kernels' order (src/sbm/slider_sum.hpp).
 // FastLattice jumps over these steps (Motion::skipIdle) and integrates from the first slip on.
 #include "gradfric/sbm/integrator.hpp"
 
@@ -57,8 +57,8 @@ std::int64_t firstSlipStepAtRest(const LatticeStiffness& stiffness, const Law& l
   return first;
 }
 
-// The kernel's slider-force sums (its order: row by row, column by column) of the lattice at
-// rest for steps first .. first + count - 1, into sumX[count], sumY[count].
+// The kernels' slider-force sums (their order, src/sbm/slider_sum.hpp) of the lattice at rest for
+// steps first .. first + kQuietBatch - 1, into sumX[kQuietBatch], sumY[kQuietBatch].
 constexpr int kQuietBatch = 16;
 void restSliderForceSums(const LatticeStiffness& stiffness, const Motion& m, std::int64_t first, double* sumX,
                          double* sumY);
