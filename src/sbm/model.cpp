@@ -264,7 +264,9 @@ std::vector<std::string> activeEffects(const Parameters& p, const Grading& g, co
                                    "or before the first slip under the rising load (bit for bit)"
                                  : "every block stepped from t = 0 (-sbm_skip_idle false)");
   } else {
-    effects.push_back(p.skipIdle ? "idle work skipped: the phase before the first slip in closed form (bit for bit)"
+    const bool verlet = p.integrator == Integrator::VelocityVerlet;
+    effects.push_back(p.skipIdle ? std::string("idle work skipped: the phase before the first slip in closed form") +
+                                       (verlet ? ", then the active set with held tiles (bit for bit)" : " (bit for bit)")
                                  : "every block stepped from t = 0 (-sbm_skip_idle false)");
   }
   effects.push_back(p.smallStrain ? "small-strain springs: forces linearised about the rest directions (-sbm_spring)"

@@ -42,7 +42,8 @@ Parameters readParameters(MPI_Comm comm, RunParameters* record, const Plate& pla
                            "spring force: exact (k (|d| - l0) d/|d|) or small_strain (k (e.du) e, linearised about the "
                            "rest direction e: no square root; docs/accuracy.md)") == "small_strain";
   p.skipIdle = o.flag("skip_idle", p.skipIdle,
-                      "skip work that cannot change the results: jump over the phase before the first slip "
+                      "skip work that cannot change the results: jump over the phase before the first slip, "
+                      "and with Verlet update only tiles near moving blocks and not provably stuck "
                       "(bit for bit the stepped run; false: step every block from t = 0)");
 
   o.requirePositive("lz", p.layerThickness, "m");
