@@ -280,7 +280,7 @@ TEST(SkipIdle, TheHardCasesAreTheFullSweepBitForBit) {
   // The hard cases of test_hard_cases.cpp with velocity Verlet, idle work skipped (the jump, the
   // active set and its held tiles) against every block stepped: |Delta| = 0.9, sigma = 30 %, no
   // damping, a step at 0.9 of the stability limit. Bit for bit at every step; every case holds
-  // tiles (20 x 24 plates: 1,000-260,000 held tile-steps).
+  // tiles (24 x 24 plates: 870-255,000 held tile-steps).
   struct Case {
     const char* name;
     Grading grading;

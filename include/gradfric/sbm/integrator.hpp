@@ -168,7 +168,9 @@ private:
   // tile, of the tile to its right or of the two tiles above moved since (mobileStep_: the last
   // step a tile held a slipping block). Only tiles whose pieces are stale are evaluated; the
   // forces are assembled from the pieces in the kernel's order, so the results are the full
-  // sweep's bit for bit. Most tiles stale: back to the full sweep, checked every few steps.
+  // sweep's bit for bit. A tile whose blocks provably stay stuck is held (holdFrom_, below): only
+  // its slider forces and reactions are written. Most tiles stale: back to the full sweep,
+  // checked every few steps.
   int tiles_ = 0;
   bool activeMode_ = false;
   std::int64_t activeSetSteps_ = 0, nextModeCheck_ = 0;
