@@ -74,11 +74,26 @@ void BM_FastLatticeVerletSmallStrain(benchmark::State& state) {
 void BM_FastLatticeExponential(benchmark::State& state) {
   benchmarkStep<FastLattice, Integrator::RK4, ExponentialVelocityWeakening>(state);
 }
+// The Verlet full sweep on each ISA version of the kernel (kernel_isa.hpp; the same numbers bit
+// for bit), where the processor has it.
+template <KernelIsa Isa>
+void BM_FastLatticeVerletOn(benchmark::State& state) {
+  if (!forceKernelIsa(Isa)) {
+    state.SkipWithError("not supported by this processor");
+    return;
+  }
+  benchmarkStep<FastLattice, Integrator::VelocityVerlet>(state);
+  forceKernelIsa(KernelIsa::Automatic);
+}
+void BM_FastLatticeVerletAvx2(benchmark::State& state) { BM_FastLatticeVerletOn<KernelIsa::Avx2>(state); }
+void BM_FastLatticeVerletBaseline(benchmark::State& state) { BM_FastLatticeVerletOn<KernelIsa::Baseline>(state); }
 BENCHMARK(BM_FastLattice)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FastLatticeExponential)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FastLatticeVerlet)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FastLatticeVerletSkipIdle)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FastLatticeVerletSmallStrain)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_FastLatticeVerletAvx2)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_FastLatticeVerletBaseline)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ReferenceLattice)->Unit(benchmark::kMillisecond);
 
 // Whole realisations of the default scene's graded plate (friction, linear, Delta = 0.2, the
@@ -175,6 +190,12 @@ int main(int argc, char** argv) {
     std::printf("N_b = %d: velocity Verlet full sweep, small-strain springs %.1f ns per block per step (%.2fx the exact springs' cost)\n",
                 blocksPerSide, small, small / verlet);
   std::printf("kernel version in use: %s\n", kernelIsaName(kernelIsaInUse()));
+  const double avx2 = reporter.nsPerBlockStep["BM_FastLatticeVerletAvx2"];
+  const double baseline = reporter.nsPerBlockStep["BM_FastLatticeVerletBaseline"];
+  if (verlet > 0 && (avx2 > 0 || baseline > 0))
+    std::printf("N_b = %d: velocity Verlet full sweep per version: %s %.1f ns, avx2 %.1f ns, baseline %.1f ns "
+                "(0: not supported)\n",
+                blocksPerSide, kernelIsaName(kernelIsaInUse()), verlet, avx2, baseline);
   if (verlet > 0 && fast > 0)
     std::printf("N_b = %d: velocity Verlet %.1f ns per block per step, %.2fx cheaper per step than fast RK4\n",
                 blocksPerSide, verlet, fast / verlet);
