@@ -194,7 +194,7 @@ int main(int argc, char** argv) {
   const double baseline = reporter.nsPerBlockStep["BM_FastLatticeVerletBaseline"];
   if (verlet > 0 && (avx2 > 0 || baseline > 0))
     std::printf("N_b = %d: velocity Verlet full sweep per version: %s %.1f ns, avx2 %.1f ns, baseline %.1f ns "
-                "(0: not supported)\n",
+                "(0: not run or not supported)\n",
                 blocksPerSide, kernelIsaName(kernelIsaInUse()), verlet, avx2, baseline);
   if (verlet > 0 && fast > 0)
     std::printf("N_b = %d: velocity Verlet %.1f ns per block per step, %.2fx cheaper per step than fast RK4\n",

@@ -14,15 +14,16 @@
 namespace gradfric::sbm {
 
 // For every tile of row r, the last step a block of the tiles around it (itself included) was
-// mobile: the positions its forces read (its springs, those of its left neighbour, the carry
-// from the row below) are those of these blocks.
+// mobile, into movedAround_: the positions its forces read (its springs, those of its left
+// neighbour, the carry from the row below) are those of these blocks.
 template <class Law>
-GF_ALWAYS_INLINE void FastLattice<Law>::lastMovedAround(int r, std::int64_t* around) {
+GF_ALWAYS_INLINE void FastLattice<Law>::lastMovedAround(int r) {
   const int tiles = tiles_;
   const std::int64_t* below = mobileStep_.data() + std::size_t(std::max(r - 1, 0)) * tiles;
   const std::int64_t* here = mobileStep_.data() + std::size_t(r) * tiles;
   const std::int64_t* above = mobileStep_.data() + std::size_t(std::min(r + 1, nb_ - 1)) * tiles;
   std::int64_t* column = columnMoved_.data();
+  std::int64_t* around = movedAround_.data();
   for (int tile = 0; tile < tiles; ++tile) column[tile] = std::max(std::max(below[tile], here[tile]), above[tile]);
   for (int tile = 0; tile < tiles; ++tile)
     around[tile] = std::max(std::max(column[std::max(tile - 1, 0)], column[tile]), column[std::min(tile + 1, tiles - 1)]);
@@ -49,8 +50,8 @@ GF_ALWAYS_INLINE void FastLattice<Law>::verletStepActive(double t, double& sumX,
     std::int64_t* mobileRow = mobileStep_.data() + r * tiles;
     const std::int64_t* mobileAbove = above ? mobileRow + tiles : mobileRow;
     std::uint8_t* held = heldRow_.data();
-    std::int64_t* around = movedAround_.data();
-    lastMovedAround(r, around);
+    const std::int64_t* around = movedAround_.data();
+    lastMovedAround(r);
     for (int tile = 0; tile < tiles; ++tile) {
       // Re-evaluate the springs of the tile if they are stale.
       std::int64_t& evaluated = pieceStep_[r * tiles + tile];
@@ -103,20 +104,21 @@ template <class Law>
 template <bool Graded, SiteLayout L>
 GF_ALWAYS_INLINE void FastLattice<Law>::holdTiles(int r, const VerletRow& row) {
   constexpr std::int64_t kNever = std::int64_t(1) << 52;
+  if (!motion_.fixedStrengths) return;  // a threshold that changes between steps proves nothing
   const int nb = nb_, tiles = tiles_;
   const std::int64_t n = steps_;
   const bool above = r + 1 < nb;
   const double dt = motion_.timeStep, vx = motion_.sliderVelocityX, vy = motion_.sliderVelocityY;
   const RowPieces& p = row.pieces;
-  if (!motion_.fixedStrengths) return;  // a threshold that changes between steps proves nothing
+  const std::int64_t* mobileRow = mobileStep_.data() + std::size_t(r) * tiles;
   for (int tile = 0; tile < tiles; ++tile) {
-    const std::size_t i = std::size_t(r) * tiles + tile;
+    if (heldRow_[tile] || movedAround_[tile] >= n) continue;
     // Around it, nothing moved before this step (movedAround_) nor in it (this row's new marks;
     // the row below was marked before, the row above moves at the earliest in the next step).
-    const std::int64_t* mobileRow = mobileStep_.data() + std::size_t(r) * tiles;
     const std::int64_t movedNow =
         std::max(std::max(mobileRow[std::max(tile - 1, 0)], mobileRow[tile]), mobileRow[std::min(tile + 1, tiles - 1)]);
-    if (heldRow_[tile] || movedAround_[tile] >= n || movedNow >= n) continue;
+    if (movedNow >= n) continue;
+    const std::size_t i = std::size_t(r) * tiles + tile;
     const int c0 = tile * kTile, c1 = std::min(c0 + kTile, nb);
     std::int64_t until = kNever;
     for (int c = c0; c < c1 && until > n + 1; ++c) {

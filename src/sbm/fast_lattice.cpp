@@ -54,8 +54,6 @@ FastLattice<Law>::FastLattice(const LatticeStiffness& stiffness, Law law, const 
   }
   if (motion_.skipIdle) {
     quietUntil_ = firstSlipStepAtRest(stiffness_, law_, motion_, std::int64_t(1) << 52);
-    quietSumX_.assign(kQuietBatch, 0.0);
-    quietSumY_.assign(kQuietBatch, 0.0);
     if (motion_.integrator == Integrator::VelocityVerlet) {
       tiles_ = (nb_ + kTile - 1) / kTile;
       for (auto* v : {&pieceHx_, &pieceHy_, &pieceVx_, &pieceVy_, &pieceDx_, &pieceDy_, &pieceAx_, &pieceAy_})
@@ -151,12 +149,8 @@ template <class Law>
 StepObservation FastLattice<Law>::step() {
   StepObservation observation{time(), 0.0, 0.0};
   if (steps_ < quietUntil_) {  // at rest: nothing to integrate, the sums are known
-    if (quietBatchStart_ < 0 || steps_ >= quietBatchStart_ + kQuietBatch) {
-      quietBatchStart_ = steps_;
-      restSliderForceSums(stiffness_, motion_, steps_, quietSumX_.data(), quietSumY_.data());
-    }
-    observation.sliderForceX = quietSumX_[steps_ - quietBatchStart_];
-    observation.sliderForceY = quietSumY_[steps_ - quietBatchStart_];
+    restSliderForceSums(stiffness_, motion_, steps_, sliderRowX_.data(), observation.sliderForceX,
+                        observation.sliderForceY);
     ++steps_;
     return observation;
   }

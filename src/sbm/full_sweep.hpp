@@ -38,16 +38,18 @@ GF_ALWAYS_INLINE void FastLattice<Law>::rowForces(int r, const double* px, const
   const double* __restrict ry = py + r * nb;
   for (int c = 0; c < nb; ++c) {
     const double k = Graded ? kS[c] : kS0;
-    fx[c] = k * (drivenX - rx[c]) + carryX[c];
-    fy[c] = k * (drivenY - ry[c]) + carryY[c];
+    fx[c] = sliderForce(k, drivenX, rx[c]) + carryX[c];
+    fy[c] = sliderForce(k, drivenY, ry[c]) + carryY[c];
   }
-  if (WantSum) {  // the macroscopic friction force: the sum of the slider forces (slider_sum.hpp)
+  // The macroscopic friction force: the sum of the slider forces (slider_sum.hpp). A loop of its
+  // own: stores to both rows in one loop keep some of the compiled versions from vectorising.
+  if (WantSum) {
     double* __restrict sx = sliderRowX_.data();
     double* __restrict sy = sliderRowY_.data();
     for (int c = 0; c < nb; ++c) {
       const double k = Graded ? kS[c] : kS0;
-      sx[c] = k * (drivenX - rx[c]);
-      sy[c] = k * (drivenY - ry[c]);
+      sx[c] = sliderForce(k, drivenX, rx[c]);
+      sy[c] = sliderForce(k, drivenY, ry[c]);
     }
     sumX += rowSum(sx, nb);
     sumY += rowSum(sy, nb);

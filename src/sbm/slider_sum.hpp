@@ -1,6 +1,6 @@
 #pragma once
-// Private to the fast spring-block kernel: the one order in which the slider forces are added up
-// for the friction history. The kernels and the quiet phase (quiet_phase.cpp) must agree on it
+// Private to the fast spring-block kernel: the slider forces and the one order in which they are
+// added up for the friction history. The kernels and the quiet phase (quiet_phase.cpp) must agree on it
 // bit for bit:
 //   - a row's forces go into kSumLanes interleaved partial sums (column c into lane c mod
 //     kSumLanes, each in column order), combined pairwise;
@@ -12,6 +12,10 @@
 #include "kernel_inline.hpp"
 
 namespace gradfric::sbm {
+
+// The force of block c's slider spring, k (v t_n - u), as every path writes it (the kernels, the
+// held tiles and the quiet phase's closed form with u = 0 must agree bit for bit).
+GF_ALWAYS_INLINE double sliderForce(double k, double driven, double u) { return k * (driven - u); }
 
 constexpr int kSumLanes = 8;
 

@@ -12,6 +12,16 @@
 
 namespace gradfric::sbm {
 
+// The reaction on row r+1 at column c of the springs row r owns, from its vertical v[c], diagonal
+// d[c-1] and anti-diagonal a[c]: -v[c] - d[c-1] - a[c], as both the fused and the held step write
+// it.
+GF_ALWAYS_INLINE double reactionAbove(double vertical, double diagonalLeft, double antiDiagonal) {
+  double reaction = -vertical;
+  reaction -= diagonalLeft;
+  reaction -= antiDiagonal;
+  return reaction;
+}
+
 // The per-block arrays of one row that the fused Verlet step reads and writes.
 struct VerletRow {
   const double* __restrict slider;  // slider stiffness per column (element 0 without grading)
@@ -74,8 +84,8 @@ GF_ALWAYS_INLINE bool fusedVerletRow(const Law& law, int c0, int c1, double driv
   for (int c = c0; c < c1; ++c) {
     // F_mot at t_n.
     const double k = Graded ? slider[c] : slider0;
-    const double sx = k * (drivenX - ux[c]);
-    const double sy = k * (drivenY - uy[c]);
+    const double sx = sliderForce(k, drivenX, ux[c]);
+    const double sy = sliderForce(k, drivenY, uy[c]);
     sliderX[c] = sx;
     sliderY[c] = sy;
     double fxc = sx + carryX[c];
@@ -91,13 +101,8 @@ GF_ALWAYS_INLINE bool fusedVerletRow(const Law& law, int c0, int c1, double driv
       fyc += dy[c];
       fxc += ax[c - 1];
       fyc += ay[c - 1];
-      double nx = -pvx[c], ny = -pvy[c];
-      nx -= dx[c - 1];
-      ny -= dy[c - 1];
-      nx -= ax[c];
-      ny -= ay[c];
-      nextX[c] = nx;
-      nextY[c] = ny;
+      nextX[c] = reactionAbove(pvx[c], dx[c - 1], ax[c]);
+      nextY[c] = reactionAbove(pvy[c], dy[c - 1], ay[c]);
     }
     // The update.
     const double m = mobile[c];
@@ -145,8 +150,9 @@ GF_ALWAYS_INLINE bool fusedVerletRow(const Law& law, int c0, int c1, double driv
 // The same step for columns c0 <= c < c1 of held tiles (the active set's, slip_prediction.hpp):
 // their blocks are stuck and provably hold at t_n, so the update leaves them as they are (zero
 // velocity, no drift; the friction vector, +-0 for a stuck block, is never read while it stays
-// stuck). Only what the rest of the sweep reads is written, with fusedVerletRow's expressions:
-// the slider forces (the history's sum) and the reactions on the row above.
+// stuck). Only what the rest of the sweep reads is written, with fusedVerletRow's expressions
+// (sliderForce, reactionAbove): the slider forces (the history's sum) and the reactions on the
+// row above.
 template <bool Graded, bool Above>
 GF_ALWAYS_INLINE void heldVerletRow(int c0, int c1, double drivenX, double drivenY, VerletRow a) {
   const double* __restrict slider = a.slider;
@@ -165,16 +171,11 @@ GF_ALWAYS_INLINE void heldVerletRow(int c0, int c1, double drivenX, double drive
   const double slider0 = slider[0];
   for (int c = c0; c < c1; ++c) {
     const double k = Graded ? slider[c] : slider0;
-    sliderX[c] = k * (drivenX - ux[c]);
-    sliderY[c] = k * (drivenY - uy[c]);
+    sliderX[c] = sliderForce(k, drivenX, ux[c]);
+    sliderY[c] = sliderForce(k, drivenY, uy[c]);
     if (Above) {
-      double nx = -pvx[c], ny = -pvy[c];
-      nx -= dx[c - 1];
-      ny -= dy[c - 1];
-      nx -= ax[c];
-      ny -= ay[c];
-      nextX[c] = nx;
-      nextY[c] = ny;
+      nextX[c] = reactionAbove(pvx[c], dx[c - 1], ax[c]);
+      nextY[c] = reactionAbove(pvy[c], dy[c - 1], ay[c]);
     }
   }
 }

@@ -51,6 +51,20 @@ void expectSameResults(const Result& skipped, const Result& stepped, const std::
     expectSameBits(skipped.snapshots[k].sigmaXOverP, stepped.snapshots[k].sigmaXOverP, where + " snapshot");
 }
 
+// The uniform plate's friction sites, one per block, with block `weak` at 90 % of the others'
+// static strength.
+FrictionSites withOneWeakBlock(const Parameters& p, int weak) {
+  FrictionSites sites = buildFriction(p, {}, {});
+  const int blocks = p.blocksPerSide * p.blocksPerSide;
+  const double strong = sites.staticStrength[0], kinetic = sites.kineticStrength[0];
+  sites.layout = SiteLayout::PerSite;
+  sites.columns = p.blocksPerSide;
+  sites.staticStrength.assign(blocks, strong);
+  sites.kineticStrength.assign(blocks, kinetic);
+  sites.staticStrength[weak] = 0.9 * strong;
+  return sites;
+}
+
 const char* name(Integrator integrator) { return integrator == Integrator::RK4 ? "rk4" : "verlet"; }
 
 }  // namespace
@@ -143,14 +157,9 @@ TEST(SkipIdle, OneWeakBlockSlipsFirstAndAlone) {
   // block's step, and exactly one block is active after it.
   Parameters p = sbm::testing::paperParameters(10, 0.0);
   const auto stiffness = buildStiffness(p, {});
-  FrictionSites sites = buildFriction(p, {}, {});
-  const double strong = sites.staticStrength[0], kinetic = sites.kineticStrength[0];
-  sites.layout = SiteLayout::PerSite;
-  sites.columns = 10;
-  sites.staticStrength.assign(100, strong);
-  sites.kineticStrength.assign(100, kinetic);
   const int weak = 4 * 10 + 6;
-  sites.staticStrength[weak] = 0.9 * strong;
+  const FrictionSites sites = withOneWeakBlock(p, weak);
+  const double strong = sites.staticStrength[0];
   const Motion motion = motionOf(p, p.timeStep, p.damping);
   FastLattice<CoulombStickSlip> lattice(stiffness, CoulombStickSlip::make(sites, p.frictionLaw), motion);
   EXPECT_EQ(lattice.quietSteps(),
@@ -245,13 +254,7 @@ TEST(SkipIdle, OneWeakBlockLeavesEveryOtherTileHeld) {
   Parameters p = sbm::testing::paperParameters(40, 0.0);
   p.integrator = Integrator::VelocityVerlet;
   const auto stiffness = buildStiffness(p, {});
-  FrictionSites sites = buildFriction(p, {}, {});
-  const double strong = sites.staticStrength[0], kinetic = sites.kineticStrength[0];
-  sites.layout = SiteLayout::PerSite;
-  sites.columns = 40;
-  sites.staticStrength.assign(1600, strong);
-  sites.kineticStrength.assign(1600, kinetic);
-  sites.staticStrength[20 * 40 + 20] = 0.9 * strong;  // row 20, column 20: tile 2 of row 20
+  const FrictionSites sites = withOneWeakBlock(p, 20 * 40 + 20);  // row 20, column 20: tile 2 of row 20
   Motion motion = motionOf(p, p.timeStep, p.damping);
   motion.integrator = Integrator::VelocityVerlet;
   FastLattice<CoulombStickSlip> lattice(stiffness, CoulombStickSlip::make(sites, p.frictionLaw), motion);

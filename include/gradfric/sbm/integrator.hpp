@@ -136,7 +136,7 @@ private:
   void markReversals(int r);
   void markReversalsRange(int r, int c0, int c1);
   void firstSlips(int r, double t);
-  void lastMovedAround(int r, std::int64_t* around);  // per tile of row r
+  void lastMovedAround(int r);  // movedAround_ for the tiles of row r
   template <SiteLayout L>
   VerletRow verletRow(int r, const RowPieces& pieces);  // the one builder of row r's VerletRow
   template <bool Graded, SiteLayout L>
@@ -157,11 +157,9 @@ private:
   std::int64_t steps_ = 0;
   int slipped_ = 0;
   double* firstSlip_ = nullptr;
-  // The quiet phase (quiet_phase.hpp): steps before quietUntil_ are known in closed form; their
-  // slider-force sums are computed kQuietBatch at a time from step quietBatchStart_.
+  // The quiet phase (quiet_phase.hpp): steps before quietUntil_ are known in closed form,
+  // their slider-force sums included.
   std::int64_t quietUntil_ = 0;
-  std::int64_t quietBatchStart_ = -1;
-  std::vector<double> quietSumX_, quietSumY_;
   // The active set (Verlet, Motion::skipIdle; src/sbm/active_set.hpp): each row is cut into tiles of
   // kTile columns. The springs a tile owns (its horizontal springs and those to the row above,
   // "pieces") are kept from the step they were evaluated at (pieceStep_) while no block of the

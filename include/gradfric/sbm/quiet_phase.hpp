@@ -57,10 +57,9 @@ std::int64_t firstSlipStepAtRest(const LatticeStiffness& stiffness, const Law& l
   return first;
 }
 
-// The kernels' slider-force sums (their order, src/sbm/slider_sum.hpp) of the lattice at rest for
-// steps first .. first + kQuietBatch - 1, into sumX[kQuietBatch], sumY[kQuietBatch].
-constexpr int kQuietBatch = 16;
-void restSliderForceSums(const LatticeStiffness& stiffness, const Motion& m, std::int64_t first, double* sumX,
-                         double* sumY);
+// The kernels' slider-force sums (their order, src/sbm/slider_sum.hpp) of the lattice at rest at
+// `step`; row: work space [N_b].
+void restSliderForceSums(const LatticeStiffness& stiffness, const Motion& m, std::int64_t step, double* row,
+                         double& sumX, double& sumY);
 
 }  // namespace gradfric::sbm
