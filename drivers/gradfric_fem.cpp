@@ -86,7 +86,7 @@ void printPlan(MPI_Comm comm, const FemRun& run, const PlateModel& model, RunPar
                "loading slope lost to the penalty springs' compliance: G/(H k_t) + 12 G H/(k_n L^2)",
                OptionOrigin::Derived});
   record->add({"damping", describeDamping(params), "", "damping active in the sliding step", OptionOrigin::Derived});
-  record->add({"friction_state", describeFrictionState(params), "", "the friction law's slip state (-fem_slip_length)",
+  record->add({"friction_state", describeFrictionState(params), "", "the friction law and its state (-friction_law)",
                OptionOrigin::Derived});
   record->print(comm, "gradfric-fem: resolved parameters");
   int size = 1;
@@ -94,11 +94,12 @@ void printPlan(MPI_Comm comm, const FemRun& run, const PlateModel& model, RunPar
   PetscPrintf(comm,
               "Active effects: grading %s; %d x %d x %d hexahedra (%d cells) on %d rank(s), partitioner %s;\n"
               "  pressure ramp %.3g s + settle %.3g s (mass damping %.3g 1/s), sliding at %.3g m/s, theta %.3g deg;\n"
-              "  contact %s; Eq. 1 friction, v_c %.3g m/s, %s; dt %.4g s (stable %.4g s);\n"
+              "  contact %s; friction law %s, v_c %.3g m/s, %s; dt %.4g s (stable %.4g s);\n"
               "  damping while sliding: %s\n",
               describe(run.grading).c_str(), params.nx, params.ny, params.nz, static_cast<int>(model.mesh().globalCells()),
               size, params.partitioner.c_str(), params.rampTime, params.settleTime, params.settleDamping,
-              params.plate.velocity, params.plate.slidingAngle, describeContact(params).c_str(), params.vC,
+              params.plate.velocity, params.plate.slidingAngle, describeContact(params).c_str(), params.frictionLaw.name.c_str(),
+              params.frictionLaw.criticalVelocity,
               describeFrictionState(params).c_str(), model.timeStep(), model.stableTimeStep(), describeDamping(params).c_str());
   if (run.grading.fields)
     for (const auto& line : describeFields(*run.grading.fields)) PetscPrintf(comm, "  %s\n", line.c_str());
@@ -131,13 +132,14 @@ void printResults(MPI_Comm comm, const FemRun& run, const FemRunResult& r, doubl
               "Results (FEM):\n"
               "  settled normal force / (p L^2)  %.6f\n"
               "  mu_s (global)                   %s%s\n"
+              "  interface resolution            %s\n"
               "  peak time after sliding start   %.6e s   (Eq. 2: %.6e s, ratio %.4f)\n"
               "  first slip after sliding start  %.6e s\n"
               "  mu_k (kinetic window)           %s%s\n"
               "%s"
               "  steps %ld, dt %.4e s, wall %.2f s (pressure %.2f s, sliding %.2f s), %.3f ms/step\n",
               r.settledNormalForce, withErrorBar(f.muStatic, error).c_str(),
-              f.peakConfirmed ? "" : "  (peak not confirmed)", f.peakTime, eq2, f.peakTime / eq2, f.firstSlipTime,
+              f.peakConfirmed ? "" : "  (peak not confirmed)", r.resolution.describe().c_str(), f.peakTime, eq2, f.peakTime / eq2, f.firstSlipTime,
               withKineticErrorBar(f.muKinetic, error).c_str(),
               !run.params.measurement.kinetic ? "  (not asked: -friction_observables)"
               : f.kineticComplete             ? ""
@@ -197,6 +199,9 @@ int main(int argc, char** argv) {
     const double wall0 = MPI_Wtime();
     const FemRunResult result = runPlateExperiment(model, output.snapshotObserver(model));
     const double wall = MPI_Wtime() - wall0;
+    record.add({"interface resolution", result.resolution.describe(), "",
+                "D_c, kappa = G D_c/(H p (mu_s - mu_k)), and whether D_c was resolved (docs/accuracy_fem.md)",
+                OptionOrigin::Derived});
     output.writeHistory(model, result, record);
     output.finish();                                              // complete: renamed into place
     printResults(comm, *run, result, wall);

@@ -65,7 +65,6 @@ int main(int argc, char** argv) {
       const PetscScalar* x = nullptr;
       GF_CALL(VecGetArrayRead(X, &x));
       const auto& nodes = model.contact().nodes();
-      const auto& law = model.contact().law();
       Tally local;
       for (std::size_t i = 0; i < nodes.size(); ++i) {
         const auto& n = nodes[i];
@@ -86,7 +85,7 @@ int main(int argc, char** argv) {
           local.open += 1;
         }
         local.normal += n.force[2];
-        const double s = law.hasState() ? law.strength[i] : law.sites().staticAt(law.sites().slotOfSite(int(i)));
+        const double s = model.contact().committedStrength(static_cast<int>(i));
         local.strength += s;
         local.strengthMin = std::min(local.strengthMin, s);
         local.strengthMax = std::max(local.strengthMax, s);
@@ -114,7 +113,7 @@ int main(int argc, char** argv) {
       tally.mu += std::fabs(sums[3] + sums[4]) / (plate.pressure * plate.length * plate.length);
     };
     const FemRunResult r = runPlateExperiment(model, observe);
-    const double eq1 = plate.muKinetic + (plate.muStatic - plate.muKinetic) * std::exp(-v / params.vC);
+    const double eq1 = plate.muKinetic + (plate.muStatic - plate.muKinetic) * std::exp(-v / params.frictionLaw.criticalVelocity);
     const double nodeSteps = tally.stick + tally.slip + tally.open;
     PetscPrintf(comm,
                 "bench_fem_slip_diagnosis: mesh %dx%dx%d, contact %s, slip length %.3g m, dt %.4e s\n"

@@ -10,8 +10,8 @@
 namespace gradfric::fem {
 
 ContactBoundary::ContactBoundary(const PlateMesh& mesh, const PenaltyStiffness& stiffness, double muStatic,
-                                 double muKinetic, double criticalVelocity, const Grading& grading, double slipLength,
-                                 bool healingOnly)
+                                 double muKinetic, const FrictionLawSettings& law, const Grading& grading,
+                                 double memoryLength, bool healingOnly)
     : comm_(mesh.comm()), stiffness_(stiffness) {
   const double length = mesh.size().length;
   const std::vector<double> area = mesh.sumOverFaces(FaceSet::Bottom);
@@ -35,34 +35,34 @@ ContactBoundary::ContactBoundary(const PlateMesh& mesh, const PenaltyStiffness& 
     sites.kineticStrength.push_back(muKinetic * (gradedKinetic[v.block] / area[v.block]));
   }
   sites.columns = static_cast<int>(nodes_.size());
-  FrictionLawSettings settings;
-  settings.criticalVelocity = criticalVelocity;
-  law_ = ContactLaw::make(ExponentialVelocityWeakening::make(std::move(sites), settings), slipLength, nodes_.size(),
-                          healingOnly);
+  law_ = makeContactLaw(law, std::move(sites), nodes_.size(), memoryLength, healingOnly);
 }
 
-ContactTotals ContactBoundary::addForce(Vec X, Vec F) {
+ContactTotals ContactBoundary::addForce(Vec X, Vec F, double dt) {
   const PetscScalar* x = nullptr;
   PetscScalar* f = nullptr;
   GF_CALL(VecGetArrayRead(X, &x));
   GF_CALL(VecGetArray(F, &f));
   ContactTotals totals;
-  for (std::size_t site = 0; site < nodes_.size(); ++site) {
-    Node& n = nodes_[site];
-    const PetscScalar* xb = x + 6 * n.block;
-    const bool wasSlipping = n.state == ContactState::Slip;
-    const double slip = wasSlipping && law_.hasState() ? tangentialStep(n, xb) : 0.0;
-    const ContactTraction r = penaltyContact(stiffness_, law_, static_cast<int>(site), xb[2], xb[0], xb[1], n.anchorX,
-                                             n.anchorY, xb[3], xb[4], wasSlipping, slip);
-    keepSlipState(static_cast<int>(site), r.state, r.strength);
-    n.pendingX = r.anchorX;
-    n.pendingY = r.anchorY;
-    n.pendingState = r.state;
-    n.pressure = r.pressure;
-    n.tx = r.tx;
-    n.ty = r.ty;
-    applyNodeForce(n, xb, f + 6 * n.block, n.area * r.tx, n.area * r.ty, n.area * r.pressure, totals);
-  }
+  visitContactLaw(law_, [&](auto& law) {
+    const bool state = hasSlipState(law);
+    for (std::size_t site = 0; site < nodes_.size(); ++site) {
+      Node& n = nodes_[site];
+      const PetscScalar* xb = x + 6 * n.block;
+      const bool wasSlipping = n.state == ContactState::Slip;
+      const double slip = wasSlipping && state ? tangentialStep(n, xb) : 0.0;
+      const ContactTraction r = penaltyContact(stiffness_, law, static_cast<int>(site), xb[2], xb[0], xb[1], n.anchorX,
+                                               n.anchorY, xb[3], xb[4], wasSlipping, slip, dt);
+      keepSlipState(law, static_cast<int>(site), r.state, r.strength);
+      n.pendingX = r.anchorX;
+      n.pendingY = r.anchorY;
+      n.pendingState = r.state;
+      n.pressure = r.pressure;
+      n.tx = r.tx;
+      n.ty = r.ty;
+      applyNodeForce(n, xb, f + 6 * n.block, n.area * r.tx, n.area * r.ty, n.area * r.pressure, totals);
+    }
+  });
   totals.nodes = static_cast<long long>(nodes_.size());
   GF_CALL(VecRestoreArrayRead(X, &x));
   GF_CALL(VecRestoreArray(F, &f));
@@ -76,23 +76,26 @@ ContactTotals ContactBoundary::addKinematicForce(Vec X, Vec F, const std::vector
   GF_CALL(VecGetArrayRead(X, &x));
   GF_CALL(VecGetArray(F, &f));
   ContactTotals totals;
-  for (std::size_t site = 0; site < nodes_.size(); ++site) {
-    Node& n = nodes_[site];
-    const PetscScalar* xb = x + 6 * n.block;
-    PetscScalar* fb = f + 6 * n.block;
-    const double m = mass[n.block];
-    const double v[3] = {xb[3], xb[4], xb[5]};
-    const double aFree[3] = {fb[3] / m + damping.acceleration(v, 0), fb[4] / m + damping.acceleration(v, 1),
-                             fb[5] / m + damping.acceleration(v, 2)};
-    const double slip = law_.hasState() ? tangentialStep(n, xb) : 0.0;
-    const KinematicContactForce r = kinematicContact(law_, static_cast<int>(site), m, dt, xb[2], v, aFree, slip);
-    keepSlipState(static_cast<int>(site), r.state, r.strength);
-    n.pendingState = r.state;
-    n.pressure = r.fn / n.area;
-    n.tx = r.fx / n.area;
-    n.ty = r.fy / n.area;
-    applyNodeForce(n, xb, fb, r.fx, r.fy, r.fn, totals);
-  }
+  visitContactLaw(law_, [&](auto& law) {
+    const bool state = hasSlipState(law);
+    for (std::size_t site = 0; site < nodes_.size(); ++site) {
+      Node& n = nodes_[site];
+      const PetscScalar* xb = x + 6 * n.block;
+      PetscScalar* fb = f + 6 * n.block;
+      const double m = mass[n.block];
+      const double v[3] = {xb[3], xb[4], xb[5]};
+      const double aFree[3] = {fb[3] / m + damping.acceleration(v, 0), fb[4] / m + damping.acceleration(v, 1),
+                               fb[5] / m + damping.acceleration(v, 2)};
+      const double slip = state ? tangentialStep(n, xb) : 0.0;
+      const KinematicContactForce r = kinematicContact(law, static_cast<int>(site), m, dt, xb[2], v, aFree, slip);
+      keepSlipState(law, static_cast<int>(site), r.state, r.strength);
+      n.pendingState = r.state;
+      n.pressure = r.fn / n.area;
+      n.tx = r.fx / n.area;
+      n.ty = r.fy / n.area;
+      applyNodeForce(n, xb, fb, r.fx, r.fy, r.fn, totals);
+    }
+  });
   totals.nodes = static_cast<long long>(nodes_.size());
   GF_CALL(VecRestoreArrayRead(X, &x));
   GF_CALL(VecRestoreArray(F, &f));
@@ -124,10 +127,10 @@ double ContactBoundary::tangentialStep(const Node& n, const PetscScalar* xb) {
   return std::hypot(xb[0] - n.u[0], xb[1] - n.u[1]);
 }
 
-// A node in contact takes the strength it slid with; an open node keeps its state.
-void ContactBoundary::keepSlipState(int site, ContactState state, double strength) {
-  if (!law_.hasState()) return;
-  law_.setPending(site, state == ContactState::Open ? law_.strength[site] : strength);
+double ContactBoundary::committedStrength(int site) const {
+  double strength = 0;
+  visitContactLaw(law_, [&](const auto& law) { strength = fem::committedStrength(law, site); });
+  return strength;
 }
 
 double ContactBoundary::work() const {
@@ -138,17 +141,21 @@ double ContactBoundary::work() const {
 
 double ContactBoundary::largestStaticCoefficient() const {
   double local = 0, global = 0;
-  for (double s : law_.sites().staticStrength) local = std::max(local, s);
+  visitContactLaw(law_, [&](const auto& law) {
+    for (double s : sitesOf(law).staticStrength) local = std::max(local, s);
+  });
   GF_CALL_MPI(MPI_Allreduce(&local, &global, 1, MPI_DOUBLE, MPI_MAX, comm_));
   return global;
 }
 
 void ContactBoundary::commit() {
-  law_.commit();
+  visitContactLaw(law_, [](auto& law) { law.commit(); });
   for (Node& n : nodes_) {
     n.anchorX = n.pendingX;
     n.anchorY = n.pendingY;
     n.state = n.pendingState;
+    if (n.pendingState == ContactState::Slip)
+      largestSlipStep_ = std::max(largestSlipStep_, std::hypot(n.pendingU[0] - n.u[0], n.pendingU[1] - n.u[1]));
     for (int d = 0; d < 3; ++d) {
       work_ += 0.5 * (n.force[d] + n.pendingForce[d]) * (n.pendingU[d] - n.u[d]);
       n.force[d] = n.pendingForce[d];
@@ -160,6 +167,62 @@ void ContactBoundary::commit() {
 
 void ContactBoundary::resetSlipRecord() {
   for (Node& n : nodes_) n.everSlipped = false;
+  largestSlipStep_ = 0;
+}
+
+void ContactBoundary::recordWeakening(double t) {
+  visitContactLaw(law_, [&](const auto& law) {
+    const FrictionSites& sites = sitesOf(law);
+    for (std::size_t site = 0; site < nodes_.size(); ++site) {
+      Node& n = nodes_[site];
+      if (n.weakenEnd >= 0) continue;
+      const int slot = sites.slotOfSite(static_cast<int>(site));
+      const double s = sites.staticAt(slot), k = sites.kineticAt(slot);
+      if (!(s - k > 1e-12 * s)) continue;  // no weakening to measure
+      const double left = (fem::committedStrength(law, static_cast<int>(site)) - k) / (s - k);
+      if (n.weakenStart < 0 && left < 0.9) n.weakenStart = t;
+      if (left < 0.1) n.weakenEnd = t;
+    }
+  });
+}
+
+ProcessZone ContactBoundary::processZone(double latestStart) const {
+  int size = 1, rank = 0;
+  GF_CALL_MPI(MPI_Comm_size(comm_, &size));
+  GF_CALL_MPI(MPI_Comm_rank(comm_, &rank));
+  std::vector<double> mine;  // x, y, start, end per node
+  for (const Node& n : nodes_) mine.insert(mine.end(), {n.x, n.y, n.weakenStart, n.weakenEnd});
+  int count = static_cast<int>(mine.size());
+  std::vector<int> counts(size), offsets(size, 0);
+  GF_CALL_MPI(MPI_Gather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm_));
+  for (int r = 1; r < size; ++r) offsets[r] = offsets[r - 1] + counts[r - 1];
+  std::vector<double> all(rank == 0 ? offsets[size - 1] + counts[size - 1] : 0);
+  GF_CALL_MPI(MPI_Gatherv(mine.data(), count, MPI_DOUBLE, all.data(), counts.data(), offsets.data(), MPI_DOUBLE, 0,
+                          comm_));
+  double result[5] = {0, 0, 0, 0, 0};
+  if (rank == 0) {
+    WeakeningTimes times;
+    for (std::size_t i = 0; i + 3 < all.size(); i += 4) {
+      times.x.push_back(all[i]);
+      times.y.push_back(all[i + 1]);
+      times.start.push_back(all[i + 2]);
+      times.end.push_back(all[i + 3]);
+    }
+    const ProcessZone z = measureProcessZone(times, latestStart);
+    result[0] = z.nodes;
+    result[1] = z.median;
+    result[2] = z.low;
+    result[3] = z.medianElements;
+    result[4] = z.lowElements;
+  }
+  GF_CALL_MPI(MPI_Bcast(result, 5, MPI_DOUBLE, 0, comm_));
+  return ProcessZone{static_cast<int>(result[0]), result[1], result[2], result[3], result[4]};
+}
+
+double ContactBoundary::largestSlipPerStep() const {
+  double global = 0;
+  GF_CALL_MPI(MPI_Allreduce(&largestSlipStep_, &global, 1, MPI_DOUBLE, MPI_MAX, comm_));
+  return global;
 }
 
 void ContactBoundary::penetration(Vec X, double* mean, double* minimum, double* maximum) const {

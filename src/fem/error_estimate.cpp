@@ -32,7 +32,7 @@ std::string outsideStudiedScene(const FemParameters& q, const Grading& g) {
   if (!near(p.length, paper.length) || !near(p.thickness, paper.thickness) || !near(p.youngsModulus, paper.youngsModulus) ||
       !near(p.poissonRatio, paper.poissonRatio) || !near(p.density, paper.density) || !near(p.pressure, paper.pressure) ||
       !near(p.velocity, paper.velocity) || !near(p.muStatic, paper.muStatic) || !near(p.muKinetic, paper.muKinetic) ||
-      !near(q.vC, FemParameters{}.vC))
+      !near(q.frictionLaw.criticalVelocity, FemParameters{}.frictionLaw.criticalVelocity))
     return "plate or friction law other than the paper's";
   FemParameters derived;  // the studies' pressure step: the derived ramp and hold
   derived.plate = p;

@@ -2,8 +2,9 @@
 
 #include "gradfric/core/input_error.hpp"
 #include "gradfric/core/petsc_call.hpp"
+#include "gradfric/physics/friction_law_options.hpp"
+#include "gradfric/physics/friction_laws.hpp"
 #include "gradfric/physics/friction_options.hpp"
-
 
 #include <algorithm>
 #include <cmath>
@@ -37,6 +38,7 @@ std::string describeContact(const FemParameters& given) {
 }
 
 std::string describeFrictionState(const FemParameters& q) {
+  if (q.frictionLaw.name == "state") return describeFrictionLaw(q.frictionLaw);
   if (!(q.slipLength > 0)) return "no slip length (a stopped node is back at mu_s)";
   char text[160];
   std::snprintf(text, sizeof text, "slip state: strength follows Eq. 1 over D_c %.3g m of slip (%s)", q.slipLength,
@@ -140,10 +142,10 @@ FemParameters readFemParameters(MPI_Comm comm, RunParameters* record, const Plat
       o.choice("pressure_step", q.staticPressureStep ? "static" : "dynamic", {"static", "dynamic"},
                "step 1: static (the pressed equilibrium solved by CG, then sliding from rest; penalty contact, "
                "else dynamic) or dynamic (pressure ramp and hold in time)") == "static";
-  q.vC = o.real("v_c", q.vC, "m/s", "critical velocity v_c of Eq. 1");
+  q.frictionLaw = readFrictionLaw(comm, record, q.frictionLaw, true);  // -friction_law, shared with the SBM
   q.slipLength = o.real("slip_length", q.slipLength, "m",
-                        "slip length D_c of the friction memory: a node's strength follows Eq. 1's value over this "
-                        "slip (-fem_slip_evolution); 0: Eq. 1 alone, a stopped node back at mu_s");
+                        "with -friction_law exponential or coulomb: slip length of the friction memory, a node's "
+                        "strength follows the law's value over this slip (-fem_slip_evolution); 0: the law alone");
   q.slipHealingOnly = o.choice("slip_evolution", q.slipHealingOnly ? "healing" : "slip", {"slip", "healing"},
                                "how the slip state follows Eq. 1: slip (Ruina's slip law, weakening and healing over "
                                "D_c) or healing (weakening at once as Eq. 1, only the healing over D_c)") == "healing";
@@ -205,7 +207,12 @@ FemParameters readFemParameters(MPI_Comm comm, RunParameters* record, const Plat
   o.requireAtLeast("nx", q.nx, 1);
   o.requireAtLeast("ny", q.ny, 1);
   o.requireAtLeast("nz", q.nz, 1);
-  o.requirePositive("v_c", q.vC, "m/s");
+  if (q.frictionLaw.name == "state")
+    for (const char* memory : {"slip_length", "slip_evolution"})
+      if (o.wasSet(memory))
+        throw InputError(o.fullName(memory), o.fullName(memory) == "-fem_slip_length" ? formatReal(q.slipLength)
+                                                                                      : std::string(q.slipHealingOnly ? "healing" : "slip"),
+                         "only with -friction_law exponential or coulomb (the state law's length is -friction_d_c)");
   o.requireNonNegative("slip_length", q.slipLength, "m");
   if (o.wasSet("slip_length"))  // the default is not checked against H: a bad -plate_H is refused by its own name
     o.requireRange("slip_length", q.slipLength, 0.0, q.plate.thickness, "0 <= D_c <= H (the plate's thickness)");

@@ -39,7 +39,7 @@ PlateModel::PlateModel(MPI_Comm comm, const FemParameters& params, const Grading
       bulk_(mesh_, params_.plate.youngsModulus, params_.plate.poissonRatio, params_.plate.density, params_.bulkLinear,
             params_.bulkQuadratic, grading),
       contact_(mesh_, PenaltyStiffness{params_.kn, params_.kt}, params_.plate.muStatic, params_.plate.muKinetic,
-               params_.vC, grading, params_.slipLength, params_.slipHealingOnly),
+               params_.frictionLaw, grading, params_.slipLength, params_.slipHealingOnly),
       top_(mesh_, params_.plate.pressure, params_.rampTime, params_.plate.velocity, params_.plate.slidingAngle,
            pressureShapeOf(grading, params_)) {
   stableDt_ = fem::stableTimeStep(params_, grading_);
@@ -76,7 +76,7 @@ void PlateModel::rhs(double t, Vec X, Vec F) {
     if (params_.contactMethod == ContactMethod::Kinematic)
       totals = contact_.addKinematicForce(X, F, mass_.perBlock(), damping, dt_);
     else
-      totals = contact_.addForce(X, F);
+      totals = contact_.addForce(X, F, dt_);
     GF_CALL(PetscLogEventEnd(events.contact, 0, 0, 0, 0));
   }
   const std::vector<double>& inverseMass = mass_.inversePerBlock();

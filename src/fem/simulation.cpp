@@ -66,6 +66,7 @@ public:
     GF_CALL(TSGetSolution(ts, &state));
     if (r_.steps % q_.monitorEvery != 0) monitor_->check(r_.steps, t, state);  // the final state too
     r_.friction = history_.summary();
+    r_.resolution = checkInterfaceResolution(model_, r_.friction.peakTime);
     r_.energyTime = std::move(energyRecord.time);
     r_.energy = std::move(energyRecord.energy);
     r_.energyIn = std::move(energyRecord.energyIn);
@@ -188,6 +189,7 @@ private:
     const double mu = history_.observe(tSliding, totals.fx, totals.fy, totals.slip > 0,
                                        totals.everSlipped == totals.nodes);
     sample_.mu = mu;
+    if (weakensOverSlip_) model_.recordWeakening(tSliding);
     // The damping of the sliding plate starts at the confirmed peak (mu_s is then the undamped
     // run's), or with -fem_peak_damping_start at the first drop of mu after the first slip or at
     // once (study options: they can damp the peak).
@@ -218,6 +220,7 @@ private:
   FrictionHistory history_;
   Sample sample_;
   double wall0_ = 0;
+  bool weakensOverSlip_ = q_.frictionLaw.name == "state";  // the process zone is measured
 };
 
 }  // namespace

@@ -4,6 +4,7 @@
 #include "gradfric/core/input_error.hpp"
 #include "gradfric/core/run_limits.hpp"
 #include "gradfric/physics/field_options.hpp"
+#include "gradfric/physics/friction_law_options.hpp"
 #include "gradfric/physics/friction_options.hpp"
 #include "gradfric/physics/stability.hpp"
 #include "gradfric/physics/friction_laws.hpp"
@@ -28,12 +29,7 @@ Parameters readParameters(MPI_Comm comm, RunParameters* record, const Plate& pla
                             "mass layer thickness l_z: block mass rho l_z l^2, slider K_s = G l^2/l_z (paper: 0.057 mm)");
   p.sigmaStatic = o.real("sigma_s", p.sigmaStatic, "1", "relative standard deviation of the local mu_s (0: no dispersion)");
   p.sigmaKinetic = o.real("sigma_k", p.sigmaKinetic, "1", "relative standard deviation of the local mu_k (0: no dispersion)");
-  p.frictionLaw.name = o.choice("friction_law", p.frictionLaw.name, frictionLawNames(),
-                                "friction law of every block: coulomb (static mu_s, kinetic mu_k: the paper's SBM) or "
-                                "exponential (the paper's Eq. 1, the FEM's law: mu_k + (mu_s - mu_k) exp(-v/v_c))");
-  p.frictionLaw.criticalVelocity = o.real("v_c", p.frictionLaw.criticalVelocity, "m/s",
-                                          "critical velocity v_c of the exponential law (used with -sbm_friction_law exponential)");
-  o.requirePositive("v_c", p.frictionLaw.criticalVelocity, "m/s");
+  p.frictionLaw = readFrictionLaw(o.comm(), record, p.frictionLaw, false);  // -friction_law, shared with the FEM
   p.blocksPerSide = static_cast<int>(o.integer("N", p.blocksPerSide, 2, 4096, "1", "blocks per side N_b"));
   const std::string integrator = o.choice("integrator", "verlet", {"rk4", "verlet"},
                                           "time integrator, fixed step: classical RK4 (4 force evaluations a step) or velocity Verlet (1)");

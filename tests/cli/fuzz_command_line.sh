@@ -196,7 +196,11 @@ fem)
   run 2 -fem_ramp_time "$F" -fem_ramp_time inf
   run 2 -fem_kn "$F" -fem_kn 1e300
   run 2 -fem_kt "$F" -fem_kt -1
-  run 2 -fem_v_c "$F" -fem_v_c nan
+  run 2 -friction_v_c "$F" -friction_v_c nan
+  run 2 -friction_d_c "$F" -friction_d_c 0
+  run 2 -friction_d_c "$F" -friction_law exponential -friction_d_c 1e-8
+  run 2 -fem_slip_length "$F" -fem_slip_length 1e-8
+  run 2 -fem_v_c "$F" -fem_v_c 1e-4
   run 2 -fem_monitor_factor "$F" -fem_monitor_factor inf
   run 2 -fem_snapshot_times "$F" -fem_snapshot_times 0,inf
   run 2 -fem_partitioner "$F" -fem_partitioner parmetis

@@ -322,7 +322,7 @@ TEST(FemContactSliding, DampingAfterThePeakLeavesMuStaticBitForBit) {
               "mu_s %.6f with and without the damping of the sliding plate (from %.4e s, %zu identical steps before "
               "it, %zu differing after); mu_k %.5f vs %.5f undamped (Eq. 1: %.5f)\n",
               a.friction.muStatic, a.peakDampingStart, same, differ, a.friction.muKinetic, b.friction.muKinetic,
-              q.plate.muKinetic + (q.plate.muStatic - q.plate.muKinetic) * std::exp(-q.plate.velocity / q.vC));
+              q.plate.muKinetic + (q.plate.muStatic - q.plate.muKinetic) * std::exp(-q.plate.velocity / q.frictionLaw.criticalVelocity));
   EXPECT_GT(same, 100u);
   EXPECT_GT(differ, 100u) << "the damping acts after the peak";
   // No drag in steady sliding: the damping force at the slider's velocity is zero.

@@ -38,7 +38,7 @@ std::vector<HardCase> numericsCases() {
                      q.measurement.kineticWidth *= stretch;
                      q.measurement.peakHold *= stretch;
                    }});
-  cases.push_back({"tiny_v_c_1e-7", [](FemParameters& q, Grading&) { q.vC = 1e-7; }});
+  cases.push_back({"tiny_v_c_1e-7", [](FemParameters& q, Grading&) { q.frictionLaw.criticalVelocity = 1e-7; }});
   cases.push_back({"one_element_thick", [](FemParameters& q, Grading&) {
                      q.nz = 1;
                      q.kn = q.kt = formerDefaultPenalty(q);

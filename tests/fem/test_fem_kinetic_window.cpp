@@ -23,7 +23,7 @@ FemRunResult run(const FemParameters& q) {
 }
 
 double equationOne(const FemParameters& q) {
-  return q.plate.muKinetic + (q.plate.muStatic - q.plate.muKinetic) * std::exp(-q.plate.velocity / q.vC);
+  return q.plate.muKinetic + (q.plate.muStatic - q.plate.muKinetic) * std::exp(-q.plate.velocity / q.frictionLaw.criticalVelocity);
 }
 
 }  // namespace

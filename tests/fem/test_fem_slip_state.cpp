@@ -1,5 +1,5 @@
-// The friction law's slip length in the FEM contact (physics/slip_state_law.hpp,
-// -fem_slip_length; docs/accuracy_fem.md "Steady sliding after the peak"):
+// The friction memory of Eq. 1 in the FEM contact (physics/slip_state_law.hpp,
+// -friction_law exponential -fem_slip_length; docs/accuracy_fem.md "Steady sliding after the peak"):
 // * node by node, without a slip length the contact forces are the plain law's bit for bit, with
 //   both contact methods;
 // * with constant friction (mu_s = mu_k) the slip state cannot change anything: the whole run is
@@ -25,6 +25,14 @@ using namespace gradfric;
 using namespace gradfric::fem;
 
 namespace {
+
+// The friction memory belongs to the stateless laws: these runs take Eq. 1 itself (the state law,
+// the default, has its own tests: test_fem_state_law.cpp).
+FemParameters memoryCoarse(int nx, int ny, int nz) {
+  FemParameters q = test::coarse(nx, ny, nz);
+  q.frictionLaw.name = "exponential";
+  return q;
+}
 
 ExponentialVelocityWeakening equationOne() {
   FrictionSites sites{SiteLayout::PerSite, 2, {1.0, 0.9}, {0.6, 0.55}};
@@ -84,7 +92,7 @@ TEST(FemSlipState, WithoutSlipLengthTheContactIsThePlainLawBitForBit) {
 }
 
 TEST(FemSlipState, WithConstantFrictionTheSlipStateChangesNothing) {
-  FemParameters q = test::coarse(10, 10, 5);
+  FemParameters q = memoryCoarse(10, 10, 5);
   q.contactMethod = ContactMethod::Kinematic;
   q.plate.muStatic = q.plate.muKinetic = 1.0;
   FemParameters withState = q, without = q;
@@ -97,7 +105,7 @@ TEST(FemSlipState, WithConstantFrictionTheSlipStateChangesNothing) {
 }
 
 TEST(FemSlipState, TheDefaultSlipLengthLeavesMuStaticBitForBit) {
-  FemParameters q = test::coarse(10, 10, 5);
+  FemParameters q = memoryCoarse(10, 10, 5);
   FemParameters without = q;
   without.slipLength = 0.0;
   ASSERT_TRUE(q.slipHealingOnly && q.slipLength > 0.0) << "the default: healing only, over a slip length";
@@ -116,12 +124,12 @@ TEST(FemSlipState, TheDefaultSlipLengthLeavesMuStaticBitForBit) {
 
 TEST(FemSlipState, NonGradedMuKineticIsEquationOneAtTheSliderSpeed) {
   for (ContactMethod method : {ContactMethod::Kinematic, ContactMethod::Penalty}) {
-    FemParameters q = test::coarse(10, 10, 5);  // the default slip length
+    FemParameters q = memoryCoarse(10, 10, 5);  // the default slip length
     q.contactMethod = method;
     q.stopWhenKnown = false;
     const double ts = q.eq2PeakTime();
     q.slideTime = 5.0 * ts;
-    const double eq1 = q.plate.muKinetic + (q.plate.muStatic - q.plate.muKinetic) * std::exp(-q.plate.velocity / q.vC);
+    const double eq1 = q.plate.muKinetic + (q.plate.muStatic - q.plate.muKinetic) * std::exp(-q.plate.velocity / q.frictionLaw.criticalVelocity);
     ASSERT_GT(q.slipLength, 0.0) << "a slip length is on by default";
     const FemRunResult r = run(q);
     ASSERT_TRUE(r.friction.peakConfirmed);

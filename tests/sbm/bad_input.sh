@@ -38,9 +38,12 @@ expect -plate_v -plate_v -0.001
 expect -sbm_dt -sbm_dt 0
 expect -sbm_dt -sbm_dt 1e-3
 expect -sbm_N -sbm_N 1
-expect -sbm_friction_law -sbm_friction_law rate_and_state
-expect -sbm_v_c -sbm_friction_law exponential -sbm_v_c 0
-expect -sbm_v_c -sbm_v_c -1e-4
+expect -friction_law -friction_law rate_and_state
+expect -friction_law -friction_law state
+expect -friction_v_c -friction_law exponential -friction_v_c 0
+expect -friction_v_c -friction_v_c -1e-4
+expect -sbm_friction_law -sbm_friction_law exponential
+expect -sbm_v_c -sbm_v_c 1e-4
 expect -plate_mu_k -plate_mu_s 0.5 -plate_mu_k 0.6
 expect -sbm_sigma_s -sbm_sigma_s -0.01
 expect -sbm_sigma_k -sbm_sigma_k -0.2

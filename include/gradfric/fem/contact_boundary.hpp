@@ -6,20 +6,16 @@
 // which the TS post-step calls once per accepted step; commit() also adds the work the contact
 // forces did on the plate over the step (trapezoidal in the displacement), for the energy balance.
 #include "gradfric/fem/contact_kinematic.hpp"
+#include "gradfric/fem/contact_law.hpp"
 #include "gradfric/fem/contact_penalty.hpp"
 #include "gradfric/fem/sliding_damping.hpp"
 #include "gradfric/fem/plate_mesh.hpp"
-#include "gradfric/physics/exponential_law.hpp"
 #include "gradfric/physics/grading.hpp"
-#include "gradfric/physics/slip_state_law.hpp"
+#include "gradfric/physics/process_zone.hpp"
 
 #include <vector>
 
 namespace gradfric::fem {
-
-// The friction law of the contact boundary: paper Eq. 1, with the per-node slip state of
-// -fem_slip_length (slip_state_law.hpp; D_c = 0: Eq. 1 itself).
-using ContactLaw = WithSlipLength<ExponentialVelocityWeakening>;
 
 // Totals of one evaluation on this rank (ContactBoundary) or summed over ranks (PlateModel).
 struct ContactTotals {
@@ -40,34 +36,46 @@ public:
     double anchorX = 0, anchorY = 0, pendingX = 0, pendingY = 0;
     ContactState state = ContactState::Open, pendingState = ContactState::Open;
     bool everSlipped = false;
+    double weakenStart = -1, weakenEnd = -1;  // times its strength fell 10 % and 90 % of the way to mu_k
     double pressure = 0, tx = 0, ty = 0;  // of the last evaluation
     double force[3] = {0, 0, 0}, u[3] = {0, 0, 0};  // committed contact force and displacement
     double pendingForce[3] = {0, 0, 0}, pendingU[3] = {0, 0, 0};
   };
 
   // muStatic, muKinetic: the plate's mean coefficients, graded by grading's friction factor;
-  // slipLength: D_c of the nodes' slip state [m] (0: Eq. 1 without state); healingOnly: Eq. 1's
-  // weakening at once, only the healing over D_c (slip_state_law.hpp).
+  // law: the friction law of every node (contact_law.hpp); memoryLength: with a stateless law, the
+  // slip length of its friction memory [m] (0: the law without state); healingOnly: the memory's
+  // weakening at once, only the healing over it (slip_state_law.hpp).
   ContactBoundary(const PlateMesh& mesh, const PenaltyStiffness& stiffness, double muStatic, double muKinetic,
-                  double criticalVelocity, const Grading& grading, double slipLength = 0.0,
+                  const FrictionLawSettings& law, const Grading& grading, double memoryLength = 0.0,
                   bool healingOnly = false);
 
   // Adds the contact force of the state X (global) to the force slots of F and returns the
-  // totals of this rank; the new contact state is pending.
-  ContactTotals addForce(Vec X, Vec F);
+  // totals of this rank; the new contact state is pending. dt: the step (the law's state evolves
+  // over it).
+  ContactTotals addForce(Vec X, Vec F, double dt);
   // Kinematic contact (gfverlet): F's force slots hold every other force; the acceleration the
   // RHS will return is F / m plus the mass-proportional damping (mass per block); dt the step.
   ContactTotals addKinematicForce(Vec X, Vec F, const std::vector<double>& mass, const SlidingDamping& damping,
                                   double dt);
   void commit();  // accept the pending contact state (after a step)
-  void resetSlipRecord();  // from now on, everSlipped counts slips after this point
+  void resetSlipRecord();  // from now on, everSlipped counts slips after this point (and the slip per step)
+  // With a law that weakens over a slip (the state law): notes, at time t, the nodes whose committed
+  // strength has fallen 10 % and 90 % of the way from mu_s to mu_k, for processZone().
+  void recordWeakening(double t);
+  // The process zone measured from those times over the nodes that started weakening by
+  // latestStart (physics/process_zone.hpp); collective.
+  ProcessZone processZone(double latestStart) const;
+  // The largest slip of a node in one step since resetSlipRecord, over ranks [m].
+  double largestSlipPerStep() const;
   // Work of the contact forces on the plate over the committed steps, summed over ranks [J]
   // (negative: friction and the inelastic normal impacts dissipate; with penalties it includes
   // the energy the springs store).
   double work() const;
 
   const std::vector<Node>& nodes() const { return nodes_; }
-  const ContactLaw& law() const { return law_; }  // its per-node slip state (with -fem_slip_length)
+  const ContactLaw& law() const { return law_; }  // its per-node state
+  double committedStrength(int site) const;      // the coefficient of node `site` at its committed state
   double largestStaticCoefficient() const;  // over the nodes and ranks
   // Mean penetration and its spread over the bottom nodes, over ranks (for tests).
   void penetration(Vec X, double* mean, double* minimum, double* maximum) const;
@@ -78,12 +86,12 @@ private:
   std::vector<Node> nodes_;
   ContactLaw law_;  // one site per node: its local coefficients (area-weighted over its faces' bands)
   double work_ = 0;  // this rank's share of work()
+  double largestSlipStep_ = 0;  // this rank's, since resetSlipRecord
   // Adds the evaluation's force on node n (at displacement xb) to its block's right-hand side fb and
   // to the totals, and keeps it pending until commit.
   void applyNodeForce(Node& n, const PetscScalar* xb, PetscScalar* fb, double fx, double fy, double fz,
                       ContactTotals& totals);
   static double tangentialStep(const Node& n, const PetscScalar* xb);
-  void keepSlipState(int site, ContactState state, double strength);
 };
 
 }  // namespace gradfric::fem

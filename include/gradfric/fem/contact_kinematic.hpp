@@ -29,7 +29,7 @@ struct KinematicContactForce {
 // v: its velocity (half step); aFree: its acceleration from every other force; slip: its
 // tangential displacement since the last commit (a slip-length law's state evolves over it).
 template <class Law>
-inline KinematicContactForce kinematicContact(const Law& law, int site, double mass, double dt, double gap,
+inline KinematicContactForce kinematicContact(Law& law, int site, double mass, double dt, double gap,
                                               const double v[3], const double aFree[3], double slip = 0.0) {
   KinematicContactForce r;
   const double predicted = gap + dt * (v[2] + dt * aFree[2]);
@@ -42,7 +42,7 @@ inline KinematicContactForce kinematicContact(const Law& law, int site, double m
   // sticks while the static threshold holds; a sliding node stops (sticks) only if the friction it
   // feels can stop it within the step, else it slides on.
   const double slipSpeed = std::sqrt(v[0] * v[0] + v[1] * v[1]);
-  r.strength = contactStrength(law, site, slipSpeed, slip, true);
+  r.strength = contactStrength(law, site, slipSpeed, slip, dt, true);
   const double strength = r.strength * r.fn;
   if (StaticThreshold::holds(stickSquared, strength)) {
     r.fx = stickX;

@@ -6,6 +6,7 @@
 // its sites the bottom nodes, its strengths the nodes' coefficients mu_s,i, mu_k,i.
 #include "gradfric/physics/friction_laws.hpp"
 #include "gradfric/physics/slip_state_law.hpp"
+#include "gradfric/physics/state_weakening_law.hpp"
 
 #include <cmath>
 
@@ -29,16 +30,22 @@ struct ContactTraction {
 
 // The friction coefficient of a contact node: with a plain law, a sticking node holds up to its
 // static strength and a sliding one feels the law's sliding strength at its speed; with a slip
-// length (slip_state_law.hpp) the node's state after slipping `slip` [m] since the last commit.
+// length (slip_state_law.hpp) the node's state after slipping `slip` [m] since the last commit;
+// with a state law (state_weakening_law.hpp) the strength at the node's new state after slipping
+// `slip` over the step dt (0 while it sticks: the state heals), which is kept pending.
 template <class Law>
-inline double contactStrength(const Law& law, int site, double speed, double /*slip*/, bool sliding) {
+inline double contactStrength(const Law& law, int site, double speed, double /*slip*/, double /*dt*/, bool sliding) {
   const int slot = law.sites.slotOfSite(site);
   const double staticStrength = law.sites.staticAt(slot);
   return sliding ? law.slidingStrength(staticStrength, law.sites.kineticAt(slot), speed) : staticStrength;
 }
 template <class Law>
-inline double contactStrength(const WithSlipLength<Law>& law, int site, double speed, double slip, bool sliding) {
+inline double contactStrength(const WithSlipLength<Law>& law, int site, double speed, double slip, double /*dt*/,
+                              bool sliding) {
   return law.strengthAfter(site, speed, slip, sliding);
+}
+inline double contactStrength(StateWeakening& law, int site, double /*speed*/, double slip, double dt, bool sliding) {
+  return law.advance(site, sliding ? slip : 0.0, dt);
 }
 
 // site: the node's index among the law's sites; gap: z of the node (negative = penetration);
@@ -47,11 +54,11 @@ inline double contactStrength(const WithSlipLength<Law>& law, int site, double s
 // threshold mu_s p (its velocity is only elastic motion of the penalty spring); a node that was
 // slipping feels the law's sliding strength at its tangential speed, the slip rate. slip: the
 // node's tangential displacement since the last commit when it was slipping (a slip-length law's
-// state evolves over it; plain laws ignore it).
+// state evolves over it; plain laws ignore it); dt: the step (a state law's evolution).
 template <class Law>
-inline ContactTraction penaltyContact(const PenaltyStiffness& k, const Law& law, int site, double gap, double ux,
+inline ContactTraction penaltyContact(const PenaltyStiffness& k, Law& law, int site, double gap, double ux,
                                       double uy, double anchorX, double anchorY, double vx, double vy,
-                                      bool wasSlipping, double slip = 0.0) {
+                                      bool wasSlipping, double slip = 0.0, double dt = 0.0) {
   ContactTraction r;
   if (gap >= 0.0) {  // open: no traction, the elastic slip is released
     r.anchorX = ux;
@@ -62,7 +69,7 @@ inline ContactTraction penaltyContact(const PenaltyStiffness& k, const Law& law,
   const double trialX = -k.tangential * (ux - anchorX);
   const double trialY = -k.tangential * (uy - anchorY);
   const double trial = std::sqrt(trialX * trialX + trialY * trialY);
-  const double strength = contactStrength(law, site, std::sqrt(vx * vx + vy * vy), slip, wasSlipping);
+  const double strength = contactStrength(law, site, std::sqrt(vx * vx + vy * vy), slip, dt, wasSlipping);
   r.strength = strength;
   const double cap = strength * r.pressure;
   if (trial <= cap) {

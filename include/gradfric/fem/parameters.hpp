@@ -3,6 +3,7 @@
 #include "gradfric/core/options.hpp"
 #include "gradfric/fem/hex_element.hpp"
 #include "gradfric/physics/friction_history.hpp"
+#include "gradfric/physics/friction_laws_settings.hpp"
 #include "gradfric/physics/plate.hpp"
 
 #include <string>
@@ -37,15 +38,18 @@ struct FemParameters {
   // The physical plate (-plate_ options, shared with the spring-block model): size L, thickness
   // H, material, pressure, sliding speed and angle, mean local mu_s and mu_k (graded by -grading_).
   Plate plate;
-  // Friction law (paper Eq. 1)
-  double vC = 1e-4;      // critical velocity v_c [m/s]
-  // Slip length D_c of the nodes' friction state [m] (physics/slip_state_law.hpp). By default
-  // (healing) a node's strength drops with its slip rate at once as Eq. 1 says, but regains mu_s
-  // as it slows down only over a slip D_c, so a node that stops keeps its kinetic strength: this
-  // ends Eq. 1's node-scale stick-slip after the peak (steady mu = Eq. 1 at v) and leaves mu_s
-  // unchanged; slip: Ruina's slip law, weakening over D_c too (raises mu_s by 2-3 % at 1e-8 m).
-  // 0: Eq. 1 alone, a stopped node back at mu_s (docs/accuracy_fem.md, "Steady sliding after the
-  // peak": 1e-9 m leaves 2.2-2.4 % of stick-slip on 10 x 10 x 5, 1e-8 and 1e-7 none).
+  // Friction law of the contact nodes (-friction_law, shared with the spring-block model): by
+  // default the state law (physics/state_weakening_law.hpp), Eq. 1 as its steady state with the
+  // weakening length D_c that makes mu_s converge under refinement (docs/accuracy_fem.md, "The
+  // friction law"); exponential is Eq. 1 itself, coulomb the SBM's law.
+  FrictionLawSettings frictionLaw = {"state", 1e-4, 5e-8};
+  // With a stateless law (exponential, coulomb): the friction memory, a slip length over which a
+  // node's strength follows the law (physics/slip_state_law.hpp). By default (healing) a node's
+  // strength drops with its slip rate at once as Eq. 1 says, but regains mu_s as it slows down
+  // only over a slip D_c, so a node that stops keeps its kinetic strength: this ends Eq. 1's
+  // node-scale stick-slip after the peak; slip: Ruina's slip law, weakening over D_c too. 0: the
+  // law alone, a stopped node back at mu_s. Neither gives Eq. 1 a length that converges mu_s
+  // (docs/accuracy_fem.md): the state law does.
   double slipLength = 1e-8;
   bool slipHealingOnly = true;  // -fem_slip_evolution healing (true) | slip
   bool contact = true;   // false: free bottom face (-fem_contact none, testing)
@@ -124,7 +128,7 @@ struct FemParameters {
 // the slope error they carry) and the damping of the sliding step.
 std::string describeContact(const FemParameters& q);
 std::string describeDamping(const FemParameters& q);
-std::string describeFrictionState(const FemParameters& q);  // -fem_slip_length in words
+std::string describeFrictionState(const FemParameters& q);  // the law's state (D_c, or -fem_slip_length) in words
 
 // Reads and validates every -fem_ option (derived defaults recorded as such).
 FemParameters readFemParameters(MPI_Comm comm, RunParameters* record, const Plate& plate);

@@ -4,6 +4,7 @@
 // models: peak confirmed after a drop or a hold once every bottom node slipped or lost contact).
 // Driven by one TSSolve (see simulation.cpp for the callbacks).
 #include "gradfric/fem/energy_monitor.hpp"
+#include "gradfric/fem/interface_resolution.hpp"
 #include "gradfric/fem/plate_model.hpp"
 #include "gradfric/fem/plate_ts.hpp"
 #include "gradfric/physics/friction_history.hpp"
@@ -40,6 +41,9 @@ struct FemRunResult {
   // At the same samples: the energy the contact forces and the damping took from the plate [J]
   // (PlateModel::dissipatedEnergy); energy + dissipated = energy put in closes the balance.
   std::vector<double> energyDissipated;
+  // Whether the law's weakening length was resolved (D_c, kappa, elastic slip, slip per step,
+  // the measured process zone): printed and stored next to mu_s.
+  InterfaceResolution resolution;
 };
 
 // Called after each step of step 2 with the time since the start of sliding and the state.

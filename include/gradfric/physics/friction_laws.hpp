@@ -1,10 +1,14 @@
 #pragma once
 // The registry of friction laws. A new law is one header (see coulomb_law.hpp) and one entry in
 // GF_FRICTION_LAWS: the option's list of choices, the dispatch to the templated kernels and
-// their explicit instantiations all follow from this list.
+// their explicit instantiations all follow from this list. Laws with a per-site state variable
+// (state_weakening_law.hpp) are listed in GF_STATE_FRICTION_LAWS: the FEM contact takes both
+// lists (fem/contact_law.hpp); the spring-block kernels, which keep no per-block friction state,
+// take the first.
 #include "gradfric/physics/coulomb_law.hpp"
 #include "gradfric/physics/exponential_law.hpp"
 #include "gradfric/physics/friction_laws_settings.hpp"
+#include "gradfric/physics/state_weakening_law.hpp"
 
 #include <stdexcept>
 #include <string>
@@ -14,12 +18,19 @@
   X(CoulombStickSlip)       \
   X(ExponentialVelocityWeakening)
 
+#define GF_STATE_FRICTION_LAWS(X) \
+  X(StateWeakening)
+
 namespace gradfric {
 
-inline std::vector<std::string> frictionLawNames() {
+// withState: also the laws with a per-site state (the FEM's choices).
+inline std::vector<std::string> frictionLawNames(bool withState = false) {
   std::vector<std::string> names;
 #define GF_LAW_NAME(Law) names.push_back(Law::name);
   GF_FRICTION_LAWS(GF_LAW_NAME)
+  if (withState) {
+    GF_STATE_FRICTION_LAWS(GF_LAW_NAME)
+  }
 #undef GF_LAW_NAME
   return names;
 }
@@ -39,6 +50,7 @@ inline std::string describeFrictionLaw(const FrictionLawSettings& settings) {
 #define GF_LAW_DESCRIBE(Law) \
   if (settings.name == Law::name) return Law::describe(settings);
   GF_FRICTION_LAWS(GF_LAW_DESCRIBE)
+  GF_STATE_FRICTION_LAWS(GF_LAW_DESCRIBE)
 #undef GF_LAW_DESCRIBE
   throw std::invalid_argument("unknown friction law '" + settings.name + "'");
 }

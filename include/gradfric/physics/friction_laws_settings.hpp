@@ -1,12 +1,14 @@
 #pragma once
-// Which friction law a model uses and the laws' scalar parameters (-sbm_friction_law, -sbm_v_c).
+// Which friction law a model uses and the laws' scalar parameters (-friction_law, -friction_v_c,
+// -friction_d_c: one reader for both models, friction_law_options.hpp).
 #include <string>
 
 namespace gradfric {
 
 struct FrictionLawSettings {
   std::string name = "coulomb";   // one of frictionLawNames() (friction_laws.hpp)
-  double criticalVelocity = 1e-4;  // v_c of the exponential law [m/s] (the FEM's default)
+  double criticalVelocity = 1e-4;  // v_c of the exponential and state laws [m/s]
+  double slipLength = 5e-8;        // D_c of the state law [m] (state_weakening_law.hpp)
 };
 
 }  // namespace gradfric

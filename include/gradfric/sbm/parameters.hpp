@@ -23,7 +23,7 @@ struct Parameters {
   // Relative dispersion of the local friction around the plate's (graded) means
   double sigmaStatic = 0.028;   // relative standard deviation of mu_s,i
   double sigmaKinetic = 0.028;  // relative standard deviation of mu_k,i
-  // The friction law of every block (-sbm_friction_law, -sbm_v_c): Coulomb, the paper's SBM, or
+  // The friction law of every block (-friction_law, -friction_v_c): Coulomb, the paper's SBM, or
   // the paper's Eq. 1, the FEM's law (physics/friction_laws.hpp).
   FrictionLawSettings frictionLaw;
   // Lattice and numerics

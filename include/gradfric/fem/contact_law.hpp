@@ -1,0 +1,77 @@
+#pragma once
+// The friction law of the contact boundary: any law of the registry (physics/friction_laws.hpp),
+// a stateless one wrapped with its optional friction memory (slip_state_law.hpp), or a law with its
+// own per-site state (state_weakening_law.hpp). One variant alternative per registered law, so a
+// new law reaches the FEM through its registry line; the contact loops are compiled per law
+// (std::visit once per evaluation, not per node). Pure arithmetic, no PETSc.
+#include "gradfric/fem/contact_penalty.hpp"
+#include "gradfric/physics/friction_laws.hpp"
+#include "gradfric/physics/slip_state_law.hpp"
+
+#include <cstddef>
+#include <stdexcept>
+#include <type_traits>
+#include <variant>
+
+namespace gradfric::fem {
+
+#define GF_CONTACT_MEMORY_LAW(Law) WithSlipLength<Law>,
+#define GF_CONTACT_STATE_LAW(Law) Law,
+// The trailing monostate only closes the list; it is never built.
+using ContactLaw =
+    std::variant<GF_FRICTION_LAWS(GF_CONTACT_MEMORY_LAW) GF_STATE_FRICTION_LAWS(GF_CONTACT_STATE_LAW) std::monostate>;
+#undef GF_CONTACT_MEMORY_LAW
+#undef GF_CONTACT_STATE_LAW
+
+// The law named in settings on these sites (siteCount of them); memoryLength, healingOnly: the
+// friction memory of a stateless law (-fem_slip_length, -fem_slip_evolution).
+inline ContactLaw makeContactLaw(const FrictionLawSettings& settings, FrictionSites sites, std::size_t siteCount,
+                                 double memoryLength, bool healingOnly) {
+#define GF_MAKE_MEMORY_LAW(Law)                                                                               \
+  if (settings.name == Law::name)                                                                             \
+    return ContactLaw(WithSlipLength<Law>::make(Law::make(std::move(sites), settings), memoryLength, siteCount, \
+                                                healingOnly));
+#define GF_MAKE_STATE_LAW(Law) \
+  if (settings.name == Law::name) return ContactLaw(Law::make(std::move(sites), settings, siteCount));
+  GF_FRICTION_LAWS(GF_MAKE_MEMORY_LAW)
+  GF_STATE_FRICTION_LAWS(GF_MAKE_STATE_LAW)
+#undef GF_MAKE_MEMORY_LAW
+#undef GF_MAKE_STATE_LAW
+  throw std::invalid_argument("unknown friction law '" + settings.name + "'");
+}
+
+// What the contact loops ask of every law, whatever its kind.
+template <class Law>
+const FrictionSites& sitesOf(const WithSlipLength<Law>& law) { return law.sites(); }
+inline const FrictionSites& sitesOf(const StateWeakening& law) { return law.sites; }
+template <class Law>
+bool hasSlipState(const WithSlipLength<Law>& law) { return law.hasState(); }
+inline bool hasSlipState(const StateWeakening&) { return true; }
+// The strength of a site at its committed state (mu_s for a site of a law without state).
+template <class Law>
+double committedStrength(const WithSlipLength<Law>& law, int site) {
+  return law.hasState() ? law.strength[site] : law.sites().staticAt(law.sites().slotOfSite(site));
+}
+inline double committedStrength(const StateWeakening& law, int site) { return law.strengthAt(site, law.state[site]); }
+// After an evaluation: the memory keeps the strength the node was evaluated with (an open node its
+// state); the state law has already kept its new state (contactStrength).
+template <class Law>
+void keepSlipState(WithSlipLength<Law>& law, int site, ContactState state, double strength) {
+  if (law.hasState()) law.setPending(site, state == ContactState::Open ? law.strength[site] : strength);
+}
+inline void keepSlipState(StateWeakening&, int, ContactState, double) {}
+
+// Calls visit(law) with the law the variant holds (visitors return nothing: they write their results).
+template <class Variant, class Visitor>
+void visitContactLaw(Variant& law, Visitor&& visit) {
+  std::visit(
+      [&](auto& held) {
+        if constexpr (std::is_same_v<std::decay_t<decltype(held)>, std::monostate>)
+          throw std::logic_error("contact law not built");
+        else
+          visit(held);
+      },
+      law);
+}
+
+}  // namespace gradfric::fem

@@ -1,0 +1,37 @@
+#pragma once
+// Is the friction law's weakening length D_c resolved by the run? (docs/accuracy_fem.md, "The
+// friction law".) Three conditions, checked from the run and printed next to mu_s:
+//  - the penalty's elastic slip mu_s p / k_t at most D_c / 10 (kinematic contact: none), so that the
+//    contact's compliance does not stand in for D_c;
+//  - the largest slip of a node in one step at most D_c / 5, so that the time step follows the
+//    weakening;
+//  - the process zone (measured up to the peak, physics/process_zone.hpp) spanning a median of at
+//    least 4 elements
+//    (Day et al. 2005; Dalguer & Day 2007).
+// Also the regime number kappa = G D_c / (H p (mu_s - mu_k)): the column stiffness of the layer
+// against the weakening rate; below 1 the onset is dynamic (fronts), above 1 it is smooth.
+#include "gradfric/physics/process_zone.hpp"
+
+#include <string>
+#include <vector>
+
+namespace gradfric::fem {
+
+class PlateModel;
+
+struct InterfaceResolution {
+  bool applies = false;  // a law with a weakening length (the state law)
+  double slipLength = 0, kappa = 0;
+  double elasticSlip = 0;  // mu_s,max p / k_t [m]; 0 with kinematic contact
+  double largestStepSlip = 0;
+  ProcessZone zone;
+  std::vector<std::string> violations;  // empty: resolved
+
+  std::string describe() const;  // one line: D_c, kappa, the three measures and the verdict
+};
+
+// After a run on model (collective); peakTime: of mu_s, after the start of sliding (the process
+// zone is measured where weakening started by then: the zone that decides mu_s).
+InterfaceResolution checkInterfaceResolution(const PlateModel& model, double peakTime);
+
+}  // namespace gradfric::fem
