@@ -105,7 +105,7 @@ void printPlan(MPI_Comm comm, const FemRun& run, const PlateModel& model, RunPar
     for (const auto& line : describeFields(*run.grading.fields)) PetscPrintf(comm, "  %s\n", line.c_str());
 }
 
-// The mu_k window used and its steadiness (docs/accuracy_fem.md, "The steady kinetic window").
+// The mu_k window used and its steadiness (docs/accuracy_fem_history.md, "The steady kinetic window").
 std::string describeKineticWindow(const FrictionSummary& f, const FrictionMeasurement& m, double load) {
   if (!m.kinetic || !f.kineticComplete) return "";
   char text[400];
@@ -200,7 +200,7 @@ int main(int argc, char** argv) {
     const FemRunResult result = runPlateExperiment(model, output.snapshotObserver(model));
     const double wall = MPI_Wtime() - wall0;
     record.add({"interface resolution", result.resolution.describe(), "",
-                "D_c, kappa = G D_c/(H p (mu_s - mu_k)), and whether D_c was resolved (docs/accuracy_fem.md)",
+                "D_c, kappa = G D_c/(H p (mu_s - mu_k)), and whether D_c was resolved (docs/accuracy_fem_history.md)",
                 OptionOrigin::Derived});
     output.writeHistory(model, result, record);
     output.finish();                                              // complete: renamed into place

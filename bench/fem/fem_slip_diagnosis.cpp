@@ -1,4 +1,4 @@
-// Node-scale diagnosis of the sliding after the peak (docs/accuracy_fem.md, "Steady sliding after
+// Node-scale diagnosis of the sliding after the peak (docs/accuracy_fem_history.md, "Steady sliding after
 // the peak"): one FEM run with the ordinary -plate_/-grading_/-fem_/-friction_ options; over a
 // window of the sliding step (-diag_from, -diag_to [s] after the confirmed peak, default the
 // kinetic window), every step, it counts the bottom nodes that stick, slip or are open, sorts the

@@ -149,13 +149,14 @@ double ContactBoundary::largestStaticCoefficient() const {
 }
 
 void ContactBoundary::commit() {
+  lastStepSlip_ = 0;
   visitContactLaw(law_, [](auto& law) { law.commit(); });
   for (Node& n : nodes_) {
     n.anchorX = n.pendingX;
     n.anchorY = n.pendingY;
     n.state = n.pendingState;
     if (n.pendingState == ContactState::Slip)
-      largestSlipStep_ = std::max(largestSlipStep_, std::hypot(n.pendingU[0] - n.u[0], n.pendingU[1] - n.u[1]));
+      lastStepSlip_ = std::max(lastStepSlip_, std::hypot(n.pendingU[0] - n.u[0], n.pendingU[1] - n.u[1]));
     for (int d = 0; d < 3; ++d) {
       work_ += 0.5 * (n.force[d] + n.pendingForce[d]) * (n.pendingU[d] - n.u[d]);
       n.force[d] = n.pendingForce[d];
@@ -167,10 +168,11 @@ void ContactBoundary::commit() {
 
 void ContactBoundary::resetSlipRecord() {
   for (Node& n : nodes_) n.everSlipped = false;
-  largestSlipStep_ = 0;
+  slipRecord_.clear();
 }
 
 void ContactBoundary::recordWeakening(double t) {
+  if (lastStepSlip_ > (slipRecord_.empty() ? 0.0 : slipRecord_.back().second)) slipRecord_.push_back({t, lastStepSlip_});
   visitContactLaw(law_, [&](const auto& law) {
     const FrictionSites& sites = sitesOf(law);
     for (std::size_t site = 0; site < nodes_.size(); ++site) {
@@ -219,9 +221,11 @@ ProcessZone ContactBoundary::processZone(double latestStart) const {
   return ProcessZone{static_cast<int>(result[0]), result[1], result[2], result[3], result[4]};
 }
 
-double ContactBoundary::largestSlipPerStep() const {
-  double global = 0;
-  GF_CALL_MPI(MPI_Allreduce(&largestSlipStep_, &global, 1, MPI_DOUBLE, MPI_MAX, comm_));
+double ContactBoundary::largestSlipPerStep(double until) const {
+  double local = 0, global = 0;
+  for (const auto& [t, largest] : slipRecord_)
+    if (t <= until) local = largest;
+  GF_CALL_MPI(MPI_Allreduce(&local, &global, 1, MPI_DOUBLE, MPI_MAX, comm_));
   return global;
 }
 

@@ -16,7 +16,7 @@ InterfaceResolution checkInterfaceResolution(const PlateModel& model, double pea
   r.kappa = plate.shearModulus() * r.slipLength / (plate.thickness * plate.pressure * (plate.muStatic - plate.muKinetic));
   if (q.contactMethod == ContactMethod::Penalty)
     r.elasticSlip = model.contact().largestStaticCoefficient() * plate.pressure / q.kt;
-  r.largestStepSlip = model.contact().largestSlipPerStep();
+  r.largestStepSlip = model.contact().largestSlipPerStep(peakTime);
   r.zone = model.contact().processZone(peakTime);
   char text[200];
   if (r.elasticSlip > r.slipLength / 10) {
@@ -25,7 +25,7 @@ InterfaceResolution checkInterfaceResolution(const PlateModel& model, double pea
     r.violations.push_back(text);
   }
   if (r.largestStepSlip > r.slipLength / 5) {
-    std::snprintf(text, sizeof text, "slip per step up to %.3g m > D_c/5 (lower -fem_dt_safety)", r.largestStepSlip);
+    std::snprintf(text, sizeof text, "slip per step up to %.3g m > D_c/5 by the peak (lower -fem_dt_safety)", r.largestStepSlip);
     r.violations.push_back(text);
   }
   if (r.zone.nodes == 0) {
@@ -41,7 +41,7 @@ std::string InterfaceResolution::describe() const {
   if (!applies) return "no weakening length (law without D_c): mu_s does not converge under refinement";
   char text[400];
   std::snprintf(text, sizeof text,
-                "D_c %.3g m, kappa %.3g; elastic slip %.2g D_c, slip per step <= %.2g D_c, process zone %.3g m "
+                "D_c %.3g m, kappa %.3g; elastic slip %.2g D_c, slip per step <= %.2g D_c (to the peak), process zone %.3g m "
                 "(median, %.2g elements; 10th percentile %.2g elements, %d nodes)",
                 slipLength, kappa, elasticSlip / slipLength, largestStepSlip / slipLength, zone.median,
                 zone.medianElements, zone.lowElements, zone.nodes);

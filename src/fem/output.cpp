@@ -277,7 +277,7 @@ void OutputFiles::writeHistory(const PlateModel& model, const FemRunResult& r, c
       writeRealAttribute(results, "settled_normal_force", r.settledNormalForce);
       writeIntAttribute(results, "peak_confirmed", r.friction.peakConfirmed ? 1 : 0);
       writeIntAttribute(results, "kinetic_window_complete", r.friction.kineticComplete ? 1 : 0);
-      {  // the mu_k window used and its steadiness (docs/accuracy_fem.md, "The steady kinetic window")
+      {  // the mu_k window used and its steadiness (docs/accuracy_fem_history.md, "The steady kinetic window")
         const FrictionSummary& f = r.friction;
         writeRealAttribute(results, "mu_k_window_start", f.kineticFrom);
         writeRealAttribute(results, "mu_k_window_end", f.kineticTo);

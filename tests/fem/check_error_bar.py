@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """The error bar of every FEM result (error_estimate.hpp): gradfric-fem prints it next to mu_s and
-mu_k and stores it in the results file. A studied mesh (25x25x5 at dt_safety 0.9: mesh 3.1 %,
-dt 1.0 %, contact 0.4 %) gets the measured bar; an unstudied one (6x6x2) says "not measured"."""
+stores it in the results file. A studied mesh (50x50x5 at the defaults) gets the bar that the
+study's rows (docs/fem_study.tsv) give, recomputed here independently (GCI of its ladder plus the
+thickness, dt and contact pairs); an unstudied one (6x6x2) says "not measured"."""
 import math
 import os
 import re
@@ -33,22 +34,49 @@ def fail(message, text=""):
     sys.exit(message + ("\n" + text if text else ""))
 
 
-out, path = run((25, 25, 5), ["-fem_dt_safety", "0.9"], "studied")
-line = re.search(r"mu_s \(global\) +([0-9.]+) \+- 4\.5 % \(discretisation: mesh 3\.1 %, dt 1\.0 %, contact 0\.4 %; "
-                 r"25x25x5 q1", out)
+def study():
+    rows = {}
+    with open(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "docs", "fem_study.tsv")) as f:
+        for line in f:
+            if line.startswith("#") or not line.strip():
+                continue
+            law, dc, prop, delta, n, nz, element, dts, contact, mu = line.split()
+            rows[(law, float(dc), prop, float(delta), int(n), int(nz), element, float(dts), contact)] = float(mu)
+    return rows
+
+
+def expected_bar(n):
+    rows = study()
+    key = lambda n, nz=5, dts=0.6, contact="penalty": ("state", 2.5e-8, "none", 0.0, n, nz, "q1", dts, contact)
+    f3, f2, f1 = rows[key(50)], rows[key(100)], rows[key(200)]
+    p = math.log((f2 - f3) / (f1 - f2)) / math.log(2)
+    ext = f1 + (f1 - f2) / (2 ** min(p, 2) - 1)
+    mesh = 1.25 * abs(rows[key(n)] - ext) / ext
+    ref = rows[key(100)]
+    thickness = 1.25 * abs(ref - rows[key(100, nz=10)]) / rows[key(100, nz=10)]
+    dt = 1.25 * abs(ref - rows[key(100, dts=0.3)]) / rows[key(100, dts=0.3)]
+    contact = 1.25 * abs(ref - rows[key(100, contact="kinematic")]) / rows[key(100, contact="kinematic")]
+    return mesh + thickness + dt + contact
+
+
+bar = expected_bar(50)
+out, path = run((50, 50, 5), [], "studied")
+line = re.search(r"mu_s \(global\) +([0-9.]+) \+- ([0-9.]+) % \(discretisation: mesh [0-9.]+ %, thickness", out)
 if not line:
     fail("studied mesh: no measured error bar next to mu_s", out)
-if not re.search(r"mu_k \(kinetic window\) +\S+ \(discretisation error not measured: mu_k's bar is its window's spread", out):
+if abs(float(line.group(2)) - 100 * bar) > 0.006:
+    fail("printed bar %s %% differs from the study's %.3f %%" % (line.group(2), 100 * bar))
+if not re.search(r"mu_k \(kinetic window\) +\S+ \(discretisation error not measured: ", out):
     fail("studied mesh: mu_k without its 'not measured'", out)
 with h5py.File(path, "r") as f:
     results = f["results"].attrs
     if abs(results["mu_s"] - float(line.group(1))) > 1e-6:
         fail("stored mu_s %r differs from the printed %s" % (results["mu_s"], line.group(1)))
-    if abs(results["mu_s_discretisation_error"] - 0.045) > 1e-12:
-        fail("stored mu_s_discretisation_error %r, expected 0.045" % results["mu_s_discretisation_error"])
+    if abs(results["mu_s_discretisation_error"] - bar) > 1e-9:
+        fail("stored mu_s_discretisation_error %r, expected %r" % (results["mu_s_discretisation_error"], bar))
     basis = results["mu_s_error_basis"]
     basis = basis.decode() if isinstance(basis, bytes) else str(basis)
-    if not basis.startswith("mesh 3.1 %, dt 1.0 %, contact 0.4 %; 25x25x5 q1"):
+    if not basis.startswith("mesh ") or "50x50/100/200 x 5" not in basis:
         fail("stored mu_s_error_basis %r" % basis)
     if not math.isnan(results["mu_k_discretisation_error"]):
         fail("stored mu_k_discretisation_error is not NaN")
@@ -56,7 +84,7 @@ with h5py.File(path, "r") as f:
         fail("mu_s_discretisation_error without its unit")
 
 out, path = run((6, 6, 2), [], "unstudied")
-if not re.search(r"mu_s \(global\) +[0-9.]+ \(discretisation error not measured: mesh 6x6x2 q1 not in the mesh study\)",
+if not re.search(r"mu_s \(global\) +[0-9.]+ \(discretisation error not measured: mesh 6x6x2 q1 \(non-graded\) not in the mesh study\)",
                  out):
     fail("unstudied mesh: no 'not measured' next to mu_s", out)
 with h5py.File(path, "r") as f:

@@ -48,9 +48,10 @@ TEST(FemParallel, OneAndTwoRanksGiveTheSameFrictionHistory) {
   // The tolerance is the round-off growth of this scene measured with bench_fem_roundoff (cells in
   // 5 shuffled orders, blocked kernel, the default, and dense): largest mu(t) difference between
   // two orders 3.2e-11 (dense 2.8e-11, dense vs blocked 4.0e-11); 1 vs 2 ranks gives 1.8e-11.
-  // 1e-10 is 2.5 x the largest of them: a real difference (a lost ghost contribution, a wrong
-  // partition of the contact totals) is many orders larger.
-  EXPECT_LT(worst, 1e-10);
+  // With the state law (the default since its weakening makes mu_s converge) the weakening
+  // amplifies round-off further: 1 vs 2 ranks gave 4.3e-10. 1e-9 is 2.3 x that: a real difference
+  // (a lost ghost contribution, a wrong partition of the contact totals) is many orders larger.
+  EXPECT_LT(worst, 1e-9);
   EXPECT_NEAR(one.friction.muStatic, two.friction.muStatic, 1e-10 * one.friction.muStatic);
 }
 

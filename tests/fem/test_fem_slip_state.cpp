@@ -1,5 +1,5 @@
 // The friction memory of Eq. 1 in the FEM contact (physics/slip_state_law.hpp,
-// -friction_law exponential -fem_slip_length; docs/accuracy_fem.md "Steady sliding after the peak"):
+// -friction_law exponential -fem_slip_length; docs/accuracy_fem_history.md "Steady sliding after the peak"):
 // * node by node, without a slip length the contact forces are the plain law's bit for bit, with
 //   both contact methods;
 // * with constant friction (mu_s = mu_k) the slip state cannot change anything: the whole run is

@@ -13,6 +13,7 @@
 #include "gradfric/physics/grading.hpp"
 #include "gradfric/physics/process_zone.hpp"
 
+#include <utility>
 #include <vector>
 
 namespace gradfric::fem {
@@ -66,8 +67,9 @@ public:
   // The process zone measured from those times over the nodes that started weakening by
   // latestStart (physics/process_zone.hpp); collective.
   ProcessZone processZone(double latestStart) const;
-  // The largest slip of a node in one step since resetSlipRecord, over ranks [m].
-  double largestSlipPerStep() const;
+  // The largest slip of a node in one step from resetSlipRecord to time `until` (as recordWeakening
+  // saw it), over ranks [m].
+  double largestSlipPerStep(double until) const;
   // Work of the contact forces on the plate over the committed steps, summed over ranks [J]
   // (negative: friction and the inelastic normal impacts dissipate; with penalties it includes
   // the energy the springs store).
@@ -86,7 +88,8 @@ private:
   std::vector<Node> nodes_;
   ContactLaw law_;  // one site per node: its local coefficients (area-weighted over its faces' bands)
   double work_ = 0;  // this rank's share of work()
-  double largestSlipStep_ = 0;  // this rank's, since resetSlipRecord
+  double lastStepSlip_ = 0;  // this rank's largest slip of a node in the last committed step
+  std::vector<std::pair<double, double>> slipRecord_;  // (time, running maximum) where it grew
   // Adds the evaluation's force on node n (at displacement xb) to its block's right-hand side fb and
   // to the totals, and keeps it pending until commit.
   void applyNodeForce(Node& n, const PetscScalar* xb, PetscScalar* fb, double fx, double fy, double fz,

@@ -1,8 +1,8 @@
 #pragma once
-// The error bar printed and stored with every FEM result: the discretisation error of mu_s (and
-// of mu_k) for the mesh, element, time step, contact and scene of the run, taken from the measured
-// studies of docs/accuracy_fem.md ("Error bar"), never extrapolated: outside the studied settings
-// the answer is "not measured".
+// The error bar printed and stored with every FEM result: the discretisation error of mu_s for the
+// mesh, thickness, time step, contact and scene of the run, computed from the convergence study's
+// measurements (docs/fem_study.tsv; docs/accuracy_fem.md, "Convergence of mu_s"): outside the
+// studied settings, or where the study shows no convergence, the answer is "not measured".
 #include "gradfric/fem/parameters.hpp"
 #include "gradfric/physics/grading.hpp"
 
@@ -17,7 +17,7 @@ struct ErrorTerm {
 };
 
 struct DiscretisationError {
-  ErrorTerm mesh, timeStep, contact;  // mu_s terms
+  ErrorTerm mesh, thickness, timeStep, contact;  // mu_s terms
   bool measured = false;              // every term measured
   double relative = 0;                // sum of the terms (a bound: their signs are not known)
   std::string basis;                  // the terms, or the first one not measured

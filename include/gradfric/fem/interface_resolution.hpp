@@ -3,8 +3,8 @@
 // friction law".) Three conditions, checked from the run and printed next to mu_s:
 //  - the penalty's elastic slip mu_s p / k_t at most D_c / 10 (kinematic contact: none), so that the
 //    contact's compliance does not stand in for D_c;
-//  - the largest slip of a node in one step at most D_c / 5, so that the time step follows the
-//    weakening;
+//  - the largest slip of a node in one step up to the peak at most D_c / 5, so that the time step
+//    follows the weakening that decides mu_s;
 //  - the process zone (measured up to the peak, physics/process_zone.hpp) spanning a median of at
 //    least 4 elements
 //    (Day et al. 2005; Dalguer & Day 2007).

@@ -14,7 +14,7 @@ namespace gradfric::fem {
 // A FrictionMeasurement whose times are all derived (negative placeholders, see resolveDerived).
 FrictionMeasurement derivedMeasurement();
 
-// The FEM's steady mu_k window (docs/accuracy_fem.md, "The steady kinetic window"): the window
+// The FEM's steady mu_k window (docs/accuracy_fem_history.md, "The steady kinetic window"): the window
 // (0.5-1.5 t_load after the peak at first) slides on until its quarters' means agree within this
 // fraction, starting at most kMukLatestDelay t_load after the peak.
 constexpr double kMukSteadyTolerance = 0.002;
@@ -29,11 +29,11 @@ struct FemParameters {
   // Mesh and geometry
   int nx = 100, ny = 100, nz = 5;
   ElementType element = ElementType::Trilinear;  // -fem_element q1 | q1i (docs/fem.md)
-  bool blockedKernel = true;  // -fem_kernel blocked | dense (mirror-basis kernel, docs/accuracy_fem.md "Cost")
+  bool blockedKernel = true;  // -fem_kernel blocked | dense (mirror-basis kernel, docs/accuracy_fem_history.md "Cost")
   // -fem_pressure_step static | dynamic: step 1 as the pressed equilibrium solved directly
   // (pressed_equilibrium.hpp; penalty contact only) or as the ramp and hold in time (the
   // default: CG's sums over ranks make the static state differ between rank counts by ~1e-14,
-  // which the post-peak history amplifies past the 1 vs 2 ranks tolerance; docs/accuracy_fem.md "Cost").
+  // which the post-peak history amplifies past the 1 vs 2 ranks tolerance; docs/accuracy_fem_history.md "Cost").
   bool staticPressureStep = false;
   // The physical plate (-plate_ options, shared with the spring-block model): size L, thickness
   // H, material, pressure, sliding speed and angle, mean local mu_s and mu_k (graded by -grading_).
@@ -42,19 +42,19 @@ struct FemParameters {
   // default the state law (physics/state_weakening_law.hpp), Eq. 1 as its steady state with the
   // weakening length D_c that makes mu_s converge under refinement (docs/accuracy_fem.md, "The
   // friction law"); exponential is Eq. 1 itself, coulomb the SBM's law.
-  FrictionLawSettings frictionLaw = {"state", 1e-4, 5e-8};
+  FrictionLawSettings frictionLaw = {"state", 1e-4, 2.5e-8};
   // With a stateless law (exponential, coulomb): the friction memory, a slip length over which a
   // node's strength follows the law (physics/slip_state_law.hpp). By default (healing) a node's
   // strength drops with its slip rate at once as Eq. 1 says, but regains mu_s as it slows down
   // only over a slip D_c, so a node that stops keeps its kinetic strength: this ends Eq. 1's
   // node-scale stick-slip after the peak; slip: Ruina's slip law, weakening over D_c too. 0: the
   // law alone, a stopped node back at mu_s. Neither gives Eq. 1 a length that converges mu_s
-  // (docs/accuracy_fem.md): the state law does.
+  // (docs/accuracy_fem_history.md): the state law does (docs/accuracy_fem.md).
   double slipLength = 1e-8;
   bool slipHealingOnly = true;  // -fem_slip_evolution healing (true) | slip
   bool contact = true;   // false: free bottom face (-fem_contact none, testing)
   ContactMethod contactMethod = ContactMethod::Penalty;
-  // Penalty stiffnesses [Pa/m]; 0 = derived penaltyFactor G/H (docs/accuracy_fem.md, "Contact"):
+  // Penalty stiffnesses [Pa/m]; 0 = derived penaltyFactor G/H (docs/accuracy_fem_history.md, "Contact"):
   // the tangential springs add the compliance 1/(k_t L^2) to the plate's shear compliance
   // H/(G L^2), so the loading slope carries -G/(H k_t); 250 G/H keeps it at 0.4 %.
   double kn = 0, kt = 0;
@@ -68,7 +68,7 @@ struct FemParameters {
   double slideDamping = 0;
   // Stiffness-proportional (Rayleigh beta) damping [s], off by default: it ends the ringing after
   // the first slip (a plateau with constant friction at beta = 0.2 H/(pi c_p), 0.1 of critical in
-  // the fundamental thickness mode) but moves mu_s by 4 % there (docs/accuracy_fem.md,
+  // the fundamental thickness mode) but moves mu_s by 4 % there (docs/accuracy_fem_history.md,
   // "Steady sliding"): thicknessModeStiffnessDamping(0.1) gives that value.
   double stiffnessDamping = 0;
   double thicknessModeStiffnessDamping(double dampingRatio) const;  // 2 xi H / (pi c_p)
@@ -76,7 +76,7 @@ struct FemParameters {
   // towards the slider's velocity [1/s] (< 0: derived c_s/H, the pressure step's damping: 1/pi of
   // critical in the fundamental thickness-shear mode pi c_s/(2H), and no change of the stable step)
   // and stiffness-proportional [s]. Neither acts before the peak (mu_s is the undamped run's, bit
-  // for bit) nor on a plate sliding steadily (docs/accuracy_fem.md, "Steady sliding").
+  // for bit) nor on a plate sliding steadily (docs/accuracy_fem_history.md, "Steady sliding").
   double peakDamping = -1;
   double peakStiffnessDamping = 0;
   // When it starts (-fem_peak_damping_start): confirmed (the peak is confirmed), drop (mu fell
@@ -88,7 +88,7 @@ struct FemParameters {
   bool energyAudit = false;  // also integrate the stiffness-proportional dissipation (one more operator pass per step)
   // Time stepping
   double dt = 0;            // 0: safety * stable step
-  double dtSafety = 0.6;  // docs/accuracy_fem.md: 0.9 gave 1 % mu_s error on the paper mesh and instability with stiffer penalties
+  double dtSafety = 0.6;  // docs/accuracy_fem_history.md: 0.9 gave 1 % mu_s error on the paper mesh and instability with stiffer penalties
   bool dtCheck = true;  // false (testing only): a dt above the stable step is accepted, to test the monitor
   // Blow-up monitor: non-finite mu(t) or normal force any step; every monitorEvery steps, a
   // non-finite state or kinetic + elastic energy above monitorFactor x (energy put in + reference).

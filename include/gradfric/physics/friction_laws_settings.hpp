@@ -8,7 +8,7 @@ namespace gradfric {
 struct FrictionLawSettings {
   std::string name = "coulomb";   // one of frictionLawNames() (friction_laws.hpp)
   double criticalVelocity = 1e-4;  // v_c of the exponential and state laws [m/s]
-  double slipLength = 5e-8;        // D_c of the state law [m] (state_weakening_law.hpp)
+  double slipLength = 2.5e-8;      // D_c of the state law [m] (state_weakening_law.hpp; docs/accuracy_fem.md)
 };
 
 }  // namespace gradfric

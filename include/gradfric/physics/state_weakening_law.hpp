@@ -35,7 +35,7 @@ struct StateWeakening {
   // The law's scalar parameters and their option names (-friction_v_c, -friction_d_c).
   struct Params {
     double criticalVelocity = 1e-4;  // v_c [m/s]
-    double slipLength = 5e-8;        // D_c [m]
+    double slipLength = 2.5e-8;      // D_c [m]
   };
   static constexpr const char* param_names[] = {"v_c", "d_c"};
 

@@ -1,0 +1,74 @@
+#!/usr/bin/env python3
+"""The FEM convergence study's tables (docs/accuracy_fem.md) from its measurements
+(docs/fem_study.tsv), by the rule the code's error bar uses (src/fem/error_estimate.cpp): a ladder
+of three in-plane meshes at ratio 2 converges when its differences keep their sign and shrink with
+an observed order p > 0.5; then the Richardson extrapolation (p capped at 2) and Roache's GCI
+1.25 |mu(n) - mu_ext| / mu_ext of each mesh; otherwise no bar.
+
+    fem_study_table.py [docs/fem_study.tsv]     prints Markdown tables
+"""
+import math
+import os
+import sys
+
+G, H, P = 10e6 / (2 * (1 + 1 / 3)), 5e-5, 1e4
+
+
+def load(path):
+    rows = {}
+    with open(path) as f:
+        for line in f:
+            if line.startswith("#") or not line.strip():
+                continue
+            law, dc, prop, delta, n, nz, element, dts, contact, mu = line.split()
+            rows[(law, float(dc), prop, float(delta), int(n), int(nz), element, float(dts), contact)] = float(mu)
+    return rows
+
+
+def ladder(rows, law, dc, prop, delta, nz=5):
+    sizes = sorted(k[4] for k in rows if k[:4] == (law, dc, prop, delta) and k[5] == nz and k[7] == 0.6 and k[8] == "penalty")
+    for n in sizes:
+        key = lambda m: (law, dc, prop, delta, m, nz, "q1", 0.6, "penalty")
+        if key(2 * n) in rows and key(4 * n) in rows:
+            return n, [rows[key(n)], rows[key(2 * n)], rows[key(4 * n)]]
+    return None, None
+
+
+def analyse(mu):
+    first, second = mu[1] - mu[0], mu[2] - mu[1]
+    d = "%+.2f %%, %+.2f %%" % (100 * first / mu[0], 100 * second / mu[1])
+    if not (first * second > 0 and abs(second) < abs(first) / math.sqrt(2)):
+        why = "signs differ" if first * second <= 0 else "order <= 0.5"
+        return d, "none (%s)" % why, "", "not converged: no bar"
+    p = math.log(first / second) / math.log(2)
+    ext = mu[2] + second / (2 ** min(p, 2) - 1)
+    gci = ["%.2f %%" % (125 * abs(m - ext) / ext) for m in mu]
+    return d, "%.2f" % p, "%.6f" % ext, " / ".join(gci)
+
+
+def main():
+    path = sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), "..", "docs", "fem_study.tsv")
+    rows = load(path)
+    print("| D_c [m] | kappa | grading | mu_s at n, 2n, 4n (x 5) | differences | observed order | extrapolated | GCI of n / 2n / 4n |")
+    print("|---|---|---|---|---|---|---|---|")
+    seen = sorted({(k[0], k[1], k[2], k[3]) for k in rows})
+    for law, dc, prop, delta in seen:
+        n, mu = ladder(rows, law, dc, prop, delta)
+        if not mu:
+            continue
+        kappa = G * dc / (H * P * 0.4)
+        grading = "none" if prop == "none" else "%s %+.1f" % (prop, delta)
+        d, p, ext, gci = analyse(mu)
+        print("| %g | %.2f | %s | %d/%d/%d: %s | %s | %s | %s | %s |" % (
+            dc, kappa, grading, n, 2 * n, 4 * n, ", ".join("%.6f" % m for m in mu), d, p, ext, gci))
+    print()
+    print("Pairs on the non-graded 100 x 100 x 5 mesh (D_c 2.5e-8 m):")
+    base = ("state", 2.5e-8, "none", 0.0, 100, 5, "q1", 0.6, "penalty")
+    for label, key in [("nz 10", base[:5] + (10,) + base[6:]), ("dt_safety 0.3", base[:7] + (0.3,) + base[8:]),
+                       ("kinematic contact", base[:8] + ("kinematic",))]:
+        if key in rows:
+            print("- %s: %.6f against %.6f (%+.3f %%)" % (label, rows[key], rows[base], 100 * (rows[base] / rows[key] - 1)))
+
+
+if __name__ == "__main__":
+    main()
