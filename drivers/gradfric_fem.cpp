@@ -200,7 +200,7 @@ int main(int argc, char** argv) {
     const FemRunResult result = runPlateExperiment(model, output.snapshotObserver(model));
     const double wall = MPI_Wtime() - wall0;
     record.add({"interface resolution", result.resolution.describe(), "",
-                "D_c, kappa = G D_c/(H p (mu_s - mu_k)), and whether D_c was resolved (docs/accuracy_fem_history.md)",
+                "D_c, kappa = G D_c/(H p (mu_s - mu_k)), and whether D_c was resolved (docs/accuracy_fem.md)",
                 OptionOrigin::Derived});
     output.writeHistory(model, result, record);
     output.finish();                                              // complete: renamed into place

@@ -171,7 +171,7 @@ void ContactBoundary::resetSlipRecord() {
   slipRecord_.clear();
 }
 
-void ContactBoundary::recordWeakening(double t) {
+void ContactBoundary::recordOnset(double t) {
   if (lastStepSlip_ > (slipRecord_.empty() ? 0.0 : slipRecord_.back().second)) slipRecord_.push_back({t, lastStepSlip_});
   visitContactLaw(law_, [&](const auto& law) {
     const FrictionSites& sites = sitesOf(law);

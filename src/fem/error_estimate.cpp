@@ -15,11 +15,11 @@
 
 #include "gradfric/fem/fem_study_data.hpp"  // generated: kFemStudyTable, the text of docs/fem_study.tsv
 #include "gradfric/physics/field.hpp"
+#include "gradfric/physics/state_weakening_law.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <map>
 #include <sstream>
 #include <vector>
 
@@ -62,7 +62,7 @@ std::string outsideStudiedScene(const FemParameters& q, const Grading& g) {
       !near(p.poissonRatio, paper.poissonRatio) || !near(p.density, paper.density) || !near(p.pressure, paper.pressure) ||
       !near(p.velocity, paper.velocity) || !near(p.muStatic, paper.muStatic) || !near(p.muKinetic, paper.muKinetic))
     return "plate other than the paper's";
-  if (q.frictionLaw.name != "state" ||
+  if (q.frictionLaw.name != StateWeakening::name ||
       !near(q.frictionLaw.criticalVelocity, FemParameters{}.frictionLaw.criticalVelocity))
     return "friction law other than the state law with the paper's v_c (no other law converges)";
   FemParameters derived;  // the study's pressure step: the derived ramp and hold
@@ -107,7 +107,7 @@ const StudyRow* find(const FemParameters& q, const std::string& property, double
 ErrorTerm meshTerm(const FemParameters& q, const Grading& g) {
   const std::string property = gradingName(g);
   const double delta = g.active() ? g.delta : 0.0;
-  // The ladders n, 2n, 4n holding the run's mesh: the finest one.
+  // The ladder n, 2n, 4n holding the run's mesh: first the one in which it is the finest mesh.
   for (int coarsest : {q.nx / 4, q.nx / 2, q.nx}) {
     if (coarsest < 1 || (q.nx % coarsest) != 0) continue;
     const StudyRow* m[3];

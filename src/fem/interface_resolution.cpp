@@ -1,6 +1,7 @@
 #include "gradfric/fem/interface_resolution.hpp"
 
 #include "gradfric/fem/plate_model.hpp"
+#include "gradfric/physics/friction_laws.hpp"
 
 #include <cstdio>
 
@@ -9,7 +10,7 @@ namespace gradfric::fem {
 InterfaceResolution checkInterfaceResolution(const PlateModel& model, double peakTime) {
   const FemParameters& q = model.params();
   InterfaceResolution r;
-  r.applies = q.frictionLaw.name == "state" && q.contact;
+  r.applies = isStateLaw(q.frictionLaw) && q.contact;
   if (!r.applies) return r;
   const Plate& plate = q.plate;
   r.slipLength = q.frictionLaw.slipLength;

@@ -38,7 +38,7 @@ std::string describeContact(const FemParameters& given) {
 }
 
 std::string describeFrictionState(const FemParameters& q) {
-  if (q.frictionLaw.name == "state") return describeFrictionLaw(q.frictionLaw);
+  if (isStateLaw(q.frictionLaw)) return describeFrictionLaw(q.frictionLaw);
   if (!(q.slipLength > 0)) return "no slip length (a stopped node is back at mu_s)";
   char text[160];
   std::snprintf(text, sizeof text, "slip state: strength follows Eq. 1 over D_c %.3g m of slip (%s)", q.slipLength,
@@ -207,12 +207,12 @@ FemParameters readFemParameters(MPI_Comm comm, RunParameters* record, const Plat
   o.requireAtLeast("nx", q.nx, 1);
   o.requireAtLeast("ny", q.ny, 1);
   o.requireAtLeast("nz", q.nz, 1);
-  if (q.frictionLaw.name == "state")
-    for (const char* memory : {"slip_length", "slip_evolution"})
-      if (o.wasSet(memory))
-        throw InputError(o.fullName(memory), o.fullName(memory) == "-fem_slip_length" ? formatReal(q.slipLength)
-                                                                                      : std::string(q.slipHealingOnly ? "healing" : "slip"),
-                         "only with -friction_law exponential or coulomb (the state law's length is -friction_d_c)");
+  if (isStateLaw(q.frictionLaw)) {  // the memory belongs to the stateless laws
+    const char* allowed = "only with -friction_law exponential or coulomb (the state law's length is -friction_d_c)";
+    if (o.wasSet("slip_length")) throw InputError(o.fullName("slip_length"), formatReal(q.slipLength), allowed);
+    if (o.wasSet("slip_evolution"))
+      throw InputError(o.fullName("slip_evolution"), q.slipHealingOnly ? "healing" : "slip", allowed);
+  }
   o.requireNonNegative("slip_length", q.slipLength, "m");
   if (o.wasSet("slip_length"))  // the default is not checked against H: a bad -plate_H is refused by its own name
     o.requireRange("slip_length", q.slipLength, 0.0, q.plate.thickness, "0 <= D_c <= H (the plate's thickness)");

@@ -17,6 +17,7 @@
 #include "gradfric/core/petsc_call.hpp"
 #include "gradfric/fem/log_events.hpp"
 #include "gradfric/fem/pressed_equilibrium.hpp"
+#include "gradfric/physics/friction_laws.hpp"
 
 #include <cmath>
 #include <optional>
@@ -189,7 +190,7 @@ private:
     const double mu = history_.observe(tSliding, totals.fx, totals.fy, totals.slip > 0,
                                        totals.everSlipped == totals.nodes);
     sample_.mu = mu;
-    if (weakensOverSlip_) model_.recordWeakening(tSliding);
+    if (recordOnset_) model_.recordOnset(tSliding);
     // The damping of the sliding plate starts at the confirmed peak (mu_s is then the undamped
     // run's), or with -fem_peak_damping_start at the first drop of mu after the first slip or at
     // once (study options: they can damp the peak).
@@ -220,7 +221,7 @@ private:
   FrictionHistory history_;
   Sample sample_;
   double wall0_ = 0;
-  bool weakensOverSlip_ = q_.frictionLaw.name == "state";  // the process zone is measured
+  bool recordOnset_ = isStateLaw(q_.frictionLaw);  // for the interface resolution check
 };
 
 }  // namespace

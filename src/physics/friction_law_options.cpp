@@ -25,7 +25,7 @@ FrictionLawSettings readFrictionLaw(MPI_Comm comm, RunParameters* record, const 
   if (withState) {
     s.slipLength = o.real("d_c", s.slipLength, "m",
                           "weakening length D_c of the state law: mu falls from mu_s to mu_k over this slip");
-    if (o.wasSet("d_c") && s.name != "state")
+    if (o.wasSet("d_c") && !isStateLaw(s))
       throw InputError(o.fullName("d_c"), formatReal(s.slipLength), "only with -friction_law state");
     o.requirePositive("d_c", s.slipLength, "m");
   }

@@ -34,15 +34,12 @@ def fail(message, text=""):
     sys.exit(message + ("\n" + text if text else ""))
 
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scripts"))
+from fem_study_table import load  # the study's rows, as the docs' tables read them
+
+
 def study():
-    rows = {}
-    with open(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "docs", "fem_study.tsv")) as f:
-        for line in f:
-            if line.startswith("#") or not line.strip():
-                continue
-            law, dc, prop, delta, n, nz, element, dts, contact, mu = line.split()
-            rows[(law, float(dc), prop, float(delta), int(n), int(nz), element, float(dts), contact)] = float(mu)
-    return rows
+    return load(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "docs", "fem_study.tsv"))
 
 
 def expected_bar(n):

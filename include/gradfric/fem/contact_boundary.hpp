@@ -61,13 +61,14 @@ public:
                                   double dt);
   void commit();  // accept the pending contact state (after a step)
   void resetSlipRecord();  // from now on, everSlipped counts slips after this point (and the slip per step)
-  // With a law that weakens over a slip (the state law): notes, at time t, the nodes whose committed
-  // strength has fallen 10 % and 90 % of the way from mu_s to mu_k, for processZone().
-  void recordWeakening(double t);
+  // After each sliding step at time t, with a law that weakens over a slip (the state law): notes
+  // the nodes whose committed strength has fallen 10 % and 90 % of the way from mu_s to mu_k (for
+  // processZone()) and the step's largest slip (for largestSlipPerStep()).
+  void recordOnset(double t);
   // The process zone measured from those times over the nodes that started weakening by
   // latestStart (physics/process_zone.hpp); collective.
   ProcessZone processZone(double latestStart) const;
-  // The largest slip of a node in one step from resetSlipRecord to time `until` (as recordWeakening
+  // The largest slip of a node in one step from resetSlipRecord to time `until` (as recordOnset
   // saw it), over ranks [m].
   double largestSlipPerStep(double until) const;
   // Work of the contact forces on the plate over the committed steps, summed over ranks [J]

@@ -42,7 +42,7 @@ struct FemParameters {
   // default the state law (physics/state_weakening_law.hpp), Eq. 1 as its steady state with the
   // weakening length D_c that makes mu_s converge under refinement (docs/accuracy_fem.md, "The
   // friction law"); exponential is Eq. 1 itself, coulomb the SBM's law.
-  FrictionLawSettings frictionLaw = {"state", 1e-4, 2.5e-8};
+  FrictionLawSettings frictionLaw = {"state", FrictionLawSettings::kCriticalVelocity, FrictionLawSettings::kSlipLength};
   // With a stateless law (exponential, coulomb): the friction memory, a slip length over which a
   // node's strength follows the law (physics/slip_state_law.hpp). By default (healing) a node's
   // strength drops with its slip rate at once as Eq. 1 says, but regains mu_s as it slows down

@@ -50,7 +50,7 @@ public:
   Vec createState() const;  // zero state (global)
   void rhs(double t, Vec X, Vec F);
   void commitContact();  // the TS post-step, after each accepted step: contact state, damping work
-  void recordWeakening(double t) { contact_.recordWeakening(t); }  // for the process zone (sliding)
+  void recordOnset(double t) { contact_.recordOnset(t); }  // for the interface resolution check (sliding)
   Phase phase() const { return phase_; }
   void setPhase(Phase phase) { phase_ = phase; }
   void startSliding(Vec X);  // phase Sliding; the top's tangential velocity set to the slider's

@@ -35,6 +35,15 @@ inline std::vector<std::string> frictionLawNames(bool withState = false) {
   return names;
 }
 
+// Is the named law one with a per-site state and weakening length (GF_STATE_FRICTION_LAWS)?
+inline bool isStateLaw(const FrictionLawSettings& settings) {
+#define GF_LAW_IS(Law) \
+  if (settings.name == Law::name) return true;
+  GF_STATE_FRICTION_LAWS(GF_LAW_IS)
+#undef GF_LAW_IS
+  return false;
+}
+
 // Calls visit(law) with the law named in the settings, built on these sites.
 template <class Visitor>
 decltype(auto) withFrictionLaw(const FrictionLawSettings& settings, FrictionSites sites, Visitor&& visit) {

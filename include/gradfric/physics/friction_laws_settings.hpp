@@ -7,8 +7,9 @@ namespace gradfric {
 
 struct FrictionLawSettings {
   std::string name = "coulomb";   // one of frictionLawNames() (friction_laws.hpp)
-  double criticalVelocity = 1e-4;  // v_c of the exponential and state laws [m/s]
-  double slipLength = 2.5e-8;      // D_c of the state law [m] (state_weakening_law.hpp; docs/accuracy_fem.md)
+  static constexpr double kCriticalVelocity = 1e-4, kSlipLength = 2.5e-8;  // the defaults of both models
+  double criticalVelocity = kCriticalVelocity;  // v_c of the exponential and state laws [m/s]
+  double slipLength = kSlipLength;  // D_c of the state law [m] (state_weakening_law.hpp; docs/accuracy_fem.md)
 };
 
 }  // namespace gradfric

@@ -32,20 +32,15 @@ namespace gradfric {
 
 struct StateWeakening {
   static constexpr const char* name = "state";
-  // The law's scalar parameters and their option names (-friction_v_c, -friction_d_c).
-  struct Params {
-    double criticalVelocity = 1e-4;  // v_c [m/s]
-    double slipLength = 2.5e-8;      // D_c [m]
-  };
-  static constexpr const char* param_names[] = {"v_c", "d_c"};
 
   FrictionSites sites;
-  Params params;
+  double criticalVelocity = 0;  // v_c [m/s] (-friction_v_c)
+  double slipLength = 0;        // D_c [m] (-friction_d_c)
   std::vector<double> state;    // per site: committed theta [m]
   std::vector<double> pending;  // per site: theta after the last evaluation [m]
 
   static StateWeakening make(FrictionSites sites, const FrictionLawSettings& settings, std::size_t siteCount) {
-    StateWeakening law{std::move(sites), {settings.criticalVelocity, settings.slipLength}, {}, {}};
+    StateWeakening law{std::move(sites), settings.criticalVelocity, settings.slipLength, {}, {}};
     law.state.assign(siteCount, 0.0);
     law.pending = law.state;
     return law;
@@ -60,18 +55,18 @@ struct StateWeakening {
 
   // The state after a step dt [s] at mean slip rate speed [m/s] from theta (exact for constant speed).
   double evolve(double theta, double speed, double dt) const {
-    const double decay = std::exp(-params.criticalVelocity * dt / params.slipLength);
-    return theta * decay + speed * (params.slipLength / params.criticalVelocity) * (1.0 - decay);
+    const double decay = std::exp(-criticalVelocity * dt / slipLength);
+    return theta * decay + speed * (slipLength / criticalVelocity) * (1.0 - decay);
   }
   // The coefficient (or force, in the sites' units) of site at state theta.
   double strengthAt(int site, double theta) const {
     const int slot = sites.slotOfSite(site);
     const double s = sites.staticAt(slot), k = sites.kineticAt(slot);
-    return k + (s - k) * std::exp(-theta / params.slipLength);
+    return k + (s - k) * std::exp(-theta / slipLength);
   }
   // Eq. 1: the steady strength at slip rate v (what a site sliding steadily at v feels).
   double steadyStrength(int site, double speed) const {
-    return strengthAt(site, speed * params.slipLength / params.criticalVelocity);
+    return strengthAt(site, speed * slipLength / criticalVelocity);
   }
   // One evaluation of site: it slid `slip` [m] over dt [s] since the last commit (0 if it stuck);
   // its new state is pending, its strength at that state returned.
