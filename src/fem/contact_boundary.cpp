@@ -1,5 +1,6 @@
 #include "gradfric/fem/contact_boundary.hpp"
 
+#include "gradfric/core/gather.hpp"
 #include "gradfric/core/petsc_call.hpp"
 #include "gradfric/physics/property_sampler.hpp"
 
@@ -189,18 +190,11 @@ void ContactBoundary::recordOnset(double t) {
 }
 
 ProcessZone ContactBoundary::processZone(double latestStart) const {
-  int size = 1, rank = 0;
-  GF_CALL_MPI(MPI_Comm_size(comm_, &size));
+  int rank = 0;
   GF_CALL_MPI(MPI_Comm_rank(comm_, &rank));
   std::vector<double> mine;  // x, y, start, end per node
   for (const Node& n : nodes_) mine.insert(mine.end(), {n.x, n.y, n.weakenStart, n.weakenEnd});
-  int count = static_cast<int>(mine.size());
-  std::vector<int> counts(size), offsets(size, 0);
-  GF_CALL_MPI(MPI_Gather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm_));
-  for (int r = 1; r < size; ++r) offsets[r] = offsets[r - 1] + counts[r - 1];
-  std::vector<double> all(rank == 0 ? offsets[size - 1] + counts[size - 1] : 0);
-  GF_CALL_MPI(MPI_Gatherv(mine.data(), count, MPI_DOUBLE, all.data(), counts.data(), offsets.data(), MPI_DOUBLE, 0,
-                          comm_));
+  const std::vector<double> all = gatherOnRoot(comm_, mine);
   double result[5] = {0, 0, 0, 0, 0};
   if (rank == 0) {
     WeakeningTimes times;
