@@ -142,7 +142,7 @@ FemParameters readFemParameters(MPI_Comm comm, RunParameters* record, const Plat
       o.choice("pressure_step", q.staticPressureStep ? "static" : "dynamic", {"static", "dynamic"},
                "step 1: static (the pressed equilibrium solved by CG, then sliding from rest; penalty contact, "
                "else dynamic) or dynamic (pressure ramp and hold in time)") == "static";
-  q.frictionLaw = readFrictionLaw(comm, record, q.frictionLaw, true);  // -friction_law, shared with the SBM
+  q.frictionLaw = readFrictionLaw(comm, record, q.frictionLaw, true, plate.thickness);  // shared with the SBM
   q.slipLength = o.real("slip_length", q.slipLength, "m",
                         "with -friction_law exponential or coulomb: slip length of the friction memory, a node's "
                         "strength follows the law's value over this slip (-fem_slip_evolution); 0: the law alone");

@@ -7,7 +7,7 @@
 namespace gradfric {
 
 FrictionLawSettings readFrictionLaw(MPI_Comm comm, RunParameters* record, const FrictionLawSettings& modelDefault,
-                                    bool withState) {
+                                    bool withState, double thickness) {
   const char* why = "both models read one friction law";
   refuseRenamedOption("-sbm_friction_law", "-friction_law", why);
   refuseRenamedOption("-sbm_v_c", "-friction_v_c", why);
@@ -28,6 +28,8 @@ FrictionLawSettings readFrictionLaw(MPI_Comm comm, RunParameters* record, const 
     if (o.wasSet("d_c") && !isStateLaw(s))
       throw InputError(o.fullName("d_c"), formatReal(s.slipLength), "only with -friction_law state");
     o.requirePositive("d_c", s.slipLength, "m");
+    if (o.wasSet("d_c") && thickness > 0)  // the default is not checked: a bad -plate_H is refused by its own name
+      o.requireRange("d_c", s.slipLength, 0.0, thickness, "0 < D_c <= H (the plate's thickness)");
   }
   return s;
 }

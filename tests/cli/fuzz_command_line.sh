@@ -198,6 +198,7 @@ fem)
   run 2 -fem_kt "$F" -fem_kt -1
   run 2 -friction_v_c "$F" -friction_v_c nan
   run 2 -friction_d_c "$F" -friction_d_c 0
+  run 2 -friction_d_c "$F" -friction_d_c 1e-3
   run 2 -friction_d_c "$F" -friction_law exponential -friction_d_c 1e-8
   run 2 -fem_slip_length "$F" -fem_slip_length 1e-8
   run 2 -fem_v_c "$F" -fem_v_c 1e-4
