@@ -1,9 +1,11 @@
 #!/usr/bin/env python3
 """The FEM convergence study's tables (docs/accuracy_fem.md) from its measurements
 (docs/fem_study.tsv), by the rule the code's error bar uses (src/fem/error_estimate.cpp): a ladder
-of three in-plane meshes at ratio 2 converges when its differences keep their sign and shrink with
-an observed order p > 0.5; then the Richardson extrapolation (p capped at 2) and Roache's GCI
-1.25 |mu(n) - mu_ext| / mu_ext of each mesh; otherwise no bar.
+of three in-plane meshes at ratio 2 converges when its differences shrink with
+an observed order p > 0.5 (second difference below 1/sqrt(2) of the first); then, if they keep
+their sign, the Richardson extrapolation (p capped at 2) and Roache's GCI 1.25 |mu(n) - mu_ext| /
+mu_ext of each mesh; if they alternate, 1.25 x the distance to the farther of the last two values
+(the limit lies between them); otherwise no bar.
 
     fem_study_table.py [docs/fem_study.tsv]     prints Markdown tables
 """
@@ -35,11 +37,15 @@ def ladder(rows, law, dc, prop, delta, nz=5):
 
 
 def analyse(mu):
+    """(differences, order, extrapolated, bounds of the three members) by the error bar's rule."""
     first, second = mu[1] - mu[0], mu[2] - mu[1]
     d = "%+.2f %%, %+.2f %%" % (100 * first / mu[0], 100 * second / mu[1])
-    if not (first * second > 0 and abs(second) < abs(first) / math.sqrt(2)):
-        why = "signs differ" if first * second <= 0 else "order <= 0.5"
+    if not abs(second) < abs(first) / math.sqrt(2):
+        why = "signs differ, no shrinking" if first * second <= 0 else "order <= 0.5"
         return d, "none (%s)" % why, "", "not converged: no bar"
+    if first * second <= 0:  # alternating: the limit lies between the last two values
+        bounds = [125 * max(abs(m - mu[1]), abs(m - mu[2])) / abs(mu[2]) for m in mu]
+        return d, "oscillating", "between %.6f and %.6f" % (mu[1], mu[2]), " / ".join("%.2f %%" % b for b in bounds)
     p = math.log(first / second) / math.log(2)
     ext = mu[2] + second / (2 ** min(p, 2) - 1)
     gci = ["%.2f %%" % (125 * abs(m - ext) / ext) for m in mu]
@@ -62,13 +68,24 @@ def main():
         print("| %g | %.2f | %s | %d/%d/%d: %s | %s | %s | %s | %s |" % (
             dc, kappa, grading, n, 2 * n, 4 * n, ", ".join("%.6f" % m for m in mu), d, p, ext, gci))
     print()
-    print("Pairs on the non-graded 100 x 100 x 5 mesh (D_c 2.5e-8 m):")
+    print("Thickness, time step and contact on the non-graded 100 x 100 mesh (D_c 2.5e-8 m):")
+    print()
+    print("| ladder | mu_s | differences | observed order | extrapolated | bound of the default's member |")
+    print("|---|---|---|---|---|---|")
     base = ("state", 2.5e-8, "none", 0.0, 100, 5, "q1", 0.6, "penalty")
-    for label, key in [("nz 10", base[:5] + (10,) + base[6:]), ("dt_safety 0.3", base[:7] + (0.3,) + base[8:]),
-                       ("kinematic contact", base[:8] + ("kinematic",))]:
-        if key in rows:
-            print("- %s: %.6f against %.6f (%+.3f %%)" % (label, rows[key], rows[base], 100 * (rows[base] / rows[key] - 1)))
-
+    ladders = [("nz 5/10/20", [base[:5] + (nz,) + base[6:] for nz in (5, 10, 20)]),
+               ("dt_safety 0.6/0.3/0.15", [base[:7] + (dts,) + base[8:] for dts in (0.6, 0.3, 0.15)])]
+    for label, keys in ladders:
+        if all(k in rows for k in keys):
+            mu = [rows[k] for k in keys]
+            d, p, ext, bounds = analyse(mu)
+            print("| %s | %s | %s | %s | %s | %s |" % (label, ", ".join("%.6f" % m for m in mu), d, p, ext,
+                                                      bounds.split(" / ")[0]))
+    kinematic = base[:8] + ("kinematic",)
+    if kinematic in rows:
+        print()
+        print("Kinematic contact (the exact reference): %.6f against the penalty's %.6f (%+.3f %%)"
+              % (rows[kinematic], rows[base], 100 * (rows[base] / rows[kinematic] - 1)))
 
 if __name__ == "__main__":
     main()

@@ -57,23 +57,23 @@ timeout 300 "$sbm_driver" "${grading[@]}" -sbm_N 10 -ensemble_realisations 2 -ou
   fail "the spring-block ensemble failed: $(tail -3 sbm.out)"
 $python "$source_dir/tests/fem/check_sweep_layout.py" sbm.h5 one.h5 || fail "layout"
 
-# Each point's discretisation error bar (docs/fem_study.tsv): finite on a studied, converged setting
-# (50x50x5 at the defaults, E grading Delta 0 and -0.2: their ladders converge), NaN where no study
-# measured it (Delta 0.4), NaN for mu_k; printed in the table and drawn by the plotting tool.
+# Each point's discretisation error bar (docs/fem_study.tsv): NaN at every point and "n/m" in the
+# table, since no setting has a proven bar: on studied meshes (50x50x5, E grading 0 and -0.2, whose
+# mesh ladders converge) the thickness ladder nz 5/10/20 does not; Delta 0.4 was not studied at all;
+# NaN for mu_k. The plotting tool draws the points without bars.
 fem bars 1 0 -grading_profile linear -grading_property E -ensemble_delta 0,-0.2,0.4 -fem_nx 50 -fem_ny 50 \
   -fem_nz 5 -friction_observables mu_s -fem_output bars.h5
-$python - bars.h5 <<'PY' || fail "bars: the error bars in the file are not the measured ones"
+$python - bars.h5 <<'PY' || fail "bars: the error bars in the file are not the study's"
 import math, sys, h5py
 f = h5py.File(sys.argv[1], "r")
 s, k = f["statistics/mu_s_discretisation_error"][:], f["statistics/mu_k_discretisation_error"][:]
-# The non-graded 50x50x5 mesh term alone (GCI of 50/100/200) is 2.70 %; E -0.2's is smaller.
-assert math.isfinite(s[0]) and s[0] > 0.0270 and math.isfinite(s[1]) and s[1] > 0, f"measured points: {s[:2]}"
-assert math.isnan(s[2]), f"Delta 0.4 was not studied: {s[2]}"
+assert all(math.isnan(x) for x in s), f"no point has a proven bar: {s}"
 assert all(math.isnan(x) for x in k), f"mu_k has no measured bar: {k}"
 assert all(math.isfinite(x) for x in f["statistics/mu_s_mean"][:]), "a point without mu_s"
 PY
-grep -Eq "^  2 +Delta=0\.4 +0\.[0-9]+ +n/m" bars.out || fail "bars: the table does not say n/m: $(cat bars.out)"
-grep -Eq "^  1 +Delta=-0\.2 +0\.[0-9]+ +[0-9]+\.[0-9]+ " bars.out || fail "bars: the table lacks the bar: $(cat bars.out)"
+for point in "0 +Delta=0" "1 +Delta=-0\.2" "2 +Delta=0\.4"; do
+  grep -Eq "^  ${point% *} ${point#* } +0\.[0-9]+ +n/m" bars.out || fail "bars: the table does not say n/m ($point): $(cat bars.out)"
+done
 timeout 300 "$sbm_driver" -grading_profile linear -grading_property E -ensemble_delta 0,-0.2,0.4 -sbm_N 10 \
   -ensemble_realisations 2 -output sbm_bars.h5 >sbm_bars.out 2>&1 || fail "sbm_bars: $(tail -3 sbm_bars.out)"
 $python "$source_dir/scripts/gradfric_plot.py" sbm_bars.h5 --fem bars.h5 --out bars_plots >bars_plot.out 2>&1 ||

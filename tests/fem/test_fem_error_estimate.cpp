@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace gradfric;
@@ -45,12 +46,16 @@ TEST(FemErrorBar, PaperMeshAtTheDefaultsIsTheGciOfItsLadder) {
   ASSERT_TRUE(e.mesh.measured) << e.mesh.basis;
   EXPECT_NEAR(e.mesh.relative, gci(kMedium), 1e-12);
   EXPECT_LT(e.mesh.relative, 0.01) << "the default mesh's mesh term is below 1 %";
-  EXPECT_NEAR(e.timeStep.relative, 1.25 * std::fabs(0.936322 - 0.935724) / 0.935724, 1e-12);
+  // dt_safety 0.6/0.3/0.15 alternate while they shrink: the limit lies between the last two values.
+  EXPECT_NEAR(e.timeStep.relative, 1.25 * std::max(std::fabs(0.936322 - 0.935724), std::fabs(0.936322 - 0.935831)) / 0.935831,
+              1e-12);
+  EXPECT_NE(e.timeStep.basis.find("oscillating"), std::string::npos) << e.timeStep.basis;
   EXPECT_NEAR(e.contact.relative, 1.25 * std::fabs(0.936322 - 0.936043) / 0.936043, 1e-12);
-  if (e.measured) {
-    EXPECT_NEAR(e.relative, e.mesh.relative + e.thickness.relative + e.timeStep.relative + e.contact.relative, 1e-15);
-    EXPECT_EQ(withErrorBar(0.936322, e).rfind("0.936322 +- ", 0), 0u) << withErrorBar(0.936322, e);
-  }
+  // The thickness ladder nz 5/10/20 (0.936322, 0.937429, 0.940538) does not converge: no bar at all.
+  EXPECT_FALSE(e.thickness.measured);
+  EXPECT_FALSE(e.measured);
+  EXPECT_NE(e.basis.find("thickness not converged: nz 5/10/20"), std::string::npos) << e.basis;
+  EXPECT_EQ(withErrorBar(0.936322, e).find("+-"), std::string::npos) << withErrorBar(0.936322, e);
   FemParameters fine = q;
   fine.nx = fine.ny = 200;
   EXPECT_NEAR(discretisationError(fine, Grading{}, 0.6).mesh.relative, gci(kFine), 1e-12);
@@ -60,12 +65,28 @@ TEST(FemErrorBar, PaperMeshAtTheDefaultsIsTheGciOfItsLadder) {
   EXPECT_LT(gci(kMedium), gci(kCoarse));
 }
 
+TEST(FemErrorBar, AnOscillatingLadderThatShrinksIsBracketedByItsLastTwoValues) {
+  // D_c 5e-8: 0.964219, 0.973118, 0.968400: +0.92 %, -0.48 % (ratio 0.53 < 1/sqrt(2)).
+  FemParameters q = paperDefaults();
+  q.frictionLaw.slipLength = 5e-8;
+  const ErrorTerm mesh = discretisationError(q, Grading{}, 0.6).mesh;
+  ASSERT_TRUE(mesh.measured) << mesh.basis;
+  EXPECT_NEAR(mesh.relative, 1.25 * std::fabs(0.973118 - 0.968400) / 0.968400, 1e-12);
+  q.nx = q.ny = 50;
+  EXPECT_NEAR(discretisationError(q, Grading{}, 0.6).mesh.relative,
+              1.25 * std::max(std::fabs(0.964219 - 0.973118), std::fabs(0.964219 - 0.968400)) / 0.968400, 1e-12);
+}
+
 TEST(FemErrorBar, ALadderThatDoesNotConvergeGivesNoBar) {
-  // Friction +0.2: 0.804064, 0.804509, 0.800688: the differences change sign and grow.
+  // Friction +0.2: 0.804064, 0.804509, 0.800688: the differences change sign and grow; so does
+  // D_c 1e-7's non-graded ladder (0.984317, 0.984517, 0.980793).
   const DiscretisationError e = discretisationError(paperDefaults(), linear(GradedProperty::Friction, 0.2), 0.6);
   EXPECT_FALSE(e.measured);
   EXPECT_NE(e.basis.find("mesh not converged"), std::string::npos) << e.basis;
   EXPECT_EQ(withErrorBar(0.8045, e).find("+-"), std::string::npos);
+  FemParameters q = paperDefaults();
+  q.frictionLaw.slipLength = 1e-7;
+  EXPECT_NE(discretisationError(q, Grading{}, 0.6).mesh.basis.find("mesh not converged"), std::string::npos);
 }
 
 TEST(FemErrorBar, OutsideTheStudiesItIsNotMeasured) {
