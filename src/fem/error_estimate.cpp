@@ -5,7 +5,10 @@
 //    (ladderTerm): Roache's grid convergence index with safety factor 1.25 about the Richardson
 //    extrapolation when they keep their sign, the bracket of the last two values when they
 //    alternate; a ladder that does not converge gives none (never a bar the study does not prove);
-//  - thickness: the ladder nz 5/10/20 on the non-graded paper mesh, by the same rule;
+//    A ladder refined in every direction (50x50x5, 100x100x10, 200x200x20) is preferred: it bounds
+//    the thickness as well;
+//  - thickness (for an in-plane ladder): the ladder nz 5/10/20 on the non-graded paper mesh, by the
+//    same rule;
 //  - time step: the ladder dt_safety 0.6/0.3/0.15 on the same mesh, by the same rule (the bound of
 //    0.6 covers smaller steps);
 //  - contact: penalty 250 G/H against the kinematic contact (the exact reference, no refinement) on
@@ -136,23 +139,35 @@ ErrorTerm ladderTerm(const char* term, const std::string& ladder, const StudyRow
   return {true, bound, text};
 }
 
-ErrorTerm meshTerm(const FemParameters& q, const Grading& g) {
+// The mesh term. A ladder refined in every direction (n x n x nz, 2n x 2n x 2nz, 4n x 4n x 4nz)
+// holding the run's mesh is taken first: it bounds the thickness too (*coversThickness). Else the
+// in-plane ladder (n, 2n, 4n at the run's nz). In each, first the ladder in which the run's mesh is
+// the finest.
+ErrorTerm meshTerm(const FemParameters& q, const Grading& g, bool* coversThickness) {
   const std::string property = gradingName(g);
   const double delta = g.active() ? g.delta : 0.0;
-  // The ladder n, 2n, 4n holding the run's mesh: first the one in which it is the finest mesh.
-  for (int member = 2; member >= 0; --member) {
-    const int coarsest = q.nx >> member;
-    if (coarsest < 1 || (coarsest << member) != q.nx) continue;
-    const StudyRow* m[3];
-    bool complete = true;
-    for (int k = 0; k < 3; ++k)
-      complete = complete && (m[k] = find(q, property, delta, coarsest << k, q.nz, 0.6, "penalty")) != nullptr;
-    if (!complete) continue;
-    char ladder[120];
-    std::snprintf(ladder, sizeof ladder, "%dx%d/%d/%d x %d (run %dx%d)", coarsest, coarsest, 2 * coarsest,
-                  4 * coarsest, q.nz, q.nx, q.nx);
-    return ladderTerm("mesh", ladder, m, member);
-  }
+  for (bool allDirections : {true, false})
+    for (int member = 2; member >= 0; --member) {
+      const int coarsest = q.nx >> member, coarsestNz = allDirections ? q.nz >> member : q.nz;
+      if (coarsest < 1 || (coarsest << member) != q.nx) continue;
+      if (allDirections && (coarsestNz < 1 || (coarsestNz << member) != q.nz)) continue;
+      const StudyRow* m[3];
+      bool complete = true;
+      for (int k = 0; k < 3; ++k)
+        complete = complete && (m[k] = find(q, property, delta, coarsest << k, allDirections ? coarsestNz << k : q.nz,
+                                            0.6, "penalty")) != nullptr;
+      if (!complete) continue;
+      char ladder[160];
+      if (allDirections)
+        std::snprintf(ladder, sizeof ladder, "%dx%dx%d/%dx%dx%d/%dx%dx%d, all directions (run %dx%dx%d)", coarsest,
+                      coarsest, coarsestNz, 2 * coarsest, 2 * coarsest, 2 * coarsestNz, 4 * coarsest, 4 * coarsest,
+                      4 * coarsestNz, q.nx, q.nx, q.nz);
+      else
+        std::snprintf(ladder, sizeof ladder, "%dx%d/%d/%d x %d (run %dx%d)", coarsest, coarsest, 2 * coarsest,
+                      4 * coarsest, q.nz, q.nx, q.nx);
+      *coversThickness = allDirections;
+      return ladderTerm("mesh", ladder, m, member);
+    }
   char text[200];
   std::snprintf(text, sizeof text, "mesh %dx%dx%d %s (%s) not in the mesh study", q.nx, q.ny, q.nz,
                 elementTypeName(q.element), g.active() ? "graded" : "non-graded");
@@ -202,8 +217,9 @@ DiscretisationError discretisationError(const FemParameters& q, const Grading& g
     e.basis = e.kineticBasis = outside;
     return e;
   }
-  e.mesh = meshTerm(q, g);
-  e.thickness = thicknessTerm(q);
+  bool coversThickness = false;
+  e.mesh = meshTerm(q, g, &coversThickness);
+  e.thickness = coversThickness ? ErrorTerm{true, 0.0, "in the mesh ladder (all directions refined)"} : thicknessTerm(q);
   e.timeStep = timeStepTerm(q, dtRatio);
   e.contact = contactTerm(q);
   const ErrorTerm* terms[] = {&e.mesh, &e.thickness, &e.timeStep, &e.contact};

@@ -1,9 +1,10 @@
 #!/usr/bin/env python3
 """The error bar of every FEM result (error_estimate.hpp): gradfric-fem prints it next to mu_s and
 stores it in the results file. The study's rows (docs/fem_study.tsv), judged here by the ladder rule
-written out on its own: the mesh and time-step ladders converge, the thickness ladder (nz 5/10/20)
-does not, so the studied 50x50x5 mesh gets no bar and names the thickness ladder (printed and
-stored, NaN); an unstudied one (6x6x2) says "not measured" naming every term it lacks."""
+written out on its own: the ladder refined in every direction (50x50x5/100x100x10/200x200x20) and
+the time-step ladder converge, so the non-graded 50x50x5 mesh gets the bar recomputed here; the
+thickness ladder alone (nz 5/10/20) does not, so the same mesh graded (E -0.2, in-plane ladder
+only) gets none and names it; an unstudied one (6x6x2) says "not measured" naming every term."""
 import math
 import os
 import re
@@ -49,37 +50,62 @@ def converges(mu):
     return abs(mu[2] - mu[1]) < abs(mu[1] - mu[0]) / math.sqrt(2)
 
 
+def bound(mu, member):
+    """The bound of one member of a converged ladder: GCI if monotone, the last two values' bracket
+    if oscillating."""
+    first, second = mu[1] - mu[0], mu[2] - mu[1]
+    if first * second <= 0:
+        return 1.25 * max(abs(mu[member] - mu[1]), abs(mu[member] - mu[2])) / abs(mu[2])
+    p = math.log(first / second) / math.log(2)
+    ext = mu[2] + second / (2 ** min(p, 2) - 1)
+    return 1.25 * abs(mu[member] - ext) / ext
+
+
 rows = study()
-key = lambda n, nz=5, dts=0.6: ("state", 2.5e-8, "none", 0.0, n, nz, "q1", dts, "penalty")
-mesh = [rows[key(n)] for n in (50, 100, 200)]
+key = lambda n, nz=5, dts=0.6, contact="penalty": ("state", 2.5e-8, "none", 0.0, n, nz, "q1", dts, contact)
+uniform = [rows[key(50, 5)], rows[key(100, 10)], rows[key(200, 20)]]
 thickness = [rows[key(100, nz=nz)] for nz in (5, 10, 20)]
 dt = [rows[key(100, dts=d)] for d in (0.6, 0.3, 0.15)]
-if not converges(mesh) or not converges(dt) or converges(thickness):
-    fail("the study's ladders: expected mesh and dt to converge and the thickness not: %r %r %r" % (mesh, dt, thickness))
+if not converges(uniform) or not converges(dt) or converges(thickness):
+    fail("the study's ladders: expected the 3D and dt ladders to converge and the thickness alone not: %r %r %r"
+         % (uniform, dt, thickness))
+kinematic = rows[key(100, contact="kinematic")]
+bar = bound(uniform, 0) + bound(dt, 0) + 1.25 * abs(rows[key(100)] - kinematic) / kinematic
 
-# The studied 50x50x5 mesh: its mesh and dt terms are bounded, its thickness term is not (nz 5/10/20
-# grows), so it gets no bar and says why.
+# The studied 50x50x5 mesh: the coarsest of the ladder refined in every direction, which bounds the
+# thickness as well; plus the dt and contact terms.
 out, path = run((50, 50, 5), [], "studied")
-line = re.search(r"mu_s \(global\) +([0-9.]+) \(discretisation error not measured: thickness not converged: "
-                 r"nz 5/10/20 \(non-graded 100x100\) give 0\.936322, 0\.937429, 0\.940538", out)
+line = re.search(r"mu_s \(global\) +([0-9.]+) \+- ([0-9.]+) % \(discretisation: mesh [0-9.]+ %, thickness 0\.00 %", out)
 if not line:
-    fail("studied mesh: no 'not measured' naming the thickness ladder next to mu_s", out)
+    fail("studied mesh: no measured error bar next to mu_s", out)
+if abs(float(line.group(2)) - 100 * bar) > 0.006:
+    fail("printed bar %s %% differs from the study's %.3f %%" % (line.group(2), 100 * bar))
 if not re.search(r"mu_k \(kinetic window\) +\S+ \(discretisation error not measured: ", out):
     fail("studied mesh: mu_k without its 'not measured'", out)
 with h5py.File(path, "r") as f:
     results = f["results"].attrs
     if abs(results["mu_s"] - float(line.group(1))) > 1e-6:
         fail("stored mu_s %r differs from the printed %s" % (results["mu_s"], line.group(1)))
-    if not math.isnan(results["mu_s_discretisation_error"]):
-        fail("stored mu_s_discretisation_error %r, expected NaN" % results["mu_s_discretisation_error"])
+    if abs(results["mu_s_discretisation_error"] - bar) > 1e-9:
+        fail("stored mu_s_discretisation_error %r, expected %r" % (results["mu_s_discretisation_error"], bar))
     basis = results["mu_s_error_basis"]
     basis = basis.decode() if isinstance(basis, bytes) else str(basis)
-    if not basis.startswith("not measured: thickness not converged: nz 5/10/20"):
+    if not basis.startswith("mesh ") or "50x50x5/100x100x10/200x200x20, all directions" not in basis:
         fail("stored mu_s_error_basis %r" % basis)
     if not math.isnan(results["mu_k_discretisation_error"]):
         fail("stored mu_k_discretisation_error is not NaN")
     if f["results/units"].attrs["mu_s_discretisation_error"] not in (b"1", "1"):
         fail("mu_s_discretisation_error without its unit")
+
+# The same mesh graded (E -0.2): its in-plane ladder converges, the thickness ladder does not: no
+# bar, and the reason.
+out, path = run((50, 50, 5), ["-grading_profile", "linear", "-grading_property", "E", "-grading_delta", "-0.2"], "graded")
+if not re.search(r"mu_s \(global\) +[0-9.]+ \(discretisation error not measured: thickness not converged: "
+                 r"nz 5/10/20 \(non-graded 100x100\) give 0\.936322, 0\.937429, 0\.940538", out):
+    fail("graded studied mesh: no 'not measured' naming the thickness ladder next to mu_s", out)
+with h5py.File(path, "r") as f:
+    if not math.isnan(f["results"].attrs["mu_s_discretisation_error"]):
+        fail("graded studied mesh: stored error is not NaN")
 
 out, path = run((6, 6, 2), [], "unstudied")
 if not re.search(r"mu_s \(global\) +[0-9.]+ \(discretisation error not measured: mesh 6x6x2 q1 \(non-graded\) not in the mesh study; "

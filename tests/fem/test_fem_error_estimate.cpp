@@ -31,11 +31,15 @@ Grading linear(GradedProperty property, double delta) {
 // The non-graded ladder at the default D_c (2.5e-8 m), 50/100/200 x 5 (docs/fem_study.tsv).
 constexpr double kCoarse = 0.950239, kMedium = 0.936322, kFine = 0.932050;
 
-double gci(double run) {
-  const double order = std::log((kMedium - kCoarse) / (kFine - kMedium)) / std::log(2.0);
-  const double extrapolated = kFine + (kFine - kMedium) / (std::pow(2.0, std::min(order, 2.0)) - 1.0);
+// Roache's GCI of `run` in a monotone ladder coarse, medium, fine (p capped at 2).
+double gci(double run, double coarse = kCoarse, double medium = kMedium, double fine = kFine) {
+  const double order = std::log((medium - coarse) / (fine - medium)) / std::log(2.0);
+  const double extrapolated = fine + (fine - medium) / (std::pow(2.0, std::min(order, 2.0)) - 1.0);
   return 1.25 * std::fabs(run - extrapolated) / extrapolated;
 }
+
+// The ladder refined in every direction: 50x50x5, 100x100x10, 200x200x20.
+constexpr double kUniformMedium = 0.937429, kUniformFine = 0.933455;
 
 }  // namespace
 
@@ -59,10 +63,30 @@ TEST(FemErrorBar, PaperMeshAtTheDefaultsIsTheGciOfItsLadder) {
   FemParameters fine = q;
   fine.nx = fine.ny = 200;
   EXPECT_NEAR(discretisationError(fine, Grading{}, 0.6).mesh.relative, gci(kFine), 1e-12);
-  fine.nx = fine.ny = 50;
-  EXPECT_NEAR(discretisationError(fine, Grading{}, 0.6).mesh.relative, gci(kCoarse), 1e-12);
   EXPECT_LT(gci(kFine), gci(kMedium));
   EXPECT_LT(gci(kMedium), gci(kCoarse));
+}
+
+TEST(FemErrorBar, ALadderRefinedInEveryDirectionBoundsTheThicknessToo) {
+  FemParameters q = paperDefaults();
+  q.nz = 10;  // 100x100x10: the middle of 50x50x5, 100x100x10, 200x200x20
+  const DiscretisationError e = discretisationError(q, Grading{}, 0.6);
+  ASSERT_TRUE(e.measured) << e.basis;
+  const double mesh = gci(kUniformMedium, kCoarse, kUniformMedium, kUniformFine);
+  EXPECT_NEAR(e.mesh.relative, mesh, 1e-12);
+  EXPECT_LT(mesh, 0.01) << "below 1 %";
+  EXPECT_EQ(e.thickness.relative, 0.0);
+  EXPECT_NE(e.mesh.basis.find("all directions"), std::string::npos) << e.mesh.basis;
+  EXPECT_NEAR(e.relative, mesh + e.timeStep.relative + e.contact.relative, 1e-15);
+  EXPECT_EQ(withErrorBar(0.937429, e).rfind("0.937429 +- ", 0), 0u) << withErrorBar(0.937429, e);
+  // 50x50x5 belongs to both ladders: the one refined in every direction is taken.
+  q.nx = q.ny = 50;
+  q.nz = 5;
+  const DiscretisationError coarse = discretisationError(q, Grading{}, 0.6);
+  ASSERT_TRUE(coarse.measured) << coarse.basis;
+  EXPECT_NEAR(coarse.mesh.relative, gci(kCoarse, kCoarse, kUniformMedium, kUniformFine), 1e-12);
+  // A graded run has no such ladder: its in-plane ladder and the thickness ladder (not converged).
+  EXPECT_FALSE(discretisationError(q, linear(GradedProperty::YoungsModulus, -0.2), 0.6).measured);
 }
 
 TEST(FemErrorBar, AnOscillatingLadderThatShrinksIsBracketedByItsLastTwoValues) {
