@@ -14,8 +14,10 @@ using namespace gradfric::fem;
 
 namespace {
 
+// The paper's mesh 100 x 100 x 5 at the defaults otherwise (the default mesh is 100 x 100 x 10).
 FemParameters paperDefaults() {
   FemParameters q;
+  q.nz = 5;
   q.resolveDerived();
   return q;
 }
@@ -68,8 +70,9 @@ TEST(FemErrorBar, PaperMeshAtTheDefaultsIsTheGciOfItsLadder) {
 }
 
 TEST(FemErrorBar, ALadderRefinedInEveryDirectionBoundsTheThicknessToo) {
-  FemParameters q = paperDefaults();
-  q.nz = 10;  // 100x100x10: the middle of 50x50x5, 100x100x10, 200x200x20
+  FemParameters q;  // the defaults: 100x100x10, the middle of 50x50x5, 100x100x10, 200x200x20
+  q.resolveDerived();
+  ASSERT_EQ(q.nz, 10);
   const DiscretisationError e = discretisationError(q, Grading{}, 0.6);
   ASSERT_TRUE(e.measured) << e.basis;
   const double mesh = gci(kUniformMedium, kCoarse, kUniformMedium, kUniformFine);

@@ -27,7 +27,7 @@ const char* contactMethodName(ContactMethod method);
 
 struct FemParameters {
   // Mesh and geometry
-  int nx = 100, ny = 100, nz = 5;
+  int nx = 100, ny = 100, nz = 10;  // nz 10: the 3D ladder bounds mu_s there (docs/accuracy_fem.md)
   ElementType element = ElementType::Trilinear;  // -fem_element q1 | q1i (docs/fem.md)
   bool blockedKernel = true;  // -fem_kernel blocked | dense (mirror-basis kernel, docs/accuracy_fem_history.md "Cost")
   // -fem_pressure_step static | dynamic: step 1 as the pressed equilibrium solved directly
