@@ -47,10 +47,28 @@ BulkViscosity::BulkViscosity(const PlateMesh& mesh, double youngsModulus, double
   GF_CALL(DMCreateLocalVector(mesh.dm(), xLocal_.out()));
   GF_CALL(VecDuplicate(xLocal_, fLocal_.out()));
   GF_CALL(DMCreateGlobalVector(mesh.dm(), fGlobal_.out()));
+  shared_ = mesh.orderedAssembly().sharesVertices();
+  if (shared_) {
+    corner_ = mesh.orderedAssembly().cornerSlots(3);
+    slots_.assign(mesh.orderedAssembly().slotCount(3), 0.0);
+  }
 }
 
-double BulkViscosity::addForce(Vec X, Vec F) {
-  if (!active()) return 0.0;
+// The cell's viscous force on its corners' velocity slots, f[corner a] -= w_a (three values a
+// corner, 8 corners); returns the power of the cell.
+double BulkViscosity::cellForce(PetscInt c, const PetscScalar* x, std::array<double, 24>* w) const {
+  const PetscInt* o = mesh_.cellStateOffsets().data() + 8 * c;
+  double rate = 0;
+  for (int a = 0; a < 8; ++a)
+    for (int d = 0; d < 3; ++d) rate += x[o[a] + 3 + d] * gradient_[a][d];
+  const double stress = bulkViscousStress(linear_, quadratic_, density_, cellSpeed_[c], length_, rate);
+  for (int a = 0; a < 8; ++a)
+    for (int d = 0; d < 3; ++d) (*w)[3 * a + d] = volume_ * stress * gradient_[a][d];
+  return volume_ * stress * rate;
+}
+
+void BulkViscosity::addForce(Vec X, Vec F, ExactSum* energy, double dt) {
+  if (!active()) return;
   GF_CALL(DMGlobalToLocal(mesh_.dm(), X, INSERT_VALUES, xLocal_));
   GF_CALL(VecZeroEntries(fLocal_));
   const PetscScalar* x = nullptr;
@@ -58,24 +76,30 @@ double BulkViscosity::addForce(Vec X, Vec F) {
   GF_CALL(VecGetArrayRead(xLocal_, &x));
   GF_CALL(VecGetArray(fLocal_, &fl));
   const std::vector<PetscInt>& off = mesh_.cellStateOffsets();
-  double power = 0;
+  std::array<double, 24> w;
   for (PetscInt c = 0; c < mesh_.localCells(); ++c) {
-    const PetscInt* o = off.data() + 8 * c;
-    double rate = 0;
+    energy->add(cellForce(c, x, &w) * dt);
     for (int a = 0; a < 8; ++a)
-      for (int d = 0; d < 3; ++d) rate += x[o[a] + 3 + d] * gradient_[a][d];
-    const double stress = bulkViscousStress(linear_, quadratic_, density_, cellSpeed_[c], length_, rate);
-    if (stress == 0.0) continue;
-    power += volume_ * stress * rate;
-    for (int a = 0; a < 8; ++a)
-      for (int d = 0; d < 3; ++d) fl[o[a] + 3 + d] -= volume_ * stress * gradient_[a][d];
+      for (int d = 0; d < 3; ++d) fl[off[8 * c + a] + 3 + d] -= w[3 * a + d];
   }
   GF_CALL(VecRestoreArray(fLocal_, &fl));
-  GF_CALL(VecRestoreArrayRead(xLocal_, &x));
   GF_CALL(VecZeroEntries(fGlobal_));
   GF_CALL(DMLocalToGlobal(mesh_.dm(), fLocal_, ADD_VALUES, fGlobal_));
+  const OrderedAssembly& ordered = mesh_.orderedAssembly();
+  if (shared_) {  // the sums at the shared vertices in the global cell order
+    std::fill(slots_.begin(), slots_.end(), 0.0);
+    for (std::size_t i = 0; i < ordered.boundaryCells().size(); ++i) {
+      cellForce(ordered.boundaryCells()[i], x, &w);
+      for (int a = 0; a < 8; ++a)
+        for (int d = 0; d < 3; ++d) slots_[corner_[8 * i + a] + d] -= w[3 * a + d];
+    }
+    PetscScalar* g = nullptr;
+    GF_CALL(VecGetArray(fGlobal_, &g));
+    ordered.finish(3, slots_, g, 6, 3);
+    GF_CALL(VecRestoreArray(fGlobal_, &g));
+  }
+  GF_CALL(VecRestoreArrayRead(xLocal_, &x));
   GF_CALL(VecAXPY(F, 1.0, fGlobal_));  // only the force slots of fGlobal are non-zero
-  return power;
 }
 
 }  // namespace gradfric::fem

@@ -2,6 +2,7 @@
 
 #include "gradfric/core/gather.hpp"
 #include "gradfric/core/petsc_call.hpp"
+#include "gradfric/core/reproducible_sum.hpp"
 #include "gradfric/physics/property_sampler.hpp"
 
 #include <algorithm>
@@ -39,12 +40,12 @@ ContactBoundary::ContactBoundary(const PlateMesh& mesh, const PenaltyStiffness& 
   law_ = makeContactLaw(law, std::move(sites), nodes_.size(), memoryLength, healingOnly);
 }
 
-ContactTotals ContactBoundary::addForce(Vec X, Vec F, double dt) {
+ContactSums ContactBoundary::addForce(Vec X, Vec F, double dt) {
   const PetscScalar* x = nullptr;
   PetscScalar* f = nullptr;
   GF_CALL(VecGetArrayRead(X, &x));
   GF_CALL(VecGetArray(F, &f));
-  ContactTotals totals;
+  ContactSums totals;
   visitContactLaw(law_, [&](auto& law) {
     const bool state = hasSlipState(law);
     for (std::size_t site = 0; site < nodes_.size(); ++site) {
@@ -70,13 +71,13 @@ ContactTotals ContactBoundary::addForce(Vec X, Vec F, double dt) {
   return totals;
 }
 
-ContactTotals ContactBoundary::addKinematicForce(Vec X, Vec F, const std::vector<double>& mass,
+ContactSums ContactBoundary::addKinematicForce(Vec X, Vec F, const std::vector<double>& mass,
                                                  const SlidingDamping& damping, double dt) {
   const PetscScalar* x = nullptr;
   PetscScalar* f = nullptr;
   GF_CALL(VecGetArrayRead(X, &x));
   GF_CALL(VecGetArray(F, &f));
-  ContactTotals totals;
+  ContactSums totals;
   visitContactLaw(law_, [&](auto& law) {
     const bool state = hasSlipState(law);
     for (std::size_t site = 0; site < nodes_.size(); ++site) {
@@ -106,7 +107,7 @@ ContactTotals ContactBoundary::addKinematicForce(Vec X, Vec F, const std::vector
 // Both contact methods end the same way: the node's force is kept for the work of the step, added
 // to its block's right-hand side and counted (n.pendingState is set by the caller).
 void ContactBoundary::applyNodeForce(Node& n, const PetscScalar* xb, PetscScalar* fb, double fx, double fy, double fz,
-                                     ContactTotals& totals) {
+                                     ContactSums& totals) {
   n.pendingForce[0] = fx;
   n.pendingForce[1] = fy;
   n.pendingForce[2] = fz;
@@ -114,9 +115,9 @@ void ContactBoundary::applyNodeForce(Node& n, const PetscScalar* xb, PetscScalar
   fb[3] += fx;
   fb[4] += fy;
   fb[5] += fz;
-  totals.fx += fx;
-  totals.fy += fy;
-  totals.fn += fz;
+  totals.fx.add(fx);
+  totals.fy.add(fy);
+  totals.fn.add(fz);
   if (n.pendingState == ContactState::Stick) ++totals.stick;
   else if (n.pendingState == ContactState::Slip) ++totals.slip;
   else ++totals.open;
@@ -135,9 +136,7 @@ double ContactBoundary::committedStrength(int site) const {
 }
 
 double ContactBoundary::work() const {
-  double total = 0;
-  GF_CALL_MPI(MPI_Allreduce(&work_, &total, 1, MPI_DOUBLE, MPI_SUM, comm_));
-  return total;
+  return sumOverRanks(comm_, work_);
 }
 
 double ContactBoundary::largestStaticCoefficient() const {
@@ -159,7 +158,7 @@ void ContactBoundary::commit() {
     if (n.pendingState == ContactState::Slip)
       lastStepSlip_ = std::max(lastStepSlip_, std::hypot(n.pendingU[0] - n.u[0], n.pendingU[1] - n.u[1]));
     for (int d = 0; d < 3; ++d) {
-      work_ += 0.5 * (n.force[d] + n.pendingForce[d]) * (n.pendingU[d] - n.u[d]);
+      work_.add(0.5 * (n.force[d] + n.pendingForce[d]) * (n.pendingU[d] - n.u[d]));
       n.force[d] = n.pendingForce[d];
       n.u[d] = n.pendingU[d];
     }
@@ -226,17 +225,18 @@ double ContactBoundary::largestSlipPerStep(double until) const {
 void ContactBoundary::penetration(Vec X, double* mean, double* minimum, double* maximum) const {
   const PetscScalar* x = nullptr;
   GF_CALL(VecGetArrayRead(X, &x));
-  double s[2] = {0, 0}, lo = 1e300, hi = -1e300;
+  ExactSum s[2];
+  double lo = 1e300, hi = -1e300;
   for (const Node& n : nodes_) {
     const double pen = -x[6 * n.block + 2];
-    s[0] += pen;
-    s[1] += 1;
+    s[0].add(pen);
+    s[1].add(1);
     lo = std::min(lo, pen);
     hi = std::max(hi, pen);
   }
   GF_CALL(VecRestoreArrayRead(X, &x));
-  double sum[2];
-  GF_CALL_MPI(MPI_Allreduce(s, sum, 2, MPI_DOUBLE, MPI_SUM, comm_));
+  allreduceExact(comm_, s, 2);
+  const double sum[2] = {s[0].value(), s[1].value()};
   GF_CALL_MPI(MPI_Allreduce(MPI_IN_PLACE, &lo, 1, MPI_DOUBLE, MPI_MIN, comm_));
   GF_CALL_MPI(MPI_Allreduce(MPI_IN_PLACE, &hi, 1, MPI_DOUBLE, MPI_MAX, comm_));
   *mean = sum[0] / sum[1];

@@ -1,6 +1,6 @@
 #include "gradfric/fem/contact_resultants.hpp"
 
-#include "gradfric/core/petsc_call.hpp"
+#include "gradfric/core/reproducible_sum.hpp"
 
 #include <cmath>
 
@@ -11,19 +11,21 @@ ContactResultants contactResultants(const PlateModel& model) {
   // The node line nearest x = L/2 (an odd nx has none on it exactly).
   const double centreLine = std::round(0.5 * model.mesh().size().nx) * hx;
   enum { Fx, Fy, Fn, My, Mx, TrailSum, TrailCount, LeadSum, LeadCount, CentreSum, CentreCount, Count };
-  double local[Count] = {}, sum[Count] = {};
+  ExactSum local[Count];  // exact: the same bits on any number of ranks
   for (const ContactBoundary::Node& n : model.contact().nodes()) {
     const double force = n.pressure * n.area;
-    local[Fx] += n.tx * n.area;
-    local[Fy] += n.ty * n.area;
-    local[Fn] += force;
-    local[My] += (n.x - 0.5 * L) * force;
-    local[Mx] += (n.y - 0.5 * L) * force;
-    if (n.x < 0.5 * hx) local[TrailSum] += n.pressure, local[TrailCount] += 1;
-    if (n.x > L - 0.5 * hx) local[LeadSum] += n.pressure, local[LeadCount] += 1;
-    if (std::fabs(n.x - centreLine) < 0.5 * hx) local[CentreSum] += n.pressure, local[CentreCount] += 1;
+    local[Fx].add(n.tx * n.area);
+    local[Fy].add(n.ty * n.area);
+    local[Fn].add(force);
+    local[My].add((n.x - 0.5 * L) * force);
+    local[Mx].add((n.y - 0.5 * L) * force);
+    if (n.x < 0.5 * hx) local[TrailSum].add(n.pressure), local[TrailCount].add(1);
+    if (n.x > L - 0.5 * hx) local[LeadSum].add(n.pressure), local[LeadCount].add(1);
+    if (std::fabs(n.x - centreLine) < 0.5 * hx) local[CentreSum].add(n.pressure), local[CentreCount].add(1);
   }
-  GF_CALL_MPI(MPI_Allreduce(local, sum, Count, MPI_DOUBLE, MPI_SUM, model.comm()));
+  allreduceExact(model.comm(), local, Count);
+  double sum[Count];
+  for (int i = 0; i < Count; ++i) sum[i] = local[i].value();
   ContactResultants r;
   r.forceX = sum[Fx];
   r.forceY = sum[Fy];

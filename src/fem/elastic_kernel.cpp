@@ -21,9 +21,10 @@ namespace gradfric::fem {
 
 __attribute__((target_clones("avx2", "default")))
 void elasticKernel(PetscInt numCells, const PetscInt* cellOffsets, const double* cellModulus, const double* stiffness,
-                   const double* u, const double* v, double beta, double* f) {
+                   const double* u, const double* v, double beta, double* f, const PetscInt* outOffsets) {
   for (PetscInt c = 0; c < numCells; ++c) {
     const PetscInt* off = cellOffsets + 8 * c;
+    const PetscInt* out = (outOffsets ? outOffsets : cellOffsets) + 8 * c;
     double ue[24];
     if (v && beta != 0.0) {
       for (int a = 0; a < 8; ++a)
@@ -43,7 +44,7 @@ void elasticKernel(PetscInt numCells, const PetscInt* cellOffsets, const double*
     }
     const double scale = -cellModulus[c];
     for (int a = 0; a < 8; ++a)
-      for (int d = 0; d < 3; ++d) f[off[a] + d] += scale * fe[3 * a + d];
+      for (int d = 0; d < 3; ++d) f[out[a] + d] += scale * fe[3 * a + d];
   }
 }
 
@@ -95,7 +96,7 @@ inline void walshHadamard(Lanes* x) {  // x[8], in place, unnormalised
 
 __attribute__((target_clones("avx2", "default")))
 void elasticKernelBlocked(PetscInt numCells, const PetscInt* cellOffsets, const double* cellModulus,
-                          const double* blocks, const double* u, double* f) {
+                          const double* blocks, const double* u, double* f, const PetscInt* outOffsets) {
   for (PetscInt c = 0; c < numCells; c += 4) {
     const int lanes = static_cast<int>(std::min<PetscInt>(4, numCells - c));
     const PetscInt* off[4];
@@ -119,9 +120,11 @@ void elasticKernelBlocked(PetscInt numCells, const PetscInt* cellOffsets, const 
     for (int l = 0; l < lanes; ++l) scale[l] = -cellModulus[c + l];
     for (int a = 0; a < 8; ++a)
       for (int d = 0; d < 3; ++d) g[d][a] *= scale;
-    for (int l = 0; l < lanes; ++l)
+    for (int l = 0; l < lanes; ++l) {
+      const PetscInt* out = (outOffsets ? outOffsets : cellOffsets) + 8 * (c + l);
       for (int a = 0; a < 8; ++a)
-        for (int d = 0; d < 3; ++d) f[off[l][a] + d] += g[d][a][l];
+        for (int d = 0; d < 3; ++d) f[out[a] + d] += g[d][a][l];
+    }
   }
 }
 

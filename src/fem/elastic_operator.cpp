@@ -1,6 +1,7 @@
 #include "gradfric/fem/elastic_operator.hpp"
 
 #include "gradfric/core/petsc_call.hpp"
+#include "gradfric/core/reproducible_sum.hpp"
 #include "gradfric/fem/log_events.hpp"
 #include "gradfric/physics/property_sampler.hpp"
 
@@ -48,10 +49,43 @@ ElasticOperator::ElasticOperator(const PlateMesh& mesh, double youngsModulus, do
   GF_CALL(DMCreateLocalVector(dmU_, uLocal_.out()));
   GF_CALL(VecDuplicate(uLocal_, fLocalU_.out()));
   GF_CALL(DMCreateLocalVector(mesh.dm(), xLocal_.out()));
-  GF_CALL(VecDuplicate(xLocal_, fLocal_.out()));
   PetscInt n = 0;
   GF_CALL(VecGetLocalSize(uGlobal_, &n));
   if (n != 3 * mesh.ownedBlocks()) throw std::runtime_error("plate mesh: displacement and state layouts differ");
+  const OrderedAssembly& ordered = mesh.orderedAssembly();
+  shared_ = ordered.sharesVertices();
+  if (shared_) {
+    for (PetscInt c : ordered.boundaryCells()) {
+      boundaryDispOff_.insert(boundaryDispOff_.end(), cellDispOff_.begin() + 8 * c, cellDispOff_.begin() + 8 * c + 8);
+      boundaryModulus_.push_back(cellModulus_[c]);
+    }
+    boundarySlots_ = ordered.cornerSlots(3);
+    slots_.assign(ordered.slotCount(3), 0.0);
+  }
+}
+
+void ElasticOperator::reorderSharedSums(const double* uLocal, double* global) {
+  if (!shared_) return;
+  std::fill(slots_.begin(), slots_.end(), 0.0);
+  const PetscInt cells = static_cast<PetscInt>(boundaryModulus_.size());
+  if (blocked_)
+    elasticKernelBlocked(cells, boundaryDispOff_.data(), boundaryModulus_.data(), blocks_.data(), uLocal, slots_.data(),
+                         boundarySlots_.data());
+  else
+    elasticKernel(cells, boundaryDispOff_.data(), boundaryModulus_.data(), element_.stiffness.data(), uLocal, nullptr,
+                  0.0, slots_.data(), boundarySlots_.data());
+  mesh_.orderedAssembly().finish(3, slots_, global, 3, 0);
+}
+
+void ElasticOperator::fixSharedSums(Vec uLocal, Vec fGlobal) {
+  if (!shared_) return;
+  const PetscScalar* u = nullptr;
+  PetscScalar* f = nullptr;
+  GF_CALL(VecGetArrayRead(uLocal, &u));
+  GF_CALL(VecGetArray(fGlobal, &f));
+  reorderSharedSums(u, f);
+  GF_CALL(VecRestoreArray(fGlobal, &f));
+  GF_CALL(VecRestoreArrayRead(uLocal, &u));
 }
 
 void ElasticOperator::shuffleCellOrder(unsigned seed) {
@@ -91,6 +125,7 @@ void ElasticOperator::setForce(Vec X, Vec F) {
   kernelForce(uLocal_, fLocalU_);
   GF_CALL(VecZeroEntries(fGlobal_));
   GF_CALL(DMLocalToGlobal(dmU_, fLocalU_, ADD_VALUES, fGlobal_));
+  fixSharedSums(uLocal_, fGlobal_);
   haveForce_ = true;
   PetscScalar* f = nullptr;
   const PetscScalar* fe = nullptr;
@@ -124,40 +159,31 @@ bool ElasticOperator::lastForceIsFor(Vec X) {
 }
 
 double ElasticOperator::energy(Vec X) {
-  double e = 0;
-  if (lastForceIsFor(X)) {
-    const PetscScalar *u = nullptr, *f = nullptr;
-    GF_CALL(VecGetArrayRead(uGlobal_, &u));
-    GF_CALL(VecGetArrayRead(fGlobal_, &f));
-    for (PetscInt b = 0; b < mesh_.ownedBlocks(); ++b)
-      for (int d = 0; d < 3; ++d) e -= 0.5 * u[3 * b + d] * f[3 * b + d];
-    GF_CALL(VecRestoreArrayRead(uGlobal_, &u));
-    GF_CALL(VecRestoreArrayRead(fGlobal_, &f));
-  } else {
-    DM dm = mesh_.dm();
-    GF_CALL(DMGlobalToLocal(dm, X, INSERT_VALUES, xLocal_));
-    GF_CALL(VecZeroEntries(fLocal_));
-    const PetscScalar* xl = nullptr;
-    PetscScalar* fl = nullptr;
-    GF_CALL(VecGetArrayRead(xLocal_, &xl));
-    GF_CALL(VecGetArray(fLocal_, &fl));
-    applyKernel(mesh_.cellStateOffsets(), xl, fl);
-    GF_CALL(VecRestoreArrayRead(xLocal_, &xl));
-    GF_CALL(VecRestoreArray(fLocal_, &fl));
-    if (!stateForce_) GF_CALL(VecDuplicate(X, stateForce_.out()));
-    GF_CALL(VecZeroEntries(stateForce_));
-    GF_CALL(DMLocalToGlobal(dm, fLocal_, ADD_VALUES, stateForce_));
-    const PetscScalar *x = nullptr, *f = nullptr;
+  if (!lastForceIsFor(X)) {  // the displacements of X through the displacement DM
+    if (!energyU_) {
+      GF_CALL(VecDuplicate(uGlobal_, energyU_.out()));
+      GF_CALL(VecDuplicate(uGlobal_, energyF_.out()));
+    }
+    const PetscScalar* x = nullptr;
+    PetscScalar* u = nullptr;
     GF_CALL(VecGetArrayRead(X, &x));
-    GF_CALL(VecGetArrayRead(stateForce_, &f));
+    GF_CALL(VecGetArray(energyU_, &u));
     for (PetscInt b = 0; b < mesh_.ownedBlocks(); ++b)
-      for (int d = 0; d < 3; ++d) e -= 0.5 * x[6 * b + d] * f[6 * b + d];
+      for (int d = 0; d < 3; ++d) u[3 * b + d] = x[6 * b + d];
+    GF_CALL(VecRestoreArray(energyU_, &u));
     GF_CALL(VecRestoreArrayRead(X, &x));
-    GF_CALL(VecRestoreArrayRead(stateForce_, &f));
+    forceSpecialised(energyU_, energyF_);
   }
-  double sum = 0;
-  GF_CALL_MPI(MPI_Allreduce(&e, &sum, 1, MPI_DOUBLE, MPI_SUM, mesh_.comm()));
-  return sum;
+  Vec uVec = lastForceIsFor(X) ? uGlobal_.get() : energyU_.get();
+  Vec fVec = uVec == uGlobal_.get() ? fGlobal_.get() : energyF_.get();
+  ExactSum e;
+  const PetscScalar *u = nullptr, *f = nullptr;
+  GF_CALL(VecGetArrayRead(uVec, &u));
+  GF_CALL(VecGetArrayRead(fVec, &f));
+  for (PetscInt i = 0; i < 3 * mesh_.ownedBlocks(); ++i) e.add(-0.5 * u[i] * f[i]);
+  GF_CALL(VecRestoreArrayRead(uVec, &u));
+  GF_CALL(VecRestoreArrayRead(fVec, &f));
+  return sumOverRanks(mesh_.comm(), e);
 }
 
 void ElasticOperator::cellStresses(Vec X, std::vector<std::array<double, 6>>* stress) {
@@ -183,22 +209,20 @@ void ElasticOperator::kernelForce(Vec uLocal, Vec fLocal) {
   GF_CALL(VecGetArrayRead(uLocal, &ul));
   GF_CALL(VecGetArray(fLocal, &fl));
   GF_CALL(PetscLogEventBegin(evKernel_, 0, 0, 0, 0));
-  applyKernel(cellDispOff_, ul, fl);
+  applyKernel(ul, fl);
   GF_CALL(PetscLogEventEnd(evKernel_, 0, 0, 0, 0));
   GF_CALL(PetscLogFlops((blocked_ ? 312.0 : 1152.0) * mesh_.localCells()));  // blocks + transforms, or 24x24
   GF_CALL(VecRestoreArrayRead(uLocal, &ul));
   GF_CALL(VecRestoreArray(fLocal, &fl));
 }
 
-void ElasticOperator::applyKernel(const std::vector<PetscInt>& cellOffsets, const double* u, double* f) const {
+void ElasticOperator::applyKernel(const double* u, double* f) const {
   const PetscInt cells = mesh_.localCells();
-  // The displacement DM's offsets follow shuffleCellOrder; the state's (energy fallback) do not.
-  const double* modulus =
-      !shuffledModulus_.empty() && &cellOffsets == &cellDispOff_ ? shuffledModulus_.data() : cellModulus_.data();
+  const double* modulus = shuffledModulus_.empty() ? cellModulus_.data() : shuffledModulus_.data();
   if (blocked_)
-    elasticKernelBlocked(cells, cellOffsets.data(), modulus, blocks_.data(), u, f);
+    elasticKernelBlocked(cells, cellDispOff_.data(), modulus, blocks_.data(), u, f);
   else
-    elasticKernel(cells, cellOffsets.data(), modulus, element_.stiffness.data(), u, nullptr, 0.0, f);
+    elasticKernel(cells, cellDispOff_.data(), modulus, element_.stiffness.data(), u, nullptr, 0.0, f);
 }
 
 void ElasticOperator::forceSpecialised(Vec u, Vec f) {
@@ -209,6 +233,7 @@ void ElasticOperator::forceSpecialised(Vec u, Vec f) {
   kernelForce(uLoc, fLoc);
   GF_CALL(VecZeroEntries(f));
   GF_CALL(DMLocalToGlobal(dmU_, fLoc, ADD_VALUES, f));
+  fixSharedSums(uLoc, f);
   Vec a = uLoc.release(), b = fLoc.release();
   GF_CALL(DMRestoreLocalVector(dmU_, &a));
   GF_CALL(DMRestoreLocalVector(dmU_, &b));
@@ -226,7 +251,23 @@ void ElasticOperator::addStiffnessDiagonal(Vec diag) {
       for (int k = 0; k < 3; ++k)
         d[cellDispOff_[8 * c + a] + k] += modulus[c] * element_.stiffness[25 * (3 * a + k)];
   GF_CALL(VecRestoreArray(local, &d));
-  GF_CALL(DMLocalToGlobal(dmU_, local, ADD_VALUES, diag));
+  OwnedVec assembled;  // diag + the diagonal, its shared sums in the global cell order
+  GF_CALL(VecDuplicate(diag, assembled.out()));
+  GF_CALL(VecZeroEntries(assembled));
+  GF_CALL(DMLocalToGlobal(dmU_, local, ADD_VALUES, assembled));
+  const OrderedAssembly& ordered = mesh_.orderedAssembly();
+  if (shared_) {
+    std::vector<double> slots(ordered.slotCount(3), 0.0);
+    for (std::size_t i = 0; i < boundaryModulus_.size(); ++i)
+      for (int a = 0; a < 8; ++a)
+        for (int k = 0; k < 3; ++k)
+          slots[boundarySlots_[8 * i + a] + k] += boundaryModulus_[i] * element_.stiffness[25 * (3 * a + k)];
+    PetscScalar* g = nullptr;
+    GF_CALL(VecGetArray(assembled, &g));
+    ordered.finish(3, slots, g, 3, 0);
+    GF_CALL(VecRestoreArray(assembled, &g));
+  }
+  GF_CALL(VecAXPY(diag, 1.0, assembled));
   Vec v = local.release();
   GF_CALL(DMRestoreLocalVector(dmU_, &v));
 }

@@ -1,6 +1,7 @@
 #include "gradfric/fem/lumped_mass.hpp"
 
 #include "gradfric/core/petsc_call.hpp"
+#include "gradfric/core/reproducible_sum.hpp"
 
 namespace gradfric::fem {
 
@@ -13,22 +14,19 @@ LumpedMass::LumpedMass(const PlateMesh& mesh, double density) : comm_(mesh.comm(
 }
 
 double LumpedMass::total() const {
-  double m = 0, sum = 0;
-  for (double mb : mass_) m += mb;
-  GF_CALL_MPI(MPI_Allreduce(&m, &sum, 1, MPI_DOUBLE, MPI_SUM, comm_));
-  return sum;
+  ExactSum m;
+  for (double mb : mass_) m.add(mb);
+  return sumOverRanks(comm_, m);
 }
 
 double LumpedMass::kineticEnergy(Vec X) const {
   const PetscScalar* x = nullptr;
   GF_CALL(VecGetArrayRead(X, &x));
-  double e = 0;
+  ExactSum e;
   for (std::size_t b = 0; b < mass_.size(); ++b)
-    for (int d = 3; d < 6; ++d) e += 0.5 * mass_[b] * x[6 * b + d] * x[6 * b + d];
+    for (int d = 3; d < 6; ++d) e.add(0.5 * mass_[b] * x[6 * b + d] * x[6 * b + d]);
   GF_CALL(VecRestoreArrayRead(X, &x));
-  double sum = 0;
-  GF_CALL_MPI(MPI_Allreduce(&e, &sum, 1, MPI_DOUBLE, MPI_SUM, comm_));
-  return sum;
+  return sumOverRanks(comm_, e);
 }
 
 }  // namespace gradfric::fem

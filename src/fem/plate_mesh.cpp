@@ -30,6 +30,8 @@ PlateMesh::PlateMesh(MPI_Comm comm, const MeshSize& size, const std::string& par
   build(partitioner);
   buildCells();
   buildOwnedVertices();
+  ordered_ = std::make_unique<OrderedAssembly>(dm_, size_.nx, size_.ny, hx(), hy(), hz(), vStart_, vEnd_,
+                                               cellVertices_, cellCentre_, blockOfVertex_);
 }
 
 PetscInt PlateMesh::globalVertices() const {
@@ -129,10 +131,12 @@ void PlateMesh::buildOwnedVertices() {
   ownedBlocks_ = localSize / 6;
   const PetscScalar* x = nullptr;
   GF_CALL(VecGetArrayRead(coords, &x));
+  blockOfVertex_.assign(vEnd_ - vStart_, -1);
   for (PetscInt p = vStart_; p < vEnd_; ++p) {
     PetscInt goff = 0;
     GF_CALL(PetscSectionGetOffset(gsection, p, &goff));
     if (goff < 0) continue;  // not owned
+    blockOfVertex_[p - vStart_] = (goff - rStart) / 6;
     PetscInt off = 0;
     GF_CALL(PetscSectionGetOffset(coordSection, p, &off));
     owned_.push_back({(goff - rStart) / 6, x[off], x[off + 1], x[off + 2]});
@@ -140,86 +144,50 @@ void PlateMesh::buildOwnedVertices() {
   GF_CALL(VecRestoreArrayRead(coords, &x));
 }
 
-std::vector<double> PlateMesh::assemble(const std::function<void(PetscScalar*, PetscSection)>& fill) const {
+std::vector<double> PlateMesh::assemble(const std::function<double(PetscInt, int)>& share) const {
   OwnedVec local, global;
   GF_CALL(DMCreateLocalVector(dm_, local.out()));
   GF_CALL(VecZeroEntries(local));
-  PetscSection section = nullptr;
-  GF_CALL(DMGetLocalSection(dm_, &section));
   PetscScalar* f = nullptr;
   GF_CALL(VecGetArray(local, &f));
-  fill(f, section);
+  for (PetscInt c = 0; c < numCells_; ++c)
+    for (int a = 0; a < 8; ++a) f[cellStateOff_[8 * c + a]] += share(c, a);
   GF_CALL(VecRestoreArray(local, &f));
   GF_CALL(DMCreateGlobalVector(dm_, global.out()));
   GF_CALL(VecZeroEntries(global));
   GF_CALL(DMLocalToGlobal(dm_, local, ADD_VALUES, global));
-  const PetscScalar* g = nullptr;
-  GF_CALL(VecGetArrayRead(global, &g));
+  PetscScalar* g = nullptr;
+  GF_CALL(VecGetArray(global, &g));
+  const OrderedAssembly& ordered = *ordered_;
+  if (ordered.sharesVertices()) {
+    std::vector<double> slots(ordered.slotCount(1), 0.0);
+    const std::vector<PetscInt> corner = ordered.cornerSlots(1);
+    for (std::size_t i = 0; i < ordered.boundaryCells().size(); ++i)
+      for (int a = 0; a < 8; ++a) slots[corner[8 * i + a]] += share(ordered.boundaryCells()[i], a);
+    ordered.finish(1, slots, g, 6, 0);
+  }
   std::vector<double> sums(ownedBlocks_);
   for (PetscInt b = 0; b < ownedBlocks_; ++b) sums[b] = g[6 * b];
-  GF_CALL(VecRestoreArrayRead(global, &g));
+  GF_CALL(VecRestoreArray(global, &g));
   return sums;
 }
 
 std::vector<double> PlateMesh::sumOverCells(const std::vector<double>& cellShare) const {
-  return assemble([&](PetscScalar* f, PetscSection) {
-    for (PetscInt c = 0; c < numCells_; ++c)
-      for (int a = 0; a < 8; ++a) f[cellStateOff_[8 * c + a]] += cellShare[c];
-  });
+  return assemble([&](PetscInt c, int) { return cellShare[c]; });
 }
 
+// A face of the set is a cell's bottom (corners a < 4) or top (a >= 4) in the bottom or top
+// layer; its centre has the cell centre's x and y.
 std::vector<double> PlateMesh::sumOverFaces(FaceSet set, const std::function<double(double, double)>& weight) const {
-  return assemble([&](PetscScalar* f, PetscSection section) {
-    PetscSection coordSection = nullptr;
-    Vec coords = nullptr;
-    GF_CALL(DMGetCoordinatesLocal(dm_, &coords));
-    GF_CALL(DMGetCoordinateSection(dm_, &coordSection));
-    DMLabel faceSets = nullptr;
-    GF_CALL(DMGetLabel(dm_, "Face Sets", &faceSets));
-    if (!faceSets) throw std::runtime_error("plate mesh: no Face Sets label");
-    const PetscInt value = static_cast<PetscInt>(set);
-    IS is = nullptr;
-    GF_CALL(DMLabelGetStratumIS(faceSets, value, &is));
-    if (!is) return;
-    const double quarter = hx() * hy() / 4.0;
-    const double zExpected = set == FaceSet::Bottom ? 0.0 : size_.thickness;
-    const PetscScalar* x = nullptr;
-    GF_CALL(VecGetArrayRead(coords, &x));
-    PetscInt n = 0;
-    const PetscInt* faces = nullptr;
-    GF_CALL(ISGetLocalSize(is, &n));
-    GF_CALL(ISGetIndices(is, &faces));
-    for (PetscInt i = 0; i < n; ++i) {
-      PetscInt np = 0;
-      PetscInt* pts = nullptr;
-      GF_CALL(DMPlexGetTransitiveClosure(dm_, faces[i], PETSC_TRUE, &np, &pts));
-      double xc = 0, yc = 0;
-      int nv = 0;
-      PetscInt verts[4];
-      for (PetscInt k = 0; k < np; ++k) {
-        const PetscInt p = pts[2 * k];
-        if (p < vStart_ || p >= vEnd_) continue;
-        PetscInt off = 0;
-        GF_CALL(PetscSectionGetOffset(coordSection, p, &off));
-        if (std::fabs(x[off + 2] - zExpected) > 1e-9 * size_.thickness)
-          throw std::runtime_error("plate mesh: Face Sets value does not match the face position");
-        xc += x[off] / 4.0;
-        yc += x[off + 1] / 4.0;
-        if (nv < 4) verts[nv] = p;
-        ++nv;
-      }
-      GF_CALL(DMPlexRestoreTransitiveClosure(dm_, faces[i], PETSC_TRUE, &np, &pts));
-      const double share = weight ? quarter * weight(xc, yc) : quarter;
-      for (int k = 0; k < std::min(nv, 4); ++k) {
-        PetscInt soff = 0;
-        GF_CALL(PetscSectionGetOffset(section, verts[k], &soff));
-        f[soff] += share;
-      }
-    }
-    GF_CALL(ISRestoreIndices(is, &faces));
-    GF_CALL(ISDestroy(&is));
-    GF_CALL(VecRestoreArrayRead(coords, &x));
-  });
+  const double quarter = hx() * hy() / 4.0;
+  const bool top = set == FaceSet::Top;
+  const double layerZ = top ? size_.thickness - 0.5 * hz() : 0.5 * hz();
+  std::vector<double> faceShare(numCells_, 0.0);
+  for (PetscInt c = 0; c < numCells_; ++c) {
+    const std::array<double, 3>& centre = cellCentre_[c];
+    if (std::fabs(centre[2] - layerZ) < 0.25 * hz()) faceShare[c] = weight ? quarter * weight(centre[0], centre[1]) : quarter;
+  }
+  return assemble([&](PetscInt c, int a) { return (a >= 4) == top ? faceShare[c] : 0.0; });
 }
 
 }  // namespace gradfric::fem

@@ -1,6 +1,7 @@
 #include "gradfric/fem/plate_model.hpp"
 
 #include "gradfric/core/petsc_call.hpp"
+#include "gradfric/core/reproducible_sum.hpp"
 #include "gradfric/fem/log_events.hpp"
 #include "gradfric/physics/property_sampler.hpp"
 
@@ -67,10 +68,11 @@ void PlateModel::rhs(double t, Vec X, Vec F) {
   const bool sliding = phase_ == Phase::Sliding;
   elastic_.setForce(X, F);
   top_.addPressure(t, sliding, F);
-  dampingPower_ = bulk_.addForce(X, F);
+  dampingEnergy_ = ExactSum();
+  bulk_.addForce(X, F, &dampingEnergy_, dt_);
   if (params_.energyAudit && elastic_.stiffnessDamping() > 0) stiffnessPower_ = stiffnessDampingPower(X);
   const SlidingDamping damping = massDamping();
-  ContactTotals totals;
+  ContactSums totals;
   if (params_.contact) {
     GF_CALL(PetscLogEventBegin(events.contact, 0, 0, 0, 0));
     if (params_.contactMethod == ContactMethod::Kinematic)
@@ -92,7 +94,7 @@ void PlateModel::rhs(double t, Vec X, Vec F) {
       fb[d] = xb[3 + d];
       fb[3 + d] = fb[3 + d] * inverseMass[b] + damping.acceleration(xb + 3, d);
     }
-    dampingPower_ += damping.power(blockMass[b], xb + 3);
+    dampingEnergy_.add(damping.power(blockMass[b], xb + 3) * dt_);
   }
   GF_CALL(VecRestoreArray(F, &f));
   GF_CALL(VecRestoreArrayRead(X, &x));
@@ -104,14 +106,12 @@ void PlateModel::rhs(double t, Vec X, Vec F) {
 
 void PlateModel::commitContact() {
   contact_.commit();
-  dampingWork_ += dampingPower_ * dt_;  // the rhs of the step saw the mid-step velocities
+  dampingWork_ += dampingEnergy_;  // the rhs of the step saw the mid-step velocities
   stiffnessWork_ += stiffnessPower_ * dt_;
 }
 
 double PlateModel::dissipatedEnergy() const {
-  double damping = 0;
-  GF_CALL_MPI(MPI_Allreduce(&dampingWork_, &damping, 1, MPI_DOUBLE, MPI_SUM, comm()));
-  return damping + stiffnessWork_ - contact_.work();
+  return sumOverRanks(comm(), dampingWork_) + stiffnessWork_ - contact_.work();
 }
 
 // beta v . K v = 2 beta x (the elastic energy of the velocity field taken as a displacement).
@@ -163,22 +163,15 @@ void PlateModel::startSliding(Vec X) {
 }
 
 ContactTotals PlateModel::contactTotals() const {
-  const ContactTotals& l = lastTotals_;
-  // One reduction per step (a synchronisation point less on a busy machine): the node counts
-  // travel as doubles, exact below 2^53.
-  double local[11] = {l.fx,
-                      l.fy,
-                      l.fn,
-                      l.topZ,
-                      l.driveX,
-                      l.driveY,
-                      static_cast<double>(l.stick),
-                      static_cast<double>(l.slip),
-                      static_cast<double>(l.open),
-                      static_cast<double>(l.everSlipped),
-                      static_cast<double>(l.nodes)},
-         sum[11];
-  GF_CALL_MPI(MPI_Allreduce(local, sum, 11, MPI_DOUBLE, MPI_SUM, comm()));
+  const ContactSums& l = lastTotals_;
+  // One reduction per step (a synchronisation point less on a busy machine), exact sums so that
+  // the totals have the same bits on any number of ranks; the node counts travel with them.
+  ExactSum s[11] = {l.fx, l.fy, l.fn, l.topZ, l.driveX, l.driveY};
+  const long long counts[5] = {l.stick, l.slip, l.open, l.everSlipped, l.nodes};
+  for (int i = 0; i < 5; ++i) s[6 + i].add(static_cast<double>(counts[i]));
+  allreduceExact(comm(), s, 11);
+  double sum[11];
+  for (int i = 0; i < 11; ++i) sum[i] = s[i].value();
   long long csum[5];
   for (int i = 0; i < 5; ++i) csum[i] = static_cast<long long>(sum[6 + i]);
   ContactTotals t;

@@ -2,8 +2,14 @@
 
 #include "gradfric/core/petsc_call.hpp"
 #include "gradfric/core/petsc_handle.hpp"
+#include "gradfric/core/reproducible_sum.hpp"
 
 #include <petscksp.h>
+#include <petsc/private/vecimpl.h>  // the place of dot and norm in the table of operations
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
 
 namespace gradfric::fem {
 
@@ -49,6 +55,95 @@ PetscErrorCode diagonal(Mat A, Vec d) {
   PetscFunctionReturn(0);
 }
 
+// CG's dot products and norms as exact sums over ranks: the iterates, and so the pressed state,
+// then have the same bits on any number of ranks (PETSc's own reductions add rank-partial sums).
+// Set on the solution and the load; KSP's work vectors inherit them through VecDuplicate.
+PetscErrorCode exactDot(Vec x, Vec y, PetscScalar* value) {
+  PetscFunctionBeginUser;
+  PetscInt n = 0;
+  const PetscScalar *a = nullptr, *b = nullptr;
+  PetscCall(VecGetLocalSize(x, &n));
+  PetscCall(VecGetArrayRead(x, &a));
+  PetscCall(VecGetArrayRead(y, &b));
+  ExactSum sum;
+  for (PetscInt i = 0; i < n; ++i) sum.add(a[i] * b[i]);
+  PetscCall(VecRestoreArrayRead(y, &b));
+  PetscCall(VecRestoreArrayRead(x, &a));
+  try {
+    *value = sumOverRanks(PetscObjectComm(reinterpret_cast<PetscObject>(x)), sum);
+  } catch (...) {
+    SETERRQ(PETSC_COMM_SELF, PETSC_ERR_LIB, "static pressure step: the exact dot product failed");
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode exactNorm(Vec x, NormType type, PetscReal* value) {
+  PetscFunctionBeginUser;
+  PetscInt n = 0;
+  const PetscScalar* a = nullptr;
+  PetscCall(VecGetLocalSize(x, &n));
+  PetscCall(VecGetArrayRead(x, &a));
+  ExactSum sums[2];  // sum |x_i| and sum x_i^2
+  double largest = 0;
+  for (PetscInt i = 0; i < n; ++i) {
+    sums[0].add(std::fabs(a[i]));
+    sums[1].add(a[i] * a[i]);
+    largest = std::max(largest, std::fabs(a[i]));
+  }
+  PetscCall(VecRestoreArrayRead(x, &a));
+  MPI_Comm comm = PetscObjectComm(reinterpret_cast<PetscObject>(x));
+  try {
+    allreduceExact(comm, sums, 2);
+  } catch (...) {
+    SETERRQ(PETSC_COMM_SELF, PETSC_ERR_LIB, "static pressure step: the exact norm failed");
+  }
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &largest, 1, MPI_DOUBLE, MPI_MAX, comm));
+  if (type == NORM_1) value[0] = sums[0].value();
+  else if (type == NORM_2 || type == NORM_FROBENIUS) value[0] = std::sqrt(sums[1].value());
+  else if (type == NORM_INFINITY) value[0] = largest;
+  else {  // NORM_1_AND_2
+    value[0] = sums[0].value();
+    value[1] = std::sqrt(sums[1].value());
+  }
+  PetscFunctionReturn(0);
+}
+
+// PETSc 3.18 names no VecOperation for dot and norm: the slot is the member's place in the
+// (private) table of operations, taken from the table itself so that it follows the version.
+VecOperation operationOf(std::size_t memberOffset) {
+  return static_cast<VecOperation>(memberOffset / sizeof(PetscErrorCode(*)(void)));
+}
+
+using Op = void (*)(void);
+Op plainDuplicate = nullptr;  // the vectors' own VecDuplicate
+
+void setExactReductions(Vec v);
+
+// KSP's work vectors are duplicates of the solution: they get the exact reductions too.
+PetscErrorCode duplicateWithExactReductions(Vec v, Vec* copy) {
+  PetscFunctionBeginUser;
+  PetscCall(reinterpret_cast<PetscErrorCode (*)(Vec, Vec*)>(plainDuplicate)(v, copy));
+  try {
+    setExactReductions(*copy);
+  } catch (...) {
+    SETERRQ(PETSC_COMM_SELF, PETSC_ERR_LIB, "static pressure step: setting exact reductions failed");
+  }
+  PetscFunctionReturn(0);
+}
+
+void setExactReductions(Vec v) {
+  GF_CALL(VecSetOperation(v, operationOf(offsetof(_VecOps, dot)), reinterpret_cast<Op>(exactDot)));
+  GF_CALL(VecSetOperation(v, operationOf(offsetof(_VecOps, tdot)), reinterpret_cast<Op>(exactDot)));
+  GF_CALL(VecSetOperation(v, operationOf(offsetof(_VecOps, norm)), reinterpret_cast<Op>(exactNorm)));
+  GF_CALL(VecSetOperation(v, VECOP_DUPLICATE, reinterpret_cast<Op>(duplicateWithExactReductions)));
+}
+
+void useExactReductions(Vec v) {
+  const Op own = reinterpret_cast<Op>(v->ops->duplicate);  // 3.18 has no VecGetOperation
+  if (own != reinterpret_cast<Op>(duplicateWithExactReductions)) plainDuplicate = own;
+  setExactReductions(v);
+}
+
 }  // namespace
 
 PressedEquilibrium solvePressedEquilibrium(PlateModel& model, Vec X, double relativeTolerance) {
@@ -60,6 +155,8 @@ PressedEquilibrium solvePressedEquilibrium(PlateModel& model, Vec X, double rela
   GF_CALL(VecDuplicate(u, load.out()));
   GF_CALL(VecDuplicate(u, penalty.out()));
   GF_CALL(VecDuplicate(u, diag.out()));
+  useExactReductions(u);
+  useExactReductions(load);
   PetscInt n = 0;
   GF_CALL(VecGetLocalSize(u, &n));
   {  // the load: the top pressure at its full value, from the top loading itself

@@ -1,6 +1,7 @@
 #include "gradfric/fem/top_loading.hpp"
 
 #include "gradfric/core/petsc_call.hpp"
+#include "gradfric/core/reproducible_sum.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -41,31 +42,30 @@ void TopLoading::startSliding(Vec X) const {
   GF_CALL(VecRestoreArray(X, &x));
 }
 
-void TopLoading::constrainTangential(const std::vector<double>& mass, Vec F, double* driveX, double* driveY) const {
+void TopLoading::constrainTangential(const std::vector<double>& mass, Vec F, ExactSum* driveX, ExactSum* driveY) const {
   PetscScalar* f = nullptr;
   GF_CALL(VecGetArray(F, &f));
   for (const Node& n : nodes_) {
-    *driveX -= mass[n.block] * f[6 * n.block + 3];
-    *driveY -= mass[n.block] * f[6 * n.block + 4];
+    driveX->add(-(mass[n.block] * f[6 * n.block + 3]));
+    driveY->add(-(mass[n.block] * f[6 * n.block + 4]));
     f[6 * n.block + 3] = f[6 * n.block + 4] = 0.0;
   }
   GF_CALL(VecRestoreArray(F, &f));
 }
 
-double TopLoading::areaWeightedLift(Vec X) const {
+ExactSum TopLoading::areaWeightedLift(Vec X) const {
   const PetscScalar* x = nullptr;
   GF_CALL(VecGetArrayRead(X, &x));
-  double z = 0;
-  for (const Node& n : nodes_) z += n.area * x[6 * n.block + 2];
+  ExactSum z;
+  for (const Node& n : nodes_) z.add(n.area * x[6 * n.block + 2]);
   GF_CALL(VecRestoreArrayRead(X, &x));
   return z;
 }
 
 double TopLoading::area() const {
-  double a = 0, sum = 0;
-  for (const Node& n : nodes_) a += n.area;
-  GF_CALL_MPI(MPI_Allreduce(&a, &sum, 1, MPI_DOUBLE, MPI_SUM, comm_));
-  return sum;
+  ExactSum a;
+  for (const Node& n : nodes_) a.add(n.area);
+  return sumOverRanks(comm_, a);
 }
 
 }  // namespace gradfric::fem

@@ -7,6 +7,7 @@
 // contact, the plate's friction) untouched. One-point (cell-average) evaluation: for the box cell
 // the mean shape-function gradient is exact for eps_v', and the nodal force f_a = -V sigma_bv
 // grad N_a is its work conjugate, so the dissipated power is exactly V sigma_bv eps_v' >= 0.
+#include "gradfric/core/exact_sum.hpp"
 #include "gradfric/fem/plate_mesh.hpp"
 #include "gradfric/physics/grading.hpp"
 
@@ -33,14 +34,19 @@ public:
   bool active() const { return linear_ > 0 || quadratic_ > 0; }
   // Adds the viscous force of the velocities of X (global state) to the force slots of F; returns
   // this rank's dissipated power (>= 0) [W].
-  double addForce(Vec X, Vec F);
+  void addForce(Vec X, Vec F, ExactSum* energy, double dt);
 
 private:
+  double cellForce(PetscInt cell, const PetscScalar* x, std::array<double, 24>* w) const;
+
   const PlateMesh& mesh_;
   double linear_, quadratic_, density_, length_, volume_;
   std::array<std::array<double, 3>, 8> gradient_;
   std::vector<double> cellSpeed_;  // c_d of each local cell (graded E)
   OwnedVec xLocal_, fLocal_, fGlobal_;
+  bool shared_ = false;  // some vertex has cells on two ranks (the ordered assembly redoes its sums)
+  std::vector<PetscInt> corner_;
+  std::vector<double> slots_;
 };
 
 }  // namespace gradfric::fem

@@ -13,12 +13,14 @@
 #include "gradfric/physics/grading.hpp"
 #include "gradfric/physics/process_zone.hpp"
 
+#include "gradfric/core/exact_sum.hpp"
+
 #include <utility>
 #include <vector>
 
 namespace gradfric::fem {
 
-// Totals of one evaluation on this rank (ContactBoundary) or summed over ranks (PlateModel).
+// Totals of one evaluation summed over ranks (PlateModel::contactTotals).
 struct ContactTotals {
   double fx = 0, fy = 0, fn = 0;  // total contact force on the plate [N]
   double topZ = 0;                // sum over the top nodes of area * u_z [m^3] (pressure work -p dZ)
@@ -26,6 +28,13 @@ struct ContactTotals {
   long long stick = 0, slip = 0, open = 0;
   long long everSlipped = 0;      // nodes that slipped or lost contact since resetSlipRecord
   long long nodes = 0;            // bottom nodes
+};
+
+// The same totals on this rank, as exact sums (core/exact_sum.hpp), so that their totals over
+// ranks have the same bits on any number of ranks.
+struct ContactSums {
+  ExactSum fx, fy, fn, topZ, driveX, driveY;
+  long long stick = 0, slip = 0, open = 0, everSlipped = 0, nodes = 0;
 };
 
 class ContactBoundary {
@@ -54,10 +63,10 @@ public:
   // Adds the contact force of the state X (global) to the force slots of F and returns the
   // totals of this rank; the new contact state is pending. dt: the step (the law's state evolves
   // over it).
-  ContactTotals addForce(Vec X, Vec F, double dt);
+  ContactSums addForce(Vec X, Vec F, double dt);
   // Kinematic contact (gfverlet): F's force slots hold every other force; the acceleration the
   // RHS will return is F / m plus the mass-proportional damping (mass per block); dt the step.
-  ContactTotals addKinematicForce(Vec X, Vec F, const std::vector<double>& mass, const SlidingDamping& damping,
+  ContactSums addKinematicForce(Vec X, Vec F, const std::vector<double>& mass, const SlidingDamping& damping,
                                   double dt);
   void commit();  // accept the pending contact state (after a step)
   void resetSlipRecord();  // from now on, everSlipped counts slips after this point (and the slip per step)
@@ -88,13 +97,13 @@ private:
   PenaltyStiffness stiffness_;
   std::vector<Node> nodes_;
   ContactLaw law_;  // one site per node: its local coefficients (area-weighted over its faces' bands)
-  double work_ = 0;  // this rank's share of work()
+  ExactSum work_;  // this rank's share of work(), exact over the whole run
   double lastStepSlip_ = 0;  // this rank's largest slip of a node in the last committed step
   std::vector<std::pair<double, double>> slipRecord_;  // (time, running maximum) where it grew
   // Adds the evaluation's force on node n (at displacement xb) to its block's right-hand side fb and
   // to the totals, and keeps it pending until commit.
   void applyNodeForce(Node& n, const PetscScalar* xb, PetscScalar* fb, double fx, double fy, double fz,
-                      ContactTotals& totals);
+                      ContactSums& totals);
   static double tangentialStep(const Node& n, const PetscScalar* xb);
 };
 

@@ -15,9 +15,10 @@ namespace gradfric::fem {
 
 // The kernel: f += -sum_cells E_c K_hat (u_e + beta v_e), scattered into f. cellOffsets: 8 local
 // offsets per cell (element node order); u, v, f index with them. v may be null (beta ignored).
-// Hot: one clone per instruction set (elastic_kernel.cpp).
+// outOffsets, when given, are where f takes the cells' forces instead (8 per cell: the ordered
+// assembly's slots). Hot: one clone per instruction set (elastic_kernel.cpp).
 void elasticKernel(PetscInt numCells, const PetscInt* cellOffsets, const double* cellModulus, const double* stiffness,
-                   const double* u, const double* v, double beta, double* f);
+                   const double* u, const double* v, double beta, double* f, const PetscInt* outOffsets = nullptr);
 
 // The box cell's stiffness in the basis of its three mirror symmetries (elastic_kernel.cpp): the
 // 8 diagonal 3 x 3 blocks of H K_hat H / 64, H the Walsh-Hadamard transform over the corners.
@@ -26,7 +27,7 @@ bool reflectionBlocks(const double* stiffness, std::array<double, 72>* blocks);
 // The same force as elasticKernel (u only) through the blocks: ~4 x fewer flops, equal to
 // round-off; the scatter-add keeps the cell order.
 void elasticKernelBlocked(PetscInt numCells, const PetscInt* cellOffsets, const double* cellModulus,
-                          const double* blocks, const double* u, double* f);
+                          const double* blocks, const double* u, double* f, const PetscInt* outOffsets = nullptr);
 
 class ElasticOperator {
 public:
@@ -71,7 +72,11 @@ private:
   void kernelForce(Vec uLocal, Vec fLocal);
   bool lastForceIsFor(Vec X);  // collective: uGlobal_/fGlobal_ hold X's displacements and force
   // f += -sum_cells E_c K_hat u_e (the blocked kernel when the element allows it).
-  void applyKernel(const std::vector<PetscInt>& cellOffsets, const double* u, double* f) const;
+  void applyKernel(const double* u, double* f) const;  // on cellDispOff_
+  // The sums at the vertices shared with other ranks redone in the global cell order (plate_mesh's
+  // OrderedAssembly): global is a global displacement-DM array holding the assembled force.
+  void reorderSharedSums(const double* uLocal, double* global);
+  void fixSharedSums(Vec uLocal, Vec fGlobal);  // the same on PETSc vectors
 
   const PlateMesh& mesh_;
   BoxElement element_;
@@ -81,8 +86,12 @@ private:
   std::array<double, 72> blocks_{};
   bool blocked_ = false;  // K_hat is block diagonal in the mirror basis (every box cell)
   std::vector<PetscInt> cellDispOff_;  // 8 offsets into a local displacement vector per cell
+  // The ordered assembly's boundary cells: their displacement offsets, E and force slots.
+  bool shared_ = false;
+  std::vector<PetscInt> boundaryDispOff_, boundarySlots_;
+  std::vector<double> boundaryModulus_, slots_;
   OwnedDM dmU_, dmAux_;
-  OwnedVec auxLocal_, uGlobal_, fGlobal_, uLocal_, fLocalU_, xLocal_, fLocal_, stateForce_;
+  OwnedVec auxLocal_, uGlobal_, fGlobal_, uLocal_, fLocalU_, xLocal_, energyU_, energyF_;
   bool haveForce_ = false;  // fGlobal_ = -K uGlobal_ from the last setForce
   PetscLogEvent evKernel_ = 0, evGeneric_ = 0;
 };

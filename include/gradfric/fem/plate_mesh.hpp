@@ -5,11 +5,13 @@
 #include <petscsection.h>  // petsc_handle.hpp names PetscSFDestroy/PetscSectionDestroy without
 #include <petscsf.h>       // including their headers
 #include "gradfric/core/petsc_handle.hpp"
+#include "gradfric/fem/ordered_assembly.hpp"
 
 #include <petscdmplex.h>
 
 #include <array>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -52,6 +54,8 @@ public:
   const std::vector<PetscInt>& cellStateOffsets() const { return cellStateOff_; }
   const std::vector<std::array<double, 3>>& cellCentres() const { return cellCentre_; }
   const std::vector<OwnedVertex>& ownedVertices() const { return owned_; }
+  // The sums at the vertices shared with other ranks, redone in the global cell order.
+  const OrderedAssembly& orderedAssembly() const { return *ordered_; }
 
   // Per owned block, the sum over the cells around the vertex of cellShare[cell] (each cell adds
   // its value to its 8 vertices), assembled over ranks.
@@ -64,7 +68,9 @@ private:
   void build(const std::string& partitioner);
   void buildCells();
   void buildOwnedVertices();
-  std::vector<double> assemble(const std::function<void(PetscScalar*, PetscSection)>& fill) const;
+  // Per owned block, the sum over the cells around the vertex of share(cell, a) for the cell's
+  // corner a on it (in the global cell order, whatever the partition).
+  std::vector<double> assemble(const std::function<double(PetscInt, int)>& share) const;
 
   MPI_Comm comm_;
   MeshSize size_;
@@ -73,6 +79,8 @@ private:
   std::vector<PetscInt> cellVertices_, cellStateOff_;
   std::vector<std::array<double, 3>> cellCentre_;
   std::vector<OwnedVertex> owned_;
+  std::vector<PetscInt> blockOfVertex_;  // per local vertex (minus vStart): its owned block or -1
+  std::unique_ptr<OrderedAssembly> ordered_;
 };
 
 }  // namespace gradfric::fem

@@ -82,9 +82,11 @@ private:
   TopLoading top_;
   double stableDt_ = 0, dt_ = 0;
   Phase phase_ = Phase::Pressure;
-  ContactTotals lastTotals_;
+  ContactSums lastTotals_;  // this rank's
   bool peakDampingOn_ = false;
-  double dampingPower_ = 0, dampingWork_ = 0;  // this rank's: of the last rhs, and committed
+  // This rank's damping energy over the step (power x dt) of the last rhs, and committed: exact
+  // sums, so that the dissipated energy has the same bits on any number of ranks.
+  ExactSum dampingEnergy_, dampingWork_;
   double stiffnessPower_ = 0, stiffnessWork_ = 0;  // over ranks (params.energyAudit only)
   OwnedVec velocityAsDisplacement_;             // for the audit: v in the displacement slots
 };

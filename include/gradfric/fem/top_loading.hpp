@@ -3,6 +3,7 @@
 // held; step 2, the top also slides tangentially at v in the direction theta (its tangential
 // velocity imposed, its vertical motion free). The slider's force on the top and the top's mean
 // vertical displacement are accounted for the energy balance.
+#include "gradfric/core/exact_sum.hpp"
 #include "gradfric/fem/plate_mesh.hpp"
 
 #include <functional>
@@ -23,9 +24,9 @@ public:
   void startSliding(Vec X) const;
   // In step 2, the slider holds the top's tangential acceleration at zero: zeroes it in the RHS
   // F (accelerations) and returns the force it takes, -m a, in driveX, driveY [N], on this rank.
-  void constrainTangential(const std::vector<double>& mass, Vec F, double* driveX, double* driveY) const;
+  void constrainTangential(const std::vector<double>& mass, Vec F, ExactSum* driveX, ExactSum* driveY) const;
   // Sum over the top nodes of area * u_z of X on this rank [m^3] (the pressure's work is -p dZ).
-  double areaWeightedLift(Vec X) const;
+  ExactSum areaWeightedLift(Vec X) const;  // this rank's share
   double area() const;  // sum of the top nodal areas over ranks (= L^2)
 
 private:
