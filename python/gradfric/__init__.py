@@ -21,8 +21,8 @@ What open() returns, by the file's `format` (attribute Dataset.attrs["format"]):
   gradfric-calibration-curves / -scene (docs/calibration.md): the CSV of -calibrate_curve along
       time (with the .opts of the same name, its fit), or the .opts alone: lz, sigma, ...
 
-Every variable has `units` and `description` attributes and `hdf5_path`, the dataset it came from;
-strings are str. Dataset attributes: the file's root attributes, the scene's options (names
+Every variable has `units` and `description` attributes and `hdf5_path`, the dataset it came from
+(`/results@mu_s`: an attribute); strings are str. Dataset attributes: the file's root attributes, the scene's options (names
 without the dash, values as text; scene_options lists them; options() gives units and origins)
 and the provenance record (software_version, software_commit, command_line, date, ranks,
 options_files with options_files_text). Large datasets are read when used: close the Dataset
