@@ -19,7 +19,13 @@ install(PROGRAMS ${PROJECT_SOURCE_DIR}/scripts/gradfric_plot.py ${PROJECT_SOURCE
                  ${PROJECT_SOURCE_DIR}/scripts/plot_design.py
                  ${PROJECT_SOURCE_DIR}/scripts/plot_calibration.py
         DESTINATION ${GRADFRIC_INSTALL_DATADIR}/scripts)
+# python/gradfric (gradfric.open) beside the scripts, which import it from ../python: not into a
+# Python site folder, whose name depends on the Python of the machine that installs (a cluster's
+# module Python is rarely the build's); users add P/share/gradfric/python to PYTHONPATH.
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/python/gradfric DESTINATION ${GRADFRIC_INSTALL_DATADIR}/python
+        FILES_MATCHING PATTERN "*.py" PATTERN "__pycache__" EXCLUDE)
 install(PROGRAMS ${PROJECT_SOURCE_DIR}/slurm/sbm_ensemble.sbatch ${PROJECT_SOURCE_DIR}/slurm/submit_chain.sh
+                 ${PROJECT_SOURCE_DIR}/slurm/fem_sweep.sbatch ${PROJECT_SOURCE_DIR}/slurm/design.sbatch
         DESTINATION ${GRADFRIC_INSTALL_DATADIR}/slurm)
 
 if(GRADFRIC_INSTALL_DOCS)

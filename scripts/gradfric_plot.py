@@ -21,31 +21,24 @@ read from their /scene). A FEM sweep file (gradfric-fem with the -ensemble_ swee
 gradfric-fem-sweep, the ensemble's layout) may be plotted alone or given with --fem next to a
 spring-block ensemble: each FEM point is then paired with the spring-block point of the same
 grading (property, profile, Delta) and angle, the pairs are printed, and a sweep with a point
-that has no partner, or made for another plate (-plate_*, -grading_bands), is refused (exit 2). Needs Debian's python3-h5py, python3-matplotlib (and python3-pil
-for the animation), installed by scripts/setup.sh.
+that has no partner, or made for another plate (-plate_*, -grading_bands), is refused (exit 2).
+The files are read with gradfric.open (python/gradfric). Needs Debian's python3-h5py,
+python3-xarray, python3-matplotlib (and python3-pil for the animation), installed by scripts/setup.sh.
 """
 import argparse
 import os
 import sys
 
-import h5py
 import matplotlib
 import numpy as np
 
+# python/ beside scripts/, in the source tree and in the install tree (share/gradfric): first, so
+# that the script reads with the package of its own version.
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.realpath(__file__)), "..", "python"))
+import gradfric  # noqa: E402
+
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
-
-
-def text(value):
-    if isinstance(value, bytes):
-        return value.decode()
-    if isinstance(value, np.ndarray) and value.shape == ():
-        return text(value[()])
-    return str(value)
-
-
-def strings(dataset):
-    return [text(v) for v in dataset[:]]
 
 
 ENSEMBLE_FORMATS = {"gradfric-sbm-ensemble": "SBM", "gradfric-fem-sweep": "FEM"}
@@ -61,24 +54,23 @@ class Ensemble:
     """A results file with the ensemble layout (docs/ensemble.md): a spring-block ensemble
     (gradfric) or a FEM sweep (gradfric-fem, one run per point; docs/fem.md)."""
 
-    def __init__(self, path):
+    def __init__(self, path, ds=None):
         self.path = path
-        self.f = h5py.File(path, "r")
-        self.format = text(self.f.attrs.get("format", ""))
+        self.ds = ds = gradfric.open(path) if ds is None else ds
+        self.format = ds.attrs.get("format", "")
         if self.format not in ENSEMBLE_FORMATS:
             raise ValueError(f"{path} is not a gradfric ensemble or FEM sweep file")
         self.model = ENSEMBLE_FORMATS[self.format]
-        sweep = self.f["sweep"]
-        self.axes = [a for a in text(sweep.attrs.get("axes", "")).split(",") if a]
-        self.delta = sweep["delta"][:]
-        self.theta = sweep["theta"][:]
-        self.sigma = sweep["sigma"][:]
-        self.property = strings(sweep["property"])
-        self.profile = strings(sweep["profile"])
-        self.field_value = sweep["field_value"][:] if "field_value" in sweep else None
-        self.points = len(self.delta)
-        self.done = self.f["realisations/done"][:].astype(bool)
-        self.scene = {k: text(v) for k, v in self.f["scene"].attrs.items()}
+        self.axes = [a for a in ds.attrs["sweep_axes"].split(",") if a]
+        self.delta = ds["delta"].values
+        self.theta = ds["theta"].values
+        self.sigma = ds["sigma"].values
+        self.property = list(ds["property"].values)
+        self.profile = list(ds["profile"].values)
+        self.field_value = ds["field_value"].values if "field_value" in ds.coords else None
+        self.points = ds.sizes["point"]
+        self.done = ds["done"].values.astype(bool)
+        self.scene = {k: ds.attrs[k] for k in ds.attrs["scene_options"]}
 
     def label(self, p):
         parts = []
@@ -98,42 +90,48 @@ class Ensemble:
         return ", ".join(parts)
 
     def statistic(self, name):
-        return self.f["statistics"][name][:]
+        return self.ds[name].values
+
+    def has(self, name):
+        return name in self.ds
 
     def histories(self, p):
         """Every finished realisation's (time, mu) of point p."""
-        if "history" not in self.f:
+        if "mu" not in self.ds:
             return []
         out = []
         for r in np.flatnonzero(self.done[p]):
-            n = int(self.f["history/length"][p, r])
+            n = int(self.ds["length"][p, r])
             if n > 0:
-                out.append((self.f["history/time"][p, r, :n], self.f["history/mu"][p, r, :n]))
+                out.append((self.ds["time"][p, r, :n].values, self.ds["mu"][p, r, :n].values))
         return out
 
 
 class FemHistory:
     """A finite-element history file (layout: docs/fem.md)."""
 
-    def __init__(self, path):
+    def __init__(self, path, ds=None):
         self.path = path
-        f = h5py.File(path, "r")
-        if text(f.attrs.get("format", "")) != "gradfric-fem-history":
+        ds = gradfric.open(path) if ds is None else ds
+        if ds.attrs.get("format") != "gradfric-fem-history":
             raise ValueError(f"{path} is not a gradfric-fem history file")
-        self.time = f["history/time"][:]
-        self.mu = f["history/mu"][:]
+        self.time = ds["time"].values
+        self.mu = ds["mu"].values
         # the numbers only: /results also holds text (the error bars' basis, the window's description)
-        self.results = {k: float(v) for k, v in f["results"].attrs.items()
-                        if np.ndim(v) == 0 and isinstance(v, (int, float, np.number))}
-        if "scene" in f:  # format 2: the option record, values as text
-            self.parameters = {k: text(v) for k, v in f["scene"].attrs.items()}
-        else:  # format 1: "value [unit] (origin)"
-            self.parameters = {k: text(v).split(" ")[0] for k, v in f["parameters"].attrs.items()} if "parameters" in f else {}
+        self.results = {k: float(v) for k, v in ds.data_vars.items()
+                        if v.attrs["hdf5_path"].startswith("/results@") and v.dtype.kind in "iuf"}
+        self.parameters = {k: ds.attrs[k] for k in ds.attrs["scene_options"]}
         self.delta = float(self.parameters.get("grading_delta", self.parameters.get("-grading_delta", 0.0)))
         self.profile = self.parameters.get("grading_profile", self.parameters.get("-grading_profile", "none"))
         if self.profile == "none":
             self.delta = 0.0
         self.thickness = self.parameters.get("plate_H", self.parameters.get("-plate_H", self.parameters.get("fem_H", "")))
+
+
+def load(path):
+    """An Ensemble (ensemble or FEM sweep) or a FemHistory; ValueError for any other file."""
+    ds = gradfric.open(path)
+    return Ensemble(path, ds) if ds.attrs.get("format") in ENSEMBLE_FORMATS else FemHistory(path, ds)
 
 
 def pair_key(ensemble, p, digits=9):
@@ -230,7 +228,7 @@ def plot_variation(ensemble, fems, png, sweeps=()):
                 line, = ax.plot(d, y, "o-" if source.model == "SBM" else "s--", label=label)
                 # FEM sweep: each point's discretisation error bar (relative bound of its own mu;
                 # NaN where no study measured it: no bar drawn there)
-                if source.model == "FEM" and f"{name}_discretisation_error" in source.f["statistics"]:
+                if source.model == "FEM" and source.has(f"{name}_discretisation_error"):
                     bar = source.statistic(f"{name}_discretisation_error")[members]
                     known = np.isfinite(bar) & np.isfinite(y)
                     if known.any():
@@ -282,7 +280,7 @@ def default_point(ensemble):
 
 
 def plot_first_slip(ensemble, png):
-    if "maps" not in ensemble.f or "first_slip_time" not in ensemble.f["maps"]:
+    if not ensemble.has("first_slip_time"):
         return None
     cases = list(first_finished(ensemble))[:6]
     if not cases:
@@ -290,7 +288,7 @@ def plot_first_slip(ensemble, png):
     length = float(ensemble.scene.get("sbm_L", "0.005"))
     fig, axes = plt.subplots(1, len(cases), figsize=(3.6 * len(cases), 3.4), squeeze=False)
     for ax, (p, r) in zip(axes[0], cases):
-        m = ensemble.f["maps/first_slip_time"][p, r] * 1e3
+        m = ensemble.ds["first_slip_time"][p, r].values * 1e3
         im = ax.imshow(m, origin="lower", extent=[0, length * 1e3, 0, length * 1e3], cmap="magma")
         ax.set_title(ensemble.label(p), fontsize=8)
         ax.set_xlabel("x [mm]")
@@ -309,12 +307,13 @@ FIELD_MAPS = [("E_map", "E [MPa]", 1e-6), ("mu_s_map", "mu_s", 1.0), ("mu_k_map"
 
 def plot_fields(ensemble, png):
     """Every property field that varies over the plate, then the first-slip map of the point."""
-    group = ensemble.f.get("properties")
-    if group is None or not any(name in group for name, _, _ in FIELD_MAPS):
+    group = {name: ensemble.ds[f"properties_{name}"].values for name, _, _ in FIELD_MAPS
+             if ensemble.has(f"properties_{name}")}
+    if not group:
         return None
     shown = [(n, label, scale) for n, label, scale in FIELD_MAPS
-             if n in group and np.ptp(group[n][...]) > 1e-12 * np.max(np.abs(group[n][...]))]
-    has_slip = "maps" in ensemble.f and "first_slip_time" in ensemble.f["maps"]
+             if n in group and np.ptp(group[n]) > 1e-12 * np.max(np.abs(group[n]))]
+    has_slip = ensemble.has("first_slip_time")
     points = list(range(min(ensemble.points, 4)))
     columns = len(shown) + (1 if has_slip else 0)
     if columns == 0:
@@ -331,7 +330,7 @@ def plot_fields(ensemble, png):
             ax = row[len(shown)]
             done = np.flatnonzero(ensemble.done[p])
             if done.size:
-                m = ensemble.f["maps/first_slip_time"][p, done[0]] * 1e3
+                m = ensemble.ds["first_slip_time"][p, done[0]].values * 1e3
                 im = ax.imshow(m, origin="lower", extent=[0, length, 0, length], cmap="magma")
                 fig.colorbar(im, ax=ax, label="first slip [ms]", shrink=0.8)
                 ax.set_title(f"first slip, realisation {done[0]}", fontsize=8)
@@ -346,17 +345,17 @@ def plot_fields(ensemble, png):
 
 
 def stress_frames(ensemble, point):
-    if "maps" not in ensemble.f or "sigma_x_over_p" not in ensemble.f["maps"]:
+    if not ensemble.has("sigma_x_over_p"):
         return None
     cases = list(first_finished(ensemble, point))
     if not cases:
         return None
     p, r = cases[0]
-    times = ensemble.f["maps/snapshot_time"][p, r]
+    times = ensemble.ds["snapshot_time"][p, r].values
     keep = np.isfinite(times)
     if not keep.any():
         return None
-    return p, times[keep], ensemble.f["maps/sigma_x_over_p"][p, r][keep]
+    return p, times[keep], ensemble.ds["sigma_x_over_p"][p, r].values[keep]
 
 
 def plot_sigma(ensemble, png, point):
@@ -423,24 +422,24 @@ def main(argv=None):
 
     ensemble, fems, sweeps = None, [], []
     try:
-        ensemble = Ensemble(args.results)
-    except (ValueError, KeyError, OSError):
-        try:
-            fems.append(FemHistory(args.results))
-        except (ValueError, KeyError, OSError) as error:
-            sys.exit(f"gradfric_plot: {args.results} is neither a gradfric ensemble nor a FEM history ({error})")
+        first = load(args.results)
+    except (ValueError, KeyError, OSError) as error:
+        sys.exit(f"gradfric_plot: {args.results} is neither a gradfric ensemble nor a FEM history ({error})")
+    if isinstance(first, Ensemble):
+        ensemble = first
+    else:
+        fems.append(first)
     for path in args.fem:
         try:
-            sweeps.append(Ensemble(path))
-            if sweeps[-1].model != "FEM":
-                refuse(f"--fem {path} is a spring-block ensemble, not a FEM sweep or history")
-            continue
-        except (ValueError, KeyError, OSError):
-            pass
-        try:
-            fems.append(FemHistory(path))
+            item = load(path)
         except (ValueError, KeyError, OSError) as error:
             sys.exit(f"gradfric_plot: --fem {path} is not a gradfric-fem history or sweep ({error})")
+        if isinstance(item, FemHistory):
+            fems.append(item)
+        elif item.model != "FEM":
+            refuse(f"--fem {path} is a spring-block ensemble, not a FEM sweep or history")
+        else:
+            sweeps.append(item)
     if sweeps and (ensemble is None or ensemble.model != "SBM"):
         refuse("a FEM sweep given with --fem is paired with a spring-block ensemble: give that one first")
     for sweep in sweeps:

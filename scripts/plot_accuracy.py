@@ -4,12 +4,16 @@ mu_k against wall time per realisation, one curve per knob.
 
     /usr/bin/python3 scripts/plot_accuracy.py results/study_sbm.h5 docs/accuracy_sbm.png
 
-Needs Debian's python3-h5py and python3-matplotlib (installed by scripts/setup.sh).
+Reads the study with gradfric.open (python/gradfric). Needs Debian's python3-h5py, python3-xarray
+and python3-matplotlib (installed by scripts/setup.sh).
 """
+import os
 import sys
 
-import h5py
 import matplotlib
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.realpath(__file__)), "..", "python"))  # as gradfric_plot.py
+import gradfric  # noqa: E402
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
@@ -28,20 +32,21 @@ LABELS = {
 }
 
 
-def text(attribute):
-    return attribute.decode() if isinstance(attribute, bytes) else str(attribute)
-
-
 def main(path, png):
-    with h5py.File(path, "r") as f:
-        if text(f.attrs.get("format", b"")) != "gradfric-accuracy-study":
+    try:
+        ds = gradfric.open(path)
+    except (ValueError, OSError) as error:
+        sys.exit(f"{path} is not a gradfric accuracy study ({error})")
+    with ds:
+        if ds.attrs.get("format") != "gradfric-accuracy-study":
             sys.exit(f"{path} is not a gradfric accuracy study")
         fig, axes = plt.subplots(1, 2, figsize=(12, 4.8), sharey=False)
         for ax, quantity in zip(axes, ("mu_s", "mu_k")):
-            for name, group in f.items():
-                wall = group["wall_seconds"][:]
-                error = group[f"{quantity}_error"][:]
-                setting = group["setting"][:]
+            for name in ds["ladder"].values:
+                ladder = ds.sel(ladder=name).isel(rung=slice(0, int(ds["rungs"].sel(ladder=name))))
+                wall = ladder["wall_seconds"].values
+                error = ladder[f"{quantity}_error"].values
+                setting = ladder["setting"].values
                 keep = error > 0  # the reference rung has no error of its own
                 if not keep.any():
                     continue

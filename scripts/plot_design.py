@@ -11,28 +11,28 @@ Writes <name>_search.png to DIR (default: beside the file):
   several parameters:  the evaluations in the plane of the first two parameters, coloured by
                        their value, joined in search order, the design marked; below, the value
                        of each evaluation in search order against the target band.
-Needs Debian's python3-h5py and python3-matplotlib (scripts/setup.sh).
+Reads the file with gradfric.open (python/gradfric). Needs Debian's python3-h5py, python3-xarray
+and python3-matplotlib (scripts/setup.sh).
 """
 import argparse
 import os
 import sys
 
-import h5py
 import matplotlib
 import numpy as np
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.realpath(__file__)), "..", "python"))  # as gradfric_plot.py
+import gradfric  # noqa: E402
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 
-def text(value):
-    return value.decode() if isinstance(value, bytes) else str(value)
-
-
-def table(f, group):
-    if group not in f:
-        return None
-    return {name: f[group][name][()] for name in f[group]}
+def table(ds, group):
+    """The columns of one table of the file (/evaluations, /design, ...) as arrays; None if absent."""
+    columns = {v.attrs["hdf5_path"].rsplit("/", 1)[1]: np.atleast_1d(v.values) for v in ds.data_vars.values()
+               if v.attrs["hdf5_path"].startswith(f"/{group}/")}
+    return columns or None
 
 
 def main():
@@ -41,20 +41,24 @@ def main():
     parser.add_argument("--out", default=None, help="folder of the figure (default: beside the file)")
     parser.add_argument("--prefix", default=None, help="file name prefix (default: the file's name)")
     args = parser.parse_args()
-    with h5py.File(args.design, "r") as f:
-        if text(f.attrs.get("format", "")) != "gradfric-design":
-            print(f"plot_design.py: {args.design} is not a gradfric-design file", file=sys.stderr)
-            return 2
-        names = text(f.attrs["free_parameters"]).split(",")
-        kind = text(f.attrs["target_type"])
-        target = float(text(f.attrs["design_target"]))
-        tolerance = float(text(f.attrs["design_tolerance"]))
-        status = text(f.attrs["status"])
-        method = text(f.attrs["method"])
-        ev = table(f, "evaluations")
-        phases = text(f["evaluations"].attrs["phases"]).split(",")
-        design = table(f, "design")
-        verification = table(f, "verification")
+    try:
+        ds = gradfric.open(args.design)
+    except (ValueError, OSError) as error:
+        ds, reason = None, error
+    if ds is None or ds.attrs.get("format") != "gradfric-design":
+        print(f"plot_design.py: {args.design} is not a gradfric-design file" + ("" if ds else f" ({reason})"), file=sys.stderr)
+        return 2
+    with ds:
+        names = ds.attrs["free_parameters"].split(",")
+        kind = ds.attrs["target_type"]
+        target = float(ds.attrs["design_target"])
+        tolerance = float(ds.attrs["design_tolerance"])
+        status = ds.attrs["status"]
+        method = ds.attrs["method"]
+        ev = table(ds, "evaluations")
+        phases = list(ds["phase"].values)
+        design = table(ds, "design")
+        verification = table(ds, "verification")
     quantity = "relative variation of $\\mu_s$" if kind == "variation" else "global $\\mu_s$"
     out = args.out or os.path.dirname(os.path.abspath(args.design))
     prefix = args.prefix or os.path.splitext(os.path.basename(args.design))[0]

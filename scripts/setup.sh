@@ -16,6 +16,8 @@ packages=(build-essential cmake pkg-config petsc-dev openmpi-bin libopenmpi-dev 
           python3 python3-h5py python3-matplotlib python3-numpy hdf5-tools)
 test_packages=(paraview python3-paraview xvfb xauth python3-xarray python3-h5netcdf)
 [ "$with_tests" = 1 ] && packages+=("${test_packages[@]}")
+# python/gradfric (gradfric.open, used by the plotting scripts) returns xarray Datasets.
+packages+=(python3-xarray)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -27,6 +29,15 @@ if [ ${#missing[@]} -gt 0 ]; then
   apt-get update -qq
   apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 fi
+
+# `import gradfric` for Debian's python3: a .pth file naming this checkout's python/ folder, so the
+# package is used in place (edits take effect, nothing to reinstall; a later setup.sh of another
+# checkout points it there). Root: the system's site folder (/usr/local/lib/python3.X/dist-packages,
+# Debian's place for local additions); otherwise the user's. A cluster install uses
+# `cmake --install` instead (share/gradfric/python, docs/cluster.md).
+site=$(/usr/bin/python3 -c 'import os, site; print(site.getsitepackages()[0] if os.geteuid() == 0 else site.getusersitepackages())')
+mkdir -p "$site" && echo "$here/python" > "$site/gradfric.pth"
+/usr/bin/python3 -c 'import gradfric' || { echo "gradfric setup: python3 cannot import gradfric ($site/gradfric.pth)" >&2; exit 1; }
 
 # Open MPI refuses to run as root without these; harmless otherwise.
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1

@@ -2,15 +2,81 @@
 #include "gradfric/design/design_file.hpp"
 
 #include "gradfric/core/petsc_call.hpp"
+#include "gradfric/io/hdf5_attributes.hpp"
+#include "gradfric/io/provenance.hpp"
 #include "gradfric/study/study_file.hpp"
 
 #include <petscsys.h>
 
 #include <cmath>
+#include <optional>
 
 namespace gradfric::design {
 
 namespace {
+
+// The provenance record of the run, collected when the file is planned (the run's start, as the
+// other writers date it); saveDesignFile collects it then if the plan came from elsewhere.
+std::optional<io::Provenance> runProvenance;
+
+// A free parameter's unit: that of its option (-grading_delta, or -field_<property>_<name>).
+std::string parameterUnit(const RunParameters& record, const std::string& name) {
+  for (const std::string& option : {"-" + name, "-field_" + name})
+    if (const ResolvedOption* o = record.find(option)) return o->unit;
+  return "";
+}
+
+// Units and description of a column of the tables (docs/design.md).
+std::pair<std::string, std::string> columnMeaning(const std::string& column, const Problem& problem,
+                                                  const RunParameters& record) {
+  const std::string value = problem.kind == TargetKind::Variation ? "relative variation (mu_s - mu_s,0) / mu_s,0"
+                                                                  : "mean global mu_s";
+  const std::string x = problem.dimension() == 1 ? parameterUnit(record, problem.free[0].name) : "";
+  if (column.rfind("x_", 0) == 0 && column != "x_ci95_low" && column != "x_ci95_high")
+    return {parameterUnit(record, column.substr(2)), "value of the free parameter " + column.substr(2)};
+  if (column == "index") return {"1", "order of the evaluation in the search"};
+  if (column == "realisations") return {"1", "realisations the evaluation ran"};
+  if (column == "value") return {"1", "the target's quantity: " + value};
+  if (column == "ci95_low") return {"1", "lower end of the 95 % confidence interval of value"};
+  if (column == "ci95_high") return {"1", "upper end of the 95 % confidence interval of value"};
+  if (column == "mu_s") return {"1", "mean global static friction coefficient"};
+  if (column == "mu_s_ci95_low") return {"1", "lower end of the 95 % confidence interval of mu_s"};
+  if (column == "mu_s_ci95_high") return {"1", "upper end of the 95 % confidence interval of mu_s"};
+  if (column == "slope") return {x.empty() || x == "1" ? "1" : "1/" + x, "local slope d value / d parameter at the design"};
+  if (column == "x_ci95_low") return {x, "lower end of the design's CI mapped onto the parameter through the slope"};
+  if (column == "x_ci95_high") return {x, "upper end of the design's CI mapped onto the parameter through the slope"};
+  if (column == "peak_confirmed") return {"1", "1 if the FEM run confirmed its peak"};
+  if (column == "cells") return {"1", "hexahedra of the FEM mesh"};
+  return {"", column};
+}
+
+// A dimension scale at the root holding 0, 1, ...: h5py and xarray (h5netcdf) see named axes.
+io::H5Dataset indexScale(hid_t file, const char* name, hsize_t size, const char* description) {
+  io::H5Space space(GF_H5(H5Screate_simple(1, &size, nullptr)));
+  io::H5Dataset d(GF_H5(H5Dcreate2(file, name, H5T_STD_I32LE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT)));
+  std::vector<int> index(size);
+  for (hsize_t i = 0; i < size; ++i) index[i] = static_cast<int>(i);
+  if (size) GF_H5(H5Dwrite(d, H5T_NATIVE_INT, H5S_ALL, H5S_ALL, H5P_DEFAULT, index.data()));
+  io::describe(d, "1", description);
+  io::makeDimensionScale(d, name);
+  return d;
+}
+
+// One table: a group of described float64 columns along scale, its texts as string attributes.
+void writeTable(hid_t file, const study::LadderTable& t, hid_t scale, const Problem& problem,
+                const RunParameters& record) {
+  io::H5Group group = io::createGroup(file, t.name.c_str());
+  for (const auto& [name, value] : t.texts) io::writeStringAttribute(group, name, value);
+  for (const auto& [name, values] : t.columns) {
+    const hsize_t n = values.size();
+    io::H5Space space(GF_H5(H5Screate_simple(1, &n, nullptr)));
+    io::H5Dataset d(GF_H5(H5Dcreate2(group, name.c_str(), H5T_IEEE_F64LE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT)));
+    if (n) GF_H5(H5Dwrite(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()));
+    const auto [units, description] = columnMeaning(name, problem, record);
+    io::describe(d, units, description);
+    io::attachScale(d, scale, 0);
+  }
+}
 
 study::LadderTable tableOf(const std::string& name, const Problem& problem, const std::vector<Evaluation>& rows) {
   study::LadderTable t;
@@ -48,12 +114,15 @@ study::LadderTable tableOf(const std::string& name, const Problem& problem, cons
 }  // namespace
 
 io::OutputPlan planDesignFile(MPI_Comm comm, const Problem& problem) {
-  return study::planStudyFile(comm, problem.output, problem.overwrite);
+  io::OutputPlan plan = study::planStudyFile(comm, problem.output, problem.overwrite);
+  runProvenance = io::collectProvenance(comm);  // collective, before any work
+  return plan;
 }
 
 void saveDesignFile(MPI_Comm comm, const io::OutputPlan& plan, const Problem& problem, const RunParameters& record,
                     const SearchLog& log, const SearchResult& result, const std::optional<Evaluation>& verification,
                     const std::optional<FemVerification>& fem, long realisationsRun) {
+  if (!runProvenance) runProvenance = io::collectProvenance(comm);
   study::StudyFile file;
   std::string names;
   for (const auto& f : problem.free) names += (names.empty() ? "" : ",") + f.name;
@@ -83,7 +152,20 @@ void saveDesignFile(MPI_Comm comm, const io::OutputPlan& plan, const Problem& pr
                  {"cells", {double(fem->cells)}}};
     file.ladders.push_back(t);
   }
-  study::saveStudyFile(comm, plan, file);
+  // The conventions of the other results files (io/hdf5_attributes.hpp): UTF-8 string attributes,
+  // described datasets on named axes (/evaluation, /row), the provenance record in /provenance.
+  plan.writeOnRank0(comm, [&](const std::string& path) {
+    io::H5File out(GF_H5(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT)));
+    for (const auto& [name, value] : file.attributes) io::writeStringAttribute(out, name, value);
+    const io::H5Dataset evaluation =
+        indexScale(out, "evaluation", file.ladders.front().columns.front().second.size(), "evaluation index (row of /evaluations)");
+    const io::H5Dataset row = indexScale(out, "row", 1, "the one row of /design, /verification and /fem_verification");
+    for (const auto& t : file.ladders) writeTable(out, t, t.name == "evaluations" ? evaluation.get() : row.get(), problem, record);
+    io::H5Group provenance = io::createGroup(out, "provenance");
+    io::writeProvenance(provenance, *runProvenance);
+    GF_H5(H5Fflush(out, H5F_SCOPE_GLOBAL));  // a full disk shows here, not in a silent close
+  });
+  plan.commit(comm);
 }
 
 void printDesign(MPI_Comm comm, const Problem& problem, const SearchResult& result,

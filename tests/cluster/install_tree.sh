@@ -12,9 +12,14 @@ cmake --install "$build" --prefix "$prefix" > "$2/install.log"
 fail() { echo "FAIL: $*" >&2; exit 1; }
 for f in bin/gradfric bin/gradfric-fem bin/gradfric-study bin/gradfric-design \
          share/gradfric/scripts/gradfric_plot.py share/gradfric/slurm/sbm_ensemble.sbatch \
-         share/gradfric/slurm/submit_chain.sh; do
+         share/gradfric/slurm/submit_chain.sh share/gradfric/slurm/fem_sweep.sbatch share/gradfric/slurm/design.sbatch; do
   [ -x "$prefix/$f" ] || fail "$f not installed as an executable"
 done
+# The scripts import gradfric from the installed share/gradfric/python, so does a user's PYTHONPATH.
+refusal=$(/usr/bin/python3 "$prefix/share/gradfric/scripts/plot_accuracy.py" "$2/none.h5" "$2/none.png" 2>&1 || true)
+grep -q "none.h5 is not a gradfric accuracy study" <<< "$refusal" || fail "the installed plot_accuracy.py does not run: $refusal"
+PYTHONPATH="$prefix/share/gradfric/python" /usr/bin/python3 -c 'import gradfric; print(gradfric.__file__)' |
+  grep -qF "$prefix/share/gradfric/python/gradfric/__init__.py" || fail "gradfric not importable from $prefix/share/gradfric/python"
 scenes=$(ls "$prefix"/share/gradfric/input/*.opts | wc -l)
 sources=$(ls "$(dirname "$0")"/../../input/*.opts | wc -l)
 [ "$scenes" -eq "$sources" ] || fail "$scenes scenes installed, $sources in input/"

@@ -1,0 +1,80 @@
+"""Read any gradfric results file as one xarray Dataset.
+
+    import gradfric
+    ds = gradfric.open("fig4.h5")          # ensemble, FEM run, FEM sweep, study, design, calibration
+    ds["mu_s_relative"].swap_dims(point="delta").plot()
+
+What open() returns, by the file's `format` (attribute Dataset.attrs["format"]):
+  gradfric-sbm-ensemble, gradfric-fem-sweep (docs/ensemble.md): dims point, realisation, sample,
+      block_row, block_column, snapshot; the /sweep columns (delta, theta, sigma, sigma_kinetic,
+      property, profile, reference_point, field_value) are coordinates along point, `time`
+      (history sample times) along (point, realisation, sample), x and y the block centres [m].
+      /realisations, /statistics, /history and /maps keep their names (mu_s, mu_s_mean, mu,
+      first_slip_time, ...); /properties and /run are prefixed (properties_mu_s, run_wall_seconds).
+  gradfric-fem-history (docs/fem.md): dim time (mu, force_x, ...), x (properties_E, ...), with
+      property fields y (fields_mu_s_map, ...), node_x/node_y (pressure_response_g); each
+      /results attribute as a 0-d variable (mu_s, peak_time, ...).
+  gradfric-accuracy-study (docs/accuracy.md): dims ladder, rung; setting, mu_s_error, ...
+      (NaN past a ladder's last rung); knob, setting_unit, error_meaning per ladder.
+  gradfric-design (docs/design.md): dim evaluation (x_<parameter>, value, ci95_low, ...; phase);
+      design_<column>, verification_<column>, fem_verification_<column> as 0-d variables.
+  gradfric-calibration-curves / -scene (docs/calibration.md): the CSV of -calibrate_curve along
+      time (with the .opts of the same name, its fit), or the .opts alone: lz, sigma, ...
+
+Every variable has `units` and `description` attributes and `hdf5_path`, the dataset it came from
+(`/results@mu_s`: an attribute); strings are str. Dataset attributes: the file's root attributes, the scene's options (names
+without the dash, values as text; scene_options lists them; options() gives units and origins)
+and the provenance record (software_version, software_commit, command_line, date, ranks,
+options_files with options_files_text). Large datasets are read when used: close the Dataset
+(or use it in a `with`) to release the file.
+Needs Debian's python3-h5py, python3-numpy, python3-xarray.
+"""
+import builtins
+
+import h5py
+
+from . import _calibration, _ensemble, _fem, _tables
+
+__all__ = ["open", "options"]
+
+_READERS = {}
+for _formats, _reader in ((_ensemble.FORMATS, _ensemble.read), (_fem.FORMATS, _fem.read),
+                          (_tables.STUDY_FORMATS, _tables.read_study), (_tables.DESIGN_FORMATS, _tables.read_design)):
+    _READERS.update(dict.fromkeys(_formats, _reader))
+
+
+def _read(path):
+    """(Dataset, scene record {name: (value, unit, origin)})."""
+    if h5py.is_hdf5(path):
+        f = h5py.File(path, "r")
+        try:
+            kind = f.attrs.get("format", b"")
+            kind = kind.decode() if isinstance(kind, bytes) else str(kind)
+            if kind not in _READERS:
+                raise ValueError(f"{path} is not a gradfric results file (format {kind!r})")
+            ds, scene = _READERS[kind](f)
+        except BaseException:
+            f.close()
+            raise
+        ds.set_close(f.close)
+        return ds, scene
+    with builtins.open(path, encoding="utf-8", errors="replace") as text:
+        first = text.readline()
+    if _calibration.is_curves(first):
+        return _calibration.read_curves(path)
+    if _calibration.is_scene(first):
+        return _calibration.read_scene(path)
+    raise ValueError(f"{path} is not a gradfric results file (neither HDF5 nor a gradfric-calibrate file)")
+
+
+def open(path):  # noqa: A001 (gradfric.open, as xarray.open_dataset)
+    """The results file at path as an xarray Dataset (see the module's help)."""
+    return _read(str(path))[0]
+
+
+def options(path):
+    """The scene's options of a results file: {name: (value, unit, origin)} (the option record
+    /scene of the ensemble, FEM sweep and FEM files; {} for the others)."""
+    ds, scene = _read(str(path))
+    ds.close()
+    return scene

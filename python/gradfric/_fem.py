@@ -1,0 +1,89 @@
+"""The FEM history file of one gradfric-fem run (docs/fem.md, "Output")."""
+import numpy as np
+import xarray as xr
+
+from . import _h5
+
+FORMATS = ("gradfric-fem-history",)
+_PLAIN = {"history"}
+# /results is a record of attributes; what each one is (docs/fem.md), the file has their units.
+_RESULTS = {
+    "mu_s": "global static friction coefficient: the peak of mu(t)",
+    "mu_k": "global kinetic coefficient: mean of mu(t) over the kinetic window; NaN: not measured",
+    "mu_s_discretisation_error": "relative discretisation error bound of mu_s; NaN: not measured",
+    "mu_k_discretisation_error": "relative discretisation error bound of mu_k; NaN: not measured",
+    "mu_s_error_basis": "what the error bar of mu_s rests on",
+    "mu_k_error_basis": "what the error bar of mu_k rests on",
+    "peak_time": "time of the peak of mu(t)",
+    "eq2_peak_time": "the peak time Eq. 2 of the paper predicts",
+    "first_slip_time": "time of the first slip of a bottom node",
+    "slide_start": "time the sliding (step 2) started",
+    "settled_normal_force": "total normal contact force / (p L^2) after the pressing step",
+    "peak_confirmed": "1 if the peak was confirmed before the run ended",
+    "kinetic_window_complete": "1 if the kinetic window was complete",
+    "mu_k_window_start": "start of the mu_k window, since the start of sliding",
+    "mu_k_window_end": "end of the mu_k window, since the start of sliding",
+    "mu_k_window_spread": "(max - min) / mean of the window's quarters' means",
+    "mu_k_window_steady": "1 steady, 0 not steady by the latest start, -1 not tested",
+    "mu_k_steady_tolerance": "the spread below which the window is steady",
+    "dt": "time step",
+    "stable_dt": "the stable time step estimate",
+    "steps": "time steps taken",
+    "wall_seconds": "wall time of the run",
+}
+
+
+def _fields(f):
+    """/fields/<p>_map: fem_ny x fem_nx row-major, flat in the file (attributes rows, columns)."""
+    out = {}
+    for name, d in f.get("fields", {}).items():
+        rows, columns = int(d.attrs["rows"]), int(d.attrs["columns"])
+        out[f"fields_{name}"] = xr.Variable(("y", "x"), d[()].reshape(rows, columns),
+                                            dict(_h5.attributes(d, skip=("rows", "columns")), hdf5_path=d.name))
+    return out
+
+
+def _scene(f):
+    if "scene" in f:
+        return _h5.option_record(f["scene"])
+    # format 1: /parameters, each value "value [unit] (origin)"
+    record = {}
+    if "parameters" not in f:
+        return record
+    for name, value in _h5.attributes(f["parameters"]).items():
+        words = str(value).split(" ")
+        unit = words[1].strip("[]") if len(words) > 2 else ""
+        record[name.lstrip("-")] = (words[0], unit, words[-1].strip("()") if len(words) > 1 else "")
+    return record
+
+
+def read(f):
+    skip = {"fields", "pressure_response"}
+    coords, data = _h5.collect(f, _PLAIN, skip=skip)
+    data.update(_fields(f))
+    if any(k.startswith("fields_") for k in data):
+        ny = data[next(k for k in data if k.startswith("fields_"))].shape[0]
+        side = float(_scene(f)["plate_L"][0])
+        coords["y"] = xr.Variable("y", (np.arange(ny) + 0.5) * side / ny,
+                                  {"units": "m", "description": "centre of each bottom cell row along y"})
+    if "pressure_response/g" in f:
+        g = f["pressure_response/g"]
+        x0, x1, y0, y1 = g.attrs["extent"]  # pixel edges: nodes at the pixel centres
+        ny, nx = g.shape
+        coords["node_x"] = xr.Variable("node_x", x0 + (np.arange(nx) + 0.5) * (x1 - x0) / nx,
+                                       {"units": "m", "description": "bottom node position along x"})
+        coords["node_y"] = xr.Variable("node_y", y0 + (np.arange(ny) + 0.5) * (y1 - y0) / ny,
+                                       {"units": "m", "description": "bottom node position along y"})
+        data["pressure_response_g"] = _h5.variable(g, ("node_y", "node_x"))
+    units = _h5.attributes(f["results/units"]) if "results/units" in f else {}
+    for name, value in _h5.attributes(f["results"]).items():
+        attrs = {"units": units.get(name, ""), "description": _RESULTS.get(name, name),
+                 "hdf5_path": f"/results@{name}"}
+        data[name] = xr.Variable((), np.asarray(value, dtype=object if isinstance(value, str) else None), attrs)
+    scene = _scene(f)
+    attrs = _h5.attributes(f)
+    attrs.update({k: v[0] for k, v in scene.items()})
+    attrs["scene_options"] = list(scene)
+    if "provenance" in f:
+        attrs.update(_h5.provenance(f["provenance"]))
+    return xr.Dataset(data, coords, attrs), scene
