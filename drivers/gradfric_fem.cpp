@@ -82,6 +82,8 @@ void printPlan(MPI_Comm comm, const FemRun& run, const PlateModel& model, RunPar
   record->add({"-fem_dt (used)", formatReal(model.timeStep()), "s", "time step", OptionOrigin::Derived});
   record->add({"stable step", formatReal(model.stableTimeStep()), "s", "mesh, wave speed, penalty, damping",
                OptionOrigin::Derived});
+  record->add({"largest step", formatReal(largestTimeStep(params, model.grading())), "s",
+               "the stable step with friction's coupling: the largest -fem_dt accepted", OptionOrigin::Derived});
   record->add({"penalty slope error", formatReal(-100.0 * params.penaltySlopeError()), "%",
                "loading slope lost to the penalty springs' compliance: G/(H k_t) + 12 G H/(k_n L^2)",
                OptionOrigin::Derived});
