@@ -81,10 +81,10 @@ kill_resume)
   [ "$done_count" -ge 3 ] || fail "only $done_count finished tasks kept after the interruption"
   [ "$done_count" -le 4 ] || fail "the interruption came too late to test anything ($done_count tasks)"
   h5dump -a /complete "$work/cut.h5.partial" | grep -q "(0): 0" || fail "interrupted file not marked incomplete"
-  # Without -ensemble_resume the interrupted run is not overwritten by accident.
+  # Without -resume the interrupted run is not overwritten by accident.
   if run 1 "${scene[@]}" -output "$work/cut.h5" >"$work/refused.log" 2>&1; then fail "started over an interrupted run"; fi
-  grep -q "ensemble_resume" "$work/refused.log" || fail "no hint to -ensemble_resume"
-  run 2 "${scene[@]}" -ensemble_resume -output "$work/cut.h5" >"$work/resume.log"
+  grep -q -- "-resume" "$work/refused.log" || fail "no hint to -resume"
+  run 2 "${scene[@]}" -resume -output "$work/cut.h5" >"$work/resume.log"
   grep -q "$done_count of 15 tasks already finished" "$work/resume.log" || fail "resume did not skip the finished tasks"
   [ ! -e "$work/cut.h5.partial" ] || fail "the .partial file was not renamed"
   same "$work/full.h5" "$work/cut.h5"
@@ -110,11 +110,11 @@ kill_resume)
   kept=$(h5dump -A 0 -y -d /realisations/done "$work/killed.h5.partial" | sed -n '/DATA {/,/}/p' | grep -o '[01]' | grep -c 1 || true)
   [ "$kept" -ge "$finished" ] || fail "SIGKILL lost finished tasks ($kept < $finished)"
   [ "$kept" -lt 15 ] || fail "the kill came too late to test anything"
-  run 2 "${big[@]}" -ensemble_resume -output "$work/killed.h5" >"$work/killed_resume.log"
+  run 2 "${big[@]}" -resume -output "$work/killed.h5" >"$work/killed_resume.log"
   grep -q "$kept of 15 tasks already finished" "$work/killed_resume.log" || fail "resume after SIGKILL did not skip $kept tasks"
   same "$work/bigfull.h5" "$work/killed.h5"
   # Resuming a finished file runs nothing and keeps it equal.
-  run 1 "${scene[@]}" -ensemble_resume -output "$work/cut.h5" >"$work/again.log"
+  run 1 "${scene[@]}" -resume -output "$work/cut.h5" >"$work/again.log"
   grep -q "15 of 15 tasks already finished" "$work/again.log" || fail "a finished file was run again"
   same "$work/full.h5" "$work/cut.h5"
   ;;
@@ -140,7 +140,7 @@ refuse)
 resume_mismatch)
   run 1 "${scene[@]}" -ensemble_realisations 1 -ensemble_abort_after 1 -output "$work/m.h5" >/dev/null 2>&1 || true
   [ -f "$work/m.h5.partial" ] || fail "no partial file to resume"
-  if run 1 "${scene[@]}" -ensemble_realisations 1 -sbm_N 18 -ensemble_resume -output "$work/m.h5" >"$work/m.log" 2>&1; then
+  if run 1 "${scene[@]}" -ensemble_realisations 1 -sbm_N 18 -resume -output "$work/m.h5" >"$work/m.log" 2>&1; then
     fail "resumed with a different lattice"
   fi
   grep -q "sbm_N: file 16, now 18" "$work/m.log" || fail "the differing option is not named"

@@ -62,11 +62,11 @@ compare "$scratch/paper_grading.h5" "$scratch/paper_field.h5" 0 && echo "ok   pa
 compare "$scratch/map.h5" "$scratch/linear.h5" 1e-9 && echo "ok   HDF5 map of a linear profile = the profile" ||
   fail "map of a linear profile differs from the profile"
 
-fem_small=(-fem_nx 8 -fem_ny 8 -fem_nz 2 -friction_observables mu_s -fem_output_overwrite)
-"$fem" "${fem_small[@]}" -grading_profile linear -grading_property both -grading_delta 0.2 -fem_output "$scratch/fem_grading.h5" \
+fem_small=(-fem_nx 8 -fem_ny 8 -fem_nz 2 -friction_observables mu_s -output_overwrite)
+"$fem" "${fem_small[@]}" -grading_profile linear -grading_property both -grading_delta 0.2 -output "$scratch/fem_grading.h5" \
   >/dev/null 2>&1 || fail "FEM grading run"
 "$fem" "${fem_small[@]}" -field_E_profile linear -field_E_delta 0.2 -field_E_bands 10 -field_mu_profile linear \
-  -field_mu_delta 0.2 -field_mu_bands 10 -fem_output "$scratch/fem_field.h5" >/dev/null 2>&1 || fail "FEM field run"
+  -field_mu_delta 0.2 -field_mu_bands 10 -output "$scratch/fem_field.h5" >/dev/null 2>&1 || fail "FEM field run"
 /usr/bin/python3 - "$scratch/fem_grading.h5" "$scratch/fem_field.h5" <<'PY' && echo "ok   FEM paper grading = fields, bit for bit" ||
 import sys, h5py
 a, b = (h5py.File(p, "r") for p in sys.argv[1:3])
