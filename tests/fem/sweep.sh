@@ -8,6 +8,7 @@
 #    of the same lists);
 #  - resume: a sweep killed after its first run leaves <output>.partial and no result; re-run with
 #    -resume (on another rank count) it skips the finished point and writes the same file;
+#  - the table prints "reference" for the reference point;
 #  - bad input: exit 2, one message naming the option, on both ranks, nothing written;
 #  - a sweep that fails leaves the earlier result whole;
 #  - the plotting tool pairs each FEM point with the spring-block point of the same grading and
@@ -38,6 +39,9 @@ same() { h5diff --exclude-path /run "$1" "$2" >/dev/null || fail "$1 and $2 diff
 fem one 1 0 "${sweep[@]}" -output one.h5
 grep -q "on 1 group(s) of 1 rank(s)" one.out || fail "one: plan line missing"
 [ "$(grep -c '^\[group 0\] point' one.out)" -eq 3 ] || fail "one: not three runs"
+# The table: the Delta = 0 point is the reference (printed so, not as +0.000), the others vary.
+grep -Eq "^  0 +Delta=0 .* reference +[0-9.]+ +reference$" one.out || fail "one: the reference point is not printed as such: $(grep -A4 'FEM sweep results' one.out)"
+grep -Eq "^  1 +Delta=0.2 .* [-+][0-9]+\.[0-9]{3} +[0-9.]+ +[-+][0-9]+\.[0-9]{3}$" one.out || fail "one: no variation for Delta = 0.2"
 fem two 2 0 "${sweep[@]}" -output two.h5
 grep -q "on 2 group(s) of 1 rank(s)" two.out || fail "two: not two groups"
 grep -q '^\[group 1\] point' two.out || fail "two: group 1 ran nothing"
@@ -122,6 +126,9 @@ bad delta_range 1 "invalid option -ensemble_delta = 1: allowed values with \|Del
 bad no_profile 1 "invalid option -ensemble_delta = \(a list\): allowed only with a grading profile" -ensemble_delta 0,0.2 -fem_nx 10
 bad snapshots 1 "invalid option -fem_snapshot_times = \(a list\): allowed none in a sweep" "${sweep[@]}" -fem_snapshot_times 0
 bad compare 1 "invalid option -fem_compare_sbm = true: allowed false in a sweep" "${sweep[@]}" -fem_compare_sbm
+bad stray 2 "invalid option -ensemble_delta = 0,0.2 -0.2: allowed one value" "${sweep[@]}" -ensemble_delta 0,0.2 -0.2
+bad empty 2 "invalid option -ensemble_delta = 0,,0.2: allowed .*\(item 2 is empty\)" "${sweep[@]}" -ensemble_delta 0,,0.2
+bad old_resume 2 "invalid option -fem_sweep_resume: renamed.*; use -resume$" "${sweep[@]}" -fem_sweep_resume
 
 # A failing sweep (the blow-up monitor) leaves the earlier result whole.
 echo "earlier result" >kept.h5
