@@ -115,7 +115,7 @@ printf -- '-field_mu_profile map\n-field_mu_map maps/pillars.png\n' >"$elsewhere
   fail "the PNG-map scene from another folder: $(tail -2 "$elsewhere/png.log")"
 compare "$scratch/field_map_png.h5" "$elsewhere/png.h5" 0 >/dev/null && echo "ok   the same results from either folder" ||
   fail "the PNG-map scene gives other results from another folder"
-(cd / && "$sbm" -options_file "$elsewhere/scene/outer.opts" -ensemble_realisations 1 -output "$elsewhere/nested.h5" \
+(cd / && "$sbm" -options_file "$elsewhere/scene/outer.opts" -ensemble_realisations 1 -output_overwrite -output "$elsewhere/nested.h5" \
   >"$elsewhere/nested.log" 2>&1) && grep -q "map $elsewhere/scene/maps/pillars.png" "$elsewhere/nested.log" &&
   echo "ok   a nested options file and its map, from their own folder" ||
   fail "nested options file from another folder: $(tail -2 "$elsewhere/nested.log")"
