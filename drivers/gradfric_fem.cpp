@@ -32,7 +32,8 @@
 static const char help[] =
     "gradfric-fem: explicit 3D FEM of an elastic plate sliding on a rigid plane with penalty contact and the\n"
     "velocity-weakening friction of the paper's Eq. 1; pressure step, then sliding; reports mu(t), mu_s,\n"
-    "the peak time (vs Eq. 2) and mu_k. Options -fem_*, -grading_*, PETSc's -ts_type (default gfverlet).\n";
+    "the peak time (vs Eq. 2) and mu_k. Options -fem_*, -plate_*, -friction_*, -grading_*, -field_*,\n"
+    "-output; PETSc's -ts_type (default gfverlet). -help <prefix> (-help fem) lists the options of one prefix.\n";
 
 namespace {
 
@@ -47,7 +48,7 @@ struct FemRun {
   std::uint64_t seed = 1;
   sbm::Parameters sbmParams;
   sbm::Request sbmRequest;
-  SweepOptions sweep;  // -ensemble_ lists, -fem_sweep_*: a sweep of runs instead of one run
+  SweepOptions sweep;  // -ensemble_ lists, -fem_sweep_*, -resume: a sweep of runs instead of one run
 };
 
 // Reads and checks every option (InputError on every rank alike); nullopt after -help.
@@ -67,6 +68,12 @@ std::optional<FemRun> readFemRun(MPI_Comm comm, RunParameters* record) {
     run.sbmParams = sbm::readParameters(comm, record, plate, run.grading);
     run.sbmRequest = sbm::readRequest(comm, record, run.sbmParams);
   }
+  // The results file, named as in every driver (-resume with the sweep's options).
+  OptionReader out(comm, "", "Results file", record);
+  run.params.output = out.text("output", "",
+                               "HDF5 results file (empty: none; a sweep: gradfric_fem_sweep.h5); snapshots go to "
+                               "<name>_fields.h5 + .xmf");
+  run.params.overwrite = out.flag("output_overwrite", false, "replace an existing results file");
   run.sweep = readSweepOptions(comm, record);
   if (helpRequested()) return std::nullopt;
   // Fields against the mesh, -ts_ options, misspellings, the run length and the stable step.

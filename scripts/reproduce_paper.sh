@@ -37,7 +37,7 @@ sbm() {
 fem_run() {  # fem_run <label> <scene> [options...]
   local label=$1 scene=$2; shift 2
   timed "$label" mpiexec --oversubscribe -n "$np" "$here/build/drivers/gradfric-fem" \
-    -options_file "$here/input/$scene.opts" -fem_output "$out/$label.h5" -fem_output_overwrite "$@"
+    -options_file "$here/input/$scene.opts" -output "$out/$label.h5" -output_overwrite "$@"
 }
 
 # FEM_DELTAS overrides the Delta values of the FEM sweeps (default -0.4 -0.2 0 0.2 0.4).

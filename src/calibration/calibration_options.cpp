@@ -59,7 +59,7 @@ std::optional<Calibration> readCalibration(MPI_Comm comm, RunParameters* record)
   Calibration c;
   CalibrationSettings& s = c.settings;
   OptionReader o(comm, "calibrate_", "Calibration of the spring-block l_z and sigma (docs/calibration.md)", record);
-  s.source.path = o.text("reference", "",
+  s.source.path = o.path("reference", "",
                          "the reference mu(t): a gradfric-fem history (.h5), any HDF5 file with the datasets below, or a "
                          "CSV file (.csv) with columns t [s], mu");
   s.source.timeDataset = o.text("reference_time", s.source.timeDataset, "HDF5 reference: dataset of the times [s]");
@@ -75,9 +75,10 @@ std::optional<Calibration> readCalibration(MPI_Comm comm, RunParameters* record)
   s.peakTolerance = o.real("peak_tolerance", s.peakTolerance, "1",
                            "... and |peak - reference peak| <= this x the 95 % CI half-width of the SBM's mean peak");
   const PetscInt evaluations = o.integer("max_evaluations", s.maxEvaluations, 2, 50, "1", "at most this many ensembles");
-  s.output = o.text("output", "calibrated.opts", "the scene file written: the SBM options with the fitted l_z and sigma");
-  const bool overwrite = o.flag("output_overwrite", false, "replace existing -calibrate_output / -calibrate_curve files");
   s.curveOutput = o.text("curve", "", "optional CSV of the curves: t, reference mu, the calibrated ensemble's mean mu");
+  OptionReader out(comm, "", "Scene file written", record);
+  s.output = out.text("output", "calibrated.opts", "the scene file written: the SBM options with the fitted l_z and sigma");
+  const bool overwrite = out.flag("output_overwrite", false, "replace existing -output / -calibrate_curve files");
 
   c.scene.grading = readGrading(comm, record);
   const Plate plate = readPlate(comm, record);
@@ -142,10 +143,10 @@ std::optional<Calibration> readCalibration(MPI_Comm comm, RunParameters* record)
   }
   // The files, planned before any work: complete or not at all.
   io::OutputRequest scene;
-  scene.option = o.fullName("output");
+  scene.option = out.fullName("output");
   scene.path = s.output;
   scene.overwrite = overwrite;
-  scene.overwriteOption = o.fullName("output_overwrite");
+  scene.overwriteOption = out.fullName("output_overwrite");
   c.scenePlan = io::OutputPlan::decide(comm, scene);
   if (!s.curveOutput.empty()) {
     io::OutputRequest curve = scene;

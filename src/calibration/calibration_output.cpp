@@ -9,6 +9,7 @@
 #include <cmath>
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <stdexcept>
 
@@ -17,6 +18,18 @@ namespace gradfric::calibration {
 namespace {
 
 double halfWidth(const ensemble::Summary& s) { return 0.5 * (s.ciHigh - s.ciLow); }
+
+// Each comma-separated path made absolute (from the working directory the run resolved it in).
+std::string absolutePaths(const std::string& value) {
+  std::string out;
+  size_t start = 0;
+  for (size_t comma = 0; comma != std::string::npos; start = comma + 1) {
+    comma = value.find(',', start);
+    const std::string item = value.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    out += (start ? "," : "") + (item.empty() ? item : std::filesystem::absolute(item).lexically_normal().string());
+  }
+  return out;
+}
 
 // Root mean square of the mean SBM curve against the reference, up to the reference's peak.
 double curveResidual(const Calibration& c, const Evaluation& e, int* samples) {
@@ -47,7 +60,8 @@ void writeScene(const std::string& work, const std::string& path, const Calibrat
                 halfWidth(e.peak), "converged", r.evaluations.size());
   out << line;
   out << "# gradfric -options_file " << path << " -output run.h5 reproduces the fitted ensemble (same seed)\n";
-  for (const auto& o : c.sceneOptions) out << o.name << " " << o.value << "\n";
+  // A file to read is written absolute: in a scene file it would be read from the scene's folder.
+  for (const auto& o : c.sceneOptions) out << o.name << " " << (o.path ? absolutePaths(o.value) : o.value) << "\n";
   std::snprintf(line, sizeof line, "-sbm_lz %.10g\n-sbm_sigma_s %.10g\n-sbm_sigma_k %.10g\n", e.layerThickness, e.sigma,
                 e.sigma);
   out << line << "-ensemble_realisations " << c.scene.realisations << "\n-ensemble_seed " << c.scene.seed << "\n";

@@ -3,6 +3,7 @@
 #include "gradfric/core/command_line.hpp"
 #include "gradfric/core/collective_error.hpp"
 #include "gradfric/core/input_error.hpp"
+#include "gradfric/core/options.hpp"
 #include "gradfric/core/petsc_call.hpp"
 #include "gradfric/version.hpp"
 
@@ -10,30 +11,37 @@
 
 #include <cstdio>
 #include <string>
+#include <vector>
 
 namespace gradfric {
 
 namespace {
 
-// Every rank checks the same files and reaches the same verdict; the lowest rank that found a
-// problem prints it (one line in all), and every rank returns 2 together: no rank waits alone.
-bool optionFilesAreSound(MPI_Comm comm, int argc, char** argv) {
+// Every rank settles the same command line and reaches the same verdict; the lowest rank that
+// found a problem prints it (one line in all), and every rank returns 2 together: no rank waits alone.
+bool commandLineIsSound(MPI_Comm comm, const SettledCommandLine& settled) {
   int rank = 0, size = 1;
   MPI_Comm_rank(comm, &rank);
   MPI_Comm_size(comm, &size);
-  const std::string problem = checkOptionFiles(argc, argv);
-  int reporter = problem.empty() ? size : rank;
+  int reporter = settled.problem.empty() ? size : rank;
   int firstReporter = size;
   MPI_Allreduce(&reporter, &firstReporter, 1, MPI_INT, MPI_MIN, comm);
   if (firstReporter == rank) {
-    std::fprintf(stderr, "gradfric: error: %s\n", problem.c_str());
+    std::fprintf(stderr, "gradfric: error: %s\n", settled.problem.c_str());
     std::fflush(stderr);
   }
   return firstReporter == size;
 }
 
 // Runs the body with PETSc; returns the exit code.
-int runWithPetsc(int argc, char** argv, const char* help, const std::function<void(MPI_Comm)>& body) {
+int runWithPetsc(const std::vector<std::string>& arguments, const char* help,
+                 const std::function<void(MPI_Comm)>& body) {
+  // PETSc keeps argv for the whole run: the words live in `arguments` (runDriver's).
+  std::vector<char*> words;
+  for (const auto& a : arguments) words.push_back(const_cast<char*>(a.c_str()));
+  words.push_back(nullptr);
+  int argc = static_cast<int>(arguments.size());
+  char** argv = words.data();
   if (PetscInitialize(&argc, &argv, nullptr, help)) return 3;
   // PETSc errors come back as codes; GF_CALL turns them into exceptions with PETSc's message.
   PetscPushErrorHandler(PetscReturnErrorHandler, nullptr);
@@ -42,7 +50,13 @@ int runWithPetsc(int argc, char** argv, const char* help, const std::function<vo
   MPI_Comm_rank(comm, &rank);
   int status = 0;
   try {
+    refuseRenamedRunControl();  // every driver speaks -output, -output_overwrite, -resume
     body(comm);
+    if (helpRequested()) {
+      printHelpSections(comm);
+      if (!helpFilter().empty() && helpLinesPrinted() == 0)
+        PetscPrintf(comm, "No option of this driver starts with -%s (-help alone lists them all)\n", helpFilter().c_str());
+    }
   } catch (const InputError& e) {
     // Options are read identically on every rank, so every rank throws: rank 0 reports.
     if (rank == 0) std::fprintf(stderr, "gradfric: error: %s\n", e.what());
@@ -66,8 +80,8 @@ int runWithPetsc(int argc, char** argv, const char* help, const std::function<vo
 
 }  // namespace
 
-// MPI starts before PETSc so that the command line (--names, -version, the options files) is
-// settled on every rank before PETSc reads it; PETSc then leaves MPI to us to finalise.
+// MPI starts before PETSc so that the command line (--names, -version, the options files, stray
+// words) is settled on every rank before PETSc reads it; PETSc then leaves MPI to us to finalise.
 int runDriver(int argc, char** argv, const char* help, const std::function<void(MPI_Comm)>& body) {
   normaliseArguments(argc, argv);
   MPI_Init(&argc, &argv);
@@ -76,10 +90,14 @@ int runDriver(int argc, char** argv, const char* help, const std::function<void(
   int status = 0;
   if (versionRequested(argc, argv)) {
     if (rank == 0) std::printf("gradfric %s (commit %s)\n", kVersion, kCommit);
-  } else if (!optionFilesAreSound(MPI_COMM_WORLD, argc, argv)) {
-    status = 2;
   } else {
-    status = runWithPetsc(argc, argv, help, body);
+    const SettledCommandLine settled = settleCommandLine(argc, argv);
+    if (!commandLineIsSound(MPI_COMM_WORLD, settled)) {
+      status = 2;
+    } else {
+      adoptCommandLine(settled, argc, argv);
+      status = runWithPetsc(settled.arguments, help, body);
+    }
   }
   MPI_Finalize();
   return status;

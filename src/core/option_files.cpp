@@ -1,17 +1,22 @@
-// The checks of options files before PETSc reads them (see command_line.hpp). PETSc 3.18 aborts
-// with a banner on a missing, binary or malformed file and recurses without end into a file that
-// includes itself; here every problem becomes one line naming the file.
+// The command line settled before PETSc reads it (see command_line.hpp). PETSc 3.18 aborts with a
+// banner on a missing, binary or malformed options file, recurses without end into a file that
+// includes itself, skips stray words silently and reads a nested file from the working directory;
+// here every problem becomes one line naming the option or the file, and the files are expanded in
+// place so that their relative paths are their own folder's.
 #include "gradfric/core/command_line.hpp"
 
 #include <yaml.h>
 
 #include <sys/stat.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <climits>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <vector>
 
@@ -111,18 +116,132 @@ Problem checkYaml(const std::string& text) {
   return problem;
 }
 
-struct Checker {
+// PETSc's rule (PetscOptionsValidKey): a dash, or two, then a letter, and not a number (-inf).
+bool isKey(const std::string& word) {
+  if (word.size() < 2 || word[0] != '-') return false;
+  const char* key = word.c_str() + (word[1] == '-' ? 1 : 0);
+  if (!std::isalpha(static_cast<unsigned char>(key[1]))) return false;
+  char* end = nullptr;
+  (void)std::strtod(key, &end);
+  return end == key || *end == '_' || std::isalnum(static_cast<unsigned char>(*end));
+}
+
+std::string lower(std::string text) {
+  for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return text;
+}
+
+// The folder a relative path inside the file `path` is taken from ("" for the working directory).
+std::string folderOf(const std::string& path) {
+  const size_t slash = path.rfind('/');
+  if (slash == std::string::npos) return "";
+  return slash == 0 ? "/" : path.substr(0, slash);
+}
+
+std::string joinPath(const std::string& folder, const std::string& path) {
+  if (folder.empty() || folder == "." || path.empty() || path[0] == '/') return path;
+  return folder.back() == '/' ? folder + path : folder + "/" + path;
+}
+
+// A line's words as PETSc's tokenizer splits them: blanks separate, "a quoted value" is one word.
+std::vector<std::string> lineWords(std::string line) {
+  for (char& c : line)
+    if (c == '\t' || c == '\r') c = ' ';
+  std::vector<std::string> words;
+  size_t i = 0;
+  while (true) {
+    while (i < line.size() && line[i] == ' ') ++i;
+    if (i >= line.size()) break;
+    const char end = line[i] == '"' ? '"' : ' ';
+    if (end == '"') ++i;
+    const size_t stop = std::min(line.find(end, i), line.size());
+    words.push_back(line.substr(i, stop - i));
+    i = stop + 1;
+  }
+  return words;
+}
+
+bool isBoolean(const std::string& word) {
+  static const char* const words[] = {"1", "0", "true", "false", "yes", "no", "on", "off", "intro"};
+  for (const char* w : words)
+    if (lower(word) == w) return true;
+  return false;
+}
+
+// Checks and expands options files into one list of words, the way PETSc would insert them.
+struct Expander {
+  SettledCommandLine result;
   std::vector<std::string> chain;  // canonical paths of the files being read, outermost first
-  std::vector<std::string> shown;  // the same, as the user wrote them
+  std::vector<std::string> shown;  // the same, as resolved for the user
+  std::vector<std::string> prefixes;           // -prefix_push stack
+  std::map<std::string, std::string> aliases;  // alias lines: lower-case name -> its replacement
+
+  // Words after an option's one value: PETSc skips them silently, so -ensemble_delta 0 0.2 would
+  // run Delta = 0 alone.
+  static std::string stray(const std::vector<std::string>& words, size_t i, const std::string& where) {
+    size_t j = i;
+    std::string extra, commas;
+    for (; j < words.size() && !isKey(words[j]); ++j) {
+      extra += " " + words[j];
+      commas += "," + words[j];
+    }
+    if (i >= 2 && isKey(words[i - 2]) && !isKey(words[i - 1]))
+      return "invalid option " + words[i - 2] + " = " + words[i - 1] + extra + where +
+             ": allowed one value (the stray word" + (j - i > 1 ? "s" : "") + extra +
+             " would be ignored; a list is comma-separated without spaces: " + words[i - 1] + commas + ")";
+    return "invalid word '" + words[i] + "'" + (where.empty() ? " on the command line" : where) +
+           ": allowed options (-name [value]) only";
+  }
+
+  std::string fullName(const std::string& key) const {
+    std::string prefix;
+    for (const auto& p : prefixes) prefix += p;
+    return "-" + prefix + key.substr(key[1] == '-' ? 2 : 1);
+  }
+
+  // PETSc's insertion of a list of words (the command line, or one line of a file): an option,
+  // then its value if the next word is not an option. folder: where the words come from.
+  std::string words(const std::vector<std::string>& w, const std::string& folder, const std::string& where) {
+    for (size_t i = 0; i < w.size();) {
+      if (!isKey(w[i])) return stray(w, i, where);
+      const std::string name = lower(w[i]);
+      const bool valued = i + 1 < w.size() && !isKey(w[i + 1]);
+      if (name == "-options_file" || name == "-options_file_yaml") {
+        if (!valued || w[i + 1].empty()) return "invalid option " + w[i] + where + ": no file name given";
+        std::string problem = file(name, joinPath(folder, w[i + 1]), where);
+        if (!problem.empty()) return problem;
+        i += 2;
+        continue;
+      }
+      if (name == "-prefix_pop") {
+        if (!prefixes.empty()) prefixes.pop_back();
+      } else if (name == "-prefix_push" && valued) {
+        prefixes.push_back(w[i + 1]);
+      }
+      const auto alias = aliases.find(name);
+      const std::string key = alias == aliases.end() ? w[i] : alias->second;
+      result.arguments.push_back(key);
+      if (name == "-help" && valued && !isBoolean(w[i + 1])) {  // -help fem: PETSc knows no prefix
+        result.helpFilter = w[i + 1][0] == '-' ? w[i + 1].substr(1) : w[i + 1];
+      } else if (valued) {
+        result.arguments.push_back(w[i + 1]);
+      }
+      result.folders[lower(fullName(key))] = folder;
+      i += valued ? 2 : 1;
+    }
+    return "";
+  }
 
   // option: "-options_file" or "-options_file_yaml"; where: "" or " (in a.opts line 3)".
-  std::string check(const std::string& option, const std::string& path, const std::string& where) {
+  std::string file(const std::string& option, const std::string& path, const std::string& where) {
     auto fail = [&](const std::string& what) { return "invalid option " + option + " = " + path + where + ": " + what; };
     std::string text;
     if (Problem p = readText(path, &text)) return fail(p.what);
     if (option == "-options_file_yaml") {
-      Problem p = checkYaml(text);
-      return p ? fail(p.what) : "";
+      if (Problem p = checkYaml(text)) return fail(p.what);
+      result.arguments.push_back(option);
+      result.arguments.push_back(path);
+      return "";
     }
     const std::string id = canonical(path);
     for (size_t k = 0; k < chain.size(); ++k)
@@ -134,34 +253,33 @@ struct Checker {
     if (chain.size() >= kMaxDepth) return fail("options files nested deeper than 16");
     chain.push_back(id);
     shown.push_back(path);
-    std::string result = checkOptionsText(path, text);
+    std::string problem = optionsText(path, text);
     chain.pop_back();
     shown.pop_back();
-    return result.empty() ? "" : result;
+    return problem;
   }
 
   // PETSc's format: per line an option (-name [value]) or "alias -a -b"; # starts a comment.
-  std::string checkOptionsText(const std::string& path, const std::string& text) {
-    std::istringstream lines(text);
-    std::string line;
-    for (int number = 1; std::getline(lines, line); ++number) {
-      line = line.substr(0, line.find('#'));
-      std::istringstream tokens(line);
-      std::vector<std::string> words;
-      for (std::string w; tokens >> w;) words.push_back(w);
-      if (words.empty()) continue;
-      const std::string where = " (in " + path + " line " + std::to_string(number) + ")";
-      const std::string& first = words[0];
-      const size_t start = first.rfind("--", 0) == 0 ? 2 : 1;
-      const bool option = first[0] == '-' && first.size() > start && std::isalpha(static_cast<unsigned char>(first[start]));
-      if (!option && first != "alias")
-        return "invalid option -options_file = " + path + ": line " + std::to_string(number) + " starts with '" +
-               first + "', not with an option (-name value)";
-      if ((first == "-options_file" || first == "-options_file_yaml")) {
-        if (words.size() < 2) return "invalid option " + first + where + ": no file name given";
-        std::string nested = check(first, words[1], where);
-        if (!nested.empty()) return nested;
-      }
+  std::string optionsText(const std::string& path, const std::string& text) {
+    std::vector<std::vector<std::string>> lines;
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line);) lines.push_back(lineWords(line.substr(0, line.find('#'))));
+    for (size_t n = 0; n < lines.size(); ++n) {  // PETSc sets a file's aliases before its options
+      const auto& w = lines[n];
+      if (w.empty() || w[0] != "alias") continue;
+      if (w.size() != 3 || !isKey(w[1]) || !isKey(w[2]))
+        return "invalid option -options_file = " + path + ": line " + std::to_string(n + 1) +
+               ": an alias line is 'alias -name -other_name'";
+      aliases[lower(w[1])] = w[2];
+    }
+    for (size_t n = 0; n < lines.size(); ++n) {
+      const auto& w = lines[n];
+      if (w.empty() || w[0] == "alias") continue;
+      if (!isKey(w[0]))
+        return "invalid option -options_file = " + path + ": line " + std::to_string(n + 1) + " starts with '" + w[0] +
+               "', not with an option (-name value)";
+      std::string problem = words(w, folderOf(path), " (in " + path + " line " + std::to_string(n + 1) + ")");
+      if (!problem.empty()) return problem;
     }
     return "";
   }
@@ -169,19 +287,44 @@ struct Checker {
 
 }  // namespace
 
-std::string checkOptionFiles(int argc, char** argv) {
-  Checker checker;
-  for (int i = 1; i < argc; ++i) {
-    const bool plain = std::strcmp(argv[i], "-options_file") == 0;
-    const bool yaml = std::strcmp(argv[i], "-options_file_yaml") == 0;
-    if (!plain && !yaml) continue;
-    if (i + 1 >= argc || argv[i + 1][0] == '\0')
-      return std::string("invalid option ") + argv[i] + ": no file name given";
-    std::string problem = checker.check(argv[i], argv[i + 1], "");
-    if (!problem.empty()) return problem;
-    ++i;
-  }
-  return "";
+SettledCommandLine settleCommandLine(int argc, char** argv) {
+  Expander expander;
+  expander.result.arguments.push_back(argc > 0 ? argv[0] : "gradfric");
+  const std::vector<std::string> words(argv + std::min(argc, 1), argv + argc);
+  expander.result.problem = expander.words(words, "", "");
+  return expander.result;
+}
+
+std::string checkOptionFiles(int argc, char** argv) { return settleCommandLine(argc, argv).problem; }
+
+namespace {
+
+struct Adopted {
+  std::vector<std::string> original;
+  std::string helpFilter;
+  std::map<std::string, std::string> folders;
+};
+
+Adopted& adopted() {
+  static Adopted a;
+  return a;
+}
+
+}  // namespace
+
+void adoptCommandLine(const SettledCommandLine& settled, int argc, char** argv) {
+  adopted().original.assign(argv, argv + argc);
+  adopted().helpFilter = settled.helpFilter;
+  adopted().folders = settled.folders;
+}
+
+const std::vector<std::string>& originalArguments() { return adopted().original; }
+
+const std::string& helpFilter() { return adopted().helpFilter; }
+
+std::string resolveOptionPath(const std::string& fullName, const std::string& value) {
+  const auto at = adopted().folders.find(lower(fullName));
+  return at == adopted().folders.end() ? value : joinPath(at->second, value);
 }
 
 }  // namespace gradfric

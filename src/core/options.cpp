@@ -1,5 +1,6 @@
 #include "gradfric/core/options.hpp"
 
+#include "gradfric/core/command_line.hpp"
 #include "gradfric/core/input_error.hpp"
 #include "gradfric/core/near_miss.hpp"
 #include "gradfric/core/petsc_call.hpp"
@@ -8,10 +9,12 @@
 #include <cerrno>
 #include <cmath>
 #include <cfloat>
+#include <map>
 #include <set>
 #include <cstdio>
 #include <cstdlib>
 #include <sstream>
+#include <utility>
 
 namespace gradfric {
 
@@ -37,16 +40,37 @@ std::string joinedReals(const std::vector<double>& values) {
   return joined(items, ",");
 }
 
-std::vector<std::string> splitList(const std::string& text) {
+// The items of a comma-separated list; an empty one (0.1,,0.2, a trailing comma) is refused
+// instead of dropped, since it usually stands for a value that went missing.
+std::vector<std::string> splitList(const std::string& option, const std::string& text, const std::string& allowed) {
   std::vector<std::string> items;
-  std::stringstream stream(text);
-  std::string item;
-  while (std::getline(stream, item, ',')) {
+  if (text.find_first_not_of(" \t") == std::string::npos) return items;  // no value: the empty list
+  size_t start = 0;
+  while (true) {
+    const size_t comma = text.find(',', start);
+    std::string item = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
     item.erase(0, item.find_first_not_of(" \t"));
     item.erase(item.find_last_not_of(" \t") + 1);
-    if (!item.empty()) items.push_back(item);
+    if (item.empty())
+      throw InputError(option, text, allowed + " (item " + std::to_string(items.size() + 1) + " is empty)");
+    items.push_back(item);
+    if (comma == std::string::npos) return items;
+    start = comma + 1;
   }
-  return items;
+}
+
+// -help's lines by section, in the order the sections were first met: printed at the end, each
+// section once even when its readers were interleaved with others' (the SBM's parameters and
+// its request, the results file's options and the FEM sweep's).
+struct HelpText {
+  std::vector<std::string> sections;
+  std::map<std::string, std::vector<std::string>> lines;
+  std::set<std::string> listed;  // an option read twice (both models' -friction_ ones) is listed once
+};
+
+HelpText& helpText() {
+  static HelpText text;
+  return text;
 }
 
 std::set<std::string>& knownNames() {
@@ -105,26 +129,36 @@ bool helpRequested() {
   return help;
 }
 
+int helpLinesPrinted() { return static_cast<int>(helpText().listed.size()); }
+
+void printHelpSections(MPI_Comm comm) {
+  HelpText& text = helpText();
+  for (const auto& section : text.sections) {
+    GF_CALL(PetscPrintf(comm, "%s:\n", section.c_str()));
+    for (const auto& line : text.lines[section]) GF_CALL(PetscPrintf(comm, "%s\n", line.c_str()));
+  }
+  text.sections.clear();
+  text.lines.clear();
+}
+
 void OptionReader::printHelp(const std::string& name, const std::string& current, const std::string& unit,
                              const std::string& help) {
   if (!help_) return;
-  // Several readers may share a section (the SBM's parameters and its request): its title is
-  // printed once, unless another section came in between.
-  static std::string lastSection;
+  HelpText& text = helpText();
+  const std::string option = fullName(name);
+  if (option.compare(1, helpFilter().size(), helpFilter()) != 0 || !text.listed.insert(option).second) return;
   const std::string section = prefix_.empty() ? title_ : title_ + " (-" + prefix_ + ")";
-  if (!titlePrinted_ && section != lastSection) GF_CALL(PetscPrintf(comm_, "%s:\n", section.c_str()));
-  titlePrinted_ = true;
-  lastSection = section;
+  if (!text.lines.count(section)) text.sections.push_back(section);
   std::string unitText = unit.empty() ? "" : " [" + unit + "]";
-  GF_CALL(PetscPrintf(comm_, "  %s <%s>%s: %s\n", fullName(name).c_str(), current.c_str(), unitText.c_str(),
-                      help.c_str()));
+  text.lines[section].push_back("  " + option + " <" + current + ">" + unitText + ": " + help);
 }
 
 void OptionReader::store(const std::string& name, const std::string& value, const std::string& unit,
-                         const std::string& help, bool userSet, const std::string& fallback) {
+                         const std::string& help, bool userSet, const std::string& fallback, bool isPath) {
   knownNames().insert(fullName(name));
   if (record_)
-    record_->add({fullName(name), value, unit, help, userSet ? OptionOrigin::User : OptionOrigin::Default, fallback});
+    record_->add({fullName(name), value, unit, help, userSet ? OptionOrigin::User : OptionOrigin::Default, fallback,
+                  isPath});
 }
 
 bool OptionReader::wasSet(const std::string& name) const {
@@ -216,6 +250,27 @@ std::string OptionReader::text(const std::string& name, const std::string& fallb
   return value;
 }
 
+std::string OptionReader::path(const std::string& name, const std::string& fallback, const std::string& help,
+                               bool commaList) {
+  char raw[PETSC_MAX_PATH_LEN] = "";
+  PetscBool set = PETSC_FALSE;
+  GF_CALL(PetscOptionsGetString(nullptr, prefix_.c_str(), ("-" + name).c_str(), raw, sizeof raw, &set));
+  std::string value = set ? std::string(raw) : fallback;
+  if (set) {  // each item of a list (an empty one is left for the reader to refuse by its rule)
+    std::string resolved;
+    size_t start = 0;
+    for (size_t comma = 0; comma != std::string::npos; start = comma + 1) {
+      comma = commaList ? value.find(',', start) : std::string::npos;
+      const std::string item = value.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+      resolved += (start ? "," : "") + (item.empty() ? item : resolveOptionPath(fullName(name), item));
+    }
+    value = resolved;
+  }
+  printHelp(name, value, "", help);
+  store(name, value, "", help, set, "", true);
+  return value;
+}
+
 std::vector<double> OptionReader::realList(const std::string& name, const std::vector<double>& fallback,
                                            const std::string& unit, const std::string& help) {
   char raw[4096] = "";
@@ -224,7 +279,8 @@ std::vector<double> OptionReader::realList(const std::string& name, const std::v
   std::vector<double> values = fallback;
   if (set) {
     values.clear();
-    for (const auto& item : splitList(raw)) {
+    const std::string allowed = "a comma-separated list of finite real numbers [" + unit + "]";
+    for (const auto& item : splitList(fullName(name), raw, allowed)) {
       double v = 0;
       if (!parseFiniteReal(item, &v))
         throw InputError(fullName(name), raw,
@@ -242,7 +298,8 @@ std::vector<std::string> OptionReader::choiceList(const std::string& name, const
   char raw[4096] = "";
   PetscBool set = PETSC_FALSE;
   GF_CALL(PetscOptionsGetString(nullptr, prefix_.c_str(), ("-" + name).c_str(), raw, sizeof raw, &set));
-  std::vector<std::string> values = set ? splitList(raw) : fallback;
+  std::vector<std::string> values =
+      set ? splitList(fullName(name), raw, "a comma-separated list of: " + joined(allowed, ", ")) : fallback;
   for (const auto& v : values)
     if (std::find(allowed.begin(), allowed.end(), v) == allowed.end())
       throw InputError(fullName(name), v, "a comma-separated list of: " + joined(allowed, ", "));
@@ -273,7 +330,18 @@ void refuseRenamedOption(const std::string& old, const std::string& now, const s
   char value[256] = "";
   PetscBool set = PETSC_FALSE;
   GF_CALL(PetscOptionsGetString(nullptr, nullptr, old.c_str(), value, sizeof value, &set));
-  if (set) throw InputError("invalid option " + old + " = " + value + ": " + why + "; use " + now + " = " + value);
+  if (!set) return;
+  const std::string shown = value[0] ? std::string(" = ") + value : "";  // a flag has no value
+  throw InputError("invalid option " + old + shown + ": " + why + "; use " + now + shown);
+}
+
+void refuseRenamedRunControl() {
+  const std::pair<const char*, const char*> renamed[] = {
+      {"-fem_output", "-output"},          {"-fem_output_overwrite", "-output_overwrite"},
+      {"-fem_sweep_resume", "-resume"},    {"-ensemble_resume", "-resume"},
+      {"-calibrate_output", "-output"},    {"-calibrate_output_overwrite", "-output_overwrite"}};
+  for (const auto& [old, now] : renamed)
+    refuseRenamedOption(old, now, "renamed: every driver says -output, -output_overwrite and -resume");
 }
 
 void checkUnusedOptions(MPI_Comm comm, const std::vector<std::string>& strictPrefixes) {
@@ -287,6 +355,9 @@ void checkUnusedOptions(MPI_Comm comm, const std::vector<std::string>& strictPre
     const std::string name = names[i];
     bool strict = false;
     for (const auto& prefix : strictPrefixes) strict = strict || name.rfind(prefix, 0) == 0;
+    // The results file's options are every driver's: a misspelt -output_overwrite, or -resume
+    // where nothing resumes, must not pass as unused.
+    strict = strict || name.rfind("output", 0) == 0 || name == "resume";
     // "--sbm_N" reaches PETSc as the option "-sbm_N" (a name with a dash): one edit from sbm_N.
     const std::string suggestion = isPetscOptionName(name) ? "" : nearMiss("-" + name, known);
     if (strict || !suggestion.empty()) {

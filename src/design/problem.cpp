@@ -26,6 +26,7 @@ std::vector<std::string> splitNames(const std::string& text) {
     name.erase(name.find_last_not_of(" \t") + 1);
     names.push_back(name);
   }
+  if (!text.empty() && text.back() == ',') names.push_back("");  // a trailing comma: an empty item
   return names;
 }
 
@@ -59,6 +60,11 @@ void checkParameterNames(const OptionReader& o, const std::vector<std::string>& 
     throw InputError(option, "(not set)",
                      "one or more free parameters: grading_delta or a field parameter <property>_<name> (mu_delta, E_exponent, ...)");
   for (std::size_t i = 0; i < names.size(); ++i) {
+    if (names[i].empty()) {
+      std::string text;
+      for (std::size_t k = 0; k < names.size(); ++k) text += (k ? "," : "") + names[k];
+      throw InputError(option, text, "comma-separated parameter names, none empty (item " + std::to_string(i + 1) + " is)");
+    }
     if (std::count(names.begin(), names.end(), names[i]) > 1)
       throw InputError(option, names[i], "each parameter once");
     if (names[i] == "grading_delta") {

@@ -1,4 +1,4 @@
-// Is the file given to -ensemble_resume a results file of this scene? Checked on rank 0 with
+// Is the file given to -resume a results file of this scene? Checked on rank 0 with
 // HDF5's error printing off, before any rank opens it in parallel: a foreign, truncated or damaged
 // file, or one of another scene, gets one line saying what is wrong with it (exit 2).
 #include "gradfric/core/input_error.hpp"
@@ -117,7 +117,7 @@ std::string problemWith(const ResumeTarget& target, const Scene* scene, const st
              "appended sweep values): " + differences;
     if (!mismatch.empty()) return mismatch;
     if (extension && !complete)
-      return "it is not finished (attribute complete = 0): finish it with -ensemble_resume first";
+      return "it is not finished (attribute complete = 0): finish it with -resume first";
     if (!differences.empty())
       return "it was started with another scene (run that scene, or start again with " + target.overwriteOption + "): " +
              differences;
@@ -166,7 +166,7 @@ std::string problemWithin(const ResumeTarget& target, const Scene* scene, const 
 namespace {
 
 ResumeTarget targetOf(const Scene& scene) {
-  return ResumeTarget{scene.sceneAttributes, scene.layout, "-ensemble_resume", "-output_overwrite"};
+  return ResumeTarget{scene.sceneAttributes, scene.layout, "-resume", "-output_overwrite"};
 }
 
 // Rank 0 checks, every rank throws the same InputError. `scene`: for an extension only.

@@ -25,7 +25,7 @@ namespace {
 
 // Options that steer one run but not its results: kept out of /scene (stored under /run), so a
 // resumed or re-ranked run of the same scene writes the same /scene.
-const std::set<std::string> kRunControl = {"-output",          "-output_overwrite",    "-ensemble_resume",
+const std::set<std::string> kRunControl = {"-output",          "-output_overwrite",    "-resume",
                                            "-ensemble_monitor", "-ensemble_schedule",   "-ensemble_abort_after",
                                            "-ensemble_dry_run", "-ensemble_extend"};
 
@@ -136,7 +136,6 @@ SweepLists readEnsembleOptions(MPI_Comm comm, RunParameters* record, Scene* s) {
   GF_CALL_MPI(MPI_Bcast(&interactive, 1, MPI_INT, 0, comm));
   s->monitor =
       ens.flag("monitor", interactive != 0, "print a progress line per finished task (default: on for a terminal)");
-  s->resume = ens.flag("resume", false, "continue an interrupted run of the same scene (skips finished tasks)");
   s->extend = ens.flag("extend", false,
                        "extend the finished -output file: more realisations or appended sweep points (or a tighter "
                        "target); what it holds is kept, not run again");
@@ -149,6 +148,7 @@ SweepLists readEnsembleOptions(MPI_Comm comm, RunParameters* record, Scene* s) {
   OptionReader out(comm, "", "Results file", record);
   s->output = out.text("output", "gradfric_sbm.h5", "results file (parallel HDF5; see docs/ensemble.md)");
   s->overwrite = out.flag("output_overwrite", false, "replace an existing results file");
+  s->resume = out.flag("resume", false, "continue an interrupted run of the same scene (skips finished tasks)");
   if (helpRequested()) return lists;
   ens.requireAtLeast("realisations", realisations, 1);
   ens.requireAtLeast("seed", seed, 0);

@@ -19,7 +19,7 @@ io::OutputPlan planResultsFile(MPI_Comm comm, const Scene& scene) {
   request.overwrite = scene.overwrite;
   request.overwriteOption = "-output_overwrite";
   request.resume = scene.resume;
-  request.resumeOption = "-ensemble_resume";
+  request.resumeOption = "-resume";
   request.extend = scene.extend;
   request.extendOption = "-ensemble_extend";
   return io::OutputPlan::decide(comm, request);

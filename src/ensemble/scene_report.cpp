@@ -95,7 +95,10 @@ void printTable(MPI_Comm comm, const Scene& scene, const std::vector<PointStatis
     const RelativeVariation& v = isStatic ? stats[p].muStaticRelative : stats[p].muKineticRelative;
     char ci[64], rel[64];
     std::snprintf(ci, sizeof ci, "[%.5f, %.5f]", s.ciLow, s.ciHigh);
-    if (std::isfinite(v.value))
+    // A point compared with itself has no variation to show (its 0 +- 0 is by definition).
+    if (scene.sweep.reference[p] == static_cast<int>(p))
+      std::snprintf(rel, sizeof rel, "%s", "reference");
+    else if (std::isfinite(v.value))
       std::snprintf(rel, sizeof rel, "%+7.3f +- %.3f", 100 * v.value, std::isfinite(v.error) ? 100 * v.error : 0.0);
     else
       std::snprintf(rel, sizeof rel, "%s", "(no reference)");

@@ -146,7 +146,7 @@ void runBatch(MPI_Comm comm, const Scene& scene, io::ResultsFile& file, const st
   } catch (const CollectiveError& e) {
     file.close();
     throw CollectiveError(std::string(e.what()) + "; the finished tasks are in " + resultsPath +
-                          ", continue with -ensemble_resume");
+                          ", continue with -resume");
   }
   file.flush();  // sync, barrier, sync: every rank now reads what the others wrote
 }

@@ -41,7 +41,7 @@ const char* originText(OptionOrigin o) {
 OutputFiles::OutputFiles(MPI_Comm comm, const FemParameters& params) : comm_(comm), params_(params) {
   if (params.output.empty()) {
     if (!params.snapshotTimes.empty())
-      throw InputError("-fem_snapshot_times", "(given)", "only together with -fem_output <file.h5>");
+      throw InputError("-fem_snapshot_times", "(given)", "only together with -output <file.h5>");
     return;
   }
   path_ = params.output;
@@ -55,12 +55,12 @@ OutputFiles::OutputFiles(MPI_Comm comm, const FemParameters& params) : comm_(com
   // Every file planned before any work, refused on every rank alike (io::OutputPlan).
   auto plan = [&](const std::string& path) {
     io::OutputRequest request;
-    request.option = "-fem_output";
+    request.option = "-output";
     request.path = path;
     request.value = path_;
     request.temporarySuffix = ".tmp";
     request.overwrite = params.overwrite;
-    request.overwriteOption = "-fem_output_overwrite";
+    request.overwriteOption = "-output_overwrite";
     return io::OutputPlan::decide(comm, request);
   };
   historyPlan_ = plan(path_);

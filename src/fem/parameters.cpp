@@ -198,8 +198,6 @@ FemParameters readFemParameters(MPI_Comm comm, RunParameters* record, const Plat
   if (auto t = o.realIfSet("slide_time", "s", "longest sliding duration", "1.5 t_load + the latest mu_k window's end (Eq. 2 t_load)")) q.slideTime = *t;
   q.stopWhenKnown = o.flag("stop_when_known", true, "stop once the -friction_observables are known");
   q.partitioner = o.choice("partitioner", "metis", {"metis", "ptscotch", "simple"}, "mesh partitioner");
-  q.output = o.text("output", "", "HDF5 results file (empty: none); snapshots go to <name>_fields.h5 + .xmf");
-  q.overwrite = o.flag("output_overwrite", false, "replace an existing results file");
   q.snapshotTimes = o.realList("snapshot_times", {}, "s", "field snapshot times after the start of sliding");
   q.historyEvery = static_cast<int>(o.integer("history_every", 1, 1, 1000000000, "1", "record mu(t) every n steps"));
   q.verbose = o.flag("verbose", true, "print progress");

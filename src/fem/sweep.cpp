@@ -19,7 +19,7 @@ namespace {
 
 // Options that steer how a sweep runs but not its numbers: stored under /run, so a resumed or
 // re-ranked sweep of the same scene writes the same /scene (and may change them).
-const std::set<std::string> kRunControl = {"-fem_output",        "-fem_output_overwrite",     "-fem_sweep_resume",
+const std::set<std::string> kRunControl = {"-output",             "-output_overwrite",         "-resume",
                                            "-fem_sweep_abort_after", "-fem_sweep_ranks_per_run", "-fem_verbose"};
 
 const char* originText(OptionOrigin origin) {
@@ -101,16 +101,17 @@ SweepOptions readSweepOptions(MPI_Comm comm, RunParameters* record) {
   OptionReader sw(comm, "fem_sweep_", "FEM sweep over groups of ranks (docs/fem.md)", record);
   const PetscInt ranks = sw.integer("ranks_per_run", 1, 1, 1000000, "1",
                                     "ranks of each run's sub-communicator; must divide the number of ranks");
-  s.resume = sw.flag("resume", false, "continue an interrupted sweep: points finished in <-fem_output>.partial are skipped");
   const PetscInt abortAfter = sw.integer(
       "abort_after", 0, 0, PETSC_MAX_INT, "1",
       "testing only: every rank exits abruptly (no close) once its group finished this many runs (0: never)");
+  OptionReader out(comm, "", "Results file", record);
+  s.resume = out.flag("resume", false, "continue an interrupted sweep: points finished in <-output>.partial are skipped");
   if (helpRequested()) return s;
   sw.requireAtLeast("ranks_per_run", ranks, 1);
   sw.requireAtLeast("abort_after", abortAfter, 0);
   s.ranksPerRun = static_cast<int>(ranks);
   s.abortAfter = static_cast<long>(abortAfter);
-  s.requested = ensemble::anySwept(s.lists) || sw.wasSet("ranks_per_run") || sw.wasSet("resume") ||
+  s.requested = ensemble::anySwept(s.lists) || sw.wasSet("ranks_per_run") || out.wasSet("resume") ||
                 sw.wasSet("abort_after");
   return s;
 }

@@ -54,13 +54,13 @@ private:
 
 io::OutputPlan planSweepFile(MPI_Comm comm, const FemSweep& s) {
   io::OutputRequest request;
-  request.option = "-fem_output";
+  request.option = "-output";
   request.path = s.output;
   request.temporarySuffix = ".partial";
   request.overwrite = s.params.overwrite;
-  request.overwriteOption = "-fem_output_overwrite";
+  request.overwriteOption = "-output_overwrite";
   request.resume = s.options.resume;
-  request.resumeOption = "-fem_sweep_resume";
+  request.resumeOption = "-resume";
   return io::OutputPlan::decide(comm, request);
 }
 
@@ -72,7 +72,7 @@ io::ResultsFile openSweepFile(MPI_Comm comm, const FemSweep& s, const io::Output
       return io::ResultsFile::create(comm, plan.workPath(), s.layout, s.table, s.sceneAttributes);
     }
     ensemble::checkResumable(
-        comm, ensemble::ResumeTarget{s.sceneAttributes, s.layout, "-fem_sweep_resume", "-fem_output_overwrite"},
+        comm, ensemble::ResumeTarget{s.sceneAttributes, s.layout, "-resume", "-output_overwrite"},
         plan.workPath());
     GF_CALL(PetscPrintf(comm, "Resuming %s\n", plan.workPath().c_str()));
     return io::ResultsFile::open(comm, plan.workPath());
@@ -141,14 +141,21 @@ void printTable(MPI_Comm comm, const FemSweep& s, const std::vector<ensemble::Po
   GF_CALL(PetscPrintf(comm, "FEM sweep results (one run per point; relative variation against the non-graded point;\n"
                             "discretisation error bar of mu_s, 'n/m' where no study measured it):\n"
                             "  point sweep                         mu_s   error [%%]   rel. var. [%%]        mu_k     rel. var. [%%]\n"));
+  // The reference point itself and a point without one show words, not a 0 or a nan.
+  auto relative = [&](int p, double value) {
+    char text[32];
+    if (s.sweep.reference[p] == p) return std::string("reference");
+    if (!std::isfinite(value)) return std::string("(no reference)");
+    std::snprintf(text, sizeof text, "%+.3f", 100 * value);
+    return std::string(text);
+  };
   for (int p = 0; p < s.points(); ++p) {
     const auto& st = stats[p];
     char bar[32] = "      n/m";
     if (std::isfinite(bars.muStatic[p])) std::snprintf(bar, sizeof bar, "%9.2f", 100 * bars.muStatic[p]);
-    GF_CALL(PetscPrintf(comm, "  %-5d %-24s %10.6f %s %+14.3f   %10.6f %+14.3f%s\n", p,
-                        ensemble::pointLabel(s.sweep, p).c_str(), st.muStatic.mean, bar, 100 * st.muStaticRelative.value,
-                        st.muKinetic.mean, 100 * st.muKineticRelative.value,
-                        st.peaksUnconfirmed > 0 ? "  (peak not confirmed)" : ""));
+    GF_CALL(PetscPrintf(comm, "  %-5d %-24s %10.6f %s %14s   %10.6f %14s%s\n", p, ensemble::pointLabel(s.sweep, p).c_str(),
+                        st.muStatic.mean, bar, relative(p, st.muStaticRelative.value).c_str(), st.muKinetic.mean,
+                        relative(p, st.muKineticRelative.value).c_str(), st.peaksUnconfirmed > 0 ? "  (peak not confirmed)" : ""));
   }
 }
 
@@ -210,7 +217,7 @@ void runFemSweep(MPI_Comm comm, const FemSweep& s, const RunParameters& record) 
   } catch (const CollectiveError& e) {
     file.close();
     throw CollectiveError(std::string(e.what()) + "; the finished points are in " + plan.workPath() +
-                          ", continue with -fem_sweep_resume");
+                          ", continue with -resume");
   }
   const auto stats = ensemble::writeStatistics(file, 1, s.sweep.reference, false);
   const ErrorBars bars = errorBarsOf(s);

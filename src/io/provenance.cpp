@@ -1,5 +1,6 @@
 #include "gradfric/io/provenance.hpp"
 
+#include "gradfric/core/command_line.hpp"
 #include "gradfric/core/petsc_call.hpp"
 #include "gradfric/io/hdf5_attributes.hpp"
 #include "gradfric/version.hpp"
@@ -50,9 +51,9 @@ Provenance collectProvenance(MPI_Comm comm) {
   MPI_Comm_size(comm, &p.ranks);
   std::string packed;
   if (rank == 0) {
-    int argc = 0;
-    char** argv = nullptr;
-    GF_CALL(PetscGetArgs(&argc, &argv));
+    // The command line as given: PETSc's own has the options files expanded in place.
+    const std::vector<std::string>& argv = originalArguments();
+    const int argc = static_cast<int>(argv.size());
     std::string line;
     for (int i = 0; i < argc; ++i) line += (i ? " " : "") + shellQuoted(argv[i]);
     put(packed, line);
@@ -60,7 +61,7 @@ Provenance collectProvenance(MPI_Comm comm) {
     std::string files;
     int count = 0;
     for (int i = 1; i + 1 < argc; ++i) {
-      if (std::string(argv[i]) != "-options_file") continue;
+      if (argv[i] != "-options_file") continue;
       std::ifstream in(argv[i + 1]);
       std::ostringstream text;
       text << in.rdbuf();

@@ -152,7 +152,7 @@ std::shared_ptr<const PropertyField> readField(MPI_Comm comm, RunParameters* rec
   f.period = o.real("period", 0.0, "m", "stripes: period, > 0");
   f.duty = o.real("duty", 0.5, "1", "stripes: fraction of a period with f = 1 + Delta, 0 < duty < 1");
   f.table = o.realList("values", {}, "1", "bands: the factors of N equal bands across the plate");
-  const std::string mapPath = o.text("map", "", "map: HDF5 file (.h5, .hdf5) or greyscale PNG (.png) of f");
+  const std::string mapPath = o.path("map", "", "map: HDF5 file (.h5, .hdf5) or greyscale PNG (.png) of f (in an options file: from its folder)");
   const std::string dataset = o.text("map_dataset", "factor", "map: the HDF5 dataset [ny][nx] (attribute extent = x0,x1,y0,y1 [m])");
   const std::vector<double> extent = o.realList("map_extent", {0.0, plate.length, 0.0, plate.length}, "m", "PNG map: x0,x1,y0,y1 the image covers (an HDF5 map carries its own)");
   const std::vector<double> range = o.realList("map_range", {0.5, 1.5}, "1", "PNG map: f of black, f of white (grey values in between, linearly)");

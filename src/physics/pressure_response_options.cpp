@@ -113,7 +113,7 @@ double measuredUpTo(const std::string& path) {
 FieldMap readResponseMap(const std::string& option, const std::string& value, const std::string& path,
                          const Plate& plate) {
   const std::string where = value == path ? "" : path + ": ";
-  FieldMap map = readHdf5Map(option, path, kPressureResponseDataset, "written by gradfric-fem -fem_output");
+  FieldMap map = readHdf5Map(option, path, kPressureResponseDataset, "written by gradfric-fem -output");
   for (std::size_t k = 0; k < map.values.size(); ++k)
     if (!std::isfinite(map.values[k])) {
       std::ostringstream text;
@@ -146,9 +146,9 @@ PressureResponse readPressureResponse(MPI_Comm comm, RunParameters* record, cons
                                            "leading and trailing edges (in (0, L/2])",
                                            formatReal(kDefaultEdgeOverThickness) + " H");
   const std::string file =
-      o.text("response_file", "",
+      o.path("response_file", "",
              "fem: gradfric-fem results file(s) whose /pressure_response/g is the shape g (comma-separated with "
-             "-pressure_response_select grading)");
+             "-pressure_response_select grading; in an options file: from its folder)", true);
   const std::string select =
       o.choice("response_select", "same", {"same", "grading"},
                "fem: same (the one file's g at every sweep point) or grading (each sweep point takes the file whose "

@@ -23,18 +23,22 @@ namespace fem_study {
 
 namespace {
 
-// "25x25x1,50x50x2" -> {{25,25,1},{50,50,2}}
+// "25x25x1,50x50x2" -> {{25,25,1},{50,50,2}}; an empty item or anything after nz (6x6x1.5 would
+// run 6x6x1) is refused.
 std::vector<Mesh> parseMeshes(const OptionReader& o, const std::string& name, const std::string& text) {
   std::vector<Mesh> meshes;
-  std::stringstream list(text);
+  if (text.empty()) return meshes;
+  const char* allowed = "comma-separated meshes nx x ny x nz of whole numbers >= 1, e.g. 25x25x1,50x50x2";
+  std::stringstream list(text + ",");  // the comma makes a trailing empty item visible
   std::string item;
   while (std::getline(list, item, ',')) {
-    if (item.empty()) continue;
     Mesh m{0, 0, 0};
     char x1 = 0, x2 = 0;
     std::stringstream s(item);
-    if (!(s >> m[0] >> x1 >> m[1] >> x2 >> m[2]) || x1 != 'x' || x2 != 'x' || m[0] < 1 || m[1] < 1 || m[2] < 1)
-      throw InputError(o.fullName(name), text, "comma-separated meshes nx x ny x nz, e.g. 25x25x1,50x50x2");
+    if (!(s >> m[0] >> x1 >> m[1] >> x2 >> m[2]) || x1 != 'x' || x2 != 'x' || m[0] < 1 || m[1] < 1 || m[2] < 1 ||
+        (s >> std::ws, !s.eof()))
+      throw InputError(o.fullName(name), text,
+                       std::string(allowed) + " ('" + item + "' is not" + (item.empty() ? ": an empty item)" : " one)"));
     if (double(m[0]) * m[1] * m[2] > 2e7)  // as -fem_nx/ny/nz: memory before any work
       throw InputError(o.fullName(name), item, "meshes of at most 2e7 hexahedra");
     meshes.push_back(m);
@@ -102,7 +106,6 @@ std::optional<Study> readStudy(MPI_Comm comm, RunParameters* record) {
   o.requireRange("penalty_dt_safety", s.penaltySafety, 1e-6, 1.0, "0 < safety <= 1");
   o.requireRange("mesh_dt_safety", s.meshSafety, 1e-6, 1.0, "0 < safety <= 1");
   if (dtSet) throw InputError("-fem_dt", "(set)", "unset: the study sets the step as a fraction of the stable step");
-  if (!s.base.output.empty()) throw InputError("-fem_output", s.base.output, "unset: the study writes -output");
   checkUnusedOptions(comm, {"study_", "plate_", "fem_", "grading_", "output"});
   for (auto* list : {&s.safeties, &s.safetiesOther, &s.factors, &s.fineSafeties}) std::sort(list->begin(), list->end());
   s.base.verbose = false;

@@ -22,13 +22,13 @@ run() {  # name, ranks, expected exit, command...
   [ $rc -eq "$code" ] || { tail -n 5 "$name.err" "$name.out" >&2; fail "$name: exit $rc, expected $code"; }
 }
 
-run fem 1 0 "$fem" -fem_nx 10 -fem_ny 10 -fem_nz 5 -friction_observables mu_s -fem_output fem.h5
+run fem 1 0 "$fem" -fem_nx 10 -fem_ny 10 -fem_nz 5 -friction_observables mu_s -output fem.h5
 fit=(-sbm_N 20 -calibrate_realisations 16)
-run fit 2 0 "$calibrate" -calibrate_reference fem.h5 "${fit[@]}" -calibrate_output fit.opts -calibrate_curve fit.csv
+run fit 2 0 "$calibrate" -calibrate_reference fem.h5 "${fit[@]}" -output fit.opts -calibrate_curve fit.csv
 grep -q "Calibration converged" fit.out || fail "fit: not converged: $(cat fit.out | tail -12)"
 [ -s fit.opts ] && [ -s fit.csv ] && ! ls ./*.tmp >/dev/null 2>&1 || fail "fit: files not written whole"
 grep -q "^-sbm_lz " fit.opts && grep -q "^-sbm_sigma_s " fit.opts && grep -q "^-sbm_N 20" fit.opts || fail "fit.opts: $(cat fit.opts)"
-run one 1 0 "$calibrate" -calibrate_reference fem.h5 "${fit[@]}" -calibrate_output one.opts
+run one 1 0 "$calibrate" -calibrate_reference fem.h5 "${fit[@]}" -output one.opts
 diff <(grep -v "^# gradfric -options_file" fit.opts) <(grep -v "^# gradfric -options_file" one.opts) >/dev/null ||
   fail "1 and 2 ranks give different scene files: $(diff fit.opts one.opts)"
 
@@ -48,9 +48,9 @@ np.savetxt("flat.csv", np.column_stack([t, np.full_like(t, 0.5)]), delimiter=","
 np.savetxt("high.csv", np.column_stack([t, 1.3 * mu]), delimiter=",")
 open("bad.csv", "w").write("t,mu\n0,0\n1e-6,abc\n")
 PY
-run csv 1 0 "$calibrate" -calibrate_reference fem.csv "${fit[@]}" -calibrate_output csv.opts
+run csv 1 0 "$calibrate" -calibrate_reference fem.csv "${fit[@]}" -output csv.opts
 run plain 1 0 "$calibrate" -calibrate_reference plain.h5 -calibrate_reference_time t -calibrate_reference_mu curves/mu \
-  "${fit[@]}" -calibrate_output plain.opts
+  "${fit[@]}" -output plain.opts
 for f in csv plain; do
   [ "$(grep '^-sbm_lz' $f.opts)" = "$(grep '^-sbm_lz' fit.opts)" ] || fail "$f: another l_z: $(grep '^-sbm_lz' $f.opts fit.opts)"
 done
@@ -60,7 +60,7 @@ grep -q "^-sbm_sigma_s" csv.opts || fail "csv: no sigma"
 # differ: the file checks, the plate against the reference).
 bad() {  # name, ranks, regex, options...
   local name=$1 ranks=$2 regex=$3; shift 3
-  run "$name" "$ranks" 2 "$calibrate" "$@" -calibrate_output "$name.opts"
+  run "$name" "$ranks" 2 "$calibrate" "$@" -output "$name.opts"
   [ "$(grep -c '^gradfric: error:' "$name.err")" -eq 1 ] || fail "$name: not one message: $(cat "$name.err")"
   grep -Eq "$regex" "$name.err" || fail "$name: message does not match $regex: $(cat "$name.err")"
   ! ls "$name".opts* >/dev/null 2>&1 || fail "$name: a file was written"
@@ -79,18 +79,18 @@ bad pressure 2 "invalid option -pressure_response_file = .*E_\+0.2.h5: allowed a
   -pressure_response_file "$source_dir/input/fields/pressure_response_fem100_E_+0.2.h5"
 bad plate 2 "invalid option -plate_E = 20000000: allowed the reference's value 10000000 \(fem.h5\)" -calibrate_reference fem.h5 -plate_E 2e7
 echo "earlier" >kept.opts
-run kept 2 2 "$calibrate" -calibrate_reference fem.h5 "${fit[@]}" -calibrate_output kept.opts
-grep -q "invalid option -calibrate_output = kept.opts: .*-calibrate_output_overwrite" kept.err || fail "kept: $(cat kept.err)"
+run kept 2 2 "$calibrate" -calibrate_reference fem.h5 "${fit[@]}" -output kept.opts
+grep -q "invalid option -output = kept.opts: .*-output_overwrite" kept.err || fail "kept: $(cat kept.err)"
 [ "$(cat kept.opts)" = "earlier" ] || fail "an existing scene file was replaced"
 
 # A peak above what any sigma gives (1.3 x the FEM curve: above every block's mu_s): exit 1, no file.
-run high 2 1 "$calibrate" -calibrate_reference high.csv "${fit[@]}" -calibrate_output high.opts
+run high 2 1 "$calibrate" -calibrate_reference high.csv "${fit[@]}" -output high.opts
 grep -q "is out of reach of this spring-block scene: at sigma = 0 its peak is" high.err || fail "high: $(cat high.err)"
 ! ls high.opts* >/dev/null 2>&1 || fail "high: a file was written"
 # Not converged within the evaluations allowed (a tolerance no 16-realisation ensemble meets in 2):
 # exit 1, the best printed, no file.
 run short 1 1 "$calibrate" -calibrate_reference fem.h5 "${fit[@]}" -calibrate_max_evaluations 2 \
-  -calibrate_peak_tolerance 0.001 -calibrate_output short.opts
+  -calibrate_peak_tolerance 0.001 -output short.opts
 grep -q "did NOT converge" short.out && grep -q "did not converge in 2 evaluations" short.err || fail "short: $(cat short.err)"
 ! ls short.opts* >/dev/null 2>&1 || fail "short: a file was written"
 echo "calibration OK"

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# A fuzz-style battery of bad and extreme command lines for the three drivers. Every
+# A fuzz-style battery of bad and extreme command lines for the drivers. Every
 # case must: exit 2 (0 for -help/-version), print exactly one stderr line "gradfric: error: ..."
 # naming the option, show no PETSc banner/traceback, leave no file behind, finish within 60 s.
 # Usage: fuzz_command_line.sh <drivers folder> <scratch folder> <group: sbm|fem|study|mpi> [mpiexec]
@@ -11,6 +11,8 @@ mpiexec=${4:-mpiexec}
 G=$bin/gradfric
 F=$bin/gradfric-fem
 S=$bin/gradfric-study
+C=$bin/gradfric-calibrate
+D=$bin/gradfric-design
 # The plate's physical options (one record for both models since the rename).
 SP=-plate_
 FP=-plate_
@@ -32,6 +34,8 @@ printf 'sbm_N 5\n' > "$in/nodash.opts"
 : > "$in/empty.opts"
 echo "-options_file $in/no_such_inner.opts" > "$in/outer.opts"
 echo "-sbm_N 5" > "$in/good.opts"
+printf -- '-sbm_N 5\n-ensemble_delta 0 0.2\n' > "$in/stray.opts"
+printf -- '-sbm_N 5 # comment\n-grading_profile "linear"\n' > "$in/quoted.opts"
 
 cases=0
 failures=0
@@ -43,8 +47,7 @@ run() {
   n=$((n + 1)); cases=$((cases + 1))
   local dir=$scratch/$group/case_$n
   rm -rf "$dir"; mkdir -p "$dir"
-  local out=-output
-  [ "$driver" = "$F" ] && out=-fem_output
+  local out=-output  # every driver names its results file so
   local launcher=()
   [ "${RANKS:-1}" -gt 1 ] && launcher=("$mpiexec" -n "$RANKS" --oversubscribe --quiet)  # --quiet: no launcher notice
   (cd "$dir" && timeout 60 "${launcher[@]}" "$driver" "$out" "$dir/out.h5" "$@" >"$dir.stdout" 2>"$dir.stderr")
@@ -142,6 +145,20 @@ sbm)
   run 2 -model "$G" -model fem
   run 2 -ensemble_schedule "$G" -ensemble_schedule random
   run 2 -ensemble_history "$G" -ensemble_history maybe
+  # Stray words after a value and empty list items: refused, not ignored (PETSc skips them).
+  run 2 "-ensemble_delta = 0 0.2: allowed one value .*0,0.2" "$G" -grading_profile linear -ensemble_delta 0 0.2
+  run 2 "-ensemble_delta = -0.1 -0.2: allowed one value" "$G" -grading_profile linear -ensemble_delta -0.1 -0.2
+  run 2 "-sbm_N = 5 6 7: allowed one value \\(the stray words 6 7" "$G" -sbm_N 5 6 7
+  run 2 "-output_overwrite = true yes: allowed one value" "$G" -output_overwrite true yes
+  run 2 "-ensemble_delta = 0 0.2 \\(in $in/stray.opts line 2\\): allowed one value" "$G" -options_file "$in/stray.opts"
+  run 2 "-ensemble_delta = 0.1,,0.2: .*\\(item 2 is empty\\)" "$G" -grading_profile linear -ensemble_delta 0.1,,0.2
+  run 2 "-ensemble_theta = 0,90,: .*\\(item 3 is empty\\)" "$G" -ensemble_theta 0,90,
+  run 2 "-ensemble_property = ,E: .*\\(item 1 is empty\\)" "$G" -grading_profile linear -ensemble_property ,E
+  run 2 "-friction_observables = mu_s,: .*item 2 is empty" "$G" -friction_observables mu_s,
+  run 2 "-sbm_N = 4294967304" "$G" -options_file "$in/quoted.opts" -sbm_N 4294967304
+  # The renamed run-control options: refused with the new spelling.
+  run 2 "-ensemble_resume: renamed.*; use -resume$" "$G" -ensemble_resume
+  run 2 "-fem_output = x.h5: renamed.*; use -output = x.h5" "$G" -fem_output x.h5
   # Options files.
   run 2 "-options_file = $in/folder: a directory" "$G" -options_file "$in/folder"
   run 2 "-options_file = $in/binary.opts: binary" "$G" -options_file "$in/binary.opts"
@@ -218,11 +235,31 @@ fem)
   run 2 -grading_bands "$F" -grading_profile linear -grading_delta 0.1 -grading_bands 0
   run 2 -fem_compare_seed "$F" -fem_compare_seed -1
   run 2 "-fem_nxx" "$F" -fem_nxx 3
-  run 2 "did you mean -fem_output" "$F" -fem_outptu x.h5
+  run 2 "did you mean -output\\?" "$F" -outptu x.h5
+  run 2 "-output_overwrit \\(did you mean -output_overwrite" "$F" -output_overwrit
+  run 2 "-fem_output = f.h5: renamed.*; use -output = f.h5" "$F" -fem_output f.h5
+  run 2 "-fem_output_overwrite: renamed.*; use -output_overwrite$" "$F" -fem_output_overwrite
+  run 2 "-fem_sweep_resume: renamed.*; use -resume$" "$F" -fem_sweep_resume
+  run 2 "-fem_snapshot_times = 0 1e-5: allowed one value" "$F" -fem_snapshot_times 0 1e-5
+  run 2 "-ensemble_delta = 0.1,,0.2: .*item 2 is empty" "$F" -grading_profile linear -ensemble_delta 0.1,,0.2
+  run 2 "-ensemble_theta = 0 90: allowed one value" "$F" -ensemble_theta 0 90
   run 2 -fem_nx "$F" --fem_nx 0
   run 2 "-options_file_yaml = $in/bad.yaml" "$F" -options_file_yaml "$in/bad.yaml"
   run 2 "includes itself" "$F" -options_file "$in/a.opts"
   run 0 "-fem_nx" "$F" --help
+  run 0 "^  -fem_nx" "$F" -help fem
+  run 0 "No option of this driver starts with -zzz" "$F" -help zzz
+  # -help <prefix> lists that prefix alone; gradfric-fem's -friction_ options (read by both
+  # models) once each, every section once.
+  cases=$((cases + 1))
+  ( cd "$scratch/$group" && "$F" -help fem >help_fem.txt 2>&1 && "$F" -help >help_all.txt 2>&1 ) || true
+  problem=""
+  grep -q "^  -fem_nx" "$scratch/$group/help_fem.txt" || problem="-help fem lacks -fem_nx"
+  grep -qE "^  -(plate|friction|grading|field|sbm|ensemble|output)" "$scratch/$group/help_fem.txt" && problem="-help fem lists other prefixes"
+  [ "$(grep -c "^  -friction_law " "$scratch/$group/help_all.txt")" = 1 ] || problem="-friction_law not listed once"
+  [ -z "$(grep "^  -" "$scratch/$group/help_all.txt" | awk '{print $1}' | sort | uniq -d)" ] || problem="an option listed twice"
+  [ -z "$(grep -E "^[A-Z].*:$" "$scratch/$group/help_all.txt" | grep -v "Options" | sort | uniq -d)" ] || problem="a section listed twice"
+  if [ -n "$problem" ]; then failures=$((failures + 1)); echo "FAIL [help] $problem"; else echo "ok   [help] gradfric-fem -help fem: only -fem_; -friction_ once"; fi
   run 0 "^gradfric [0-9.]+ \\(commit" "$F" -version
   ;;
 study)
@@ -242,6 +279,19 @@ study)
   run 2 -sbm_N "$S" -sbm_N 4294967304
   run 2 "includes itself" "$S" -options_file "$in/self.opts"
   run 2 "did you mean -study_model" "$S" -study_mdoel fem
+  run 2 "-study_meshes = 6x6x1.5: .*'6x6x1.5' is not one" "$S" -study_model fem -study_meshes 6x6x1.5
+  run 2 "-study_meshes = 25x25x1,,50x50x2: .*an empty item" "$S" -study_model fem -study_meshes 25x25x1,,50x50x2
+  run 2 "-study_meshes = 25x25x1,: .*an empty item" "$S" -study_model fem -study_meshes 25x25x1,
+  run 2 "-study_dt = 1e-8 3e-8: allowed one value" "$S" -study_dt 1e-8 3e-8
+  run 2 "-study_N = 30,,60: .*item 2 is empty" "$S" -study_N 30,,60
+  run 2 "unknown option -resume" "$S" -resume
+  # The other drivers: the same vocabulary and refusals.
+  run 2 "-calibrate_output = c.opts: renamed.*; use -output = c.opts" "$C" -calibrate_output c.opts
+  run 2 "-calibrate_output_overwrite: renamed.*; use -output_overwrite$" "$C" -calibrate_output_overwrite
+  run 2 "-calibrate_window = 0.2 0.6: allowed one value" "$C" -calibrate_window 0.2 0.6
+  run 2 "-design_parameters = grading_delta,: .*none empty" "$D" -grading_profile linear -design_parameters grading_delta, -design_lower 0 -design_upper 0.5 -design_target 0.9
+  run 2 "-design_lower = 0,,1: .*item 2 is empty" "$D" -design_lower 0,,1
+  run 2 "-ensemble_resume: renamed.*; use -resume$" "$D" -ensemble_resume
   run 0 "-study_knobs" "$S" --help
   run 0 "^gradfric [0-9.]+ \\(commit" "$S" -version
   ;;
@@ -258,6 +308,10 @@ mpi)
   run 2 -grading_profile "$G" -grading_delta 0.2
   run 2 -fem_nx "$F" -fem_nx 4294967297
   run 2 -study_dt "$S" -study_dt 1e-300
+  run 2 "-ensemble_delta = 0 0.2: allowed one value" "$G" -grading_profile linear -ensemble_delta 0 0.2
+  run 2 "-ensemble_delta = 0.1,,0.2: .*item 2 is empty" "$G" -grading_profile linear -ensemble_delta 0.1,,0.2
+  run 2 "-fem_output = f.h5: renamed.*; use -output = f.h5" "$F" -fem_output f.h5
+  run 2 "-study_meshes = 6x6x1.5" "$S" -study_model fem -study_meshes 6x6x1.5
   run 0 "^gradfric [0-9.]+ \\(commit" "$G" -version
   ;;
 *) echo "unknown group $group"; exit 1 ;;

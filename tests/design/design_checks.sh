@@ -95,7 +95,7 @@ fem)
   # the FEM too finds the graded plate's mu_s below its uniform plate's.
   run 0 1 "$work/f.log" "${scene[@]}" -sbm_N 12 -design_verify_fem -fem_nx 8 -fem_ny 8 -fem_nz 1 -output "$work/f.h5"
   grep -q "^  FEM " "$work/f.log" || { cat "$work/f.log" >&2; fail "no FEM line"; }
-  "$fem" -fem_nx 8 -fem_ny 8 -fem_nz 1 -friction_observables mu_s -fem_output "$work/u.h5" >"$work/u.log" 2>&1 ||
+  "$fem" -fem_nx 8 -fem_ny 8 -fem_nz 1 -friction_observables mu_s -output "$work/u.h5" >"$work/u.log" 2>&1 ||
     { cat "$work/u.log" >&2; fail "the uniform FEM run"; }
   uniform=$(sed -n 's/^  mu_s (global) *\([0-9.]*\).*/\1/p' "$work/u.log")
   "$python" - "$work/f.h5" "$uniform" <<'PY' || fail "FEM verification"

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The results file of the gradfric driver is planned before any work and replaced only on success;
 # a refusal or an I/O failure ends every rank with one message and a non-zero exit, never a hang;
-# a bad file given to -ensemble_resume gets one line saying what is wrong with it (exit 2).
+# a bad file given to -resume gets one line saying what is wrong with it (exit 2).
 #   output_checks.sh <driver> <source-dir> <check>
 # checks: refuse_output, overwrite_failed, disk_full, resume_files. Each runs on 1 and 2 ranks
 # where a rank count matters (refusals decided on rank 0, collective writes).
@@ -56,7 +56,7 @@ refuse_output)
     # An existing file without -output_overwrite: untouched.
     echo earlier >"$work/exists$n.h5"
     run "$n" "exists$n" "${scene[@]}" -output "$work/exists$n.h5"
-    refused "exists$n" 2 "exists: add -output_overwrite to replace it, or -ensemble_resume to continue it"
+    refused "exists$n" 2 "exists: add -output_overwrite to replace it, or -resume to continue it"
     [ "$(cat "$work/exists$n.h5")" = earlier ] || fail "the existing file was changed"
     # The temporary cannot be created (a directory stands in its place).
     mkdir -p "$work/temp$n.h5.partial"
@@ -145,16 +145,16 @@ resume_files)
     [ "$name" = mismatch ] && extra=(-sbm_N 18)
     cp "$work/$name.h5" "$work/$name.before"
     for n in 1 2; do
-      run "$n" "$name$n" "${scene[@]}" "${extra[@]}" -output "$work/$name.h5" -ensemble_resume
-      refused "$name$n" 2 "^gradfric: error: invalid option -ensemble_resume \(continue .*$name.h5\): ${expect[$name]}"
+      run "$n" "$name$n" "${scene[@]}" "${extra[@]}" -output "$work/$name.h5" -resume
+      refused "$name$n" 2 "^gradfric: error: invalid option -resume \(continue .*$name.h5\): ${expect[$name]}"
       [ "$(wc -l <"$work/$name$n.err")" -lt 15 ] || fail "$name: more than one message (besides mpiexec's)"
     done
     cmp -s "$work/$name.h5" "$work/$name.before" || fail "$name: the refused file was changed"
   done
   # The same checks for an interrupted run's .partial.
   cp "$work/text.h5" "$work/cut.h5.partial"
-  run 2 partial "${scene[@]}" -output "$work/cut.h5" -ensemble_resume
-  refused partial 2 "invalid option -ensemble_resume \(continue .*cut.h5.partial\): it is not an HDF5 file"
+  run 2 partial "${scene[@]}" -output "$work/cut.h5" -resume
+  refused partial 2 "invalid option -resume \(continue .*cut.h5.partial\): it is not an HDF5 file"
   ;;
 *)
   fail "unknown check $check"

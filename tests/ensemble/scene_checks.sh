@@ -2,6 +2,7 @@
 # End-to-end checks of the spring-block ensemble through the gradfric driver.
 #   scene_checks.sh <driver> <source-dir> <check>
 # checks: determinism, kill_resume, refuse, resume_mismatch, single, help, scenes
+# (refuse: also stray words and empty list items; single: the reference point's printout)
 # Each check fails (exit 1) if what it guards is wrong. Results files are compared with h5diff,
 # excluding /run (wall times, which rank ran which task, run-control options): everything else,
 # every attribute and dataset, must be equal value for value.
@@ -81,10 +82,10 @@ kill_resume)
   [ "$done_count" -ge 3 ] || fail "only $done_count finished tasks kept after the interruption"
   [ "$done_count" -le 4 ] || fail "the interruption came too late to test anything ($done_count tasks)"
   h5dump -a /complete "$work/cut.h5.partial" | grep -q "(0): 0" || fail "interrupted file not marked incomplete"
-  # Without -ensemble_resume the interrupted run is not overwritten by accident.
+  # Without -resume the interrupted run is not overwritten by accident.
   if run 1 "${scene[@]}" -output "$work/cut.h5" >"$work/refused.log" 2>&1; then fail "started over an interrupted run"; fi
-  grep -q "ensemble_resume" "$work/refused.log" || fail "no hint to -ensemble_resume"
-  run 2 "${scene[@]}" -ensemble_resume -output "$work/cut.h5" >"$work/resume.log"
+  grep -q -- "-resume" "$work/refused.log" || fail "no hint to -resume"
+  run 2 "${scene[@]}" -resume -output "$work/cut.h5" >"$work/resume.log"
   grep -q "$done_count of 15 tasks already finished" "$work/resume.log" || fail "resume did not skip the finished tasks"
   [ ! -e "$work/cut.h5.partial" ] || fail "the .partial file was not renamed"
   same "$work/full.h5" "$work/cut.h5"
@@ -110,11 +111,11 @@ kill_resume)
   kept=$(h5dump -A 0 -y -d /realisations/done "$work/killed.h5.partial" | sed -n '/DATA {/,/}/p' | grep -o '[01]' | grep -c 1 || true)
   [ "$kept" -ge "$finished" ] || fail "SIGKILL lost finished tasks ($kept < $finished)"
   [ "$kept" -lt 15 ] || fail "the kill came too late to test anything"
-  run 2 "${big[@]}" -ensemble_resume -output "$work/killed.h5" >"$work/killed_resume.log"
+  run 2 "${big[@]}" -resume -output "$work/killed.h5" >"$work/killed_resume.log"
   grep -q "$kept of 15 tasks already finished" "$work/killed_resume.log" || fail "resume after SIGKILL did not skip $kept tasks"
   same "$work/bigfull.h5" "$work/killed.h5"
   # Resuming a finished file runs nothing and keeps it equal.
-  run 1 "${scene[@]}" -ensemble_resume -output "$work/cut.h5" >"$work/again.log"
+  run 1 "${scene[@]}" -resume -output "$work/cut.h5" >"$work/again.log"
   grep -q "15 of 15 tasks already finished" "$work/again.log" || fail "a finished file was run again"
   same "$work/full.h5" "$work/cut.h5"
   ;;
@@ -136,11 +137,31 @@ refuse)
   fi
   if run 1 "${scene[@]}" -ensemble_realisatons 2 -output "$work/f.h5" >"$work/f.log" 2>&1; then fail "misspelt option accepted"; fi
   [ ! -e "$work/f.h5" ] && [ ! -e "$work/f.h5.partial" ] || fail "a refused run wrote a file"
+  # Stray words, empty list items, the old spellings: exit 2 from both ranks, one line naming the
+  # option, nothing written.
+  printf -- '-ensemble_theta 0 90\n' >"$work/stray.opts"
+  refused=0
+  while IFS='|' read -r needle args; do
+    status=0
+    # shellcheck disable=SC2086  # the arguments are words
+    run 2 "${scene[@]}" $args -output "$work/g.h5" </dev/null >"$work/g.log" 2>&1 || status=$?  # mpiexec would read the cases
+    [ "$status" = 2 ] || fail "$args: exit $status, expected 2"
+    grep -qF -- "$needle" "$work/g.log" || fail "$args: message lacks '$needle': $(cat "$work/g.log")"
+    [ "$(grep -c "gradfric: error:" "$work/g.log")" = 1 ] || fail "$args: not one error line"
+    [ ! -e "$work/g.h5" ] && [ ! -e "$work/g.h5.partial" ] || fail "$args: a refused run wrote a file"
+    refused=$((refused + 1))
+  done <<CASES
+invalid option -ensemble_delta = 0 0.2: allowed one value|-ensemble_delta 0 0.2
+invalid option -ensemble_delta = 0.1,,0.2: allowed a comma-separated list|-ensemble_delta 0.1,,0.2
+invalid option -ensemble_theta = 0 90 (in $work/stray.opts line 1)|-options_file $work/stray.opts
+invalid option -ensemble_resume: renamed|-ensemble_resume
+CASES
+  [ "$refused" = 4 ] || fail "only $refused refusal cases ran"
   ;;
 resume_mismatch)
   run 1 "${scene[@]}" -ensemble_realisations 1 -ensemble_abort_after 1 -output "$work/m.h5" >/dev/null 2>&1 || true
   [ -f "$work/m.h5.partial" ] || fail "no partial file to resume"
-  if run 1 "${scene[@]}" -ensemble_realisations 1 -sbm_N 18 -ensemble_resume -output "$work/m.h5" >"$work/m.log" 2>&1; then
+  if run 1 "${scene[@]}" -ensemble_realisations 1 -sbm_N 18 -resume -output "$work/m.h5" >"$work/m.log" 2>&1; then
     fail "resumed with a different lattice"
   fi
   grep -q "sbm_N: file 16, now 18" "$work/m.log" || fail "the differing option is not named"
@@ -157,12 +178,32 @@ single)
   run 3 -sbm_N 16 -output "$work/s3.h5" >"$work/s3.log"
   grep -q "^Result: mu_s = $printed," "$work/s3.log" || fail "3 ranks printed another mu_s"
   same "$work/s.h5" "$work/s3.h5"
+  # No sweep, several realisations: the one point is its own reference, printed as such (not as
+  # +0.000 +- 0.000); the file says so with reference_point = 0 (and variation 0). A graded point
+  # alone has none: "(no reference)", reference_point = -1, NaN.
+  run 1 -sbm_N 12 -ensemble_realisations 2 -output "$work/r.h5" >"$work/r.log"
+  grep -Eq "^  0 +single point .* reference$" "$work/r.log" || fail "the reference point is not printed as such: $(grep -A2 "^Global" "$work/r.log")"
+  ! grep -qF "+0.000 +- 0.000" "$work/r.log" || fail "a relative variation printed for the reference itself"
+  run 1 -sbm_N 12 -ensemble_realisations 2 -grading_profile linear -grading_delta 0.2 -output "$work/g.h5" >"$work/g.log"
+  grep -Eq "^  0 +single point .* \(no reference\)$" "$work/g.log" || fail "no '(no reference)' for a graded point alone"
+  for pair in "r.h5 0 0" "g.h5 -1 nan"; do
+    read -r name reference relative <<<"$pair"
+    ref=$(h5dump -A 0 -d /sweep/reference_point "$work/$name" | sed -n 's/.*(0): \(-*[0-9]*\).*/\1/p')
+    rel=$(h5dump -A 0 -d /statistics/mu_s_relative "$work/$name" | sed -n 's/.*(0): \([-a-zA-Z0-9.]*\).*/\1/p' | tr 'A-Z' 'a-z')
+    [ "$ref" = "$reference" ] || fail "$name: reference_point $ref, expected $reference"
+    [ "$rel" = "$relative" ] || fail "$name: mu_s_relative $rel, expected $relative"
+  done
   ;;
 help)
   run 1 -help -output "$work/h.h5" >"$work/h.log" 2>&1
   grep -q -- "-ensemble_delta" "$work/h.log" || fail "-help does not list -ensemble_delta"
   grep -q -- "-sbm_N" "$work/h.log" || fail "-help does not list -sbm_N"
   [ ! -e "$work/h.h5" ] && [ ! -e "$work/h.h5.partial" ] || fail "-help ran the scene"
+  # -help <prefix>: that prefix's options alone; none listed twice.
+  run 1 -help ensemble >"$work/he.log" 2>&1
+  grep -q -- "^  -ensemble_delta" "$work/he.log" || fail "-help ensemble does not list -ensemble_delta"
+  ! grep -q -- "^  -sbm_N" "$work/he.log" || fail "-help ensemble lists -sbm_N"
+  [ -z "$(grep "^  -" "$work/h.log" | awk '{print $1}' | sort | uniq -d)" ] || fail "-help lists an option twice"
   ;;
 scenes)
   # Every SBM scene of input/ is valid: read and checked in full (-ensemble_dry_run: no work).

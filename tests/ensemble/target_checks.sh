@@ -71,7 +71,7 @@ target_determinism)
     fail "the interrupted run reported success"
   fi
   [ -f "$work/cut.h5.partial" ] || fail "no .partial after the interruption"
-  run 3 "${scene[@]}" "${t[@]}" -ensemble_resume -output "$work/cut.h5" >"$work/resume.log"
+  run 3 "${scene[@]}" "${t[@]}" -resume -output "$work/cut.h5" >"$work/resume.log"
   grep -Eq "1[0-9] of [0-9]+ tasks already finished" "$work/resume.log" || fail "resume did not keep the finished tasks"
   same "$work/np1.h5" "$work/cut.h5"
   # A scene without a target stores none of the target options (its files stay as they were).

@@ -13,7 +13,7 @@ fail=0
 check() {  # name, expected cause regex, extra options...
   local name=$1 cause=$2; shift 2
   rm -f "$name".h5* "$name"_fields.*
-  mpiexec --oversubscribe -n 2 "$driver" -options_file "$scene" -fem_output "$name.h5" -fem_snapshot_times 0 "$@" \
+  mpiexec --oversubscribe -n 2 "$driver" -options_file "$scene" -output "$name.h5" -fem_snapshot_times 0 "$@" \
     >"$name.log" 2>&1
   local rc=$?
   if [ $rc -eq 0 ]; then echo "$name: exit status 0, expected a failure"; fail=1; fi

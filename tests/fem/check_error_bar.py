@@ -24,7 +24,7 @@ def run(mesh, extra, name):
     path = os.path.join(work, name + ".h5")
     nx, ny, nz = mesh
     command = ["mpiexec", "--oversubscribe", "-n", "1", driver, "-fem_nx", str(nx), "-fem_ny", str(ny), "-fem_nz",
-               str(nz), "-friction_observables", "mu_s", "-fem_output", path] + extra
+               str(nz), "-friction_observables", "mu_s", "-output", path] + extra
     r = subprocess.run(command, env=env, capture_output=True, text=True)
     if r.returncode != 0:
         sys.exit("run failed (%d): %s\n%s" % (r.returncode, " ".join(command), r.stdout + r.stderr))

@@ -19,7 +19,7 @@ with_paraview = "--paraview" in sys.argv[2:]
 env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
 work = tempfile.mkdtemp(prefix="gradfric_fem_out_")
 out = os.path.join(work, "run.h5")
-base = [driver, "-fem_nx", "8", "-fem_ny", "8", "-fem_nz", "2", "-fem_output", out,
+base = [driver, "-fem_nx", "8", "-fem_ny", "8", "-fem_nz", "2", "-output", out,
         "-fem_snapshot_times", "0,1e-4"]
 mpi = ["mpiexec", "--oversubscribe", "-n", "2"]
 
@@ -65,7 +65,7 @@ with h5py.File(out, "r") as f:
     assert np.allclose(f["properties/E"][:], float(scene["plate_E"]))
     prov = f["provenance"].attrs
     assert prov["ranks"] == 2 and prov["software_version"] and prov["software_commit"], dict(prov)
-    assert "-fem_output" in prov["command_line"] and prov["date"].endswith("Z"), dict(prov)
+    assert "-output" in prov["command_line"] and prov["date"].endswith("Z"), dict(prov)
 fields = os.path.join(work, "run_fields.h5")
 with h5py.File(fields, "r") as f:
     for name in ("state_displacement", "state_velocity", "bottom_contact"):
@@ -102,8 +102,8 @@ if with_paraview:  # ParaView itself (Debian's paraview + python3-paraview provi
     print(r.stdout.strip().splitlines()[-1])
 # No overwrite without the flag; nothing half-written left behind.
 r = subprocess.run(mpi + base, env=env, capture_output=True, text=True)
-assert r.returncode == 2 and "-fem_output_overwrite" in r.stderr, r.stdout + r.stderr
-r = subprocess.run(mpi + base + ["-fem_output_overwrite"], env=env, capture_output=True, text=True)
+assert r.returncode == 2 and "-output_overwrite" in r.stderr, r.stdout + r.stderr
+r = subprocess.run(mpi + base + ["-output_overwrite"], env=env, capture_output=True, text=True)
 assert r.returncode == 0, r.stderr
 assert not [n for n in os.listdir(work) if n.endswith(".tmp")], os.listdir(work)
 shutil.rmtree(work)

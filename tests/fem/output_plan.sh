@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
-# gradfric-fem plans its files before any work, on 2 ranks: an existing -fem_output (or its fields
-# file) without -fem_output_overwrite and a -fem_output that is a directory are refused with one
+# gradfric-fem plans its files before any work, on 2 ranks: an existing -output (or its fields
+# file) without -output_overwrite and a -output that is a directory are refused with one
 # message and exit 2; a run that fails after planning (the blow-up monitor, dt above the limit
-# through -fem_dt_check false) with -fem_output_overwrite leaves the earlier history, fields and
+# through -fem_dt_check false) with -output_overwrite leaves the earlier history, fields and
 # .xmf files exactly as they were, and no temporary.
 set -u
 driver=$1; source_dir=$2; scratch=$3
@@ -19,15 +19,15 @@ run() {  # name, expected exit, message regex, options...
   grep -Eq "$regex" "$name.err" || { cat "$name.err" >&2; fail "$name: message does not match $regex"; }
 }
 for f in run.h5 run_fields.h5 run_fields.xmf; do echo "earlier $f" >"$f"; done
-run exists 2 "invalid option -fem_output = run.h5: allowed a file that does not exist yet \(run.h5 exists: add -fem_output_overwrite" \
-  -fem_output run.h5 -fem_snapshot_times 0
+run exists 2 "invalid option -output = run.h5: allowed a file that does not exist yet \(run.h5 exists: add -output_overwrite" \
+  -output run.h5 -fem_snapshot_times 0
 [ "$(grep -c '^gradfric: error:' exists.err)" -eq 1 ] || fail "exists: not one message"
 rm run.h5
-run fields_exist 2 "run_fields.h5 exists: add -fem_output_overwrite" -fem_output run.h5 -fem_snapshot_times 0
+run fields_exist 2 "run_fields.h5 exists: add -output_overwrite" -output run.h5 -fem_snapshot_times 0
 echo "earlier run.h5" >run.h5
-run directory 2 "invalid option -fem_output = dir: allowed a file path \(dir is a directory\)" -fem_output dir -fem_output_overwrite
+run directory 2 "invalid option -output = dir: allowed a file path \(dir is a directory\)" -output dir -output_overwrite
 [ "$(ls dir)" = inside ] || fail "the directory was changed"
-run blowup 1 "FEM run unstable" -fem_output run.h5 -fem_snapshot_times 0 -fem_output_overwrite -fem_dt 3e-7 -fem_dt_check false
+run blowup 1 "FEM run unstable" -output run.h5 -fem_snapshot_times 0 -output_overwrite -fem_dt 3e-7 -fem_dt_check false
 for f in run.h5 run_fields.h5 run_fields.xmf; do
   [ "$(cat "$f")" = "earlier $f" ] || fail "a failed run replaced $f"
 done

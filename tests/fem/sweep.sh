@@ -7,7 +7,8 @@
 #  - the file has the spring-block ensemble's layout (check_sweep_layout.py against an ensemble
 #    of the same lists);
 #  - resume: a sweep killed after its first run leaves <output>.partial and no result; re-run with
-#    -fem_sweep_resume (on another rank count) it skips the finished point and writes the same file;
+#    -resume (on another rank count) it skips the finished point and writes the same file;
+#  - the table prints "reference" for the reference point;
 #  - bad input: exit 2, one message naming the option, on both ranks, nothing written;
 #  - a sweep that fails leaves the earlier result whole;
 #  - the plotting tool pairs each FEM point with the spring-block point of the same grading and
@@ -35,14 +36,17 @@ fem() {  # name, ranks, expected exit, options...
 same() { h5diff --exclude-path /run "$1" "$2" >/dev/null || fail "$1 and $2 differ: $(h5diff --exclude-path /run "$1" "$2" | head -5)"; }
 
 # Determinism over rank counts.
-fem one 1 0 "${sweep[@]}" -fem_output one.h5
+fem one 1 0 "${sweep[@]}" -output one.h5
 grep -q "on 1 group(s) of 1 rank(s)" one.out || fail "one: plan line missing"
 [ "$(grep -c '^\[group 0\] point' one.out)" -eq 3 ] || fail "one: not three runs"
-fem two 2 0 "${sweep[@]}" -fem_output two.h5
+# The table: the Delta = 0 point is the reference (printed so, not as +0.000), the others vary.
+grep -Eq "^  0 +Delta=0 .* reference +[0-9.]+ +reference$" one.out || fail "one: the reference point is not printed as such: $(grep -A4 'FEM sweep results' one.out)"
+grep -Eq "^  1 +Delta=0.2 .* [-+][0-9]+\.[0-9]{3} +[0-9.]+ +[-+][0-9]+\.[0-9]{3}$" one.out || fail "one: no variation for Delta = 0.2"
+fem two 2 0 "${sweep[@]}" -output two.h5
 grep -q "on 2 group(s) of 1 rank(s)" two.out || fail "two: not two groups"
 grep -q '^\[group 1\] point' two.out || fail "two: group 1 ran nothing"
 same one.h5 two.h5
-fem pair 2 0 "${sweep[@]}" -fem_output pair.h5 -fem_sweep_ranks_per_run 2
+fem pair 2 0 "${sweep[@]}" -output pair.h5 -fem_sweep_ranks_per_run 2
 grep -q "on 1 group(s) of 2 rank(s)" pair.out || fail "pair: not one group of two"
 for d in /realisations/mu_s /realisations/mu_k; do  # (force_y is zero up to rounding)
   h5diff -p 1e-9 one.h5 pair.h5 $d $d >/dev/null || fail "one group of 2 ranks: $d differs beyond rounding"
@@ -62,7 +66,7 @@ $python "$source_dir/tests/fem/check_sweep_layout.py" sbm.h5 one.h5 || fail "lay
 # the thickness ladder nz 5/10/20 does not) and for Delta 0.4 (not studied); NaN for mu_k; printed
 # in the table and drawn by the plotting tool.
 fem bars 1 0 -grading_profile linear -grading_property E -ensemble_delta 0,-0.2,0.4 -fem_nx 50 -fem_ny 50 \
-  -fem_nz 5 -friction_observables mu_s -fem_output bars.h5
+  -fem_nz 5 -friction_observables mu_s -output bars.h5
 $python - bars.h5 <<'PY' || fail "bars: the error bars in the file are not the study's"
 import math, sys, h5py
 f = h5py.File(sys.argv[1], "r")
@@ -86,32 +90,32 @@ $python "$source_dir/scripts/gradfric_plot.py" sbm_bars.h5 --fem bars.h5 --out b
 # /results hold text next to the numbers (the bars' basis); each run's bar is drawn.
 for d in 0 -0.2; do
   fem "hist$d" 1 0 -grading_profile linear -grading_property E -grading_delta "$d" -fem_nx 50 -fem_ny 50 \
-    -fem_nz 5 -friction_observables mu_s -fem_output "hist$d.h5"
+    -fem_nz 5 -friction_observables mu_s -output "hist$d.h5"
 done
 $python "$source_dir/scripts/gradfric_plot.py" sbm_bars.h5 --fem hist0.h5 hist-0.2.h5 --out hist_plots >hist_plot.out 2>&1 ||
   fail "history plot: $(cat hist_plot.out)"
 [ -s hist_plots/sbm_bars_variation.png ] || fail "history plot: no variation figure: $(ls hist_plots)"
 
 # Resume after a kill: the same file.
-fem killed 1 86 "${sweep[@]}" -fem_output resumed.h5 -fem_sweep_abort_after 1
+fem killed 1 86 "${sweep[@]}" -output resumed.h5 -fem_sweep_abort_after 1
 [ -f resumed.h5.partial ] && [ ! -e resumed.h5 ] || fail "killed: expected only resumed.h5.partial"
-fem again 2 2 "${sweep[@]}" -fem_output resumed.h5
-grep -q "invalid option -fem_output = resumed.h5: .*add -fem_sweep_resume" again.err || fail "again: $(cat again.err)"
-fem resume 2 0 "${sweep[@]}" -fem_output resumed.h5 -fem_sweep_resume
+fem again 2 2 "${sweep[@]}" -output resumed.h5
+grep -q "invalid option -output = resumed.h5: .*add -resume" again.err || fail "again: $(cat again.err)"
+fem resume 2 0 "${sweep[@]}" -output resumed.h5 -resume
 grep -q "2 to run" resume.out || fail "resume: the finished point was not skipped: $(grep 'to run' resume.out)"
 same one.h5 resumed.h5
-fem resume_other 2 2 "${sweep[@]}" -fem_nx 12 -fem_output resumed.h5 -fem_sweep_resume
-grep -q "invalid option -fem_sweep_resume (continue resumed.h5): it was started with another scene.*-fem_nx: file 10, now 12" resume_other.err ||
+fem resume_other 2 2 "${sweep[@]}" -fem_nx 12 -output resumed.h5 -resume
+grep -q "invalid option -resume (continue resumed.h5): it was started with another scene.*-fem_nx: file 10, now 12" resume_other.err ||
   fail "resume_other: $(cat resume_other.err)"
-fem resume_sbm 1 2 "${sweep[@]}" -fem_output sbm.h5 -fem_sweep_resume
-grep -q "invalid option -fem_sweep_resume (continue sbm.h5): .*format: file gradfric-sbm-ensemble, now gradfric-fem-sweep" resume_sbm.err ||
+fem resume_sbm 1 2 "${sweep[@]}" -output sbm.h5 -resume
+grep -q "invalid option -resume (continue sbm.h5): .*format: file gradfric-sbm-ensemble, now gradfric-fem-sweep" resume_sbm.err ||
   fail "resume_sbm: $(cat resume_sbm.err)"
 
 # Bad input: one message naming the option, exit 2, nothing written (on 2 ranks where the ranks
 # matter; the option checks are the same code on every rank).
 bad() {  # name, ranks, regex, options...
   local name=$1 ranks=$2 regex=$3; shift 3
-  fem "$name" "$ranks" 2 "$@" -fem_output "$name.h5"
+  fem "$name" "$ranks" 2 "$@" -output "$name.h5"
   [ "$(grep -c '^gradfric: error:' "$name.err")" -eq 1 ] || fail "$name: not one message: $(cat "$name.err")"
   grep -Eq "$regex" "$name.err" || fail "$name: message does not match $regex: $(cat "$name.err")"
   ! ls "$name".h5* >/dev/null 2>&1 || fail "$name: a file was written"
@@ -122,11 +126,14 @@ bad delta_range 1 "invalid option -ensemble_delta = 1: allowed values with \|Del
 bad no_profile 1 "invalid option -ensemble_delta = \(a list\): allowed only with a grading profile" -ensemble_delta 0,0.2 -fem_nx 10
 bad snapshots 1 "invalid option -fem_snapshot_times = \(a list\): allowed none in a sweep" "${sweep[@]}" -fem_snapshot_times 0
 bad compare 1 "invalid option -fem_compare_sbm = true: allowed false in a sweep" "${sweep[@]}" -fem_compare_sbm
+bad stray 2 "invalid option -ensemble_delta = 0,0.2 -0.2: allowed one value" "${sweep[@]}" -ensemble_delta 0,0.2 -0.2
+bad empty 2 "invalid option -ensemble_delta = 0,,0.2: allowed .*\(item 2 is empty\)" "${sweep[@]}" -ensemble_delta 0,,0.2
+bad old_resume 2 "invalid option -fem_sweep_resume: renamed.*; use -resume$" "${sweep[@]}" -fem_sweep_resume
 
 # A failing sweep (the blow-up monitor) leaves the earlier result whole.
 echo "earlier result" >kept.h5
-fem blowup 1 1 "${sweep[@]}" -fem_output kept.h5 -fem_output_overwrite -fem_dt 4e-7 -fem_dt_check false
-grep -q "FEM run unstable.*continue with -fem_sweep_resume" blowup.err || fail "blowup: $(tail -2 blowup.err)"
+fem blowup 1 1 "${sweep[@]}" -output kept.h5 -output_overwrite -fem_dt 4e-7 -fem_dt_check false
+grep -q "FEM run unstable.*continue with -resume" blowup.err || fail "blowup: $(tail -2 blowup.err)"
 [ "$(cat kept.h5)" = "earlier result" ] || fail "a failed sweep replaced kept.h5"
 
 # Pairing in the plotting tool.
@@ -135,12 +142,12 @@ plot=("$python" "$source_dir/scripts/gradfric_plot.py")
 grep -q "3 FEM point(s) paired" plot.out || fail "plot: no pairs: $(cat plot.out)"
 for p in 0 1 2; do grep -q "FEM $p <-> SBM $p " plot.out || fail "plot: FEM $p not paired with SBM $p"; done
 [ -s plots/sbm_variation.png ] || fail "plot: no variation figure"
-fem other_delta 1 0 "${grading[@]}" -ensemble_delta 0,0.3 -fem_nx 10 -fem_ny 10 -fem_nz 2 -fem_output other.h5
+fem other_delta 1 0 "${grading[@]}" -ensemble_delta 0,0.3 -fem_nx 10 -fem_ny 10 -fem_nz 2 -output other.h5
 "${plot[@]}" sbm.h5 --fem other.h5 --out plots >unmatched.out 2>&1
 [ $? -eq 2 ] || fail "plot: an unmatched sweep was not refused with exit 2"
 grep -q "does not match sbm.h5: no spring-block point with the grading, angle and field value of FEM point 1 (Delta=0.3" unmatched.out ||
   fail "unmatched: $(cat unmatched.out)"
-fem thick 1 0 "${sweep[@]}" -plate_H 1e-4 -fem_output thick.h5
+fem thick 1 0 "${sweep[@]}" -plate_H 1e-4 -output thick.h5
 "${plot[@]}" sbm.h5 --fem thick.h5 --out plots >thick_plot.out 2>&1
 [ $? -eq 2 ] || fail "plot: a sweep of another plate was not refused with exit 2"
 grep -q "do not describe the same plate: -plate_H" thick_plot.out || fail "thick: $(cat thick_plot.out)"
@@ -149,7 +156,7 @@ grep -q "do not describe the same plate: -plate_H" thick_plot.out || fail "thick
 # points and layout (field values, per-point maps), paired by the plotting tool on the field value;
 # other values or another field are refused.
 stripes=(-field_mu_profile stripes -field_mu_period 1e-3 -field_mu_normalise -ensemble_field mu_delta)
-fem field 2 0 "${stripes[@]}" -ensemble_field_values 0,0.3 -fem_nx 10 -fem_ny 10 -fem_nz 2 -fem_kn 4e11 -fem_output field.h5
+fem field 2 0 "${stripes[@]}" -ensemble_field_values 0,0.3 -fem_nx 10 -fem_ny 10 -fem_nz 2 -fem_kn 4e11 -output field.h5
 grep -q "2 point(s) (axes: field_mu_delta)" field.out || fail "field: plan line: $(grep 'point(s)' field.out)"
 timeout 300 "$sbm_driver" "${stripes[@]}" -ensemble_field_values 0,0.3 -sbm_N 10 -ensemble_realisations 2 \
   -output sbm_field.h5 >sbm_field.out 2>&1 || fail "the spring-block field ensemble failed: $(tail -3 sbm_field.out)"
@@ -165,13 +172,13 @@ assert list(f["sweep/reference_point"][:]) == [0, 0], "the uniform point is not 
 PY
 "${plot[@]}" sbm_field.h5 --fem field.h5 --out plots >field_plot.out 2>&1 || fail "field plot: $(cat field_plot.out)"
 grep -q "FEM 1 <-> SBM 1  mu_delta=0.3" field_plot.out || fail "field plot: not paired on the value: $(cat field_plot.out)"
-fem field_other 1 0 "${stripes[@]}" -ensemble_field_values 0,0.2 -fem_nx 10 -fem_ny 10 -fem_nz 2 -fem_output field_other.h5
+fem field_other 1 0 "${stripes[@]}" -ensemble_field_values 0,0.2 -fem_nx 10 -fem_ny 10 -fem_nz 2 -output field_other.h5
 "${plot[@]}" sbm_field.h5 --fem field_other.h5 --out plots >field_other.out 2>&1
 [ $? -eq 2 ] || fail "plot: a sweep of other field values was not refused with exit 2"
 grep -q "no spring-block point with the grading, angle and field value of FEM point 1 (mu_delta=0.2" field_other.out ||
   fail "field_other: $(cat field_other.out)"
 fem field_period 1 0 "${stripes[@]}" -ensemble_field_values 0,0.3 -field_mu_period 2e-3 -fem_nx 10 -fem_ny 10 -fem_nz 2 \
-  -fem_output field_period.h5
+  -output field_period.h5
 "${plot[@]}" sbm_field.h5 --fem field_period.h5 --out plots >field_period.out 2>&1
 [ $? -eq 2 ] || fail "plot: a sweep of another field was not refused with exit 2"
 grep -q "do not describe the same plate: -field_mu_period" field_period.out || fail "field_period: $(cat field_period.out)"

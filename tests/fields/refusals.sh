@@ -75,12 +75,12 @@ s "-field_E_bands = 1" "0 (continuous) or 2..4096" -- -field_E_profile linear -f
 s "-field_mu_centre" "two values" -- -field_mu_profile linear -field_mu_centre 1e-3
 s "-field_mu_deltaa" -- -field_mu_profile linear -field_mu_deltaa 0.2
 # The FEM refuses the same way (its sites: cell centres of its mesh).
-expect 1 "$fem" -fem_output "-field_E_delta = 1.5" "E > 0" -- -fem_nx 4 -fem_ny 4 -fem_nz 1 -field_E_profile linear -field_E_delta 1.5 -field_E_angle 90
-expect 1 "$fem" -fem_output "-field_mu_map" "finite values" -- -fem_nx 4 -fem_ny 4 -fem_nz 1 -field_mu_profile map -field_mu_map "$scratch/nan.h5"
+expect 1 "$fem" -output "-field_E_delta = 1.5" "E > 0" -- -fem_nx 4 -fem_ny 4 -fem_nz 1 -field_E_profile linear -field_E_delta 1.5 -field_E_angle 90
+expect 1 "$fem" -output "-field_mu_map" "finite values" -- -fem_nx 4 -fem_ny 4 -fem_nz 1 -field_mu_profile map -field_mu_map "$scratch/nan.h5"
 # Every rank refuses (no hang, no file).
 expect 2 "$sbm" -output "-field_mu_map" "finite values" -- -field_mu_profile map -field_mu_map "$scratch/nan.h5"
 expect 2 "$sbm" -output "-field_p_delta = -1.2" -- -field_p_profile step -field_p_delta -1.2 -field_p_position 1e-3
-expect 2 "$fem" -fem_output "-field_mu_k_delta = 0.8" -- -fem_nx 4 -fem_ny 4 -fem_nz 1 -field_mu_k_profile constant -field_mu_k_delta 0.8
+expect 2 "$fem" -output "-field_mu_k_delta = 0.8" -- -fem_nx 4 -fem_ny 4 -fem_nz 1 -field_mu_k_profile constant -field_mu_k_delta 0.8
 
 if [ $failures -ne 0 ]; then echo "$failures refusal(s) wrong"; exit 1; fi
 echo "all refusals correct"

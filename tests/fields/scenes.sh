@@ -3,7 +3,8 @@
 # grading said with -field_* gives the -grading_* results bit for bit (SBM on 2 ranks, FEM); the
 # shipped HDF5 map of a linear profile gives the profile's results; a field-parameter sweep
 # stores its values and compares with its uniform point; an E field along y (per-block springs) gives
-# the same numbers on 1 and 2 ranks, and an E map runs.
+# the same numbers on 1 and 2 ranks, and an E map runs; paths inside options files are the file's
+# own (the PNG-map scene runs from another folder).
 # Usage: scenes.sh <gradfric> <gradfric-fem> <source dir> <scratch folder>
 set -u
 sbm=$1
@@ -62,11 +63,11 @@ compare "$scratch/paper_grading.h5" "$scratch/paper_field.h5" 0 && echo "ok   pa
 compare "$scratch/map.h5" "$scratch/linear.h5" 1e-9 && echo "ok   HDF5 map of a linear profile = the profile" ||
   fail "map of a linear profile differs from the profile"
 
-fem_small=(-fem_nx 8 -fem_ny 8 -fem_nz 2 -friction_observables mu_s -fem_output_overwrite)
-"$fem" "${fem_small[@]}" -grading_profile linear -grading_property both -grading_delta 0.2 -fem_output "$scratch/fem_grading.h5" \
+fem_small=(-fem_nx 8 -fem_ny 8 -fem_nz 2 -friction_observables mu_s -output_overwrite)
+"$fem" "${fem_small[@]}" -grading_profile linear -grading_property both -grading_delta 0.2 -output "$scratch/fem_grading.h5" \
   >/dev/null 2>&1 || fail "FEM grading run"
 "$fem" "${fem_small[@]}" -field_E_profile linear -field_E_delta 0.2 -field_E_bands 10 -field_mu_profile linear \
-  -field_mu_delta 0.2 -field_mu_bands 10 -fem_output "$scratch/fem_field.h5" >/dev/null 2>&1 || fail "FEM field run"
+  -field_mu_delta 0.2 -field_mu_bands 10 -output "$scratch/fem_field.h5" >/dev/null 2>&1 || fail "FEM field run"
 /usr/bin/python3 - "$scratch/fem_grading.h5" "$scratch/fem_field.h5" <<'PY' && echo "ok   FEM paper grading = fields, bit for bit" ||
 import sys, h5py
 a, b = (h5py.File(p, "r") for p in sys.argv[1:3])
@@ -99,6 +100,27 @@ compare "$scratch/e60_1.h5" "$scratch/e60_2.h5" 0 && echo "ok   E along y: 1 ran
 "$sbm" "${small[@]}" -field_E_profile map -field_E_map input/fields/pillars.png -output "$scratch/e_map.h5" \
   >"$scratch/e_map.log" 2>&1 && grep -q "per block (E varies along y)" "$scratch/e_map.log" && echo "ok   E map (per block)" ||
   fail "E map run: $(tail -2 "$scratch/e_map.log")"
+
+# Paths inside an options file are the file's own: the shipped PNG-map scene runs from another
+# working directory (it names fields/pillars.png), and so does a scene that includes another file
+# from its folder, whose map sits beside it; on the command line a path stays the working directory's.
+elsewhere=$scratch/elsewhere
+mkdir -p "$elsewhere/scene/maps"
+cp input/fields/pillars.png "$elsewhere/scene/maps/"
+printf -- '-options_file inner.opts  # beside this file\n-sbm_N 16\n' >"$elsewhere/scene/outer.opts"
+printf -- '-field_mu_profile map\n-field_mu_map maps/pillars.png\n' >"$elsewhere/scene/inner.opts"
+(cd "$elsewhere" && "$sbm" -options_file "$source_dir/input/field_map_png.opts" "${small[@]}" -output png.h5 >png.log 2>&1) &&
+  grep -q "map $source_dir/input/fields/pillars.png" "$elsewhere/png.log" &&
+  echo "ok   input/field_map_png.opts run from another folder" ||
+  fail "the PNG-map scene from another folder: $(tail -2 "$elsewhere/png.log")"
+compare "$scratch/field_map_png.h5" "$elsewhere/png.h5" 0 >/dev/null && echo "ok   the same results from either folder" ||
+  fail "the PNG-map scene gives other results from another folder"
+(cd / && "$sbm" -options_file "$elsewhere/scene/outer.opts" -ensemble_realisations 1 -output_overwrite -output "$elsewhere/nested.h5" \
+  >"$elsewhere/nested.log" 2>&1) && grep -q "map $elsewhere/scene/maps/pillars.png" "$elsewhere/nested.log" &&
+  echo "ok   a nested options file and its map, from their own folder" ||
+  fail "nested options file from another folder: $(tail -2 "$elsewhere/nested.log")"
+(cd "$elsewhere" && "$sbm" "${small[@]}" -field_mu_profile map -field_mu_map scene/maps/pillars.png -output cli.h5 >cli.log 2>&1) &&
+  echo "ok   a map on the command line: the working directory's" || fail "command-line map path: $(tail -2 "$elsewhere/cli.log")"
 
 if [ $failures -ne 0 ]; then echo "$failures check(s) failed"; exit 1; fi
 echo "all field scenes correct"

@@ -14,7 +14,7 @@ export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_
 run="$scratch/fem.h5"
 rm -f "$run"
 if ! timeout 300 mpiexec -n 2 "$fem" -fem_nx 10 -fem_ny 10 -fem_nz 2 -friction_observables mu_s \
-    -fem_output "$run" > "$scratch/fem.log" 2>&1; then
+    -output "$run" > "$scratch/fem.log" 2>&1; then
   echo "FAIL: gradfric-fem exited with $?"; cat "$scratch/fem.log"; exit 1
 fi
 /usr/bin/python3 - "$run" <<'PY' || exit 1

@@ -36,7 +36,7 @@ grep -q "pressure response g on the blocks (E linear Delta = -0.2, 10 bands, the
 for d in 0 0.2; do
   g=(-grading_profile none); [ "$d" = 0 ] || g=(-grading_profile linear -grading_property E -grading_delta "$d")
   if ! timeout 300 "$fem" "${g[@]}" -fem_nx 10 -fem_ny 10 -fem_nz 2 -friction_observables mu_s \
-      -fem_output "$s/fem_$d.h5" -fem_output_overwrite > "$s/fem_$d.log" 2>&1; then
+      -output "$s/fem_$d.h5" -output_overwrite > "$s/fem_$d.log" 2>&1; then
     echo "FAIL: gradfric-fem Delta $d exited with $?"; cat "$s/fem_$d.log"; exit 1
   fi
 done

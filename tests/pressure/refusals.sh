@@ -46,7 +46,7 @@ s "-pressure_response_file = $scratch/nan.h5" "only with -pressure_response fem"
 s "-pressure_response_file = $scratch/nan.h5" "only with -pressure_response fem" -- -pressure_response_file "$scratch/nan.h5"
 s "-pressure_response_file = (not set)" "gradfric-fem results file" -- -pressure_response fem
 s "-pressure_response_file = $scratch/missing.h5" "cannot open" -- -pressure_response fem -pressure_response_file "$scratch/missing.h5"
-s "-pressure_response_file" "dataset '/pressure_response/g'" "gradfric-fem -fem_output" -- -pressure_response fem -pressure_response_file "$source_dir/input/fields/linear_ramp.h5"
+s "-pressure_response_file" "dataset '/pressure_response/g'" "gradfric-fem -output" -- -pressure_response fem -pressure_response_file "$source_dir/input/fields/linear_ramp.h5"
 s "-pressure_response_file" "finite g everywhere (pixel 1, 4" -- -pressure_response fem -pressure_response_file "$scratch/nan.h5"
 s "-pressure_response_file" "covering the plate" -- -pressure_response fem -pressure_response_file "$scratch/small.h5"
 # The unloaded trailing edge: a concentration so sharp that a block's pressure turns negative

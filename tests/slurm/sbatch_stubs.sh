@@ -60,7 +60,7 @@ expect_no_call() { ! grep -qF -- "$1" "$STUB_DIR/calls" || fail "unexpected call
 
 start_case completes && {
   finish_case; expect_status 0
-  expect_call "srun --ntasks=8 $work/bin/gradfric-fake -options_file $work/scene.opts -output $STUB_DIR/out.h5 -ensemble_resume -ensemble_monitor -extra_option 1"
+  expect_call "srun --ntasks=8 $work/bin/gradfric-fake -options_file $work/scene.opts -output $STUB_DIR/out.h5 -resume -ensemble_monitor -extra_option 1"
   expect_no_call scontrol
 }
 

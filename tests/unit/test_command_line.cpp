@@ -35,8 +35,8 @@ std::string messageOf(const std::function<void()>& f) {
 const std::string kFolder = "test_command_line_files/";
 
 std::string writeFile(const std::string& name, const std::string& content) {
-  std::filesystem::create_directories(kFolder);
   const std::string path = kFolder + name;
+  std::filesystem::create_directories(std::filesystem::path(path).parent_path());
   std::ofstream(path, std::ios::binary) << content;
   return path;
 }
@@ -123,15 +123,72 @@ TEST(CommandLine, OptionsFilesAreCheckedBeforePetscReadsThem) {
   EXPECT_NE(checkFile("-options_file_yaml", writeFile("bad.yaml", "a: [1, 2\nb: }\n")).find("not valid YAML"),
             std::string::npos);
   EXPECT_NE(checkFile("-options_file_yaml", writeFile("list.yaml", "- 1\n- 2\n")).find("mapping"), std::string::npos);
+  // A nested file is named relative to the file that includes it.
   const std::string self = kFolder + "self.opts";
-  writeFile("self.opts", "-options_file " + self + "\n");
+  writeFile("self.opts", "-options_file self.opts\n");
   EXPECT_NE(checkFile("-options_file", self).find("includes itself"), std::string::npos);
   const std::string a = kFolder + "a.opts", b = kFolder + "b.opts";
-  writeFile("a.opts", "-x 1\n-options_file " + b + "\n");
-  writeFile("b.opts", "-options_file " + a + "\n");
+  writeFile("a.opts", "-x 1\n-options_file b.opts\n");
+  writeFile("b.opts", "-options_file a.opts\n");
   EXPECT_NE(checkFile("-options_file", a).find("includes itself (" + a + " -> " + b + " -> " + a + ")"),
             std::string::npos)
       << checkFile("-options_file", a);
+}
+
+SettledCommandLine settle(std::vector<std::string> args) {
+  args.insert(args.begin(), "prog");
+  std::vector<char*> argv;
+  for (auto& a : args) argv.push_back(a.data());
+  return settleCommandLine(static_cast<int>(argv.size()), argv.data());
+}
+
+TEST(CommandLine, OptionsFilesAreExpandedWithTheirPathsTheirOwn) {
+  writeFile("scene/inner.opts", "-field_mu_map maps/m.png\n-sbm_N 7\n");
+  writeFile("scene/outer.opts",
+            "alias -n -sbm_N\n-options_file inner.opts   # nested: beside this file\n"
+            "-pressure_response_file \"g.h5\"\n-n 9\n");
+  const std::string outer = kFolder + "scene/outer.opts";
+  const SettledCommandLine s = settle({"-options_file", outer, "-plot_dir", "figures", "-help", "fem"});
+  EXPECT_EQ(s.problem, "");
+  const std::vector<std::string> expected = {"prog",    "-field_mu_map", "maps/m.png", "-sbm_N", "7",
+                                             "-pressure_response_file", "g.h5", "-sbm_N", "9",
+                                             "-plot_dir", "figures", "-help"};
+  EXPECT_EQ(s.arguments, expected);
+  EXPECT_EQ(s.helpFilter, "fem");
+  EXPECT_EQ(s.folders.at("-field_mu_map"), kFolder + "scene");
+  EXPECT_EQ(s.folders.at("-pressure_response_file"), kFolder + "scene");
+  EXPECT_EQ(s.folders.at("-plot_dir"), "");
+  // The last setting decides where a path is read from: the command line's is the working directory's.
+  EXPECT_EQ(settle({"-options_file", outer, "-field_mu_map", "x.png"}).folders.at("-field_mu_map"), "");
+  EXPECT_EQ(settle({"-field_mu_map", "x.png", "-options_file", outer}).folders.at("-field_mu_map"), kFolder + "scene");
+}
+
+TEST(CommandLine, StrayWordsAreRefusedNamingTheOption) {
+  EXPECT_EQ(settle({"-ensemble_delta", "0", "0.2"}).problem,
+            "invalid option -ensemble_delta = 0 0.2: allowed one value (the stray word 0.2 would be ignored; a list "
+            "is comma-separated without spaces: 0,0.2)");
+  EXPECT_NE(settle({"-a", "-1e-3", "-2", "-b"}).problem.find("invalid option -a = -1e-3 -2: allowed one value"),
+            std::string::npos);
+  EXPECT_EQ(settle({"word", "-a", "1"}).problem, "invalid word 'word' on the command line: allowed options (-name [value]) only");
+  const std::string file = writeFile("stray.opts", "-a 1\n-b 2 3 4\n");
+  EXPECT_NE(settle({"-options_file", file}).problem.find("invalid option -b = 2 3 4 (in " + file + " line 2): allowed one value (the stray words 3 4"),
+            std::string::npos);
+  // Numbers (-inf, -1e6) are values, not options; -a -b are two flags; "a b" quoted in a file is one value.
+  EXPECT_EQ(settle({"-a", "-inf", "-b", "-c", "-1e6"}).problem, "");
+  EXPECT_EQ(settle({"-options_file", writeFile("quoted.opts", "-title \"a b\"\n")}).problem, "");
+}
+
+TEST(CommandLine, EmptyListItemsAreRefused) {
+  OptionReader reader(PETSC_COMM_SELF, "t9_", "test", nullptr);
+  for (const char* value : {"0.1,,0.2", "0.1,", ",0.1", "0.1, ,0.2"}) {
+    ScopedOption list("-t9_list", value);
+    EXPECT_NE(messageOf([&] { reader.realList("list", {}, "1", "values"); }).find("is empty"), std::string::npos) << value;
+    ScopedOption choices("-t9_choices", value);
+    EXPECT_NE(messageOf([&] { reader.choiceList("choices", {}, {"0.1", "0.2"}, "c"); }).find("is empty"), std::string::npos)
+        << value;
+  }
+  ScopedOption list("-t9_list", "0.1, 0.2");
+  EXPECT_EQ(reader.realList("list", {}, "1", "values"), (std::vector<double>{0.1, 0.2}));
 }
 
 TEST(CommandLine, DoubleDashesAndHelpAreNormalised) {

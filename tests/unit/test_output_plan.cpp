@@ -97,10 +97,10 @@ TEST(OutputPlan, RefusesAnExistingFileWithoutOverwriteAndNamesTheOptions) {
   const std::string path = folder("existing") + "/x.h5";
   writeText(path, "earlier");
   OutputRequest r = request(path);
-  r.resumeOption = "-ensemble_resume";
+  r.resumeOption = "-resume";
   const std::string message = refusal(r);
   EXPECT_NE(message.find("-output_overwrite"), std::string::npos) << message;
-  EXPECT_NE(message.find("-ensemble_resume"), std::string::npos) << message;
+  EXPECT_NE(message.find("-resume"), std::string::npos) << message;
   r.overwrite = true;
   EXPECT_EQ(refusal(r), "");
   EXPECT_EQ(readText(path), "earlier");  // planning deletes nothing
@@ -112,7 +112,7 @@ TEST(OutputPlan, RefusesAnInterruptedRunWithoutResume) {
   const std::string path = folder("interrupted") + "/x.h5";
   writeText(path + ".partial", "half");
   OutputRequest r = request(path);
-  r.resumeOption = "-ensemble_resume";
+  r.resumeOption = "-resume";
   EXPECT_NE(refusal(r).find("interrupted run"), std::string::npos);
   r.resume = true;
   const OutputPlan plan = OutputPlan::decide(comm(), r);
@@ -125,7 +125,7 @@ TEST(OutputPlan, ResumesAFinishedFileInPlaceAndStartsFreshWithoutOne) {
   const std::string path = folder("resume") + "/x.h5";
   OutputRequest r = request(path);
   r.resume = true;
-  r.resumeOption = "-ensemble_resume";
+  r.resumeOption = "-resume";
   EXPECT_EQ(OutputPlan::decide(comm(), r).start(), OutputStart::Fresh);
   EXPECT_FALSE(exists(path + ".partial"));  // the probe is removed again
   writeText(path, "done");

@@ -1,7 +1,10 @@
 #pragma once
 // What the drivers do with the command line before PETSc reads it (PETSc would abort with a
-// banner and a traceback, or crash, on a bad options file, and silently ignore --name).
+// banner and a traceback, or crash, on a bad options file, silently ignore --name and stray
+// words, and read the paths inside an options file from the working directory).
+#include <map>
 #include <string>
+#include <vector>
 
 namespace gradfric {
 
@@ -11,12 +14,38 @@ void normaliseArguments(int argc, char** argv);
 // -version (or --version before normalising) anywhere on the command line.
 bool versionRequested(int argc, char** argv);
 
-// Checks every -options_file / -options_file_yaml of the command line and, recursively, every
-// -options_file named inside those files: a readable regular file, text (no NUL byte, UTF-8),
-// parseable (an options file's lines start with an option; YAML parses to a mapping), no file
-// including itself directly or through others. Returns the first problem as one line
-// ("invalid option -options_file = X: ..."), or an empty string when every file is fine.
-// Deterministic: every rank checking the same files reaches the same answer.
+// The command line PETSc reads, settled on every rank alike before PetscInitialize:
+//  - every -options_file (on the command line and, recursively, inside options files) is checked
+//    (a readable regular file, text: no NUL byte, UTF-8; its lines start with an option; no file
+//    including itself) and expanded in place, a relative path inside a file taken from that
+//    file's folder; -options_file_yaml files are checked (YAML mapping) and left to PETSc;
+//  - a word that is neither an option nor the one value after it (-ensemble_delta 0 0.2) is
+//    refused: PETSc would ignore it;
+//  - -help <prefix> keeps the prefix for OptionReader and gives PETSc a plain -help.
+struct SettledCommandLine {
+  std::vector<std::string> arguments;  // argv[0], then the options and values PETSc reads
+  std::string problem;                 // the first problem as one line, "" when none
+  std::string helpFilter;              // -help <prefix>: the prefix without its dash
+  // lower-case option name (PETSc's names ignore case) -> folder of the options file that set it
+  // last ("" when the command line did)
+  std::map<std::string, std::string> folders;
+};
+SettledCommandLine settleCommandLine(int argc, char** argv);
+
+// Keeps what settleCommandLine learnt for the rest of the run (the functions below).
+void adoptCommandLine(const SettledCommandLine& settled, int argc, char** argv);
+
+// The options-file part of settleCommandLine alone: its first problem, or "" (kept for the
+// checks of options files that need no expansion).
 std::string checkOptionFiles(int argc, char** argv);
+
+// After adoptCommandLine:
+// the arguments as the user gave them (after normaliseArguments), for the results' provenance;
+const std::vector<std::string>& originalArguments();
+// -help <prefix>: the prefix without its dash ("" without one);
+const std::string& helpFilter();
+// a path option's value resolved as the user meant it: relative to the folder of the options
+// file that set it last; a value from the command line (or absolute, or empty) unchanged.
+std::string resolveOptionPath(const std::string& fullName, const std::string& value);
 
 }  // namespace gradfric

@@ -22,6 +22,7 @@ struct ResolvedOption {
   std::string help;
   OptionOrigin origin;
   std::string fallback = "";  // the built-in default of a real option, for blaming the option a bad run comes from
+  bool path = false;          // a file to read (OptionReader::path): a scene written elsewhere makes it absolute
 };
 
 // Every option a run resolved, in the order read.
@@ -58,7 +59,11 @@ public:
   std::string choice(const std::string& name, const std::string& fallback, const std::vector<std::string>& allowed,
                      const std::string& help);
   std::string text(const std::string& name, const std::string& fallback, const std::string& help);
-  // Comma-separated lists.
+  // A file to read: set in an options file, a relative path is taken from that file's folder
+  // (resolveOptionPath); commaList: each comma-separated item so.
+  std::string path(const std::string& name, const std::string& fallback, const std::string& help,
+                   bool commaList = false);
+  // Comma-separated lists: an empty item (0.1,,0.2 or a trailing comma) is refused, not dropped.
   std::vector<double> realList(const std::string& name, const std::vector<double>& fallback, const std::string& unit,
                                const std::string& help);
   std::vector<std::string> choiceList(const std::string& name, const std::vector<std::string>& fallback,
@@ -78,18 +83,22 @@ private:
   void printHelp(const std::string& name, const std::string& current, const std::string& unit,
                  const std::string& help);
   void store(const std::string& name, const std::string& value, const std::string& unit, const std::string& help,
-             bool userSet, const std::string& fallback = "");
+             bool userSet, const std::string& fallback = "", bool isPath = false);
 
   MPI_Comm comm_;
   std::string prefix_;
   std::string title_;
   RunParameters* record_;
   bool help_ = false;
-  bool titlePrinted_ = false;
 };
 
 // True when -help was given: drivers print the option lists, then stop before any work.
+// -help <prefix> (gradfric-fem -help fem) lists only the options whose names start with it; an
+// option read by several components (the -friction_ options of both models) is listed once.
 bool helpRequested();
+// -help's option lines are kept by section and printed together, each section once, at the end.
+int helpLinesPrinted();
+void printHelpSections(MPI_Comm comm);
 
 // Every option name any OptionReader of this process has read (with its dash), for near misses.
 std::vector<std::string> knownOptionNames();
@@ -103,5 +112,9 @@ void checkUnusedOptions(MPI_Comm comm, const std::vector<std::string>& strictPre
 // InputError "invalid option <old> = <value>: <why>; use <now> = <value>" instead of running with
 // a silently ignored value.
 void refuseRenamedOption(const std::string& old, const std::string& now, const std::string& why);
+
+// The options every driver names one way for its results file: -output, -output_overwrite,
+// -resume. The spellings of before (-fem_output, -ensemble_resume, ...) are refused with the new one.
+void refuseRenamedRunControl();
 
 }  // namespace gradfric

@@ -18,7 +18,7 @@ namespace gradfric::ensemble {
 io::OutputPlan planResultsFile(MPI_Comm comm, const Scene& scene);
 
 // Collective: on rank 0, checks that the file to resume is a results file of this scene (format,
-// version, layout, every option of /scene) and throws InputError naming -ensemble_resume and
+// version, layout, every option of /scene) and throws InputError naming -resume and
 // what is wrong with the file on every rank otherwise.
 void checkResumable(MPI_Comm comm, const Scene& scene, const std::string& path);
 
@@ -28,7 +28,7 @@ void checkResumable(MPI_Comm comm, const Scene& scene, const std::string& path);
 struct ResumeTarget {
   std::vector<io::Attribute> sceneAttributes;
   io::EnsembleLayout layout;
-  std::string resumeOption = "-ensemble_resume";
+  std::string resumeOption = "-resume";
   std::string overwriteOption = "-output_overwrite";
 };
 void checkResumable(MPI_Comm comm, const ResumeTarget& target, const std::string& path);

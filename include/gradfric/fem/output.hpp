@@ -8,7 +8,7 @@
 //                        /vertex_fields/state_displacement, state_velocity, bottom_contact (contact
 //                        pressure, t_x, t_y, state 0 open 1 stick 2 slip), /cell_fields/cell_stress
 //                        (xx, yy, zz, yz, xz, xy) [PETSc names them <vector>_<field>].
-// Nothing is overwritten unless -fem_output_overwrite; files are written under a temporary name
+// Nothing is overwritten unless -output_overwrite; files are written under a temporary name
 // and renamed at the end, so a failed run leaves no half-written result.
 #include "gradfric/core/options.hpp"
 #include "gradfric/fem/pressure_response_recorder.hpp"

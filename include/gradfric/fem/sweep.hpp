@@ -6,7 +6,7 @@
 // the ensemble's fixed order (ensemble::pendingTasks), so which group runs a point never changes
 // a number in the file. Every run lands in one parallel HDF5 file with the ensemble's layout
 // (io::ResultsFile, format gradfric-fem-sweep, one realisation per point), planned through
-// io::OutputPlan (<output>.partial until complete), resumable with -fem_sweep_resume.
+// io::OutputPlan (<output>.partial until complete), resumable with -resume.
 #include "gradfric/core/options.hpp"
 #include "gradfric/ensemble/sweep.hpp"
 #include "gradfric/fem/parameters.hpp"
@@ -45,7 +45,7 @@ struct FemSweep {
   io::SweepTable table;
   std::vector<io::Attribute> sceneAttributes;  // /scene: what defines the results
   std::vector<io::Attribute> runAttributes;    // /run: how this session ran them
-  std::string output;                          // the results file (-fem_output)
+  std::string output;                          // the results file (-output)
 
   int points() const { return static_cast<int>(sweep.points.size()); }
   FemParameters pointParameters(int p) const;
