@@ -1,5 +1,5 @@
 """The files of gradfric-calibrate (docs/calibration.md): the curves (CSV, -calibrate_curve) and the
-calibrated scene (an options file whose comment header states the fit, -calibrate_output)."""
+calibrated scene (an options file whose comment header states the fit, -output)."""
 import os
 import re
 
@@ -62,7 +62,7 @@ def read_scene(path):
 
 def read_curves(path):
     """mu_reference and mu_sbm_mean along time; with the scene file of the same name beside it
-    (-calibrate_output and -calibrate_curve of one stem), its fit and options too."""
+    (-output and -calibrate_curve of one stem), its fit and options too."""
     table = np.genfromtxt(path, delimiter=",", names=True)
     time = xr.Variable("time", table["t"], {"units": "s", "description": "time since the start of sliding"})
     data = {

@@ -2,8 +2,7 @@
 # The FEM sweep in one command (docs/fem.md, "Sweeps"), on a coarse 10 x 10 x 2 plate, three
 # points of a friction grading (Delta = 0, 0.2, -0.2):
 #  - determinism: the sweep on 1 rank and on 2 ranks (-fem_sweep_ranks_per_run 1: two groups)
-#    writes the same file value for value (h5diff without /run); on one group of 2 ranks the
-#    numbers agree to rounding;
+#    writes the same file value for value (h5diff without /run), and so does one group of 2 ranks;
 #  - the file has the spring-block ensemble's layout (check_sweep_layout.py against an ensemble
 #    of the same lists);
 #  - resume: a sweep killed after its first run leaves <output>.partial and no result; re-run with
@@ -22,9 +21,7 @@ python=/usr/bin/python3
 rm -rf "$scratch"; mkdir -p "$scratch"; cd "$scratch"
 fail() { echo "FAILED: $*" >&2; exit 1; }
 grading=(-grading_profile linear -grading_property friction -ensemble_delta 0,0.2,-0.2)
-# The penalty before the penalty study (E0/hz on nz = 2): at the default 250 G/H the undamped
-# stick-slip after the peak amplifies the 2-rank summation order into a 2 % different mu_k
-# (Delta = 0.2; mu_s and mu(t) to the peak agree to 1e-9), which the rounding check below refuses.
+# The penalty before the penalty study (E0/hz on nz = 2): a softer contact, a larger step, a shorter test.
 sweep=("${grading[@]}" -fem_nx 10 -fem_ny 10 -fem_nz 2 -fem_kn 4e11)
 fem() {  # name, ranks, expected exit, options...
   local name=$1 ranks=$2 code=$3; shift 3
@@ -48,13 +45,9 @@ grep -q '^\[group 1\] point' two.out || fail "two: group 1 ran nothing"
 same one.h5 two.h5
 fem pair 2 0 "${sweep[@]}" -output pair.h5 -fem_sweep_ranks_per_run 2
 grep -q "on 1 group(s) of 2 rank(s)" pair.out || fail "pair: not one group of two"
-for d in /realisations/mu_s /realisations/mu_k; do  # (force_y is zero up to rounding)
-  h5diff -p 1e-9 one.h5 pair.h5 $d $d >/dev/null || fail "one group of 2 ranks: $d differs beyond rounding"
-done
-# The state law's weakening amplifies the partition's round-off in the sliding phase: 1 vs 2 ranks
-# measured up to 1e-7 relative in mu(t) after the peak (mu_s, mu_k within 1e-9); a lost ghost
-# contribution or a wrong partition of the contact totals is orders larger.
-h5diff -p 1e-6 one.h5 pair.h5 /history/mu /history/mu >/dev/null || fail "one group of 2 ranks: /history/mu differs beyond rounding"
+# One run on 2 ranks gives the same bits as on 1, the whole history included (fem/ordered_assembly.hpp,
+# core/exact_sum.hpp): before, the sliding phase amplified the partition's round-off to 1e-7 in mu(t).
+same one.h5 pair.h5
 
 # The ensemble's layout, against a spring-block ensemble of the same lists.
 timeout 300 "$sbm_driver" "${grading[@]}" -sbm_N 10 -ensemble_realisations 2 -output sbm.h5 >sbm.out 2>&1 ||

@@ -33,12 +33,6 @@ def run(driver, *args, ranks=2):
     assert r.returncode == 0, " ".join(command) + "\n" + r.stdout[-2000:] + r.stderr[-2000:]
 
 
-def output_option(driver, old):
-    """The driver's file option: `old` (-fem_output) until the drivers' options become -output."""
-    r = subprocess.run([driver, "-help"], env=env, capture_output=True, text=True, cwd=work)
-    return old if f"{old} <" in r.stdout + r.stderr else "-output"
-
-
 def path(name):
     return os.path.join(work, name)
 
@@ -145,7 +139,7 @@ with gradfric.open(path("ens.h5")) as ds, h5py.File(path("ens.h5"), "r") as f:
         raise SystemExit("check_against_file accepted a wrong Dataset")
 
 # 2. A FEM run with a property field (/fields) and its pressure response.
-fem_out = output_option(fem, "-fem_output")
+fem_out = "-output"
 run(fem, "-field_mu_profile", "step", "-field_mu_position", "3e-3", "-field_mu_delta", "0.2", "-fem_nx", "8",
     "-fem_ny", "6", "-fem_nz", "1", "-friction_observables", "mu_s", fem_out, path("fem.h5"))
 with gradfric.open(path("fem.h5")) as ds, h5py.File(path("fem.h5"), "r") as f:
@@ -210,7 +204,7 @@ for group, dim in (("evaluations", "evaluation"), ("design", "row"), ("verificat
 # 6. A calibration against a small FEM reference: the curves (with the scene beside them) and the scene.
 run(fem, "-fem_nx", "10", "-fem_ny", "10", "-fem_nz", "5", "-friction_observables", "mu_s", fem_out, path("ref.h5"), ranks=1)
 run(calibrate, "-calibrate_reference", path("ref.h5"), "-sbm_N", "20", "-calibrate_realisations", "16",
-    "-calibrate_output", path("fit.opts"), "-calibrate_curve", path("fit.csv"))
+    "-output", path("fit.opts"), "-calibrate_curve", path("fit.csv"))
 table = np.genfromtxt(path("fit.csv"), delimiter=",", names=True)
 options = dict(line.split(" ", 1) for line in open(path("fit.opts")).read().splitlines() if line.startswith("-"))
 with gradfric.open(path("fit.csv")) as ds:

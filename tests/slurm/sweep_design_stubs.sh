@@ -22,8 +22,6 @@ while [ "${STUB_WAIT:-0}" = 1 ] && [ ! -e "$STUB_DIR/finish" ]; do sleep 0.1; do
 exit "${STUB_STATUS:-0}"
 STUB
 printf '#!/bin/bash\necho "scontrol $*" >> "$STUB_DIR/calls"\n' > "$work/bin/scontrol"
-# Two stand-in drivers: one whose -help lists -fem_output (today's names), one without.
-printf '#!/bin/sh\necho "  -fem_output <>: HDF5 results file"\n' > "$work/bin/fem-old"
 printf '#!/bin/sh\necho "  -output <>: HDF5 results file"\n' > "$work/bin/fem-new"
 printf '#!/bin/sh\nexit 0\n' > "$work/bin/design-fake"
 chmod +x "$work/bin/"*
@@ -43,16 +41,16 @@ expect_status() { [ "$status" -eq "$1" ] || fail "exit status $status, expected 
 expect_call() { grep -qF -- "$1" "$STUB_DIR/calls" || fail "no call '$1' in: $(tr '\n' '|' < "$STUB_DIR/calls" 2>/dev/null)"; }
 expect_no_call() { ! grep -qF -- "$1" "$STUB_DIR/calls" || fail "unexpected call '$1'"; }
 
-run_case sweep_old fem_sweep.sbatch GRADFRIC_FEM="$work/bin/fem-old" GRADFRIC_RANKS_PER_RUN=3 && finish
+run_case sweep_groups fem_sweep.sbatch GRADFRIC_FEM="$work/bin/fem-new" GRADFRIC_RANKS_PER_RUN=3 && finish
 expect_status 0
-expect_call "srun --ntasks=6 $work/bin/fem-old -options_file $work/scene.opts -fem_output $STUB_DIR/out.h5 -fem_sweep_resume -fem_sweep_ranks_per_run 3 -x 1"
+expect_call "srun --ntasks=6 $work/bin/fem-new -options_file $work/scene.opts -output $STUB_DIR/out.h5 -resume -fem_sweep_ranks_per_run 3 -x 1"
 run_case sweep_new fem_sweep.sbatch GRADFRIC_FEM="$work/bin/fem-new" && finish
 expect_status 0
 expect_call "srun --ntasks=8 $work/bin/fem-new -options_file $work/scene.opts -output $STUB_DIR/out.h5 -resume -fem_sweep_ranks_per_run 1 -x 1"
-run_case sweep_too_few fem_sweep.sbatch GRADFRIC_FEM="$work/bin/fem-old" GRADFRIC_RANKS_PER_RUN=16 && finish
+run_case sweep_too_few fem_sweep.sbatch GRADFRIC_FEM="$work/bin/fem-new" GRADFRIC_RANKS_PER_RUN=16 && finish
 expect_status 2
 
-run_case sweep_interrupted fem_sweep.sbatch GRADFRIC_FEM="$work/bin/fem-old" GRADFRIC_GRACE=1 STUB_WAIT=1
+run_case sweep_interrupted fem_sweep.sbatch GRADFRIC_FEM="$work/bin/fem-new" GRADFRIC_GRACE=1 STUB_WAIT=1
 until [ -e "$STUB_DIR/started" ]; do sleep 0.1; done
 kill -USR1 "$script_pid"
 finish
