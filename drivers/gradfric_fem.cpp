@@ -11,6 +11,7 @@
 #include "gradfric/fem/parameters.hpp"
 #include "gradfric/fem/plate_model.hpp"
 #include "gradfric/fem/plate_ts.hpp"
+#include "gradfric/fem/run_estimate.hpp"
 #include "gradfric/fem/scene_options.hpp"
 #include "gradfric/fem/simulation.hpp"
 #include "gradfric/fem/sweep.hpp"
@@ -45,6 +46,7 @@ struct FemRun {
   Grading grading;
   FemParameters params;
   bool compare = false;  // also one SBM realisation on the same grading
+  bool dryRun = false;   // print the plan and the estimate, build nothing
   std::uint64_t seed = 1;
   sbm::Parameters sbmParams;
   sbm::Request sbmRequest;
@@ -63,6 +65,8 @@ std::optional<FemRun> readFemRun(MPI_Comm comm, RunParameters* record) {
       "compare_sbm", false, "also run one spring-block realisation (-sbm_ options) on the same grading, side by side");
   const PetscInt seed = driverOptions.integer("compare_seed", 1, 0, PETSC_MAX_INT, "1", "random stream of that SBM realisation");
   driverOptions.requireAtLeast("compare_seed", seed, 0);
+  run.dryRun = driverOptions.flag("dry_run", false,
+                                  "print the mesh size, memory, steps and estimated wall time, then stop (nothing built)");
   run.seed = static_cast<std::uint64_t>(seed);
   if (run.compare || helpRequested()) {
     run.sbmParams = sbm::readParameters(comm, record, plate, run.grading);
@@ -202,6 +206,11 @@ int main(int argc, char** argv) {
       const FemSweep sweep = buildFemSweep(comm, run->params, run->grading, run->sweep, run->compare, record);
       return runFemSweep(comm, sweep, record);
     }
+    int ranks = 1;
+    MPI_Comm_size(comm, &ranks);
+    const RunEstimate estimate = estimateRun(run->params, run->grading, ranks);
+    PetscPrintf(comm, "Estimate: %s\n", estimate.describe().c_str());
+    if (run->dryRun) return;                                      // -fem_dry_run: nothing built
     OutputFiles output(comm, run->params);                        // planned before any work
     PlateModel model(comm, run->params, run->grading);
     printPlan(comm, *run, model, &record);
