@@ -9,32 +9,16 @@ namespace gradfric {
 namespace {
 
 constexpr int kNaN = ExactSum::kDigits, kPlusInf = ExactSum::kDigits + 1, kMinusInf = ExactSum::kDigits + 2;
-constexpr std::int64_t kCarryEvery = std::int64_t(1) << 30;
 
 }  // namespace
 
-void ExactSum::add(double term) {
-  std::uint64_t bits = 0;
-  std::memcpy(&bits, &term, sizeof bits);
-  const bool negative = bits >> 63;
-  const int exponent = static_cast<int>((bits >> 52) & 0x7ff);
-  std::uint64_t mantissa = bits & ((std::uint64_t(1) << 52) - 1);
-  if (exponent == 0x7ff) {
-    ++word_[mantissa ? kNaN : negative ? kMinusInf : kPlusInf];
+void ExactSum::addZeroSubnormalOrSpecial(std::uint64_t bits) {
+  const std::uint64_t mantissa = bits & ((std::uint64_t(1) << 52) - 1);
+  if (((bits >> 52) & 0x7ff) == 0x7ff) {
+    ++word_[mantissa ? kNaN : (bits >> 63) ? kMinusInf : kPlusInf];
     return;
   }
-  if (exponent == 0 && mantissa == 0) return;
-  // term = mantissa x 2^(exponent - 1075) = mantissa x 2^-1074 x 2^position (subnormals: exponent 1).
-  int position = exponent - 1;
-  if (exponent == 0) position = 0;
-  else mantissa |= std::uint64_t(1) << 52;
-  const int digit = position >> 5;
-  const unsigned __int128 shifted = static_cast<unsigned __int128>(mantissa) << (position & 31);  // < 2^85
-  const std::int64_t parts[3] = {static_cast<std::int64_t>(shifted & 0xffffffffu),
-                                 static_cast<std::int64_t>((shifted >> 32) & 0xffffffffu),
-                                 static_cast<std::int64_t>(shifted >> 64)};
-  for (int i = 0; i < 3; ++i) word_[digit + i] += negative ? -parts[i] : parts[i];
-  if (++pending_ == kCarryEvery) normalise();
+  if (mantissa != 0) addMagnitude(mantissa, 0, bits >> 63);  // a subnormal: mantissa x 2^-1074
 }
 
 ExactSum& ExactSum::operator+=(const ExactSum& other) {

@@ -136,7 +136,9 @@ double ContactBoundary::committedStrength(int site) const {
 }
 
 double ContactBoundary::work() const {
-  return sumOverRanks(comm_, work_);
+  ExactSum total;  // the nodes' own sums, added exactly: the same bits on any number of ranks
+  for (const Node& n : nodes_) total.add(n.work);
+  return sumOverRanks(comm_, total);
 }
 
 double ContactBoundary::largestStaticCoefficient() const {
@@ -158,7 +160,7 @@ void ContactBoundary::commit() {
     if (n.pendingState == ContactState::Slip)
       lastStepSlip_ = std::max(lastStepSlip_, std::hypot(n.pendingU[0] - n.u[0], n.pendingU[1] - n.u[1]));
     for (int d = 0; d < 3; ++d) {
-      work_.add(0.5 * (n.force[d] + n.pendingForce[d]) * (n.pendingU[d] - n.u[d]));
+      n.work += 0.5 * (n.force[d] + n.pendingForce[d]) * (n.pendingU[d] - n.u[d]);
       n.force[d] = n.pendingForce[d];
       n.u[d] = n.pendingU[d];
     }

@@ -45,6 +45,8 @@ PlateModel::PlateModel(MPI_Comm comm, const FemParameters& params, const Grading
            pressureShapeOf(grading, params_)) {
   stableDt_ = fem::stableTimeStep(params_, grading_);
   dt_ = fem::chooseTimeStep(params_, grading_);
+  dampingStep_.assign(mesh_.ownedBlocks(), 0.0);
+  dampingWork_.assign(mesh_.ownedBlocks(), 0.0);
   if (dt_ > stableDt_)  // only with -fem_dt_check false
     GF_CALL(PetscPrintf(comm,
                         "WARNING: -fem_dt_check false (testing only): dt %.4g s is above the stable step %.4g s; the "
@@ -68,8 +70,8 @@ void PlateModel::rhs(double t, Vec X, Vec F) {
   const bool sliding = phase_ == Phase::Sliding;
   elastic_.setForce(X, F);
   top_.addPressure(t, sliding, F);
-  dampingEnergy_ = ExactSum();
-  bulk_.addForce(X, F, &dampingEnergy_, dt_);
+  bulkStep_ = ExactSum();
+  bulk_.addForce(X, F, &bulkStep_, dt_);
   if (params_.energyAudit && elastic_.stiffnessDamping() > 0) stiffnessPower_ = stiffnessDampingPower(X);
   const SlidingDamping damping = massDamping();
   ContactSums totals;
@@ -94,7 +96,7 @@ void PlateModel::rhs(double t, Vec X, Vec F) {
       fb[d] = xb[3 + d];
       fb[3 + d] = fb[3 + d] * inverseMass[b] + damping.acceleration(xb + 3, d);
     }
-    dampingEnergy_.add(damping.power(blockMass[b], xb + 3) * dt_);
+    dampingStep_[b] = damping.power(blockMass[b], xb + 3) * dt_;
   }
   GF_CALL(VecRestoreArray(F, &f));
   GF_CALL(VecRestoreArrayRead(X, &x));
@@ -106,12 +108,16 @@ void PlateModel::rhs(double t, Vec X, Vec F) {
 
 void PlateModel::commitContact() {
   contact_.commit();
-  dampingWork_ += dampingEnergy_;  // the rhs of the step saw the mid-step velocities
+  for (std::size_t b = 0; b < dampingWork_.size(); ++b)  // the rhs of the step saw the mid-step velocities
+    dampingWork_[b] += dampingStep_[b];
+  if (bulk_.active()) bulkWork_ += bulkStep_;
   stiffnessWork_ += stiffnessPower_ * dt_;
 }
 
 double PlateModel::dissipatedEnergy() const {
-  return sumOverRanks(comm(), dampingWork_) + stiffnessWork_ - contact_.work();
+  ExactSum damping = bulkWork_;
+  for (double w : dampingWork_) damping.add(w);
+  return sumOverRanks(comm(), damping) + stiffnessWork_ - contact_.work();
 }
 
 // beta v . K v = 2 beta x (the elastic energy of the velocity field taken as a displacement).

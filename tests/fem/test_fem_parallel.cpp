@@ -42,7 +42,9 @@ TEST(FemParallel, AnyNumberOfRanksGivesTheSameHistoryBitForBit) {
   int size = 1;
   MPI_Comm_size(PETSC_COMM_WORLD, &size);
   ASSERT_GE(size, 2) << "run with 2 or more ranks";
-  FemParameters q = test::coarse(12, 10, 2);
+  // Three ranks on two cores wait for each other a lot: a smaller plate there (still vertices
+  // shared by three ranks).
+  FemParameters q = size > 2 ? test::coarse(9, 7, 2) : test::coarse(12, 10, 2);
   q.bulkLinear = 0.06;
   q.bulkQuadratic = 1.2;
   q.energyAudit = true;

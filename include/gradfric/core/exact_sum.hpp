@@ -8,6 +8,7 @@
 // PETSc-free; the reduction over ranks is core/reproducible_sum.hpp.
 #include <array>
 #include <cstdint>
+#include <cstring>
 
 namespace gradfric {
 
@@ -20,7 +21,15 @@ public:
   // non-finite, as in a plain sum).
   static constexpr int kWords = kDigits + 3;
 
-  void add(double term);
+  void add(double term) {  // inline: the hot loops add one term per node
+    std::uint64_t bits = 0;
+    std::memcpy(&bits, &term, sizeof bits);
+    const std::uint64_t exponent = (bits >> 52) & 0x7ff;
+    if (exponent - 1 >= 0x7fe) return addZeroSubnormalOrSpecial(bits);  // exponent 0 or 0x7ff
+    // term = (2^52 + fraction) x 2^(exponent - 1075): its bits start at 2^-1074 x 2^(exponent - 1).
+    const std::uint64_t mantissa = (bits & ((std::uint64_t(1) << 52) - 1)) | (std::uint64_t(1) << 52);
+    addMagnitude(mantissa, static_cast<unsigned>(exponent - 1), bits >> 63);
+  }
   ExactSum& operator+=(double term) {
     add(term);
     return *this;
@@ -37,6 +46,20 @@ public:
   const std::int64_t* words() const { return word_.data(); }
 
 private:
+  void addZeroSubnormalOrSpecial(std::uint64_t bits);
+  // mantissa x 2^position (in units of 2^-1074), negated if negative: three 32-bit pieces.
+  void addMagnitude(std::uint64_t mantissa, unsigned position, std::uint64_t negative) {
+    const unsigned digit = position >> 5, shift = position & 31;
+    const std::uint64_t low = (mantissa << shift) & 0xffffffffu;
+    const std::uint64_t high = mantissa >> (32 - shift);  // the bits from 2^32 up (shift 0: >> 32)
+    const std::int64_t sign = -static_cast<std::int64_t>(negative);  // 0 or -1: x ^ sign - sign = +-x
+    word_[digit] += (static_cast<std::int64_t>(low) ^ sign) - sign;
+    word_[digit + 1] += (static_cast<std::int64_t>(high & 0xffffffffu) ^ sign) - sign;
+    word_[digit + 2] += (static_cast<std::int64_t>(high >> 32) ^ sign) - sign;
+    if (++pending_ == kCarryEvery) normalise();
+  }
+  static constexpr std::int64_t kCarryEvery = std::int64_t(1) << 30;
+
   std::array<std::int64_t, kWords> word_{};
   std::int64_t pending_ = 0;  // terms since the last carry
 };

@@ -49,6 +49,7 @@ public:
     double weakenStart = -1, weakenEnd = -1;  // times its strength fell 10 % and 90 % of the way to mu_k
     double pressure = 0, tx = 0, ty = 0;  // of the last evaluation
     double force[3] = {0, 0, 0}, u[3] = {0, 0, 0};  // committed contact force and displacement
+    double work = 0;  // done by the contact force on the node since the start (the same on any partition)
     double pendingForce[3] = {0, 0, 0}, pendingU[3] = {0, 0, 0};
   };
 
@@ -97,7 +98,6 @@ private:
   PenaltyStiffness stiffness_;
   std::vector<Node> nodes_;
   ContactLaw law_;  // one site per node: its local coefficients (area-weighted over its faces' bands)
-  ExactSum work_;  // this rank's share of work(), exact over the whole run
   double lastStepSlip_ = 0;  // this rank's largest slip of a node in the last committed step
   std::vector<std::pair<double, double>> slipRecord_;  // (time, running maximum) where it grew
   // Adds the evaluation's force on node n (at displacement xb) to its block's right-hand side fb and

@@ -84,9 +84,12 @@ private:
   Phase phase_ = Phase::Pressure;
   ContactSums lastTotals_;  // this rank's
   bool peakDampingOn_ = false;
-  // This rank's damping energy over the step (power x dt) of the last rhs, and committed: exact
-  // sums, so that the dissipated energy has the same bits on any number of ranks.
-  ExactSum dampingEnergy_, dampingWork_;
+  // The mass damping's energy per owned block over the step of the last rhs (power x dt), and its
+  // running sum per block: each block's sum is the same on any partition, and the total over blocks
+  // is exact (dissipatedEnergy), so it has the same bits on any number of ranks. The bulk
+  // viscosity's (per cell, rarely on) goes straight into exact sums.
+  std::vector<double> dampingStep_, dampingWork_;
+  ExactSum bulkStep_, bulkWork_;
   double stiffnessPower_ = 0, stiffnessWork_ = 0;  // over ranks (params.energyAudit only)
   OwnedVec velocityAsDisplacement_;             // for the audit: v in the displacement slots
 };
