@@ -1,14 +1,24 @@
 #!/usr/bin/env bash
 # Installs what gradfric needs from Debian's packages (only what is missing) and builds it.
-# Usage: scripts/setup.sh [--tests] [build-dir]   (default: build)
-#   --tests  also installs what only the test suite needs: ParaView (pvbatch) with Xvfb to check
-#            and render the FEM's .xmf headless, and xarray + h5netcdf to read the results files
-#            the way users do (about 150 MB to download, 800 MB installed, ~2-3 min).
+# Usage: scripts/setup.sh [--tests] [--target NAME] [build-dir]   (default: build)
+#   --tests        also installs what only the test suite needs: ParaView (pvbatch) with Xvfb to
+#                  check and render the FEM's .xmf headless, and xarray + h5netcdf to read the
+#                  results files the way users do (about 150 MB to download, 800 MB installed, ~2-3 min).
+#   --target NAME  builds only that CMake target and what it links (run-default.sh: gradfric_driver,
+#                  the driver `gradfric`); by default everything: drivers, tests and benchmarks.
 # Environment: GRADFRIC_NATIVE=ON builds with -march=native (faster, not portable across nodes).
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 with_tests=0
-if [ "${1:-}" = "--tests" ]; then with_tests=1; shift; fi
+target=()
+while [ $# -gt 0 ]; do
+  case $1 in
+    --tests) with_tests=1; shift ;;
+    --target) [ $# -ge 2 ] || { echo "gradfric setup: --target needs a target name" >&2; exit 2; }
+              target=(--target "$2"); shift 2 ;;
+    *) break ;;
+  esac
+done
 build=${1:-$here/build}
 
 packages=(build-essential cmake pkg-config petsc-dev openmpi-bin libopenmpi-dev libhdf5-openmpi-dev
@@ -44,4 +54,4 @@ export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 
 # GRADFRIC_REQUIRE_ALL: everything above is installed, so a missing test dependency is an error.
 cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=Release -DGRADFRIC_NATIVE="${GRADFRIC_NATIVE:-OFF}" -DGRADFRIC_REQUIRE_ALL=ON >/dev/null
-cmake --build "$build" -j "$(nproc)"
+cmake --build "$build" -j "$(nproc)" "${target[@]}"

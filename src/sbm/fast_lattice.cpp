@@ -1,7 +1,7 @@
 // The production spring-block kernel, FastLattice (integrator.hpp): its state, the quiet phase
 // before the first slip (quiet_phase.hpp), the choice between the full sweep and the active set,
 // and the bookkeeping of stick states. The sweeps are in full_sweep.hpp, active_set.hpp and
-// rk4_sweep.hpp, entered through kernel_dispatch.cpp.
+// rk4_sweep.hpp, entered through kernel_dispatch.cpp (kernel_entries.hpp).
 #include "gradfric/sbm/integrator.hpp"
 #include "gradfric/sbm/quiet_phase.hpp"
 #include "row_springs.hpp"

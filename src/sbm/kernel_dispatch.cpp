@@ -1,61 +1,17 @@
-// The fast spring-block kernel's entry: one compiled step per law, stiffness (uniform or graded)
-// and friction layout, each for AVX-512, AVX2 and baseline x86-64 (kernel_isa.hpp), and the
-// choice among them at run time. The kernels themselves: full_sweep.hpp (velocity Verlet, the
-// full sweep), active_set.hpp (velocity Verlet on the active set), rk4_sweep.hpp (RK4).
-#include "active_set.hpp"
-#include "full_sweep.hpp"
-#include "rk4_sweep.hpp"
+// The fast spring-block kernel's entry: the choice at run time among its compiled steps, one per
+// law, stiffness (uniform or graded) and friction layout, each for AVX-512, AVX2 and baseline
+// x86-64 (kernel_isa.hpp). The steps are declared in kernel_entries.hpp and compiled in the
+// kernel_<isa>_<stiffness>.cpp files; this file sees none of their code.
+#include "kernel_entries.hpp"
 
-#include "gradfric/sbm/integrator.hpp"
 #include "gradfric/sbm/kernel_isa.hpp"
-
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
-#define GF_KERNEL_ISA_CLONES 1
-#define GF_TARGET(isa) __attribute__((target(isa)))
-#else
-#define GF_KERNEL_ISA_CLONES 0
-#define GF_TARGET(isa)
-#endif
 
 namespace gradfric::sbm {
 
 namespace {
 
-template <class Law, bool Graded, SiteLayout L>
-GF_ALWAYS_INLINE void fullStep(FastLattice<Law>& lattice, bool verlet, bool active, double t, double h,
-                               double& sumX, double& sumY) {
-  if (active) {
-    lattice.template verletStepActive<Graded, L>(t, sumX, sumY);
-    return;
-  }
-  if (verlet) {
-    lattice.template verletStep<Graded, L>(t, sumX, sumY);
-    return;
-  }
-  lattice.template rk4Stage<Graded, L, 1>(t, sumX, sumY);
-  lattice.template rk4Stage<Graded, L, 2>(t + 0.5 * h, sumX, sumY);
-  lattice.template rk4Stage<Graded, L, 3>(t + 0.5 * h, sumX, sumY);
-  lattice.template rk4Stage<Graded, L, 4>(t + h, sumX, sumY);
-}
-
-// One compiled entry per law x (uniform|graded stiffness) x (friction layout), each compiled for
-// AVX-512, AVX2 and baseline x86-64; the one the processor supports best is chosen at run time
-// (kernel_isa.hpp: a test may force each in turn to check that they agree bit for bit).
-template <class Law, bool Graded, SiteLayout L>
-GF_TARGET("avx512f") void stepAvx512(FastLattice<Law>& lattice, bool verlet, bool active, double t, double h,
-                                     double& sumX, double& sumY) {
-  fullStep<Law, Graded, L>(lattice, verlet, active, t, h, sumX, sumY);
-}
-template <class Law, bool Graded, SiteLayout L>
-GF_TARGET("avx2") void stepAvx2(FastLattice<Law>& lattice, bool verlet, bool active, double t, double h,
-                                double& sumX, double& sumY) {
-  fullStep<Law, Graded, L>(lattice, verlet, active, t, h, sumX, sumY);
-}
-template <class Law, bool Graded, SiteLayout L>
-void stepBaseline(FastLattice<Law>& lattice, bool verlet, bool active, double t, double h, double& sumX, double& sumY) {
-  fullStep<Law, Graded, L>(lattice, verlet, active, t, h, sumX, sumY);
-}
-
+// The one the processor supports best is chosen at run time (kernel_isa.hpp: a test may force
+// each in turn to check that they agree bit for bit).
 template <class Law, bool Graded, SiteLayout L>
 void stepVariant(FastLattice<Law>& lattice, bool verlet, bool active, double t, double h, double& sumX, double& sumY) {
   switch (kernelIsaInUse()) {
