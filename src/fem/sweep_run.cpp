@@ -9,7 +9,6 @@
 #include "gradfric/fem/simulation.hpp"
 #include "gradfric/fem/stable_step.hpp"
 #include "gradfric/fem/sweep.hpp"
-#include "gradfric/io/collective_file.hpp"
 #include "gradfric/io/output_plan.hpp"
 #include "gradfric/io/provenance.hpp"
 
@@ -77,8 +76,17 @@ io::ResultsFile openSweepFile(MPI_Comm comm, const FemSweep& s, const io::Output
     GF_CALL(PetscPrintf(comm, "Resuming %s\n", plan.workPath().c_str()));
     return io::ResultsFile::open(comm, plan.workPath());
   }();
-  file.setRunAttributes(s.runAttributes);
-  file.setProvenance(io::collectProvenance(comm));
+  try {
+    file.setRunAttributes(s.runAttributes);
+    file.setProvenance(io::collectProvenance(comm));
+  } catch (const CollectiveError& e) {
+    if (plan.start() == io::OutputStart::Fresh) {
+      plan.discard(comm);  // a new file without a run: nothing to keep
+      throw;
+    }
+    throw CollectiveError(std::string(e.what()) + "; its finished points are kept: continue with -fem_sweep_resume "
+                                                   "once there is room");
+  }
   return file;
 }
 
@@ -158,7 +166,6 @@ void runFemSweep(MPI_Comm comm, const FemSweep& s, const RunParameters& record) 
   int rank = 0;
   GF_CALL_MPI(MPI_Comm_rank(comm, &rank));
   const io::OutputPlan plan = planSweepFile(comm, s);  // before any work
-  io::CollectiveFileScope writing(comm, plan.workPath());  // an I/O failure ends every rank
   io::ResultsFile file = openSweepFile(comm, s, plan);    // a file to resume is checked first
   record.print(comm, "gradfric-fem: resolved parameters (FEM sweep)");
   const auto flags = file.finishedTasks();
