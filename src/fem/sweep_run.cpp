@@ -2,6 +2,7 @@
 #include "gradfric/core/collective_error.hpp"
 #include "gradfric/core/format.hpp"
 #include "gradfric/core/petsc_call.hpp"
+#include "gradfric/ensemble/interruption.hpp"
 #include "gradfric/ensemble/scene_file.hpp"
 #include "gradfric/ensemble/scene_report.hpp"
 #include "gradfric/fem/error_estimate.hpp"
@@ -17,6 +18,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <optional>
 #include <cstdlib>
 #include <string>
 
@@ -176,6 +178,8 @@ void runFemSweep(MPI_Comm comm, const FemSweep& s, const RunParameters& record) 
   const double wall0 = MPI_Wtime();
   long ranHere = 0;
   std::string failure;
+  std::optional<ensemble::InterruptionNotice> notice;  // Ctrl-C, SIGTERM: while the points run
+  notice.emplace(comm, file, plan.workPath(), "points", "-fem_sweep_resume");
   // Round robin over the groups in the fixed order of pendingTasks: the same points run on the
   // same groups whatever the timing, and no number in the file depends on which group ran it.
   for (size_t i = groups.group(); i < pending.size(); i += groups.groups()) {
@@ -211,6 +215,7 @@ void runFemSweep(MPI_Comm comm, const FemSweep& s, const RunParameters& record) 
     ++ranHere;
     abortIfDue(s, ranHere, rank);
   }
+  notice.reset();
   file.flush();
   try {
     agreeOnError(comm, failure);
