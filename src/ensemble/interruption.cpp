@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <ctime>
 
 namespace gradfric::ensemble {
 
@@ -77,6 +78,11 @@ void onSignal(int signal) {
       put("the finished tasks are kept in ");
     }
     put(notice.tail);
+  } else {
+    // The others end a moment later: mpiexec kills the whole job at once (SIGKILL) when a rank
+    // ends, which could come before rank 0 has had its own signal and said its line.
+    const struct timespec moment = {0, 300000000};
+    nanosleep(&moment, nullptr);
   }
   // Ended by the same signal, as without the notice (the shell and mpiexec see why).
   struct sigaction fallback {};

@@ -141,7 +141,7 @@ void OutputFiles::writeSnapshot(PlateModel& model, Vec state, double t) {
 // The parallel fields file grows by a snapshot at a time, inside PETSc's collective HDF5 writes:
 // rank 0 reserves the room first, from the file's end (twice the fields, the mesh with the first
 // one, and room for HDF5's records, allocated but perhaps not written yet), and the ranks agree on
-// the outcome. The file is trimmed when rank 0 describes it at the end.
+// the outcome. What is left of the room is given back when rank 0 describes the file at the end.
 void OutputFiles::reserveSnapshotRoom(PlateModel& model) {
   const FemParameters& q = model.params();
   const std::uint64_t nodes = std::uint64_t(q.nx + 1) * (q.ny + 1) * (q.nz + 1);

@@ -18,6 +18,17 @@
 
 namespace gradfric::io {
 
+namespace {
+
+// Back to `size` bytes, nothing allocated past them (what a reservation added).
+void giveBack(int fd, off_t size) {
+  const int ignored = ftruncate(fd, size);
+  (void)ignored;
+  fallocate(fd, FALLOC_FL_PUNCH_HOLE | FALLOC_FL_KEEP_SIZE, size, std::numeric_limits<off_t>::max() - size);
+}
+
+}  // namespace
+
 std::string reserveRoom(const std::string& path, std::uint64_t bytes) {
   const int fd = open(path.c_str(), O_WRONLY);
   if (fd < 0) return std::strerror(errno);
@@ -32,13 +43,10 @@ std::string reserveRoom(const std::string& path, std::uint64_t bytes) {
   if (!error && fallocate(fd, FALLOC_FL_KEEP_SIZE, s.st_size, static_cast<off_t>(bytes)) != 0) {
     error = errno;
     // Not supported here: room past the end instead (zeros written past the end, where nothing
-    // else writes, if the file system must emulate it), trimmed by HDF5's serial close.
+    // else writes, if the file system must emulate it); HDF5 accepts a file longer than its data.
     if (error == EOPNOTSUPP || error == ENOSYS) error = posix_fallocate(fd, s.st_size, static_cast<off_t>(bytes));
   }
-  if (error) {  // a partial reservation is given back; the file's content is untouched either way
-    const int ignored = ftruncate(fd, s.st_size);
-    (void)ignored;
-  }
+  if (error) giveBack(fd, s.st_size);  // a partial reservation; the file's content is untouched either way
   close(fd);
   return error ? std::strerror(error) : "";
 }
@@ -47,8 +55,7 @@ void releaseRoom(const std::string& path) {
   const int fd = open(path.c_str(), O_WRONLY);
   if (fd < 0) return;
   struct stat s {};
-  if (fstat(fd, &s) == 0)  // the room past the end left unused (if the file system cannot, it stays)
-    fallocate(fd, FALLOC_FL_PUNCH_HOLE | FALLOC_FL_KEEP_SIZE, s.st_size, std::numeric_limits<off_t>::max() - s.st_size);
+  if (fstat(fd, &s) == 0) giveBack(fd, s.st_size);  // (where the file system cannot, the room stays)
   close(fd);
 }
 

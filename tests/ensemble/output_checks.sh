@@ -155,34 +155,39 @@ resume_disk_full)
 interrupt)
   # SIGTERM to mpiexec (as Ctrl-C or a scheduler sends): one line naming the tasks the .partial
   # keeps and the option to continue; resumed, the file is the uninterrupted run's.
-  slow=(-options_file "$src/input/sbm_fig4_reduced.opts" -sbm_N 40 -ensemble_delta -0.3,-0.1,0,0.1,0.3
-        -ensemble_realisations 3 -ensemble_monitor)
+  # 20 tasks of ~0.5 s each (more under load): the signal comes after the second.
+  slow=(-options_file "$src/input/sbm_fig4_reduced.opts" -sbm_N 120 -ensemble_delta -0.3,-0.1,0,0.1,0.3
+        -ensemble_realisations 4 -ensemble_monitor)
   run 2 whole "${slow[@]}" -output "$work/whole.h5"
   [ "$rc" -eq 0 ] || fail "interrupt: the uninterrupted run failed"
-  timeout 300 mpiexec --oversubscribe -n 2 "$driver" "${slow[@]}" -output "$work/cut.h5" >"$work/cut.out" 2>"$work/cut.err" &
+  # --foreground: timeout passes our SIGTERM to mpiexec alone, once (a second one makes mpiexec
+  # kill the ranks at once, before their handlers run).
+  timeout --foreground 300 mpiexec --oversubscribe -n 2 "$driver" "${slow[@]}" -output "$work/cut.h5" \
+    >"$work/cut.out" 2>"$work/cut.err" &
   launcher=$!
   for _ in $(seq 1 600); do  # until two tasks are done
     sleep 0.05
-    grep -q "^\[2/15\]" "$work/cut.out" 2>/dev/null && break
+    grep -q "^\[2/20\]" "$work/cut.out" 2>/dev/null && break
   done
-  grep -q "^\[2/15\]" "$work/cut.out" || fail "interrupt: no task finished"
+  grep -q "^\[2/20\]" "$work/cut.out" || fail "interrupt: no task finished"
   kill -TERM "$launcher"
   wait "$launcher"
   rc=$?
   [ $rc -ne 124 ] || fail "interrupt: no exit within 300 s"
   [ $rc -ne 0 ] || fail "interrupt: exit status 0"
-  [ "$(grep -c "^gradfric: interrupted" "$work/cut.err")" -eq 1 ] || { cat "$work/cut.err" >&2; fail "interrupt: not one notice"; }
-  notice="^gradfric: interrupted \(SIGTERM\): ([0-9]+) of 15 tasks are finished and kept in .*cut.h5.partial; continue with the same command and -ensemble_resume$"
+  [ "$(grep -c "^gradfric: interrupted" "$work/cut.err")" -eq 1 ] ||
+    { cat "$work/cut.err" >&2; fail "interrupt: not one notice ($(grep -c '^\[' "$work/cut.out") tasks printed)"; }
+  notice="^gradfric: interrupted \(SIGTERM\): ([0-9]+) of 20 tasks are finished and kept in .*cut.h5.partial; continue with the same command and -ensemble_resume$"
   grep -Eq "$notice" "$work/cut.err" || { cat "$work/cut.err" >&2; fail "interrupt: the notice does not match"; }
   said=$(grep -E "$notice" "$work/cut.err" | sed -E "s/$notice/\\1/")
   kept=$(h5dump -A 0 -y -d /realisations/done "$work/cut.h5.partial" | sed -n '/DATA {/,/}/p' | grep -o '[01]' | grep -c 1 || true)
   [ "$said" -ge 2 ] && [ "$said" -le "$kept" ] || fail "interrupt: the notice says $said tasks, the file keeps $kept"
-  [ "$kept" -lt 15 ] || fail "interrupt: the signal came too late to test anything"
+  [ "$kept" -lt 20 ] || fail "interrupt: the signal came too late to test anything"
   ! grep -q "MPI_ABORT" "$work/cut.err" || fail "interrupt: MPI_ABORT"
   [ ! -e "$work/cut.h5" ] || fail "interrupt: a final file was written"
   run 2 resume "${slow[@]}" -ensemble_resume -output "$work/cut.h5"
   [ "$rc" -eq 0 ] || { cat "$work/resume.err" >&2; fail "interrupt: the resumed run failed"; }
-  grep -q "$kept of 15 tasks already finished" "$work/resume.out" || fail "interrupt: resume did not keep $kept tasks"
+  grep -q "$kept of 20 tasks already finished" "$work/resume.out" || fail "interrupt: resume did not keep $kept tasks"
   h5diff --exclude-path /run "$work/whole.h5" "$work/cut.h5" >"$work/diff.txt" 2>&1 ||
     { head -5 "$work/diff.txt" >&2; fail "interrupt: the resumed file differs from the uninterrupted one"; }
   if /usr/bin/python3 -c "import h5py" 2>/dev/null; then

@@ -78,27 +78,29 @@ written sweep_full "writing .*disk/sweep.h5.partial failed on rank 0: .*$full"
 [ ! -e disk/sweep.h5 ] || fail "sweep_full: a file under the final name"
 cleanup; mounted=""; limit=""
 
-# SIGTERM to a running sweep (2 groups of 1 rank, six points of ~1 s): the notice, then a resume
+# SIGTERM to a running sweep (2 groups of 1 rank, eight points of ~1 s): the notice, then a resume
 # gives the same file.
-sweep=(-grading_profile linear -grading_property friction -ensemble_delta 0,0.2,-0.2,0.1,-0.1,0.3 -fem_nx 24 -fem_ny 24
-       -fem_nz 2 -fem_kn 4e11)
+sweep=(-grading_profile linear -grading_property friction -ensemble_delta 0,0.2,-0.2,0.1,-0.1,0.3,-0.3,0.15
+       -fem_nx 32 -fem_ny 32 -fem_nz 2 -fem_kn 4e11)
 timeout 300 mpiexec -n 2 "$driver" "${sweep[@]}" -fem_output whole.h5 >whole.out 2>whole.err || fail "whole: $(tail -3 whole.err)"
-timeout 300 mpiexec -n 2 "$driver" "${sweep[@]}" -fem_output cut.h5 >cut.out 2>cut.err &
+# --foreground: timeout passes our SIGTERM to mpiexec alone, once (a second one makes mpiexec kill
+# the ranks at once, before their handlers run).
+timeout --foreground 300 mpiexec -n 2 "$driver" "${sweep[@]}" -fem_output cut.h5 >cut.out 2>cut.err &
 launcher=$!
-for _ in $(seq 1 1200); do sleep 0.05; grep -q '^\[group [01]\] point' cut.out 2>/dev/null && break; done
-grep -q '^\[group [01]\] point' cut.out || fail "interrupt: no point finished"
+for _ in $(seq 1 3000); do sleep 0.02; grep -q '^\[group [01]\] point' cut.out 2>/dev/null && break; done
+grep -q '^\[group [01]\] point' cut.out || fail "interrupt: no point finished: $(cat cut.out cut.err)"
 kill -TERM "$launcher"
 wait "$launcher"
 rc=$?
-[ $rc -ne 0 ] && [ $rc -ne 124 ] || fail "interrupt: exit $rc"
-notice="^gradfric: interrupted \(SIGTERM\): ([0-9]+) of 6 points are finished and kept in cut.h5.partial; continue with the same command and -fem_sweep_resume$"
-[ "$(grep -c '^gradfric: interrupted' cut.err)" -eq 1 ] && grep -Eq "$notice" cut.err || { cat cut.err >&2; fail "interrupt: no notice"; }
+[ $rc -ne 0 ] && [ $rc -ne 124 ] || fail "interrupt: exit $rc: $(tail -3 cut.out)"
+notice="^gradfric: interrupted \(SIGTERM\): ([0-9]+) of 8 points are finished and kept in cut.h5.partial; continue with the same command and -fem_sweep_resume$"
+[ "$(grep -c '^gradfric: interrupted' cut.err)" -eq 1 ] && grep -Eq "$notice" cut.err || { cat cut.err >&2; fail "interrupt: no notice: $(grep -c '^\[group' cut.out) points printed"; }
 said=$(grep -E "$notice" cut.err | sed -E "s/$notice/\1/")
 kept=$(h5dump -A 0 -y -d /realisations/done cut.h5.partial | sed -n '/DATA {/,/}/p' | grep -o '[01]' | grep -c 1 || true)
 [ "$said" -ge 1 ] && [ "$said" -le "$kept" ] || fail "interrupt: the notice says $said points, the file keeps $kept"
-[ "$kept" -lt 6 ] && [ ! -e cut.h5 ] || fail "interrupt: the signal came too late to test anything"
+[ "$kept" -lt 8 ] && [ ! -e cut.h5 ] || fail "interrupt: the signal came too late to test anything"
 timeout 300 mpiexec -n 2 "$driver" "${sweep[@]}" -fem_output cut.h5 -fem_sweep_resume >resume.out 2>resume.err ||
   fail "resume: $(tail -3 resume.err)"
-grep -q "$((6 - kept)) to run" resume.out || fail "resume: the $kept finished points were not skipped"
+grep -q "$((8 - kept)) to run" resume.out || fail "resume: the $kept finished points were not skipped"
 h5diff --exclude-path /run whole.h5 cut.h5 >diff.txt 2>&1 || fail "the resumed sweep differs: $(head -5 diff.txt)"
 echo "fem disk full OK"

@@ -7,7 +7,8 @@
 // (its data, then its done flag: io/results_file.hpp). mpiexec and srun send the signal to every
 // rank, and mpiexec kills them a second later: so the line is printed from the handler itself,
 // with the done flags counted by read(2) from the file and the text written by write(2) (both
-// async-signal-safe; no MPI, no HDF5, no allocation). Every other rank just ends.
+// async-signal-safe; no MPI, no HDF5, no allocation). Every other rank ends 0.3 s later (when a
+// rank ends, mpiexec kills the others at once, perhaps before rank 0 had its signal).
 #include "gradfric/io/results_file.hpp"
 
 #include <mpi.h>

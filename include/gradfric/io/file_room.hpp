@@ -3,9 +3,9 @@
 // (a dataset's last bytes reach the disk when its handle closes, and handles close silently), and
 // after one it may crash or loop when the library shuts down; in a parallel file the ranks
 // would disagree inside a collective call and wait for ever. So the room a write needs is
-// reserved first (posix_fallocate: a full disk, a quota or a file-size limit shows there, as the
-// system's reason, before the file is touched), and a file written serially is read back once
-// closed.
+// reserved first (fallocate past the file's end: a full disk, a quota or a file-size limit shows
+// there, as the system's reason, before the file is touched), given back once the file is
+// complete, and a file written serially is read back once closed.
 #include "gradfric/io/hdf5_handle.hpp"
 
 #include <cstdint>
@@ -29,9 +29,10 @@ void createEmptyHdf5File(const std::string& path, std::uint64_t bytes);
 // the caller removes the file.
 void createHdf5File(const std::string& path, std::uint64_t bytes, const std::function<void(hid_t file)>& build);
 
-// Serial. Changes an existing HDF5 file: `bytes` reserved past its end (none for a change in place,
-// such as a scalar attribute rewritten), opened read-write, change applied, closed and read back. Throws Hdf5Error; when the room cannot be reserved, the message
-// says that the file was left unchanged.
+// Serial. Changes an existing HDF5 file: `bytes` reserved past its end (none for a change in
+// place, such as a scalar attribute rewritten), opened read-write, change applied, closed and
+// read back. Throws Hdf5Error; when the room cannot be reserved, the message says that the file
+// was left unchanged.
 void changeHdf5File(const std::string& path, std::uint64_t bytes, const std::function<void(hid_t file)>& change);
 
 // Serial. Writes a whole text file with write(2), every failure reported (a stream would lose
