@@ -11,7 +11,6 @@
 #include "gradfric/ensemble/scene_file.hpp"
 #include "gradfric/ensemble/scene_report.hpp"
 #include "gradfric/ensemble/task_runner.hpp"
-#include "gradfric/io/collective_file.hpp"
 
 #include <petscsys.h>
 
@@ -64,7 +63,6 @@ int main(int argc, char** argv) {
     printScene(comm, *scene, record);
     if (scene->dryRun) return printDryRun(comm, *scene);
     const io::OutputPlan plan = planResultsFile(comm, *scene);    // before any work
-    io::CollectiveFileScope writing(comm, plan.workPath());       // an I/O failure ends every rank
     io::ResultsFile file = openResultsFile(comm, *scene, plan);
     const TaskTally tally = runTasks(comm, *scene, file, plan.workPath());
     const std::vector<PointStatistics> statistics = writeStatistics(file, *scene);

@@ -3,6 +3,7 @@
 
 #include "gradfric/io/provenance.hpp"
 
+#include "gradfric/core/collective_error.hpp"
 #include "gradfric/core/petsc_call.hpp"
 #include "gradfric/ensemble/log_events.hpp"
 
@@ -55,8 +56,18 @@ io::ResultsFile openResultsFile(MPI_Comm comm, const Scene& scene, const io::Out
                         scene.tasks() - finished));
     return resumed;
   }();
-  file.setRunAttributes(scene.runAttributes);
-  file.setProvenance(io::collectProvenance(comm));  // version, command line, options files, date, ranks
+  try {
+    file.setRunAttributes(scene.runAttributes);
+    file.setProvenance(io::collectProvenance(comm));  // version, command line, options files, date, ranks
+  } catch (const CollectiveError& e) {
+    const bool resumed = plan.start() == io::OutputStart::ContinueTemporary || plan.start() == io::OutputStart::ContinueFinished;
+    if (!resumed) {
+      plan.discard(comm);  // a new file without a task: nothing to keep
+      throw;
+    }
+    throw CollectiveError(std::string(e.what()) + "; its finished tasks are kept: continue with -resume "
+                                                   "once there is room");
+  }
   return file;
 }
 

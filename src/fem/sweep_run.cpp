@@ -2,6 +2,7 @@
 #include "gradfric/core/collective_error.hpp"
 #include "gradfric/core/format.hpp"
 #include "gradfric/core/petsc_call.hpp"
+#include "gradfric/ensemble/interruption.hpp"
 #include "gradfric/ensemble/scene_file.hpp"
 #include "gradfric/ensemble/scene_report.hpp"
 #include "gradfric/fem/error_estimate.hpp"
@@ -9,7 +10,6 @@
 #include "gradfric/fem/simulation.hpp"
 #include "gradfric/fem/stable_step.hpp"
 #include "gradfric/fem/sweep.hpp"
-#include "gradfric/io/collective_file.hpp"
 #include "gradfric/io/output_plan.hpp"
 #include "gradfric/io/provenance.hpp"
 
@@ -18,6 +18,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <optional>
 #include <cstdlib>
 #include <string>
 
@@ -77,8 +78,17 @@ io::ResultsFile openSweepFile(MPI_Comm comm, const FemSweep& s, const io::Output
     GF_CALL(PetscPrintf(comm, "Resuming %s\n", plan.workPath().c_str()));
     return io::ResultsFile::open(comm, plan.workPath());
   }();
-  file.setRunAttributes(s.runAttributes);
-  file.setProvenance(io::collectProvenance(comm));
+  try {
+    file.setRunAttributes(s.runAttributes);
+    file.setProvenance(io::collectProvenance(comm));
+  } catch (const CollectiveError& e) {
+    if (plan.start() == io::OutputStart::Fresh) {
+      plan.discard(comm);  // a new file without a run: nothing to keep
+      throw;
+    }
+    throw CollectiveError(std::string(e.what()) + "; its finished points are kept: continue with -resume "
+                                                   "once there is room");
+  }
   return file;
 }
 
@@ -165,7 +175,6 @@ void runFemSweep(MPI_Comm comm, const FemSweep& s, const RunParameters& record) 
   int rank = 0;
   GF_CALL_MPI(MPI_Comm_rank(comm, &rank));
   const io::OutputPlan plan = planSweepFile(comm, s);  // before any work
-  io::CollectiveFileScope writing(comm, plan.workPath());  // an I/O failure ends every rank
   io::ResultsFile file = openSweepFile(comm, s, plan);    // a file to resume is checked first
   record.print(comm, "gradfric-fem: resolved parameters (FEM sweep)");
   const auto flags = file.finishedTasks();
@@ -176,6 +185,8 @@ void runFemSweep(MPI_Comm comm, const FemSweep& s, const RunParameters& record) 
   const double wall0 = MPI_Wtime();
   long ranHere = 0;
   std::string failure;
+  std::optional<ensemble::InterruptionNotice> notice;  // Ctrl-C, SIGTERM: while the points run
+  notice.emplace(comm, file, plan.workPath(), "points", "-resume");
   // Round robin over the groups in the fixed order of pendingTasks: the same points run on the
   // same groups whatever the timing, and no number in the file depends on which group ran it.
   for (size_t i = groups.group(); i < pending.size(); i += groups.groups()) {
@@ -211,6 +222,7 @@ void runFemSweep(MPI_Comm comm, const FemSweep& s, const RunParameters& record) 
     ++ranHere;
     abortIfDue(s, ranHere, rank);
   }
+  notice.reset();
   file.flush();
   try {
     agreeOnError(comm, failure);

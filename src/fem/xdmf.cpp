@@ -1,8 +1,8 @@
 #include "gradfric/fem/xdmf.hpp"
 
+#include "gradfric/io/file_room.hpp"
 #include "gradfric/io/hdf5_attributes.hpp"
 
-#include <fstream>
 #include <sstream>
 #include <stdexcept>
 #include <vector>
@@ -67,65 +67,66 @@ void writeSlab(std::ostream& x, const std::string& file, const std::string& path
 
 }  // namespace
 
-void describeFieldsAndWriteXdmf(const std::string& fieldsPath, const std::string& xmfPath) {
-  io::H5File file(GF_H5(H5Fopen(fieldsPath.c_str(), H5F_ACC_RDWR, H5P_DEFAULT)));
-  const std::string geometry = GF_H5(H5Lexists(file, "viz", H5P_DEFAULT)) > 0 &&
-                                       GF_H5(H5Lexists(file, "viz/geometry", H5P_DEFAULT)) > 0
-                                   ? "/viz/geometry/vertices"
-                                   : "/geometry/vertices";
-  const auto vertices = shapeOf(file, geometry);
-  const auto cells = shapeOf(file, "/viz/topology/cells");
-  std::vector<double> times;
-  {
-    io::H5Dataset d(GF_H5(H5Dopen2(file, "/time", H5P_DEFAULT)));
-    io::H5Space space(GF_H5(H5Dget_space(d)));
-    times.resize(static_cast<size_t>(H5Sget_simple_extent_npoints(space)));
-    if (!times.empty()) GF_H5(H5Dread(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, times.data()));
-    io::describe(d, "s", "time of each snapshot since the start of sliding");
-  }
-  {  // The mesh and PETSc's own copies of the fields (global vector order, not the VIZ order).
-    auto describePath = [&](const char* path, const char* units, const char* description) {
-      if (GF_H5(H5Lexists(file, path, H5P_DEFAULT)) <= 0) return;
-      io::H5Dataset d(GF_H5(H5Dopen2(file, path, H5P_DEFAULT)));
-      io::describe(d, units, description);
-    };
-    if (GF_H5(H5Lexists(file, "geometry", H5P_DEFAULT)) > 0)
-      describePath("/geometry/vertices", "m", "node coordinates x, y, z");
-    describePath("/viz/topology/cells", "1", "the 8 nodes (rows of the vertices) of each hexahedral cell, VTK order");
-    if (GF_H5(H5Lexists(file, "fields", H5P_DEFAULT)) > 0) {
-      describePath("/fields/state", "m, m/s", "PETSc's layout of the state: u_x, u_y, u_z, v_x, v_y, v_z per node");
-      describePath("/fields/bottom", "Pa (state: 1)", "PETSc's layout of bottom_contact (see there)");
-      describePath("/fields/cell", "Pa", "PETSc's layout of cell_stress (see there)");
-    }
-  }
-  if (vertices.size() != 2 || cells.size() != 2 || cells[1] != 8)
-    throw std::runtime_error("xdmf: " + fieldsPath + " is not a hexahedral mesh in PETSc's VIZ layout");
-  const std::string heavy = fieldsPath.substr(fieldsPath.rfind('/') + 1);  // beside the .xmf
-
+void describeFieldsAndWriteXdmf(const std::string& fieldsFile, const std::string& heavy, const std::string& xmfPath) {
   struct Field {
     std::string path, name, center;
     std::vector<hsize_t> shape;
     const FieldInfo* info;
   };
+  std::string geometry;
+  std::vector<hsize_t> vertices, cells;
+  std::vector<double> times;
   std::vector<Field> fields;
-  for (const auto& [group, center] : {std::pair<const char*, const char*>{"/vertex_fields", "Node"},
-                                      std::pair<const char*, const char*>{"/cell_fields", "Cell"}}) {
-    for (const auto& name : datasetsIn(file, group)) {
-      Field f{std::string(group) + "/" + name, name, center, shapeOf(file, std::string(group) + "/" + name),
-              findField(name)};
-      if (f.shape.size() == 2) f.shape.push_back(1);  // a scalar field: [T, n]
-      if (f.shape.size() != 3 || f.shape[0] != times.size())
-        throw std::runtime_error("xdmf: unexpected shape of " + f.path);
-      if (f.info) {
-        io::H5Dataset d(GF_H5(H5Dopen2(file, f.path.c_str(), H5P_DEFAULT)));
-        io::describe(d, f.info->units, f.info->description);
-        std::string components;
-        for (const auto& c : f.info->components) components += (components.empty() ? "" : ",") + c;
-        if (!components.empty()) io::writeStringAttribute(d, "components", components);
-      }
-      fields.push_back(std::move(f));
+  // A few attributes per dataset: the room reserved is HDF5's own minimum.
+  io::changeHdf5File(fieldsFile, io::withMetadataRoom(0), [&](hid_t file) {
+    geometry = GF_H5(H5Lexists(file, "viz", H5P_DEFAULT)) > 0 && GF_H5(H5Lexists(file, "viz/geometry", H5P_DEFAULT)) > 0
+                   ? "/viz/geometry/vertices"
+                   : "/geometry/vertices";
+    vertices = shapeOf(file, geometry);
+    cells = shapeOf(file, "/viz/topology/cells");
+    {
+      io::H5Dataset d(GF_H5(H5Dopen2(file, "/time", H5P_DEFAULT)));
+      io::H5Space space(GF_H5(H5Dget_space(d)));
+      times.resize(static_cast<size_t>(H5Sget_simple_extent_npoints(space)));
+      if (!times.empty()) GF_H5(H5Dread(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, times.data()));
+      io::describe(d, "s", "time of each snapshot since the start of sliding");
     }
-  }
+    {  // The mesh and PETSc's own copies of the fields (global vector order, not the VIZ order).
+      auto describePath = [&](const char* path, const char* units, const char* description) {
+        if (GF_H5(H5Lexists(file, path, H5P_DEFAULT)) <= 0) return;
+        io::H5Dataset d(GF_H5(H5Dopen2(file, path, H5P_DEFAULT)));
+        io::describe(d, units, description);
+      };
+      if (GF_H5(H5Lexists(file, "geometry", H5P_DEFAULT)) > 0)
+        describePath("/geometry/vertices", "m", "node coordinates x, y, z");
+      describePath("/viz/topology/cells", "1", "the 8 nodes (rows of the vertices) of each hexahedral cell, VTK order");
+      if (GF_H5(H5Lexists(file, "fields", H5P_DEFAULT)) > 0) {
+        describePath("/fields/state", "m, m/s", "PETSc's layout of the state: u_x, u_y, u_z, v_x, v_y, v_z per node");
+        describePath("/fields/bottom", "Pa (state: 1)", "PETSc's layout of bottom_contact (see there)");
+        describePath("/fields/cell", "Pa", "PETSc's layout of cell_stress (see there)");
+      }
+    }
+    if (vertices.size() != 2 || cells.size() != 2 || cells[1] != 8)
+      throw std::runtime_error("xdmf: " + fieldsFile + " is not a hexahedral mesh in PETSc's VIZ layout");
+    for (const auto& [group, center] : {std::pair<const char*, const char*>{"/vertex_fields", "Node"},
+                                        std::pair<const char*, const char*>{"/cell_fields", "Cell"}}) {
+      for (const auto& name : datasetsIn(file, group)) {
+        Field f{std::string(group) + "/" + name, name, center, shapeOf(file, std::string(group) + "/" + name),
+                findField(name)};
+        if (f.shape.size() == 2) f.shape.push_back(1);  // a scalar field: [T, n]
+        if (f.shape.size() != 3 || f.shape[0] != times.size())
+          throw std::runtime_error("xdmf: unexpected shape of " + f.path);
+        if (f.info) {
+          io::H5Dataset d(GF_H5(H5Dopen2(file, f.path.c_str(), H5P_DEFAULT)));
+          io::describe(d, f.info->units, f.info->description);
+          std::string components;
+          for (const auto& c : f.info->components) components += (components.empty() ? "" : ",") + c;
+          if (!components.empty()) io::writeStringAttribute(d, "components", components);
+        }
+        fields.push_back(std::move(f));
+      }
+    }
+  });
 
   std::ostringstream x;
   x.precision(17);
@@ -165,9 +166,7 @@ void describeFieldsAndWriteXdmf(const std::string& fieldsPath, const std::string
     x << "      </Grid>\n";
   }
   x << "    </Grid>\n  </Domain>\n</Xdmf>\n";
-  std::ofstream out(xmfPath);
-  out << x.str();
-  if (!out) throw std::runtime_error("xdmf: cannot write " + xmfPath);
+  io::writeWholeFile(xmfPath, x.str());
 }
 
 }  // namespace gradfric::fem

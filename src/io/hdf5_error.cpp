@@ -1,6 +1,5 @@
-// HDF5 failures: the throwing check behind GF_H5, and the scope in which a failure ends the job
-// instead (include/gradfric/io/collective_file.hpp).
-#include "gradfric/core/collective_error.hpp"
+// HDF5 failures: the throwing check behind GF_H5, and the scope in which a failure names the file
+// being written (include/gradfric/io/collective_file.hpp).
 #include "gradfric/io/collective_file.hpp"
 #include "gradfric/io/hdf5_handle.hpp"
 
@@ -15,7 +14,6 @@ namespace gradfric::io {
 namespace {
 
 struct ActiveScope {
-  MPI_Comm comm = MPI_COMM_NULL;
   std::string path;
   int depth = 0;
   H5E_auto2_t printer = nullptr;
@@ -43,7 +41,7 @@ std::string innermostHdf5Reason() {
 }
 
 // The system's reason when it is one a write can fail with (errno may be stale otherwise).
-static std::string writeFailure(int error) {
+static std::string systemWriteReason(int error) {
   switch (error) {
     case ENOSPC: case EFBIG: case EDQUOT: case EROFS: case EIO: return std::strerror(error);
     default: return "";
@@ -51,37 +49,43 @@ static std::string writeFailure(int error) {
 }
 
 void throwHdf5Error(const char* expression, const char* file, int line) {
-  const std::string system = writeFailure(errno);
-  const std::string reason = innermostHdf5Reason();
-  ActiveScope& scope = activeScope();
-  if (scope.depth > 0) {
-    int rank = 0;
-    MPI_Comm_rank(scope.comm, &rank);
-    abortJob(scope.comm, "writing " + scope.path + " failed on rank " + std::to_string(rank) +
-                             (reason.empty() ? std::string() : ": " + reason) +
-                             (system.empty() ? " (is the disk full or the file system read-only?)" : ": " + system));
-  }
+  const std::string system = systemWriteReason(errno);
+  std::string reason = innermostHdf5Reason();
+  // "file write failed: time = ..., filename = ..., errno = 28, ...": the head says it, the
+  // system's reason follows.
+  if (const auto cut = reason.find(": time = "); cut != std::string::npos) reason.resize(cut);
+  const ActiveScope& scope = activeScope();
+  if (scope.depth > 0)
+    throw Hdf5Error(writeFailure(scope.path, (reason.empty() ? std::string("an HDF5 call failed") : reason) +
+                                                 (system.empty() ? " (is the disk full or the file system read-only?)"
+                                                                 : ": " + system)),
+                    reason);
   throw Hdf5Error(std::string("HDF5 call failed: ") + expression + (reason.empty() ? "" : ": " + reason) + " (" +
                       file + ":" + std::to_string(line) + ")",
                   reason);
 }
 
-CollectiveFileScope::CollectiveFileScope(MPI_Comm comm, const std::string& path) {
+std::string writeFailure(const std::string& path, const std::string& detail) {
+  int initialised = 0, rank = 0;
+  MPI_Initialized(&initialised);
+  if (initialised) MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  return "writing " + path + " failed on rank " + std::to_string(rank) + ": " + detail;
+}
+
+FileWriteScope::FileWriteScope(const std::string& path) {
   ActiveScope& scope = activeScope();
+  outer_ = scope.path;
+  scope.path = path;
   if (scope.depth++ == 0) {
-    scope.comm = comm;
-    scope.path = path;
     H5Eget_auto2(H5E_DEFAULT, &scope.printer, &scope.printerData);
     H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
   }
 }
 
-CollectiveFileScope::~CollectiveFileScope() {
+FileWriteScope::~FileWriteScope() {
   ActiveScope& scope = activeScope();
-  if (--scope.depth == 0) {
-    H5Eset_auto2(H5E_DEFAULT, scope.printer, scope.printerData);
-    scope.comm = MPI_COMM_NULL;
-  }
+  scope.path = outer_;
+  if (--scope.depth == 0) H5Eset_auto2(H5E_DEFAULT, scope.printer, scope.printerData);
 }
 
 }  // namespace gradfric::io

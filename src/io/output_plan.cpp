@@ -121,9 +121,11 @@ void OutputPlan::writeOnRank0(MPI_Comm comm, const std::function<void(const std:
   std::string error;
   if (rank == 0) {
     try {
-      withoutHdf5Printing([&] { write(workPath_); });
+      FileWriteScope scope(workPath_);  // an HDF5 failure names the file and the system's reason
+      write(workPath_);
     } catch (const std::exception& e) {
-      error = "writing " + workPath_ + " failed: " + e.what();
+      const std::string what = e.what();
+      error = what.rfind("writing " + workPath_, 0) == 0 ? what : "writing " + workPath_ + " failed: " + what;
       if (workPath_ != path_) unlink(workPath_.c_str());
     }
   }

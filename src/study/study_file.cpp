@@ -1,8 +1,10 @@
 #include "gradfric/study/study_file.hpp"
 
+#include "gradfric/io/file_room.hpp"
 #include "gradfric/io/hdf5_handle.hpp"
 
 #include <algorithm>
+#include <cstdint>
 
 namespace gradfric::study {
 
@@ -41,15 +43,21 @@ std::vector<std::pair<std::string, std::string>> studyAttributes(
 }
 
 void saveStudyFile(MPI_Comm comm, const io::OutputPlan& plan, const StudyFile& content) {
+  std::uint64_t bytes = 0;  // the room reserved for it (io/file_room.hpp: a full disk is a clean error)
+  for (const auto& [name, value] : content.attributes) bytes += name.size() + value.size() + 64;
+  for (const auto& ladder : content.ladders) {
+    for (const auto& [name, value] : ladder.texts) bytes += name.size() + value.size() + 64;
+    for (const auto& [name, values] : ladder.columns) bytes += 8 * values.size() + 1024;
+  }
   plan.writeOnRank0(comm, [&](const std::string& path) {
-    io::H5File file(GF_H5(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT)));
-    for (const auto& [name, value] : content.attributes) writeText(file, name, value);
-    for (const auto& ladder : content.ladders) {
-      io::H5Group group(GF_H5(H5Gcreate2(file, ladder.name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT)));
-      for (const auto& [name, value] : ladder.texts) writeText(group, name, value);
-      for (const auto& [name, values] : ladder.columns) writeVector(group, name, values);
-    }
-    GF_H5(H5Fflush(file, H5F_SCOPE_GLOBAL));  // a full disk shows here, not in a silent close
+    io::createHdf5File(path, io::withMetadataRoom(bytes), [&](hid_t file) {
+      for (const auto& [name, value] : content.attributes) writeText(file, name, value);
+      for (const auto& ladder : content.ladders) {
+        io::H5Group group(GF_H5(H5Gcreate2(file, ladder.name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT)));
+        for (const auto& [name, value] : ladder.texts) writeText(group, name, value);
+        for (const auto& [name, values] : ladder.columns) writeVector(group, name, values);
+      }
+    });
   });
   plan.commit(comm);
 }

@@ -1,10 +1,13 @@
 #!/usr/bin/env bash
 # The results file of the gradfric driver is planned before any work and replaced only on success;
 # a refusal or an I/O failure ends every rank with one message and a non-zero exit, never a hang;
-# a bad file given to -resume gets one line saying what is wrong with it (exit 2).
+# a bad file given to -resume gets one line saying what is wrong with it (exit 2); a
+# full disk is exit 1 with one message on every rank (no MPI_ABORT), also when resuming; SIGTERM
+# says what the partial file keeps, and resuming it gives the uninterrupted run's file.
 #   output_checks.sh <driver> <source-dir> <check>
-# checks: refuse_output, overwrite_failed, disk_full, resume_files. Each runs on 1 and 2 ranks
-# where a rank count matters (refusals decided on rank 0, collective writes).
+# checks: refuse_output, overwrite_failed, disk_full, resume_files, resume_disk_full, interrupt.
+# Each runs on 1 and 2 ranks where a rank count matters (refusals decided on rank 0, collective
+# writes).
 set -uo pipefail
 driver=$1
 src=$2
@@ -40,6 +43,19 @@ refused() {
   [ "$lines" -eq 1 ] || { cat "$work/$stem.err" >&2; fail "$stem: $lines error lines, expected one"; }
   grep -Eq "$regex" "$work/$stem.err" || { cat "$work/$stem.err" >&2; fail "$stem: message does not match '$regex'"; }
   ! grep -q "HDF5-DIAG" "$work/$stem.err" || fail "$stem: HDF5 error stack printed"
+}
+# written <what> <log-stem> <message regex>: a write error: exit 1 on every rank, one gradfric
+# message, no HDF5 error stack, no MPI_ABORT, no crash.
+written() {
+  local what=$1 stem=$2 regex=$3
+  [ "$rc" -eq 1 ] || { cat "$work/$stem.err" >&2; fail "$what: exit $rc, expected 1"; }
+  local lines
+  lines=$(grep -c "^gradfric: error:" "$work/$stem.err")
+  [ "$lines" -eq 1 ] || { cat "$work/$stem.err" >&2; fail "$what: $lines error lines, expected one"; }
+  grep -Eq "^gradfric: error: $regex" "$work/$stem.err" || { cat "$work/$stem.err" >&2; fail "$what: message does not match '$regex'"; }
+  ! grep -q "HDF5-DIAG" "$work/$stem.err" || fail "$what: HDF5 error stack printed"
+  ! grep -Eq "MPI_ABORT|Segmentation|signal 11|infinite loop" "$work/$stem.err" "$work/$stem.out" ||
+    { cat "$work/$stem.err" >&2; fail "$what: aborted or crashed"; }
 }
 
 case "$check" in
@@ -106,13 +122,80 @@ disk_full)
     rc=$?
     [ $rc -ne 124 ] || fail "disk full: no exit within 300 s (a hang)"
   fi
-  [ "$rc" -ne 0 ] || fail "disk full: exit status 0"
-  lines=$(grep -c "^gradfric: error:" "$work/full.err")
-  [ "$lines" -eq 1 ] || { cat "$work/full.err" >&2; fail "disk full: $lines error lines, expected one"; }
-  grep -q "^gradfric: error: writing .*full/x.h5.partial failed on rank [01]" "$work/full.err" ||
-    { cat "$work/full.err" >&2; fail "disk full: the message does not name the file"; }
-  ! grep -q "HDF5-DIAG" "$work/full.err" || fail "disk full: HDF5 error stack printed"
-  [ ! -e "$work/full/x.h5" ] || fail "disk full: a final file was written"
+  written "disk full" full "writing .*full/x.h5.partial failed on rank [01]: .*(No space left on device|File too large)"
+  [ ! -e "$work/full/x.h5" ] && [ ! -e "$work/full/x.h5.partial" ] || fail "disk full: a file was left"
+  ;;
+resume_disk_full)
+  # An interrupted run's .partial on a disk that is full when the run is resumed: the resumed run
+  # needs room for /run's attributes. Exit 1 on every rank (no hang: the ranks used to wait in
+  # H5Fflush, one in MPI_Barrier, the other in MPI_Bcast), the .partial byte for byte as it was.
+  small=(-sbm_N 8 -ensemble_realisations 4 -ensemble_history false -friction_observables mu_s)
+  mkdir -p "$work/full"
+  if mount -t tmpfs -o size=2m tmpfs "$work/full" 2>/dev/null; then
+    mounted="$work/full"
+    run 2 cut "${small[@]}" -ensemble_abort_after 2 -output "$work/full/res.h5"
+    [ -f "$work/full/res.h5.partial" ] || fail "resume disk full: no .partial to resume"
+    dd if=/dev/zero of="$work/full/filler" bs=4k 2>/dev/null  # the disk is full now
+    cp "$work/full/res.h5.partial" "$work/before.partial"
+    run 2 full "${small[@]}" -resume -output "$work/full/res.h5"
+  else
+    echo "resume disk full: RLIMIT_FSIZE at the size of the .partial on the ranks"
+    run 2 cut "${small[@]}" -ensemble_abort_after 2 -output "$work/full/res.h5"
+    cp "$work/full/res.h5.partial" "$work/before.partial"
+    kib=$(( $(stat -c %s "$work/full/res.h5.partial") / 1024 + 1 ))
+    timeout 300 mpiexec --oversubscribe -n 2 bash -c 'trap "" XFSZ; ulimit -f '"$kib"'; exec "$0" "$@"' "$driver" \
+      "${small[@]}" -resume -output "$work/full/res.h5" >"$work/full.out" 2>"$work/full.err"
+    rc=$?
+    [ $rc -ne 124 ] || fail "resume disk full: no exit within 300 s (a hang)"
+  fi
+  written "resume disk full" full "writing .*full/res.h5.partial failed on rank 0: no room for [0-9]+ more bytes: (No space left on device|File too large) \\(the file is unchanged\\); its finished tasks are kept: continue with -resume once there is room"
+  cmp -s "$work/full/res.h5.partial" "$work/before.partial" || fail "resume disk full: the .partial was changed"
+  [ ! -e "$work/full/res.h5" ] || fail "resume disk full: a final file was written"
+  ;;
+interrupt)
+  # SIGTERM to mpiexec (as Ctrl-C or a scheduler sends): one line naming the tasks the .partial
+  # keeps and the option to continue; resumed, the file is the uninterrupted run's.
+  # 20 tasks of ~0.5 s each (more under load): the signal comes after the second.
+  slow=(-options_file "$src/input/sbm_fig4_reduced.opts" -sbm_N 120 -ensemble_delta -0.3,-0.1,0,0.1,0.3
+        -ensemble_realisations 4 -ensemble_monitor)
+  run 2 whole "${slow[@]}" -output "$work/whole.h5"
+  [ "$rc" -eq 0 ] || fail "interrupt: the uninterrupted run failed"
+  # --foreground: timeout passes our SIGTERM to mpiexec alone, once (a second one makes mpiexec
+  # kill the ranks at once, before their handlers run).
+  timeout --foreground 300 mpiexec --oversubscribe -n 2 "$driver" "${slow[@]}" -output "$work/cut.h5" \
+    >"$work/cut.out" 2>"$work/cut.err" &
+  launcher=$!
+  for _ in $(seq 1 600); do  # until two tasks are done
+    sleep 0.05
+    grep -q "^\[2/20\]" "$work/cut.out" 2>/dev/null && break
+  done
+  grep -q "^\[2/20\]" "$work/cut.out" || fail "interrupt: no task finished"
+  kill -TERM "$launcher"
+  wait "$launcher"
+  rc=$?
+  [ $rc -ne 124 ] || fail "interrupt: no exit within 300 s"
+  [ $rc -ne 0 ] || fail "interrupt: exit status 0"
+  [ "$(grep -c "^gradfric: interrupted" "$work/cut.err")" -eq 1 ] ||
+    { cat "$work/cut.err" >&2; fail "interrupt: not one notice ($(grep -c '^\[' "$work/cut.out") tasks printed)"; }
+  notice="^gradfric: interrupted \(SIGTERM\): ([0-9]+) of 20 tasks are finished and kept in .*cut.h5.partial; continue with the same command and -resume$"
+  grep -Eq "$notice" "$work/cut.err" || { cat "$work/cut.err" >&2; fail "interrupt: the notice does not match"; }
+  said=$(grep -E "$notice" "$work/cut.err" | sed -E "s/$notice/\\1/")
+  kept=$(h5dump -A 0 -y -d /realisations/done "$work/cut.h5.partial" | sed -n '/DATA {/,/}/p' | grep -o '[01]' | grep -c 1 || true)
+  [ "$said" -ge 2 ] && [ "$said" -le "$kept" ] || fail "interrupt: the notice says $said tasks, the file keeps $kept"
+  [ "$kept" -lt 20 ] || fail "interrupt: the signal came too late to test anything"
+  ! grep -q "MPI_ABORT" "$work/cut.err" || fail "interrupt: MPI_ABORT"
+  [ ! -e "$work/cut.h5" ] || fail "interrupt: a final file was written"
+  run 2 resume "${slow[@]}" -resume -output "$work/cut.h5"
+  [ "$rc" -eq 0 ] || { cat "$work/resume.err" >&2; fail "interrupt: the resumed run failed"; }
+  grep -q "$kept of 20 tasks already finished" "$work/resume.out" || fail "interrupt: resume did not keep $kept tasks"
+  h5diff --exclude-path /run "$work/whole.h5" "$work/cut.h5" >"$work/diff.txt" 2>&1 ||
+    { head -5 "$work/diff.txt" >&2; fail "interrupt: the resumed file differs from the uninterrupted one"; }
+  if /usr/bin/python3 -c "import h5py" 2>/dev/null; then
+    /usr/bin/python3 "$src/tests/ensemble/compare_bytes.py" "$work/whole.h5" "$work/cut.h5" ||
+      fail "interrupt: the resumed file's bytes differ from the uninterrupted one's"
+  else
+    echo "note: no python3 with h5py: byte-level comparison skipped (h5diff comparison done)"
+  fi
   ;;
 resume_files)
   run 1 good "${scene[@]}" -output "$work/good.h5"

@@ -9,7 +9,9 @@
 //                        pressure, t_x, t_y, state 0 open 1 stick 2 slip), /cell_fields/cell_stress
 //                        (xx, yy, zz, yz, xz, xy) [PETSc names them <vector>_<field>].
 // Nothing is overwritten unless -output_overwrite; files are written under a temporary name
-// and renamed at the end, so a failed run leaves no half-written result.
+// and renamed at the end, every one of them complete, so a failed run leaves no half-written
+// result and any earlier one whole. A write error (a full disk) ends every rank with one message
+// and exit 1: the room for every write is reserved first (io/file_room.hpp).
 #include "gradfric/core/options.hpp"
 #include "gradfric/fem/pressure_response_recorder.hpp"
 #include "gradfric/fem/simulation.hpp"
@@ -45,7 +47,8 @@ public:
 private:
   void createFieldDMs(PlateModel& model);
   void writeFields(PlateModel& model, Vec state, double tSliding);
-  void writeXdmf();
+  void reserveSnapshotRoom(PlateModel& model);
+  void describeFields();
   MPI_Comm comm_;
   FemParameters params_;
   io::Provenance provenance_;

@@ -7,8 +7,10 @@
 
 namespace gradfric::fem {
 
-// Adds units, description and components attributes to the field datasets of fieldsPath and
-// writes xmfPath describing them. Throws std::runtime_error on failure.
-void describeFieldsAndWriteXdmf(const std::string& fieldsPath, const std::string& xmfPath);
+// Adds units, description and components attributes to the field datasets of fieldsFile (in
+// room reserved first, io::changeHdf5File) and writes xmfPath describing them, naming the fields
+// file `heavy` (its final name, beside the .xmf). Throws on failure (io::Hdf5Error naming the
+// file, std::runtime_error).
+void describeFieldsAndWriteXdmf(const std::string& fieldsFile, const std::string& heavy, const std::string& xmfPath);
 
 }  // namespace gradfric::fem

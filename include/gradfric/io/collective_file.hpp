@@ -1,22 +1,31 @@
 #pragma once
-// While a file is open on several ranks (parallel HDF5), an HDF5 failure on one rank (a full disk
-// inside a collective write) leaves the other ranks waiting inside the collective call, and
-// unwinding would reach collective closes that wait too: the job would hang. Inside a
-// CollectiveFileScope such a failure ends the job at once instead: one line naming the file and
-// what failed, then MPI_Abort. HDF5's own error stack is not printed inside the scope.
+// HDF5 failures while a file is written. Inside a FileWriteScope a failed HDF5 call throws an
+// Hdf5Error whose message names the file, the rank and the reason ("writing out.h5.partial failed
+// on rank 1: file write failed: No space left on device"), and HDF5's own error stack is not
+// printed. The error is this rank's alone: the caller agrees on it with the other ranks
+// (agreeOnError) before any collective call, so that every rank ends with the same message and
+// exit code, without MPI_Abort. Collective HDF5 writes are kept from failing at all: every change
+// to a file's metadata is made by rank 0 alone, serially, in room reserved first (file_room.hpp);
+// the ranks write raw data only, into storage allocated when the file was created.
 #include <mpi.h>
 
 #include <string>
 
 namespace gradfric::io {
 
-class CollectiveFileScope {
+class FileWriteScope {
 public:
-  CollectiveFileScope(MPI_Comm comm, const std::string& path);
-  ~CollectiveFileScope();
-  CollectiveFileScope(const CollectiveFileScope&) = delete;
-  CollectiveFileScope& operator=(const CollectiveFileScope&) = delete;
+  explicit FileWriteScope(const std::string& path);
+  ~FileWriteScope();
+  FileWriteScope(const FileWriteScope&) = delete;
+  FileWriteScope& operator=(const FileWriteScope&) = delete;
+
+private:
+  std::string outer_;  // the path of an enclosing scope: the innermost one names the file
 };
+
+// "writing <path> failed on rank <r>: <detail>", r the rank in MPI_COMM_WORLD.
+std::string writeFailure(const std::string& path, const std::string& detail);
 
 // The innermost entry of HDF5's error stack ("No space left on device", "truncated file: ..."),
 // or "" if the stack is empty: the most specific reason HDF5 gives.

@@ -41,6 +41,8 @@ public:
   hid_t get() const { return id_; }
   operator hid_t() const { return id_; }
   bool valid() const { return id_ >= 0; }
+  // Gives up ownership without closing (the caller closes and checks the result).
+  hid_t release() { return std::exchange(id_, H5I_INVALID_HID); }
   void reset() {
     if (id_ >= 0) Close(id_);
     id_ = H5I_INVALID_HID;
@@ -57,6 +59,7 @@ using H5Space = Hdf5Handle<H5Sclose>;
 using H5Type = Hdf5Handle<H5Tclose>;
 using H5Attribute = Hdf5Handle<H5Aclose>;
 using H5PropertyList = Hdf5Handle<H5Pclose>;
+using H5Object = Hdf5Handle<H5Oclose>;
 
 }  // namespace gradfric::io
 

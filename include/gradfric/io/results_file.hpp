@@ -1,10 +1,12 @@
 #pragma once
 // The results file of an ensemble run: one parallel HDF5 file (MPI-IO driver) per run.
 //
-// Every dataset is created, allocated and filled once, collectively, when the file is created;
+// Every dataset is created, allocated and filled once, by rank 0, when the file is created;
 // after that a finished task is written by the rank that ran it alone (independent MPI-IO
 // writes into storage that already exists, so no HDF5 metadata changes and nothing is gathered
-// on one rank). A task writes its data first and its `done` flag last: a run killed at any
+// on one rank). Attributes are changed by rank 0 alone in the closed file, in room reserved
+// first: a full disk ends every rank with the same CollectiveError naming the file, and a file
+// being resumed is left as it was (src/io/results_file.cpp). A task writes its data first and its `done` flag last: a run killed at any
 // moment leaves a readable file in which every task flagged done is complete. The statistics
 // are written, and the `complete` attribute set, collectively at the end.
 // The layout is documented field by field in docs/ensemble.md.
@@ -16,7 +18,9 @@
 #include <mpi.h>
 
 #include <cstdint>
+#include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace gradfric::io {
@@ -78,7 +82,8 @@ struct TaskOutput {
 
 class ResultsFile {
 public:
-  // Collective: creates (truncates) path and every dataset of the layout.
+  // Collective: creates (truncates) path and every dataset of the layout; on failure (CollectiveError
+  // on every rank) path is removed.
   static ResultsFile create(MPI_Comm comm, const std::string& path, const EnsembleLayout& layout,
                             const SweepTable& sweep, const std::vector<Attribute>& scene);
   // Collective: opens an existing results file for reading and writing (resume).
@@ -95,9 +100,11 @@ public:
   std::vector<Attribute> sceneAttributes() const;
   bool complete() const;
 
-  // Independent: only the rank that ran the task calls it. Data first, then the done flag.
+  // Independent: only the rank that ran the task calls it. Data first, then the done flag. A
+  // failure is this rank's (Hdf5Error naming the file): the caller agrees on it.
   void writeTask(const TaskOutput& task);
-  // Collective: pushes everything written so far to the file (MPI_File_sync).
+  // Collective: pushes everything written so far to the file (MPI_File_sync). Every collective
+  // member below throws the same CollectiveError on every rank when it fails.
   void flush();
   // Collective: copies every task of the results file at `path` (P' x R' with P' <= P, R' <= R:
   // a finished file being extended) into the same (point, realisation) slots of this file, raw
@@ -122,14 +129,21 @@ public:
   void markComplete();
   // Collective.
   void close();
+  // Where the done flags are: their byte offset in the file and their count (P x R, one byte
+  // each, row-major), or {0, 0}. Read with plain file reads by the interruption notice.
+  std::pair<std::uint64_t, std::uint64_t> doneFlags() const;
 
 private:
   ResultsFile() = default;
+  void openFile(unsigned flags);
   void openDatasets();
-  void readLayout();
+  // Collective: every rank closes the file, rank 0 applies change to it alone (changeHdf5File,
+  // `bytes` of room), the ranks agree on the outcome and open it again.
+  void changeOnRank0(std::uint64_t bytes, const std::function<void(hid_t file)>& change);
 
   MPI_Comm comm_ = MPI_COMM_NULL;
   int rank_ = 0;
+  std::string path_;
   H5File file_;
   EnsembleLayout layout_;
   SweepTable sweep_;
