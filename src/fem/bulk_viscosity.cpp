@@ -47,11 +47,6 @@ BulkViscosity::BulkViscosity(const PlateMesh& mesh, double youngsModulus, double
   GF_CALL(DMCreateLocalVector(mesh.dm(), xLocal_.out()));
   GF_CALL(VecDuplicate(xLocal_, fLocal_.out()));
   GF_CALL(DMCreateGlobalVector(mesh.dm(), fGlobal_.out()));
-  shared_ = mesh.orderedAssembly().sharesVertices();
-  if (shared_) {
-    corner_ = mesh.orderedAssembly().cornerSlots(3);
-    slots_.assign(mesh.orderedAssembly().slotCount(3), 0.0);
-  }
 }
 
 // The cell's viscous force on its corners' velocity slots, f[corner a] -= w_a (three values a
@@ -85,19 +80,15 @@ void BulkViscosity::addForce(Vec X, Vec F, ExactSum* energy, double dt) {
   GF_CALL(VecRestoreArray(fLocal_, &fl));
   GF_CALL(VecZeroEntries(fGlobal_));
   GF_CALL(DMLocalToGlobal(mesh_.dm(), fLocal_, ADD_VALUES, fGlobal_));
-  const OrderedAssembly& ordered = mesh_.orderedAssembly();
-  if (shared_) {  // the sums at the shared vertices in the global cell order
-    std::fill(slots_.begin(), slots_.end(), 0.0);
-    for (std::size_t i = 0; i < ordered.boundaryCells().size(); ++i) {
-      cellForce(ordered.boundaryCells()[i], x, &w);
-      for (int a = 0; a < 8; ++a)
-        for (int d = 0; d < 3; ++d) slots_[corner_[8 * i + a] + d] -= w[3 * a + d];
-    }
-    PetscScalar* g = nullptr;
-    GF_CALL(VecGetArray(fGlobal_, &g));
-    ordered.finish(3, slots_, g, 6, 3);
-    GF_CALL(VecRestoreArray(fGlobal_, &g));
-  }
+  PetscScalar* g = nullptr;  // the sums at the shared vertices in the global cell order
+  GF_CALL(VecGetArray(fGlobal_, &g));
+  mesh_.orderedAssembly().redo(
+      3, [&](PetscInt c, double* values) {
+        cellForce(c, x, &w);
+        for (int i = 0; i < 24; ++i) values[i] = -w[i];  // f - w is f + (-w), bit for bit
+      },
+      g, 6, 3);
+  GF_CALL(VecRestoreArray(fGlobal_, &g));
   GF_CALL(VecRestoreArrayRead(xLocal_, &x));
   GF_CALL(VecAXPY(F, 1.0, fGlobal_));  // only the force slots of fGlobal are non-zero
 }

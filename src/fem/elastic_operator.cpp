@@ -159,7 +159,8 @@ bool ElasticOperator::lastForceIsFor(Vec X) {
 }
 
 double ElasticOperator::energy(Vec X) {
-  if (!lastForceIsFor(X)) {  // the displacements of X through the displacement DM
+  const bool last = lastForceIsFor(X);  // collective
+  if (!last) {  // the displacements of X through the displacement DM
     if (!energyU_) {
       GF_CALL(VecDuplicate(uGlobal_, energyU_.out()));
       GF_CALL(VecDuplicate(uGlobal_, energyF_.out()));
@@ -174,8 +175,8 @@ double ElasticOperator::energy(Vec X) {
     GF_CALL(VecRestoreArrayRead(X, &x));
     forceSpecialised(energyU_, energyF_);
   }
-  Vec uVec = lastForceIsFor(X) ? uGlobal_.get() : energyU_.get();
-  Vec fVec = uVec == uGlobal_.get() ? fGlobal_.get() : energyF_.get();
+  Vec uVec = last ? uGlobal_.get() : energyU_.get();
+  Vec fVec = last ? fGlobal_.get() : energyF_.get();
   ExactSum e;
   const PetscScalar *u = nullptr, *f = nullptr;
   GF_CALL(VecGetArrayRead(uVec, &u));
@@ -255,18 +256,16 @@ void ElasticOperator::addStiffnessDiagonal(Vec diag) {
   GF_CALL(VecDuplicate(diag, assembled.out()));
   GF_CALL(VecZeroEntries(assembled));
   GF_CALL(DMLocalToGlobal(dmU_, local, ADD_VALUES, assembled));
-  const OrderedAssembly& ordered = mesh_.orderedAssembly();
-  if (shared_) {
-    std::vector<double> slots(ordered.slotCount(3), 0.0);
-    for (std::size_t i = 0; i < boundaryModulus_.size(); ++i)
-      for (int a = 0; a < 8; ++a)
-        for (int k = 0; k < 3; ++k)
-          slots[boundarySlots_[8 * i + a] + k] += boundaryModulus_[i] * element_.stiffness[25 * (3 * a + k)];
-    PetscScalar* g = nullptr;
-    GF_CALL(VecGetArray(assembled, &g));
-    ordered.finish(3, slots, g, 3, 0);
-    GF_CALL(VecRestoreArray(assembled, &g));
-  }
+  PetscScalar* g = nullptr;
+  GF_CALL(VecGetArray(assembled, &g));
+  mesh_.orderedAssembly().redo(
+      3, [&](PetscInt c, double* values) {
+        for (int a = 0; a < 8; ++a)
+          for (int k = 0; k < 3; ++k)  // c is a mesh cell: E in mesh order
+            values[3 * a + k] = cellModulus_[c] * element_.stiffness[25 * (3 * a + k)];
+      },
+      g, 3, 0);
+  GF_CALL(VecRestoreArray(assembled, &g));
   GF_CALL(VecAXPY(diag, 1.0, assembled));
   Vec v = local.release();
   GF_CALL(DMRestoreLocalVector(dmU_, &v));

@@ -37,7 +37,16 @@ OrderedAssembly::OrderedAssembly(DM dm, int nx, int ny, double hx, double hy, do
   const PetscInt* local = nullptr;
   const PetscSFNode* remote = nullptr;
   GF_CALL(PetscSFGetGraph(points, &roots, &leaves, &local, &remote));
-  if (roots < 0) return;  // no graph: a serial mesh
+  // Whether any rank shares a vertex, agreed by every rank whatever it found.
+  const auto agree = [&] {
+    int mine = shared_ > 0, any = 0;
+    GF_CALL_MPI(MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, comm_));
+    sharesAny_ = any != 0;
+  };
+  if (roots < 0) {  // no graph: a serial mesh
+    agree();
+    return;
+  }
   const PetscInt* degree = nullptr;
   GF_CALL(PetscSFComputeDegreeBegin(points, &degree));
   GF_CALL(PetscSFComputeDegreeEnd(points, &degree));
@@ -68,16 +77,11 @@ OrderedAssembly::OrderedAssembly(DM dm, int nx, int ny, double hx, double hy, do
     boundaryCells_.push_back(static_cast<PetscInt>(c));
     for (int a = 0; a < 8; ++a) boundaryCorner_.push_back(sharedIndex[cellVertices[8 * c + a]]);
   }
+  agree();
 }
 
 OrderedAssembly::~OrderedAssembly() {
   for (auto& [width, forest] : forests_) PetscSFDestroy(&forest);
-}
-
-bool OrderedAssembly::sharesVertices() const {
-  int mine = shared_ > 0, any = 0;
-  GF_CALL_MPI(MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, comm_));
-  return any != 0;
 }
 
 std::vector<PetscInt> OrderedAssembly::cornerSlots(int width) const {
@@ -123,6 +127,19 @@ void OrderedAssembly::finish(int width, std::vector<double>& slots, double* glob
       for (int a : cornerOrder_) sum += slots[(8 * s + a) * width + d];
       global[stride * ownedSharedBlock_[s] + offset + d] = sum;
     }
+}
+
+void OrderedAssembly::redo(int width, const std::function<void(PetscInt, double*)>& cornerValues, double* global,
+                           int stride, int offset) const {
+  if (!sharesAny_) return;
+  std::vector<double> slots(slotCount(width), 0.0), values(8 * width);
+  const std::vector<PetscInt> corner = cornerSlots(width);
+  for (std::size_t i = 0; i < boundaryCells_.size(); ++i) {
+    cornerValues(boundaryCells_[i], values.data());
+    for (int a = 0; a < 8; ++a)
+      for (int d = 0; d < width; ++d) slots[corner[8 * i + a] + d] += values[width * a + d];
+  }
+  finish(width, slots, global, stride, offset);
 }
 
 }  // namespace gradfric::fem

@@ -158,14 +158,11 @@ std::vector<double> PlateMesh::assemble(const std::function<double(PetscInt, int
   GF_CALL(DMLocalToGlobal(dm_, local, ADD_VALUES, global));
   PetscScalar* g = nullptr;
   GF_CALL(VecGetArray(global, &g));
-  const OrderedAssembly& ordered = *ordered_;
-  if (ordered.sharesVertices()) {
-    std::vector<double> slots(ordered.slotCount(1), 0.0);
-    const std::vector<PetscInt> corner = ordered.cornerSlots(1);
-    for (std::size_t i = 0; i < ordered.boundaryCells().size(); ++i)
-      for (int a = 0; a < 8; ++a) slots[corner[8 * i + a]] += share(ordered.boundaryCells()[i], a);
-    ordered.finish(1, slots, g, 6, 0);
-  }
+  ordered_->redo(
+      1, [&](PetscInt c, double* values) {
+        for (int a = 0; a < 8; ++a) values[a] = share(c, a);
+      },
+      g, 6, 0);
   std::vector<double> sums(ownedBlocks_);
   for (PetscInt b = 0; b < ownedBlocks_; ++b) sums[b] = g[6 * b];
   GF_CALL(VecRestoreArray(global, &g));

@@ -44,9 +44,6 @@ private:
   std::array<std::array<double, 3>, 8> gradient_;
   std::vector<double> cellSpeed_;  // c_d of each local cell (graded E)
   OwnedVec xLocal_, fLocal_, fGlobal_;
-  bool shared_ = false;  // some vertex has cells on two ranks (the ordered assembly redoes its sums)
-  std::vector<PetscInt> corner_;
-  std::vector<double> slots_;
 };
 
 }  // namespace gradfric::fem

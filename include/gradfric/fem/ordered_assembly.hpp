@@ -16,6 +16,7 @@
 #include <petscsf.h>
 
 #include <array>
+#include <functional>
 #include <map>
 #include <vector>
 
@@ -34,7 +35,7 @@ public:
   OrderedAssembly(const OrderedAssembly&) = delete;
   OrderedAssembly& operator=(const OrderedAssembly&) = delete;
 
-  bool sharesVertices() const;  // collective: some vertex has cells on two ranks
+  bool sharesVertices() const { return sharesAny_; }  // on some rank a vertex has cells on two ranks
   // The local cells with a corner on a shared vertex, and for each of their 8 corners where its
   // `width` values go in a slot buffer of slotCount(width) zeros (unshared corners: a scratch slot).
   const std::vector<PetscInt>& boundaryCells() const { return boundaryCells_; }
@@ -44,11 +45,16 @@ public:
   // Collective. Sends the slots to the owners and sets, for every owned shared vertex and d <
   // width, global[stride * block + offset + d] to the sum of its slots in the cells' global order.
   void finish(int width, std::vector<double>& slots, double* global, int stride, int offset) const;
+  // Collective; nothing when no vertex is shared. The same from each boundary cell's own values:
+  // cornerValues(cell, values) sets values[width * a + d] for its corners a = 0..7.
+  void redo(int width, const std::function<void(PetscInt, double*)>& cornerValues, double* global, int stride,
+            int offset) const;
 
 private:
   PetscSF slotForest(int width) const;
 
   MPI_Comm comm_;
+  bool sharesAny_ = false;
   std::size_t shared_ = 0, ownedShared_ = 0;  // shared vertices: the owned ones first, then the ghosts
   std::vector<PetscInt> ownedSharedBlock_;
   std::vector<int> ghostOwner_;
