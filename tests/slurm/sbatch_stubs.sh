@@ -14,16 +14,7 @@ rm -rf "$work" && mkdir -p "$work/bin"
 failures=0
 fail() { echo "FAIL [$case]: $*" >&2; failures=$((failures + 1)); }
 
-cat > "$work/bin/srun" <<'STUB'
-#!/bin/bash
-# Stub srun: records its arguments, then waits for $STUB_DIR/finish (exits $STUB_STATUS) or a
-# SIGTERM (records it, exits 143 as a stopped srun does).
-echo "srun $*" >> "$STUB_DIR/calls"
-trap 'echo "srun terminated" >> "$STUB_DIR/calls"; exit 143' TERM
-echo started > "$STUB_DIR/started"
-while [ ! -e "$STUB_DIR/finish" ]; do sleep 0.1; done
-exit "${STUB_STATUS:-0}"
-STUB
+cp "$source/tests/slurm/srun_stub.sh" "$work/bin/srun"  # waits for $STUB_DIR/finish or SIGTERM
 cat > "$work/bin/scontrol" <<'STUB'
 #!/bin/bash
 echo "scontrol $*" >> "$STUB_DIR/calls"

@@ -11,16 +11,8 @@ work=$2
 rm -rf "$work" && mkdir -p "$work/bin"
 failures=0
 fail() { echo "FAIL [$case]: $*" >&2; failures=$((failures + 1)); }
-cat > "$work/bin/srun" <<'STUB'
-#!/bin/bash
-# Records its arguments; ends at once with $STUB_STATUS, or with STUB_WAIT=1 when $STUB_DIR/finish
-# appears or on SIGTERM (exit 143, as a stopped srun).
-echo "srun $*" >> "$STUB_DIR/calls"
-trap 'echo "srun terminated" >> "$STUB_DIR/calls"; exit 143' TERM
-echo started > "$STUB_DIR/started"
-while [ "${STUB_WAIT:-0}" = 1 ] && [ ! -e "$STUB_DIR/finish" ]; do sleep 0.1; done
-exit "${STUB_STATUS:-0}"
-STUB
+cp "$source/tests/slurm/srun_stub.sh" "$work/bin/srun"
+export STUB_WAIT=0  # srun ends at once, unless a case sets STUB_WAIT=1
 printf '#!/bin/bash\necho "scontrol $*" >> "$STUB_DIR/calls"\n' > "$work/bin/scontrol"
 printf '#!/bin/sh\necho "  -output <>: HDF5 results file"\n' > "$work/bin/fem-new"
 printf '#!/bin/sh\nexit 0\n' > "$work/bin/design-fake"
