@@ -8,8 +8,8 @@ from . import _h5
 STUDY_FORMATS = ("gradfric-accuracy-study",)
 DESIGN_FORMATS = ("gradfric-design",)
 
-# The study file stores no units or descriptions (src/study/study_file.cpp): these are the
-# columns' meanings from docs/accuracy.md and docs/accuracy_fem_history.md.
+# Study files written before they described their columns (src/study/study_file.cpp writes the
+# same words as units and description attributes now).
 _STUDY_COLUMNS = {
     "setting": ("", "the knob's value at this rung (its unit: coordinate setting_unit)"),
     "mu_s_error": ("1", "relative error of the global mu_s (coordinate error_meaning)"),
@@ -53,9 +53,9 @@ def _described(name, attrs, table):
 def read_study(f):
     """Ladders stacked along `ladder`, rungs along `rung` (NaN where a ladder is shorter or lacks
     a column); the ladders' texts (knob, unit, error_meaning, ...) are coordinates along ladder."""
-    ladders = [name for name in f if hasattr(f[name], "keys")]
+    ladders = [name for name in f if hasattr(f[name], "keys") and name != "provenance"]
     rungs = max([len(f[name]["setting"]) for name in ladders] + [0])
-    columns = sorted({c for name in ladders for c in f[name]}, key=lambda c: (c != "setting", c))
+    columns = sorted({c for name in ladders for c in f[name] if c != "rung"}, key=lambda c: (c != "setting", c))
     texts = sorted({t for name in ladders for t in f[name].attrs})
     data = {}
     for column in columns:
@@ -64,13 +64,20 @@ def read_study(f):
             if column in f[name]:
                 v = f[name][column][()]
                 table[i, :len(v)] = v
-        data[column] = xr.Variable(("ladder", "rung"), table, _described(column, {}, _STUDY_COLUMNS))
+        stored = next((f[name][column] for name in ladders if column in f[name]), None)
+        attrs = {k: _h5.text(stored.attrs[k]) for k in ("units", "description") if stored is not None and k in stored.attrs}
+        if column == "setting":  # its unit is the ladder's knob unit (coordinate setting_unit)
+            attrs = {"units": "", "description": "the knob's value at this rung (its unit: coordinate setting_unit)"}
+        data[column] = xr.Variable(("ladder", "rung"), table, _described(column, attrs, _STUDY_COLUMNS))
     coords = {"ladder": ladders, "rung": np.arange(rungs),
               "rungs": ("ladder", [len(f[name]["setting"]) for name in ladders], {"units": "1", "description": "rungs of each ladder"})}
     for t in texts:
         key = "setting_unit" if t == "unit" else t
         coords[key] = ("ladder", np.array([_h5.text(f[name].attrs.get(t, "")) for name in ladders], dtype=object))
-    return xr.Dataset(data, coords, _h5.attributes(f)), {}
+    attrs = _h5.attributes(f)
+    if "provenance" in f:
+        attrs.update(_h5.provenance(f["provenance"]))
+    return xr.Dataset(data, coords, attrs), {}
 
 
 def read_design(f):

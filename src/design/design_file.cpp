@@ -3,6 +3,7 @@
 
 #include "gradfric/core/petsc_call.hpp"
 #include "gradfric/io/hdf5_attributes.hpp"
+#include "gradfric/io/hdf5_datasets.hpp"
 #include "gradfric/io/provenance.hpp"
 #include "gradfric/study/study_file.hpp"
 
@@ -50,31 +51,14 @@ std::pair<std::string, std::string> columnMeaning(const std::string& column, con
   return {"", column};
 }
 
-// A dimension scale at the root holding 0, 1, ...: h5py and xarray (h5netcdf) see named axes.
-io::H5Dataset indexScale(hid_t file, const char* name, hsize_t size, const char* description) {
-  io::H5Space space(GF_H5(H5Screate_simple(1, &size, nullptr)));
-  io::H5Dataset d(GF_H5(H5Dcreate2(file, name, H5T_STD_I32LE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT)));
-  std::vector<int> index(size);
-  for (hsize_t i = 0; i < size; ++i) index[i] = static_cast<int>(i);
-  if (size) GF_H5(H5Dwrite(d, H5T_NATIVE_INT, H5S_ALL, H5S_ALL, H5P_DEFAULT, index.data()));
-  io::describe(d, "1", description);
-  io::makeDimensionScale(d, name);
-  return d;
-}
-
 // One table: a group of described float64 columns along scale, its texts as string attributes.
 void writeTable(hid_t file, const study::LadderTable& t, hid_t scale, const Problem& problem,
                 const RunParameters& record) {
   io::H5Group group = io::createGroup(file, t.name.c_str());
   for (const auto& [name, value] : t.texts) io::writeStringAttribute(group, name, value);
   for (const auto& [name, values] : t.columns) {
-    const hsize_t n = values.size();
-    io::H5Space space(GF_H5(H5Screate_simple(1, &n, nullptr)));
-    io::H5Dataset d(GF_H5(H5Dcreate2(group, name.c_str(), H5T_IEEE_F64LE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT)));
-    if (n) GF_H5(H5Dwrite(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()));
     const auto [units, description] = columnMeaning(name, problem, record);
-    io::describe(d, units, description);
-    io::attachScale(d, scale, 0);
+    io::writeDescribedColumn(group, name, values, units, description, scale);
   }
 }
 
@@ -158,8 +142,8 @@ void saveDesignFile(MPI_Comm comm, const io::OutputPlan& plan, const Problem& pr
     io::H5File out(GF_H5(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT)));
     for (const auto& [name, value] : file.attributes) io::writeStringAttribute(out, name, value);
     const io::H5Dataset evaluation =
-        indexScale(out, "evaluation", file.ladders.front().columns.front().second.size(), "evaluation index (row of /evaluations)");
-    const io::H5Dataset row = indexScale(out, "row", 1, "the one row of /design, /verification and /fem_verification");
+        io::createIndexScale(out, "evaluation", file.ladders.front().columns.front().second.size(), "evaluation index (row of /evaluations)");
+    const io::H5Dataset row = io::createIndexScale(out, "row", 1, "the one row of /design, /verification and /fem_verification");
     for (const auto& t : file.ladders) writeTable(out, t, t.name == "evaluations" ? evaluation.get() : row.get(), problem, record);
     io::H5Group provenance = io::createGroup(out, "provenance");
     io::writeProvenance(provenance, *runProvenance);

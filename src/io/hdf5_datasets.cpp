@@ -1,6 +1,8 @@
 // Datasets of the gradfric files (include/gradfric/io/hdf5_datasets.hpp).
 #include "gradfric/io/hdf5_datasets.hpp"
 
+#include "gradfric/io/hdf5_attributes.hpp"
+
 #include <cstring>
 
 namespace gradfric::io {
@@ -49,6 +51,27 @@ void writeSlab(hid_t dataset, hid_t memType, const std::vector<hsize_t>& offset,
   GF_H5(H5Sselect_hyperslab(fileSpace, H5S_SELECT_SET, offset.data(), nullptr, count.data(), nullptr));
   H5Space memSpace(GF_H5(H5Screate_simple(1, &total, nullptr)));
   GF_H5(H5Dwrite(dataset, memType, memSpace, fileSpace, dxpl, data));
+}
+
+H5Dataset createIndexScale(hid_t parent, const char* name, hsize_t size, const std::string& description) {
+  H5Space space(GF_H5(H5Screate_simple(1, &size, nullptr)));
+  H5Dataset d(GF_H5(H5Dcreate2(parent, name, H5T_STD_I32LE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT)));
+  std::vector<int> index(size);
+  for (hsize_t i = 0; i < size; ++i) index[i] = static_cast<int>(i);
+  if (size) GF_H5(H5Dwrite(d, H5T_NATIVE_INT, H5S_ALL, H5S_ALL, H5P_DEFAULT, index.data()));
+  describe(d, "1", description);
+  makeDimensionScale(d, name);
+  return d;
+}
+
+void writeDescribedColumn(hid_t parent, const std::string& name, const std::vector<double>& values,
+                          const std::string& units, const std::string& description, hid_t scale) {
+  const hsize_t n = values.size();
+  H5Space space(GF_H5(H5Screate_simple(1, &n, nullptr)));
+  H5Dataset d(GF_H5(H5Dcreate2(parent, name.c_str(), H5T_IEEE_F64LE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT)));
+  if (n) GF_H5(H5Dwrite(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()));
+  describe(d, units, description);
+  attachScale(d, scale, 0);
 }
 
 }  // namespace gradfric::io

@@ -166,21 +166,34 @@ with gradfric.open(path("sweep.h5")) as ds, h5py.File(path("sweep.h5"), "r") as 
     check_provenance(ds, 2)
     assert check_against_file(ds, path("sweep.h5")) >= 40
 
-# 4. The accuracy study (no units in the file: the package's, from docs/accuracy.md).
-run(study, "-options_file", os.path.join(src, "input", "study_sbm_reduced.opts"), "-output", path("study.h5"))
+# 4. The accuracy study: described columns along each ladder's rung scale, the provenance record.
+study_file = os.path.join(src, "input", "study_sbm_reduced.opts")
+run(study, "-options_file", study_file, "-output", path("study.h5"))
 with gradfric.open(path("study.h5")) as ds, h5py.File(path("study.h5"), "r") as f:
-    ladders = sorted(f)
+    ladders = sorted(name for name in f if name != "provenance")
     rungs = max(len(f[name]["setting"]) for name in ladders)
     expect_dims(ds, {"ladder": len(ladders), "rung": rungs})
     assert list(ds["ladder"].values) == ladders and ds.attrs["format"] == "gradfric-accuracy-study"
     for name in ladders:
         row = ds.sel(ladder=name)
         k = int(row["rungs"])
-        assert k == len(f[name]["setting"]) and row["knob"].item() == f[name].attrs["knob"].decode()
+        assert k == len(f[name]["setting"]) and row["knob"].item() == f[name].attrs["knob"]
+        assert row["setting_unit"].item() == f[name]["setting"].attrs["units"]
         for column in f[name]:
+            if column == "rung":
+                assert list(f[name][column][:]) == list(range(k))
+                continue
+            assert f[name][column].attrs["description"] and "units" in f[name][column].attrs, (name, column)
+            assert list(f[name][column].dims[0].keys()) == ["rung"], (name, column)
             assert same(row[column][:k], f[name][column][:]) and np.isnan(row[column][k:]).all(), (name, column)
     assert ds["wall_seconds"].attrs["units"] == "s" and ds["mu_s_error"].dims == ("ladder", "rung")
+    assert ds["mu_s"].attrs["description"] == f[ladders[0]]["mu_s"].attrs["description"]
     assert ds.attrs["sbm_N"] == "20" and isinstance(ds.attrs["study_knobs"], str)
+    check_provenance(ds, 2, study_file)
+for name in ("N", "dt_verlet"):  # each ladder opens in plain xarray with its named axis
+    plain = xr.open_dataset(path("study.h5"), engine="h5netcdf", group=name)
+    assert plain["mu_s"].dims == ("rung",) and plain["mu_s"].attrs["units"] == "1", name
+    plain.close()
 
 # 5. A design: described columns on named axes and the provenance record, also to plain xarray.
 design_file = os.path.join(src, "input", "design_friction_delta.opts")

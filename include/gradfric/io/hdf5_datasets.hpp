@@ -28,6 +28,14 @@ H5Dataset createStringDataset(hid_t parent, const char* name, hsize_t count, siz
 void writeStrings(hid_t dataset, const std::vector<std::string>& values, hid_t dxpl);
 std::vector<std::string> readStrings(hid_t dataset);
 
+// A dimension scale named name holding 0, 1, ..., size - 1 (int32, described): h5py and xarray
+// (h5netcdf) see a named axis.
+H5Dataset createIndexScale(hid_t parent, const char* name, hsize_t size, const std::string& description);
+// A float64 column written whole, described (units, description) and attached to scale along its
+// one dimension.
+void writeDescribedColumn(hid_t parent, const std::string& name, const std::vector<double>& values,
+                          const std::string& units, const std::string& description, hid_t scale);
+
 // Writes a hyperslab [offset, offset + count) of a dataset from contiguous memory.
 void writeSlab(hid_t dataset, hid_t memType, const std::vector<hsize_t>& offset, const std::vector<hsize_t>& count,
                const void* data, hid_t dxpl);

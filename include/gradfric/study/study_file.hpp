@@ -1,7 +1,8 @@
 #pragma once
 // The accuracy-study file (layout in docs/accuracy.md), shared by the SBM and FEM studies: root
-// string attributes (format, model, every option), one group per ladder with float64 datasets
-// and string attributes. Planned before any work (io::OutputPlan: refused on every rank alike),
+// string attributes (format, model, every option), one group per ladder with described float64
+// datasets along the ladder's dimension scale `rung` and string attributes, and the provenance
+// record in /provenance. Planned before any work (io::OutputPlan: refused on every rank alike),
 // written by rank 0 under <output>.partial and renamed into place when complete.
 #include "gradfric/core/options.hpp"
 #include "gradfric/io/output_plan.hpp"
@@ -38,9 +39,5 @@ std::vector<std::pair<std::string, std::string>> studyAttributes(const RunParame
 // Collective: rank 0 writes the file under the plan's temporary name; then it is renamed into
 // place. A failure is an error on every rank (CollectiveError) and leaves any earlier file whole.
 void saveStudyFile(MPI_Comm comm, const io::OutputPlan& plan, const StudyFile& file);
-
-// The HDF5 pieces (serial file).
-void writeVector(hid_t group, const std::string& name, const std::vector<double>& values);
-void writeText(hid_t object, const std::string& name, const std::string& value);
 
 }  // namespace gradfric::study
