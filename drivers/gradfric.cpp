@@ -2,9 +2,9 @@
 //
 //   mpiexec -n 2 gradfric -options_file input/default.opts [-sbm_N 60 ...] [-help]
 //
-// -model sbm (the default and only choice; the FEM is gradfric-fem) runs the spring-block scene:
-// every (sweep point, realisation) task spread over the ranks, results in one HDF5 file (-output). -help lists every option with its default and unit. See README.md and
-// docs/ensemble.md.
+// Runs the spring-block scene (the FEM is the driver gradfric-fem): every (sweep point,
+// realisation) task spread over the ranks, results in one HDF5 file (-output). -help lists every
+// option with its default and unit. See README.md and docs/ensemble.md.
 #include "gradfric/core/driver.hpp"
 #include "gradfric/core/options.hpp"
 #include "gradfric/ensemble/scene.hpp"
@@ -55,8 +55,7 @@ int main(int argc, char** argv) {
     using namespace gradfric;
     using namespace gradfric::ensemble;
     RunParameters record;
-    OptionReader model(comm, "", "Model", &record);
-    model.choice("model", "sbm", {"sbm"}, "the spring-block model (the finite-element model is the gradfric-fem driver)");
+    refuseRetiredOption("-model", "gradfric runs the spring-block model only; the finite-element model is the driver gradfric-fem");
     const PlotRequest plot = readPlotOptions(comm, &record);
     const std::optional<Scene> scene = readScene(comm, &record);  // every option, checked
     if (!scene) return;                                           // -help

@@ -335,6 +335,14 @@ void refuseRenamedOption(const std::string& old, const std::string& now, const s
   throw InputError("invalid option " + old + shown + ": " + why + "; use " + now + shown);
 }
 
+void refuseRetiredOption(const std::string& old, const std::string& why) {
+  char value[256] = "";
+  PetscBool set = PETSC_FALSE;
+  GF_CALL(PetscOptionsGetString(nullptr, nullptr, old.c_str(), value, sizeof value, &set));
+  if (!set) return;
+  throw InputError("invalid option " + old + (value[0] ? std::string(" = ") + value : "") + ": " + why);
+}
+
 void refuseRenamedRunControl() {
   const std::pair<const char*, const char*> renamed[] = {
       {"-fem_output", "-output"},          {"-fem_output_overwrite", "-output_overwrite"},

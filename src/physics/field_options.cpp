@@ -2,6 +2,7 @@
 
 #include "gradfric/core/input_error.hpp"
 #include "gradfric/core/petsc_call.hpp"
+#include "gradfric/io/collective_file.hpp"
 #include "gradfric/physics/property_sampler.hpp"
 
 #include <hdf5.h>
@@ -33,15 +34,7 @@ bool endsWith(const std::string& text, const std::string& tail) {
 
 FieldMap readHdf5Map(const std::string& option, const std::string& path, const std::string& dataset,
                      const std::string& datasetOption) {
-  H5E_auto2_t handler = nullptr;
-  void* data = nullptr;
-  H5Eget_auto2(H5E_DEFAULT, &handler, &data);
-  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // our own message instead of HDF5's stack
-  struct Restore {
-    H5E_auto2_t h;
-    void* d;
-    ~Restore() { H5Eset_auto2(H5E_DEFAULT, h, d); }
-  } restore{handler, data};
+  const io::Hdf5PrintingOff quiet;  // our own message instead of HDF5's stack
   auto refuse = [&](const std::string& what) { throw InputError(option, path, what); };
   {
     std::ifstream probe(path);

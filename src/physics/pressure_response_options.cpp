@@ -3,6 +3,7 @@
 
 #include "gradfric/core/format.hpp"
 #include "gradfric/core/input_error.hpp"
+#include "gradfric/io/collective_file.hpp"
 #include "gradfric/io/hdf5_attributes.hpp"
 #include "gradfric/physics/field_options.hpp"
 
@@ -32,15 +33,7 @@ std::vector<std::string> splitCommas(const std::string& text) {
 // option with its resolved value); refused when the file has none or the plate had property fields.
 ResponseGrading gradingOfFemFile(const std::string& option, const std::string& optionValue, const std::string& path) {
   auto refuse = [&](const std::string& what) { throw InputError(option, optionValue, path + ": " + what); };
-  H5E_auto2_t handler = nullptr;
-  void* data = nullptr;
-  H5Eget_auto2(H5E_DEFAULT, &handler, &data);
-  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-  struct Restore {
-    H5E_auto2_t h;
-    void* d;
-    ~Restore() { H5Eset_auto2(H5E_DEFAULT, h, d); }
-  } restore{handler, data};
+  const io::Hdf5PrintingOff quiet;  // our own message instead of HDF5's stack
   std::map<std::string, std::string> scene;
   {
     const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
@@ -85,10 +78,7 @@ ResponseGrading gradingOfFemFile(const std::string& option, const std::string& o
 // The top of the loading window gradfric-fem fitted the file's g on (the attribute mu_window of
 // /pressure_response/g), or 0 when the file has none.
 double measuredUpTo(const std::string& path) {
-  H5E_auto2_t handler = nullptr;
-  void* data = nullptr;
-  H5Eget_auto2(H5E_DEFAULT, &handler, &data);
-  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  const io::Hdf5PrintingOff quiet;  // a file without the attribute is not an error
   double window[2] = {0.0, 0.0};
   const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   if (file >= 0) {
@@ -105,7 +95,6 @@ double measuredUpTo(const std::string& path) {
     }
     H5Fclose(file);
   }
-  H5Eset_auto2(H5E_DEFAULT, handler, data);
   return std::isfinite(window[1]) && window[1] > 0.0 ? window[1] : 0.0;
 }
 

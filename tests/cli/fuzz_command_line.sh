@@ -142,7 +142,7 @@ sbm)
   run 2 -friction_observables "$G" -friction_observables mu_s,bogus
   run 2 -sbm_integrator "$G" -sbm_integrator euler
   run 2 -grading_profile "$G" -grading_profile ""
-  run 2 -model "$G" -model fem
+  run 2 "-model = fem: gradfric runs the spring-block model only; the finite-element model is the driver gradfric-fem" "$G" -model fem
   run 2 -ensemble_schedule "$G" -ensemble_schedule random
   run 2 -ensemble_history "$G" -ensemble_history maybe
   # Stray words after a value and empty list items: refused, not ignored (PETSc skips them).
@@ -179,7 +179,7 @@ sbm)
   run 2 "-ouput \\(did you mean -output\\?\\)" "$G" -ouput x.h5
   run 2 "-outptu \\(did you mean -output\\?\\)" "$G" -outptu x.h5
   run 2 "did you mean -ensemble_realisations" "$G" -ensmble_realisations 3
-  run 2 "did you mean -model" "$G" -mdoel sbm
+  run 2 "did you mean -plot_dir" "$G" -plot_dri figures
   run 2 "-sbm_dealta" "$G" -sbm_dealta 0.1
   run 2 "did you mean -grading_profile" "$G" -grading_profil linear
   run 2 -sbm_N "$G" --sbm_N 1

@@ -112,6 +112,9 @@ void checkUnusedOptions(MPI_Comm comm, const std::vector<std::string>& strictPre
 // InputError "invalid option <old> = <value>: <why>; use <now> = <value>" instead of running with
 // a silently ignored value.
 void refuseRenamedOption(const std::string& old, const std::string& now, const std::string& why);
+// An option that no longer exists: if `old` is set, throws InputError "invalid option <old> =
+// <value>: <why>".
+void refuseRetiredOption(const std::string& old, const std::string& why);
 
 // The options every driver names one way for its results file: -output, -output_overwrite,
 // -resume. The spellings of before (-fem_output, -ensemble_resume, ...) are refused with the new one.

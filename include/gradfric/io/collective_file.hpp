@@ -31,7 +31,10 @@ std::string writeFailure(const std::string& path, const std::string& detail);
 // or "" if the stack is empty: the most specific reason HDF5 gives.
 std::string innermostHdf5Reason();
 
-// Runs f with HDF5's automatic error printing switched off (checks that expect failures).
+// HDF5's automatic error printing switched off for the scope's lifetime (checks that expect
+// failures, readers that give their own message), restored at its end.
+class Hdf5PrintingOff;
+// Runs f with HDF5's automatic error printing switched off.
 template <class F>
 auto withoutHdf5Printing(F&& f) -> decltype(f());
 
@@ -41,17 +44,24 @@ auto withoutHdf5Printing(F&& f) -> decltype(f());
 
 namespace gradfric::io {
 
+class Hdf5PrintingOff {
+public:
+  Hdf5PrintingOff() {
+    H5Eget_auto2(H5E_DEFAULT, &function_, &data_);
+    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  }
+  ~Hdf5PrintingOff() { H5Eset_auto2(H5E_DEFAULT, function_, data_); }
+  Hdf5PrintingOff(const Hdf5PrintingOff&) = delete;
+  Hdf5PrintingOff& operator=(const Hdf5PrintingOff&) = delete;
+
+private:
+  H5E_auto2_t function_ = nullptr;
+  void* data_ = nullptr;
+};
+
 template <class F>
 auto withoutHdf5Printing(F&& f) -> decltype(f()) {
-  H5E_auto2_t function = nullptr;
-  void* data = nullptr;
-  H5Eget_auto2(H5E_DEFAULT, &function, &data);
-  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-  struct Restore {
-    H5E_auto2_t function;
-    void* data;
-    ~Restore() { H5Eset_auto2(H5E_DEFAULT, function, data); }
-  } restore{function, data};
+  const Hdf5PrintingOff quiet;
   return f();
 }
 
