@@ -29,15 +29,13 @@ static const char help[] =
     "(spring-block ensembles; one parameter: root finder, several: PETSc TAO, -tao_type nm|pounders).\n"
     "-help lists all options.\n\n";
 
-static int designStatus = 0;  // the search's outcome, returned once the driver has finished cleanly
-
 int main(int argc, char** argv) {
-  const int status = gradfric::runDriver(argc, argv, help, [](MPI_Comm comm) {
+  return gradfric::runDriver(argc, argv, help, [](MPI_Comm comm) {
     using namespace gradfric;
     using namespace gradfric::design;
     RunParameters record;
     const std::optional<Problem> problem = readProblem(comm, &record);  // every option, checked
-    if (!problem) return;                                                 // -help
+    if (!problem) return 0;                                               // -help
     const io::OutputPlan plan = planDesignFile(comm, *problem);         // before any work
     record.print(comm, "gradfric-design parameters");
     PetscPrintf(comm, "Every realisation measures mu_s only and stops at its confirmed peak (%d x %d blocks, dt %.4g s).\n",
@@ -63,7 +61,6 @@ int main(int argc, char** argv) {
       if (std::system(command.c_str()) != 0)
         std::fprintf(stderr, "gradfric-design: warning: plotting failed (%s); the design file is complete\n", command.c_str());
     }
-    designStatus = exitCode(result.status);
+    return exitCode(result.status);  // the search's outcome
   });
-  return status == 0 ? designStatus : status;
 }

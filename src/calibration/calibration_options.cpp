@@ -2,6 +2,7 @@
 #include "gradfric/calibration/calibration.hpp"
 
 #include "gradfric/core/input_error.hpp"
+#include "gradfric/core/petsc_call.hpp"
 #include "gradfric/physics/field_options.hpp"
 #include "gradfric/physics/grading_options.hpp"
 #include "gradfric/physics/plate_options.hpp"
@@ -28,7 +29,7 @@ void refuseOwnedOptions() {
   for (const auto& o : owned) {
     PetscBool set = PETSC_FALSE;
     char value[256] = "";
-    PetscOptionsGetString(nullptr, nullptr, o[0], value, sizeof value, &set);
+    GF_CALL(PetscOptionsGetString(nullptr, nullptr, o[0], value, sizeof value, &set));
     if (set) throw InputError(o[0], value, std::string("not set in a calibration: ") + o[1]);
   }
 }
@@ -86,8 +87,8 @@ std::optional<Calibration> readCalibration(MPI_Comm comm, RunParameters* record)
   if (!helpRequested()) refuseOwnedOptions();
   // mu_s-only runs stop at the confirmed peak: all a calibration needs (unless the user asks more).
   PetscBool observablesSet = PETSC_FALSE;
-  PetscOptionsHasName(nullptr, nullptr, "-friction_observables", &observablesSet);
-  if (!observablesSet) PetscOptionsSetValue(nullptr, "-friction_observables", "mu_s");
+  GF_CALL(PetscOptionsHasName(nullptr, nullptr, "-friction_observables", &observablesSet));
+  if (!observablesSet) GF_CALL(PetscOptionsSetValue(nullptr, "-friction_observables", "mu_s"));
   c.scene.base = sbm::readParameters(comm, record, plate, c.scene.grading);
   (void)sbm::readRequest(comm, record, c.scene.base);  // -help lists them; each evaluation re-derives them
   if (helpRequested()) return std::nullopt;

@@ -35,7 +35,7 @@ bool commandLineIsSound(MPI_Comm comm, const SettledCommandLine& settled) {
 
 // Runs the body with PETSc; returns the exit code.
 int runWithPetsc(const std::vector<std::string>& arguments, const char* help,
-                 const std::function<void(MPI_Comm)>& body) {
+                 const std::function<int(MPI_Comm)>& body) {
   // PETSc keeps argv for the whole run: the words live in `arguments` (runDriver's).
   std::vector<char*> words;
   for (const auto& a : arguments) words.push_back(const_cast<char*>(a.c_str()));
@@ -51,7 +51,7 @@ int runWithPetsc(const std::vector<std::string>& arguments, const char* help,
   int status = 0;
   try {
     refuseRenamedRunControl();  // every driver speaks -output, -output_overwrite, -resume
-    body(comm);
+    status = body(comm);
     if (helpRequested()) {
       printHelpSections(comm);
       if (!helpFilter().empty() && helpLinesPrinted() == 0)
@@ -82,7 +82,7 @@ int runWithPetsc(const std::vector<std::string>& arguments, const char* help,
 
 // MPI starts before PETSc so that the command line (--names, -version, the options files, stray
 // words) is settled on every rank before PETSc reads it; PETSc then leaves MPI to us to finalise.
-int runDriver(int argc, char** argv, const char* help, const std::function<void(MPI_Comm)>& body) {
+int runDriver(int argc, char** argv, const char* help, const std::function<int(MPI_Comm)>& body) {
   normaliseArguments(argc, argv);
   MPI_Init(&argc, &argv);
   int rank = 0;

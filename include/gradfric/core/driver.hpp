@@ -7,9 +7,21 @@
 #include <mpi.h>
 
 #include <functional>
+#include <type_traits>
 
 namespace gradfric {
 
-int runDriver(int argc, char** argv, const char* help, const std::function<void(MPI_Comm)>& body);
+// The body returns the driver's exit code once it has finished cleanly: 0, or an outcome of its
+// own (gradfric-design's 4: target unreachable). Errors take the codes above.
+int runDriver(int argc, char** argv, const char* help, const std::function<int(MPI_Comm)>& body);
+
+// A body without an outcome of its own: exit 0 when it finishes.
+template <class Body, std::enable_if_t<std::is_void_v<std::invoke_result_t<Body&, MPI_Comm>>, int> = 0>
+int runDriver(int argc, char** argv, const char* help, Body&& body) {
+  return runDriver(argc, argv, help, std::function<int(MPI_Comm)>([&body](MPI_Comm comm) {
+                     body(comm);
+                     return 0;
+                   }));
+}
 
 }  // namespace gradfric
