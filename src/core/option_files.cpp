@@ -287,11 +287,41 @@ struct Expander {
 
 }  // namespace
 
+namespace {
+
+// PETSc also reads the words of PETSC_OPTIONS and, unless -skip_petscrc, the files ~/.petscrc,
+// .petscrc and petscrc. It would skip a stray word in PETSC_OPTIONS silently and abort with its
+// banner on one in a petscrc file: the same checks as the command line's, naming the source (the
+// options themselves are left to PETSc to read).
+std::string checkPetscSources(const std::vector<std::string>& commandLine) {
+  if (const char* environment = std::getenv("PETSC_OPTIONS")) {
+    Expander check;
+    const std::string problem = check.words(lineWords(environment), "", " (in the environment's PETSC_OPTIONS)");
+    if (!problem.empty()) return problem;
+  }
+  for (const auto& word : commandLine)
+    if (lower(word) == "-skip_petscrc") return "";
+  const char* home = std::getenv("HOME");
+  for (const std::string& path : {std::string(home ? home : "") + "/.petscrc", std::string(".petscrc"), std::string("petscrc")}) {
+    struct stat info {};
+    if ((path[0] == '/' && !home) || stat(path.c_str(), &info) != 0) continue;
+    Expander check;
+    std::string text;
+    if (Problem p = readText(path, &text)) return "invalid PETSc options file " + path + ": " + p.what;
+    const std::string problem = check.optionsText(path, text);
+    if (!problem.empty()) return problem;
+  }
+  return "";
+}
+
+}  // namespace
+
 SettledCommandLine settleCommandLine(int argc, char** argv) {
   Expander expander;
   expander.result.arguments.push_back(argc > 0 ? argv[0] : "gradfric");
   const std::vector<std::string> words(argv + std::min(argc, 1), argv + argc);
   expander.result.problem = expander.words(words, "", "");
+  if (expander.result.problem.empty()) expander.result.problem = checkPetscSources(words);
   return expander.result;
 }
 

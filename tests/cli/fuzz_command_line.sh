@@ -31,6 +31,7 @@ printf 'a: [1, 2\nb: }\n' > "$in/bad.yaml"
 printf 'just a sentence\n' > "$in/scalar.yaml"
 printf -- '-sbm_N 5 \xe9t\xe9\n' > "$in/latin1.opts"
 printf 'sbm_N 5\n' > "$in/nodash.opts"
+mkdir -p "$in/home"; echo "-sbm_N 8 9" > "$in/home/.petscrc"  # a petscrc with a stray word
 : > "$in/empty.opts"
 echo "-options_file $in/no_such_inner.opts" > "$in/outer.opts"
 echo "-sbm_N 5" > "$in/good.opts"
@@ -148,6 +149,9 @@ sbm)
   # Stray words after a value and empty list items: refused, not ignored (PETSc skips them).
   run 2 "-ensemble_delta = 0 0.2: allowed one value .*0,0.2" "$G" -grading_profile linear -ensemble_delta 0 0.2
   run 2 "-ensemble_delta = -0.1 -0.2: allowed one value" "$G" -grading_profile linear -ensemble_delta -0.1 -0.2
+  # The same from the other sources PETSc reads: the environment and the petscrc files.
+  PETSC_OPTIONS="-ensemble_delta 0 0.2" run 2 "-ensemble_delta = 0 0.2 \\(in the environment's PETSC_OPTIONS\\): allowed one value" "$G" -grading_profile linear
+  HOME=$in/home run 2 "-sbm_N = 8 9 \\(in $in/home/.petscrc line 1\\): allowed one value" "$G"
   run 2 "-sbm_N = 5 6 7: allowed one value \\(the stray words 6 7" "$G" -sbm_N 5 6 7
   run 2 "-output_overwrite = true yes: allowed one value" "$G" -output_overwrite true yes
   run 2 "-ensemble_delta = 0 0.2 \\(in $in/stray.opts line 2\\): allowed one value" "$G" -options_file "$in/stray.opts"

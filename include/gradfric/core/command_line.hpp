@@ -21,7 +21,9 @@ bool versionRequested(int argc, char** argv);
 //    file's folder; -options_file_yaml files are checked (YAML mapping) and left to PETSc;
 //  - a word that is neither an option nor the one value after it (-ensemble_delta 0 0.2) is
 //    refused: PETSc would ignore it;
-//  - -help <prefix> keeps the prefix for OptionReader and gives PETSc a plain -help.
+//  - -help <prefix> keeps the prefix for OptionReader and gives PETSc a plain -help;
+//  - the words PETSc reads from the environment's PETSC_OPTIONS and from the petscrc files
+//    (~/.petscrc, .petscrc, petscrc, unless -skip_petscrc) get the same checks, their source named.
 struct SettledCommandLine {
   std::vector<std::string> arguments;  // argv[0], then the options and values PETSc reads
   std::string problem;                 // the first problem as one line, "" when none
