@@ -7,6 +7,7 @@
 // option with its default and unit. See README.md and docs/ensemble.md.
 #include "gradfric/core/driver.hpp"
 #include "gradfric/core/options.hpp"
+#include "gradfric/ensemble/interruption.hpp"
 #include "gradfric/ensemble/scene.hpp"
 #include "gradfric/ensemble/scene_file.hpp"
 #include "gradfric/ensemble/scene_report.hpp"
@@ -15,6 +16,7 @@
 #include <petscsys.h>
 
 #include <cstdlib>
+#include <optional>
 #include <string>
 
 static const char help[] =
@@ -62,10 +64,13 @@ int main(int argc, char** argv) {
     printScene(comm, *scene, record);
     if (scene->dryRun) return printDryRun(comm, *scene);
     const io::OutputPlan plan = planResultsFile(comm, *scene);    // before any work
+    std::optional<InterruptionNotice> notice(std::in_place, comm, plan.workPath(), scene->resume);  // Ctrl-C, SIGTERM
     io::ResultsFile file = openResultsFile(comm, *scene, plan);
+    notice->watch(file, plan.workPath(), "tasks", "-resume");
     const TaskTally tally = runTasks(comm, *scene, file, plan.workPath());
     const std::vector<PointStatistics> statistics = writeStatistics(file, *scene);
     finishResultsFile(comm, file, plan);                          // complete: renamed into place
+    notice.reset();
     printResults(comm, *scene, statistics, tally, plan.path());
     plotResults(comm, plot, plan.path());
   });

@@ -17,6 +17,8 @@ namespace {
 // Everything the handler needs, prepared beforehand: it may only read these.
 struct Notice {
   bool speaks = false;  // rank 0
+  volatile std::sig_atomic_t watching = 0;  // the results file exists: its done flags are counted
+  char before[4608] = "";  // while the file is created or opened: the whole line
   char path[4096] = "";
   off_t offset = 0;           // of the done flags in the file
   std::uint64_t count = 0;    // P x R flags
@@ -70,14 +72,16 @@ long long countDone() {
 void onSignal(int signal) {
   if (notice.speaks) {
     put(signal == SIGINT ? "\ngradfric: interrupted (SIGINT): " : "gradfric: interrupted (SIGTERM): ");
-    const long long done = countDone();
-    if (done >= 0) {
+    const long long done = notice.watching ? countDone() : -2;
+    if (done == -2) {
+      put(notice.before);
+    } else if (done >= 0) {
       putNumber(static_cast<std::uint64_t>(done));
       put(notice.middle);
     } else {
       put("the finished tasks are kept in ");
     }
-    put(notice.tail);
+    if (done != -2) put(notice.tail);
   } else {
     // The others end a moment later: mpiexec kills the whole job at once (SIGKILL) when a rank
     // ends, which could come before rank 0 has had its own signal and said its line.
@@ -93,19 +97,9 @@ void onSignal(int signal) {
 
 }  // namespace
 
-InterruptionNotice::InterruptionNotice(MPI_Comm comm, const io::ResultsFile& file, const std::string& path,
-                                       const char* what, const std::string& resumeOption) {
-  int rank = 0;
-  MPI_Comm_rank(comm, &rank);
-  const auto [offset, count] = file.doneFlags();
-  notice.speaks = rank == 0;
-  std::snprintf(notice.path, sizeof notice.path, "%s", path.c_str());
-  notice.offset = static_cast<off_t>(offset);
-  notice.count = count;
-  std::snprintf(notice.middle, sizeof notice.middle, " of %llu %s are finished and kept in ",
-                static_cast<unsigned long long>(count), what);
-  std::snprintf(notice.tail, sizeof notice.tail, "%s; continue with the same command and %s\n", path.c_str(),
-                resumeOption.c_str());
+namespace {
+
+void install() {
   struct sigaction action {};
   action.sa_handler = onSignal;
   sigemptyset(&action.sa_mask);
@@ -113,6 +107,46 @@ InterruptionNotice::InterruptionNotice(MPI_Comm comm, const io::ResultsFile& fil
   sigaddset(&action.sa_mask, SIGTERM);
   sigaction(SIGINT, &action, &notice.previous[0]);
   sigaction(SIGTERM, &action, &notice.previous[1]);
+}
+
+}  // namespace
+
+InterruptionNotice::InterruptionNotice(MPI_Comm comm, const std::string& path, bool resuming) {
+  int rank = 0;
+  MPI_Comm_rank(comm, &rank);
+  notice.speaks = rank == 0;
+  notice.watching = 0;
+  if (resuming)
+    std::snprintf(notice.before, sizeof notice.before,
+                  "while %s was opened: its finished tasks are kept; continue with the same command and -resume\n",
+                  path.c_str());
+  else
+    std::snprintf(notice.before, sizeof notice.before,
+                  "while %s was created, before any task ran: start again with the same command and -output_overwrite\n",
+                  path.c_str());
+  install();
+}
+
+InterruptionNotice::InterruptionNotice(MPI_Comm comm, const io::ResultsFile& file, const std::string& path,
+                                       const char* what, const std::string& resumeOption) {
+  int rank = 0;
+  MPI_Comm_rank(comm, &rank);
+  notice.speaks = rank == 0;
+  watch(file, path, what, resumeOption);
+  install();
+}
+
+void InterruptionNotice::watch(const io::ResultsFile& file, const std::string& path, const char* what,
+                               const std::string& resumeOption) {
+  const auto [offset, count] = file.doneFlags();
+  std::snprintf(notice.path, sizeof notice.path, "%s", path.c_str());
+  notice.offset = static_cast<off_t>(offset);
+  notice.count = count;
+  std::snprintf(notice.middle, sizeof notice.middle, " of %llu %s are finished and kept in ",
+                static_cast<unsigned long long>(count), what);
+  std::snprintf(notice.tail, sizeof notice.tail, "%s; continue with the same command and %s\n", path.c_str(),
+                resumeOption.c_str());
+  notice.watching = 1;  // last: the handler reads the fields above only once this is set
 }
 
 InterruptionNotice::~InterruptionNotice() {

@@ -3,7 +3,6 @@
 
 #include "gradfric/core/collective_error.hpp"
 #include "gradfric/core/random_stream.hpp"
-#include "gradfric/ensemble/interruption.hpp"
 #include "gradfric/ensemble/log_events.hpp"
 #include "gradfric/ensemble/scheduler.hpp"
 #include "gradfric/physics/property_sampler.hpp"
@@ -188,7 +187,6 @@ void runToTarget(MPI_Comm comm, const Scene& scene, io::ResultsFile& file, const
 }  // namespace
 
 TaskTally runTasks(MPI_Comm comm, const Scene& scene, io::ResultsFile& file, const std::string& resultsPath) {
-  const InterruptionNotice notice(comm, file, resultsPath, "tasks", "-resume");  // Ctrl-C, SIGTERM
   const auto flags = file.finishedTasks();
   TaskTally tally;
   long ranHere = 0;

@@ -19,9 +19,15 @@ namespace gradfric::ensemble {
 
 class InterruptionNotice {
 public:
+  // While the results file at `path` (the partial file) is created, or opened to resume: the
+  // notice says what a new run needs (-output_overwrite, or -resume). watch() once it is open.
+  InterruptionNotice(MPI_Comm comm, const std::string& path, bool resuming);
   // `what`: "tasks" or "points"; `resumeOption`: -resume.
   InterruptionNotice(MPI_Comm comm, const io::ResultsFile& file, const std::string& path, const char* what,
                      const std::string& resumeOption);
+  // From now on the notice counts the file's finished tasks (through the statistics written at the
+  // end, until the notice is destroyed).
+  void watch(const io::ResultsFile& file, const std::string& path, const char* what, const std::string& resumeOption);
   ~InterruptionNotice();  // the earlier handlers back
   InterruptionNotice(const InterruptionNotice&) = delete;
   InterruptionNotice& operator=(const InterruptionNotice&) = delete;
