@@ -17,7 +17,7 @@ namespace gradfric::calibration {
 
 namespace {
 
-double halfWidth(const ensemble::Summary& s) { return 0.5 * (s.ciHigh - s.ciLow); }
+double halfWidth(const ensemble::Summary& s) { return s.ciHalfWidth(); }
 
 // Each comma-separated path made absolute (from the working directory the run resolved it in).
 std::string absolutePaths(const std::string& value) {
@@ -109,7 +109,7 @@ void writeCalibration(MPI_Comm comm, const Calibration& c, const CalibrationResu
       r.converged ? "converged" : "did NOT converge (best evaluation reported)", r.evaluations.size(), r.realisations,
       r.wallSeconds, e.layerThickness, r.layerError, paperLayer, 100 * (e.layerThickness / paperLayer - 1), e.sigma,
       r.sigmaError, paperSigma, 100 * (e.sigma / paperSigma - 1), e.slope.mean, halfWidth(e.slope), c.target.slope,
-      1.96 * (std::isfinite(c.target.slopeStdError) ? c.target.slopeStdError : 0.0), 100 * (e.slope.mean / c.target.slope - 1),
+      (std::isfinite(c.target.slopeHalfWidth) ? c.target.slopeHalfWidth : 0.0), 100 * (e.slope.mean / c.target.slope - 1),
       e.peak.mean, halfWidth(e.peak), c.target.peak, e.peak.mean - c.target.peak,
       std::fabs(e.peak.mean - c.target.peak) <= halfWidth(e.peak) ? "inside" : "outside", rms, samples, r.jacobian[0][0],
       r.jacobian[1][1], coupling.c_str()));
