@@ -74,6 +74,10 @@ void writeTable(hid_t file, const study::LadderTable& t, hid_t scale, const Prob
     if (n) GF_H5(H5Dwrite(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()));
     const auto [units, description] = columnMeaning(name, problem, record);
     io::describe(d, units, description);
+    if (name.find("ci95") != std::string::npos)  // the ensemble's intervals (statistics.hpp), or their image on x
+      io::writeStringAttribute(d, "interval", name.rfind("x_", 0) == 0
+                                                  ? "the 95 % Student t interval of value mapped through the slope"
+                                                  : "95 % Student t (docs/ensemble.md, section 3)");
     io::attachScale(d, scale, 0);
   }
 }

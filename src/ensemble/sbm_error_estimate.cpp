@@ -99,9 +99,18 @@ SbmBarTerm latticeTerm(const std::vector<SbmStudyRow>& study, const sbm::Paramet
     anyRow = anyRow || (r.kind == "lattice" && r.law == law && r.grading == grading &&
                         std::fabs(r.delta - delta) < 1e-9 && r.observable == observable);
   char text[200];
-  if (!anyRow) {
-    std::snprintf(text, sizeof text, "no lattice ladder of %s for law %s, grading %s, Delta = %g", observable.c_str(),
-                  law.c_str(), grading.c_str(), delta);
+  if (!anyRow) {  // name what the study holds (the same text for every point it lacks)
+    std::vector<std::string> held;
+    for (const SbmStudyRow& r : study)
+      if (r.kind == "lattice" && r.law == law && r.observable == observable) {
+        char one[64];
+        std::snprintf(one, sizeof one, "%s Delta = %g", r.grading.c_str(), r.delta);
+        if (std::find(held.begin(), held.end(), one) == held.end()) held.push_back(one);
+      }
+    std::string list;
+    for (const std::string& h : held) list += (list.empty() ? "" : ", ") + h;
+    std::snprintf(text, sizeof text, "no lattice ladder of %s for law %s and this grading (the study's: %s)",
+                  observable.c_str(), law.c_str(), list.empty() ? "none" : list.c_str());
     return {false, 0, text};
   }
   const int n = p.blocksPerSide;
@@ -114,8 +123,7 @@ SbmBarTerm latticeTerm(const std::vector<SbmStudyRow>& study, const sbm::Paramet
       complete = complete && (m[k] = findLattice(study, law, grading, delta, coarsest << k, observable)) != nullptr;
     if (complete) return latticeLadderTerm(m, member);
   }
-  std::snprintf(text, sizeof text, "N_b = %d not in a lattice ladder of the study (%s, %s, Delta = %g)", n,
-                observable.c_str(), grading.c_str(), delta);
+  std::snprintf(text, sizeof text, "N_b = %d not in a lattice ladder of the study (N_b, 2 N_b, 4 N_b)", n);
   return {false, 0, text};
 }
 

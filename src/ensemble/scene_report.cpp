@@ -82,18 +82,22 @@ void printSweep(MPI_Comm comm, const Scene& scene) {
                       scene.request.snapshotTimes.empty() ? "" : ", sigma_x/p snapshots"));
 }
 
-// Each point's discretisation bar with its basis (docs/accuracy.md, "The discretisation bar"); one
-// line for every point when they share it.
+// Each point's discretisation bar with its basis (docs/accuracy.md, "The discretisation bar"); the
+// points that share one line are listed together.
 void printDiscretisation(MPI_Comm comm, const Scene& scene, bool kinetic) {
-  std::vector<std::string> lines;
+  std::vector<std::pair<std::string, std::string>> lines;  // (bar and basis, its points)
   for (int p = 0; p < scene.points(); ++p) {
     const SbmDiscretisation bar = scene.discretisation(p, kinetic);
-    lines.push_back(describeBar(bar) + (bar.measured ? ": " + bar.basis : ""));
+    const std::string line = describeBar(bar) + (bar.measured ? ": " + bar.basis : "");
+    auto same = std::find_if(lines.begin(), lines.end(), [&](const auto& l) { return l.first == line; });
+    if (same == lines.end()) same = lines.insert(lines.end(), {line, ""});
+    same->second += (same->second.empty() ? "" : ", ") + std::to_string(p);
   }
-  const bool shared = std::all_of(lines.begin(), lines.end(), [&](const std::string& l) { return l == lines[0]; });
-  for (int p = 0; p < (shared ? std::min(1, scene.points()) : scene.points()); ++p)
-    GF_CALL(PetscPrintf(comm, "  %s: %s\n", shared && scene.points() > 1 ? "every point" : ("point " + std::to_string(p)).c_str(),
-                        lines[p].c_str()));
+  for (const auto& [line, points] : lines) {
+    const bool every = lines.size() == 1 && scene.points() > 1, several = points.find(',') != std::string::npos;
+    GF_CALL(PetscPrintf(comm, "  %s%s: %s\n", every ? "every point" : several ? "points " : "point ",
+                        every ? "" : points.c_str(), line.c_str()));
+  }
 }
 
 void printTable(MPI_Comm comm, const Scene& scene, const std::vector<PointStatistics>& stats, const char* title,
@@ -114,7 +118,7 @@ void printTable(MPI_Comm comm, const Scene& scene, const std::vector<PointStatis
     if (scene.sweep.reference[p] == static_cast<int>(p))
       std::snprintf(rel, sizeof rel, "%s", "reference");
     else if (std::isfinite(v.value))
-      std::snprintf(rel, sizeof rel, "%+7.3f +- %.3f", 100 * v.value, std::isfinite(v.error) ? 100 * v.error : 0.0);
+      std::snprintf(rel, sizeof rel, "%+7.3f +- %.3f", 100 * v.value, std::isfinite(v.halfWidth) ? 100 * v.halfWidth : 0.0);
     else
       std::snprintf(rel, sizeof rel, "%s", "(no reference)");
     const SbmDiscretisation bar = scene.discretisation(static_cast<int>(p), !isStatic);
