@@ -140,7 +140,7 @@ SbmBarTerm timeStepTerm(const std::vector<SbmStudyRow>& study, const sbm::Parame
     return {false, 0, text};
   }
   const double bound = 1.25 * rung->value * std::max(1.0, p.timeStep / rung->dt);
-  std::snprintf(text, sizeof text, "dt %.3g s: velocity Verlet at %.3g s vs RK4 at 1e-9 s, error %.2g (N_b = %d)",
+  std::snprintf(text, sizeof text, "dt %.3g s: velocity Verlet at %.3g s vs RK4 at 1e-9 s, error %.1e (N_b = %d)",
                 p.timeStep, rung->dt, rung->value, rung->blocks);
   return {true, bound, text};
 }
