@@ -102,7 +102,7 @@ void writeCalibration(MPI_Comm comm, const Calibration& c, const CalibrationResu
       "Calibration %s after %zu evaluation(s) (%ld realisations, %.2f s wall):\n"
       "  l_z   = %.6e m +- %.2e m (95 %%)   [paper: %.3g m, %+.1f %%]\n"
       "  sigma = %.6f +- %.6f (95 %%)       [paper: %.3g, %+.1f %%]\n"
-      "  slope: SBM %.6e +- %.2e 1/s, reference %.6e +- %.2e 1/s: residual %+.4f %%\n"
+      "  slope: SBM %.6e +- %.2e 1/s, reference %.6e +- %.2e 1/s (95 %%): residual %+.4f %%\n"
       "  peak:  SBM %.6f +- %.6f (95 %% CI), reference %.6f: residual %+.6f (%s the CI)\n"
       "  mean mu(t) - reference up to the peak: RMS %.6f over %d samples\n"
       "  d(slope ratio)/d l_z = %.4e 1/m, d(peak)/d sigma = %.4f (secant)%s\n",

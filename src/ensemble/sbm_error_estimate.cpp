@@ -175,7 +175,7 @@ SbmBarTerm latticeLadderTerm(const SbmStudyRow* const m[3], int member) {
   const double first = medium - coarse, second = fine - medium;
   const double firstOf[3] = {-1, 1, 0}, secondOf[3] = {0, -1, 1};  // the differences as sums of the means
   const double h1 = halfWidthOf(m, firstOf), h2 = halfWidthOf(m, secondOf);
-  char ladder[120], text[400];
+  char ladder[200], text[500];
   std::snprintf(ladder, sizeof ladder, "lattice N_b %d/%d/%d: %.6f, %.6f, %.6f (differences %+.3f %% +- %.3f %%, %+.3f %% +- %.3f %%)",
                 m[0]->blocks, m[1]->blocks, m[2]->blocks, coarse, medium, fine, 100 * first / coarse, 100 * h1 / coarse,
                 100 * second / medium, 100 * h2 / medium);

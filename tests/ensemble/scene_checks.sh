@@ -170,6 +170,9 @@ single)
   run 1 -sbm_N 16 -output "$work/s.h5" >"$work/s.log"
   grep -Eq "^Result: mu_s = 0\.[0-9]+, mu_k = 0\.[0-9]+" "$work/s.log" || fail "no 'mu_s = ..., mu_k = ...' line"
   grep -q "results in $work/s.h5" "$work/s.log" || fail "where the results went is not printed"
+  # Its discretisation bar, named: N_b = 16 is outside the lattice study.
+  grep -q "^  mu_s: discretisation error not measured: N_b = 16 not in a lattice ladder" "$work/s.log" ||
+    fail "no discretisation line for the single run"
   # The printed mu_s is the one in the file.
   printed=$(sed -n 's/^Result: mu_s = \([0-9.]*\),.*/\1/p' "$work/s.log")
   stored=$(h5dump -A 0 -m %.6f -d /statistics/mu_s_mean "$work/s.h5" | sed -n 's/.*(0): \([0-9.]*\).*/\1/p')
