@@ -215,7 +215,7 @@ def plot_variation(ensemble, fems, png, sweeps=()):
     for ax, name in zip(axes, ("mu_s", "mu_k")):
         for source in ([ensemble] if ensemble is not None else []) + list(sweeps):
             relative = source.statistic(f"{name}_relative") * 100
-            error = source.statistic(f"{name}_relative_error") * 100
+            error = source.statistic(f"{name}_relative_ci95") * 100  # 95 % Student t half-width
             groups = {}
             for p in range(source.points):
                 groups.setdefault(series_key(source, p), []).append(p)
@@ -234,9 +234,9 @@ def plot_variation(ensemble, fems, png, sweeps=()):
                     if known.any():
                         ax.errorbar(d[known], y[known], yerr=(100 + y[known]) * bar[known], fmt="none", capsize=3,
                                     color=line.get_color())
-                # 95 % band of the relative variation (propagated standard errors x 1.96)
+                # 95 % band of the relative variation (the stored Student t half-width)
                 if source.model == "SBM":
-                    ax.fill_between(d, y - 1.96 * e, y + 1.96 * e, alpha=0.2)
+                    ax.fill_between(d, y - e, y + e, alpha=0.2)
         if fems:
             reference = [f for f in fems if f.delta == 0.0]
             if reference:

@@ -28,9 +28,31 @@ def read(f):
     centres = (np.arange(n) + 0.5) * float(side) / n
     coords["x"] = xr.Variable("block_column", centres, {"units": "m", "description": "centre of each block column along x (the grading axis)"})
     coords["y"] = xr.Variable("block_row", centres, {"units": "m", "description": "centre of each block row along y"})
+    _old_relative_errors(data, coords)
     attrs = _h5.attributes(f)
     attrs["sweep_axes"] = _h5.text(f["sweep"].attrs.get("axes", ""))
     attrs.update({k: v[0] for k, v in scene.items()})
     attrs["scene_options"] = list(scene)
     attrs.update(_h5.provenance(f["run"]))
     return xr.Dataset(data, coords, attrs), scene
+
+
+def _old_relative_errors(data, coords):
+    """Files before format version 3 stored one propagated standard error (mu_*_relative_error);
+    they also get the 95 % half-width later files store (mu_*_relative_ci95): the error x
+    t(0.975, min(n, n_0) - 1), n and n_0 the counts of the point and its reference."""
+    for mu in ("mu_s", "mu_k"):
+        old, new = data.get(f"{mu}_relative_error"), f"{mu}_relative_ci95"
+        if old is None or new in data or f"{mu}_count" not in data or "reference_point" not in coords:
+            continue
+        from scipy.stats import t  # Debian's python3-scipy; only for such old files
+        count = np.asarray(data[f"{mu}_count"].values, dtype=float)
+        reference = np.asarray(coords["reference_point"].values)
+        dof = np.full(count.shape, np.nan)
+        known = reference >= 0
+        dof[known] = np.minimum(count[known], count[reference[known]]) - 1
+        factor = np.where(dof >= 1, t.ppf(0.975, np.where(dof >= 1, dof, 1)), np.nan)
+        attrs = dict(old.attrs, description=f"95 % confidence half-width of {mu}_relative (from {mu}_relative_error)",
+                     interval="95 % Student t half-width: the propagated standard error x t(0.975, min(n, n_0) - 1)")
+        data[new] = old.copy(data=np.asarray(old.values) * factor)
+        data[new].attrs = attrs

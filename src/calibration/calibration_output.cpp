@@ -17,7 +17,7 @@ namespace gradfric::calibration {
 
 namespace {
 
-double halfWidth(const ensemble::Summary& s) { return 0.5 * (s.ciHigh - s.ciLow); }
+double halfWidth(const ensemble::Summary& s) { return s.ciHalfWidth(); }
 
 // Each comma-separated path made absolute (from the working directory the run resolved it in).
 std::string absolutePaths(const std::string& value) {
@@ -102,14 +102,14 @@ void writeCalibration(MPI_Comm comm, const Calibration& c, const CalibrationResu
       "Calibration %s after %zu evaluation(s) (%ld realisations, %.2f s wall):\n"
       "  l_z   = %.6e m +- %.2e m (95 %%)   [paper: %.3g m, %+.1f %%]\n"
       "  sigma = %.6f +- %.6f (95 %%)       [paper: %.3g, %+.1f %%]\n"
-      "  slope: SBM %.6e +- %.2e 1/s, reference %.6e +- %.2e 1/s: residual %+.4f %%\n"
+      "  slope: SBM %.6e +- %.2e 1/s, reference %.6e +- %.2e 1/s (95 %%): residual %+.4f %%\n"
       "  peak:  SBM %.6f +- %.6f (95 %% CI), reference %.6f: residual %+.6f (%s the CI)\n"
       "  mean mu(t) - reference up to the peak: RMS %.6f over %d samples\n"
       "  d(slope ratio)/d l_z = %.4e 1/m, d(peak)/d sigma = %.4f (secant)%s\n",
       r.converged ? "converged" : "did NOT converge (best evaluation reported)", r.evaluations.size(), r.realisations,
       r.wallSeconds, e.layerThickness, r.layerError, paperLayer, 100 * (e.layerThickness / paperLayer - 1), e.sigma,
       r.sigmaError, paperSigma, 100 * (e.sigma / paperSigma - 1), e.slope.mean, halfWidth(e.slope), c.target.slope,
-      1.96 * (std::isfinite(c.target.slopeStdError) ? c.target.slopeStdError : 0.0), 100 * (e.slope.mean / c.target.slope - 1),
+      (std::isfinite(c.target.slopeHalfWidth) ? c.target.slopeHalfWidth : 0.0), 100 * (e.slope.mean / c.target.slope - 1),
       e.peak.mean, halfWidth(e.peak), c.target.peak, e.peak.mean - c.target.peak,
       std::fabs(e.peak.mean - c.target.peak) <= halfWidth(e.peak) ? "inside" : "outside", rms, samples, r.jacobian[0][0],
       r.jacobian[1][1], coupling.c_str()));

@@ -22,7 +22,7 @@ Residual residualOf(const Calibration& c, const Evaluation& e) {
   return {e.slope.mean / c.target.slope - 1.0, e.peak.mean - c.target.peak};
 }
 
-double halfWidth(const ensemble::Summary& s) { return 0.5 * (s.ciHigh - s.ciLow); }
+double halfWidth(const ensemble::Summary& s) { return s.ciHalfWidth(); }
 
 // How far an evaluation is from convergence: <= 1 when both residuals are within tolerance.
 double misfit(const Calibration& c, const Evaluation& e) {
@@ -116,7 +116,7 @@ CalibrationResult calibrate(MPI_Comm comm, const Calibration& c) {
   }
   // The 95 % half-widths of the two measured quantities (SBM ensemble and reference fit), through
   // the inverse Jacobian, added in quadrature.
-  const double slopeHalf = std::hypot(halfWidth(e.slope), 1.96 * (std::isfinite(c.target.slopeStdError) ? c.target.slopeStdError : 0.0)) /
+  const double slopeHalf = std::hypot(halfWidth(e.slope), (std::isfinite(c.target.slopeHalfWidth) ? c.target.slopeHalfWidth : 0.0)) /
                            c.target.slope;
   const double peakHalf = halfWidth(e.peak);
   const double (&P)[2][2] = out.jacobian;

@@ -58,7 +58,11 @@ void writeTable(hid_t file, const study::LadderTable& t, hid_t scale, const Prob
   for (const auto& [name, value] : t.texts) io::writeStringAttribute(group, name, value);
   for (const auto& [name, values] : t.columns) {
     const auto [units, description] = columnMeaning(name, problem, record);
-    io::writeDescribedColumn(group, name, values, units, description, scale);
+    const io::H5Dataset d = io::writeDescribedColumn(group, name, values, units, description, scale);
+    if (name.find("ci95") != std::string::npos)  // the ensemble's intervals (statistics.hpp), or their image on x
+      io::writeStringAttribute(d, "interval", name.rfind("x_", 0) == 0
+                                                  ? "the 95 % Student t interval of value mapped through the slope"
+                                                  : "95 % Student t (docs/ensemble.md, section 3)");
   }
 }
 

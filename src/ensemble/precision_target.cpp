@@ -10,9 +10,6 @@ namespace gradfric::ensemble {
 
 namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-// Two-sided 95 % Student t factor for n values (NaN below 2).
-double t95(int n) { return n >= 2 ? studentTQuantile(0.975, n - 1) : kNaN; }
 }  // namespace
 
 TargetKind targetKindOf(const std::string& name) {
@@ -35,16 +32,15 @@ double achievedHalfWidth(const PrecisionTarget& target, const std::vector<PointS
   const PointStatistics& s = statistics[p];
   const int n = s.muStatic.count;
   switch (target.kind) {
-    case TargetKind::Absolute: return n >= 2 ? s.muStatic.ciHigh - s.muStatic.mean : kNaN;
-    case TargetKind::Relative:
-      return n >= 2 ? (s.muStatic.ciHigh - s.muStatic.mean) / std::fabs(s.muStatic.mean) : kNaN;
+    case TargetKind::Absolute: return n >= 2 ? s.muStatic.ciHalfWidth() : kNaN;
+    case TargetKind::Relative: return n >= 2 ? s.muStatic.ciHalfWidth() / std::fabs(s.muStatic.mean) : kNaN;
     case TargetKind::Variation: {
       const int q = reference[p];
       if (q < 0) return kNaN;
       if (q == p) return 0.0;
-      // The pairs (or, with independent streams, the smaller sample) set the degrees of freedom.
-      const int pairs = std::min(n, statistics[q].muStatic.count);
-      return t95(pairs) * s.muStaticRelative.error;
+      // The printed and stored 95 % half-width itself (statistics.hpp: the pairs, or with
+      // independent streams the smaller sample, set the degrees of freedom).
+      return s.muStaticRelative.halfWidth;
     }
   }
   return kNaN;

@@ -184,10 +184,19 @@ io::EnsembleLayout layoutOf(const Scene& s) {
   layout.firstSlipMap = s.request.measurement.firstSlipMap;
   layout.frictionFields = s.frictionFields;
   layout.snapshotTimes = s.request.snapshotTimes;
-  layout.statisticsReal = {"mu_s_mean",      "mu_s_std",     "mu_s_stderr",         "mu_s_ci95_low",
-                           "mu_s_ci95_high", "mu_s_relative", "mu_s_relative_error", "mu_k_mean",
-                           "mu_k_std",       "mu_k_stderr",   "mu_k_ci95_low",       "mu_k_ci95_high",
-                           "mu_k_relative",  "mu_k_relative_error"};
+  layout.statisticsReal = statisticsColumns();
+  // Each point's discretisation bar (sbm_error_estimate.hpp): total, lattice and time-step terms,
+  // and the basis of every point's bar as an attribute of the total.
+  for (const char* mu : {"mu_s", "mu_k"}) {
+    std::string basis;
+    for (int p = 0; p < s.points(); ++p) {
+      basis += (p ? "\n" : "") + std::string("point ") + std::to_string(p) + ": " +
+               s.discretisation(p, mu[3] == 'k').basis;
+    }
+    for (const char* term : {"_discretisation_error", "_discretisation_lattice", "_discretisation_dt"})
+      layout.statisticsReal.push_back(mu + std::string(term));
+    layout.statisticsNotes.push_back({mu + std::string("_discretisation_error"), "basis", basis});
+  }
   layout.statisticsInteger = {"finished", "mu_s_count", "mu_k_count", "peaks_unconfirmed"};
   if (s.target.active()) {  // what the target asked and what each point reached
     layout.statisticsReal.push_back("target_half_width");
@@ -237,6 +246,10 @@ sbm::Parameters Scene::pointParameters(int p) const {
   q.sigmaStatic = sweep.points[p].sigma;
   q.sigmaKinetic = sweep.points[p].sigmaKinetic;
   return q;
+}
+
+SbmDiscretisation Scene::discretisation(int p, bool kinetic) const {
+  return sbmDiscretisationError(pointParameters(p), pointGrading(p), request.measurement, kinetic);
 }
 
 Grading Scene::pointGrading(int p) const {

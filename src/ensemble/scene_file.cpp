@@ -7,6 +7,7 @@
 #include "gradfric/core/petsc_call.hpp"
 #include "gradfric/ensemble/log_events.hpp"
 
+#include <limits>
 #include <string>
 #include <utility>
 
@@ -73,6 +74,8 @@ io::ResultsFile openResultsFile(MPI_Comm comm, const Scene& scene, const io::Out
 
 namespace {
 
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
 template <class Get>
 std::vector<double> realColumn(const std::vector<PointStatistics>& stats, Get get) {
   std::vector<double> v;
@@ -90,8 +93,25 @@ std::vector<int> integerColumn(const std::vector<PointStatistics>& stats, Get ge
 }  // namespace
 
 std::vector<PointStatistics> writeStatistics(io::ResultsFile& file, const Scene& scene) {
-  return writeStatistics(file, scene.realisations, scene.sweep.reference, scene.commonStreams,
-                         scene.target.active() ? &scene.target : nullptr);
+  auto stats = writeStatistics(file, scene.realisations, scene.sweep.reference, scene.commonStreams,
+                               scene.target.active() ? &scene.target : nullptr);
+  // Each point's discretisation bar and its terms, relative; NaN where not measured (the basis of
+  // each is the attribute `basis` of mu_*_discretisation_error, written with the layout).
+  std::vector<std::pair<std::string, std::vector<double>>> bars;
+  for (const char* mu : {"mu_s", "mu_k"}) {
+    std::vector<double> total, lattice, step;
+    for (int p = 0; p < scene.points(); ++p) {
+      const SbmDiscretisation e = scene.discretisation(p, mu[3] == 'k');
+      total.push_back(e.measured ? e.relative : kNaN);
+      lattice.push_back(e.lattice.measured ? e.lattice.relative : kNaN);
+      step.push_back(e.timeStep.measured ? e.timeStep.relative : kNaN);
+    }
+    bars.emplace_back(mu + std::string("_discretisation_error"), total);
+    bars.emplace_back(mu + std::string("_discretisation_lattice"), lattice);
+    bars.emplace_back(mu + std::string("_discretisation_dt"), step);
+  }
+  file.writeStatistics(bars, {});
+  return stats;
 }
 
 std::vector<PointStatistics> writeStatistics(io::ResultsFile& file, int realisations,
@@ -112,14 +132,14 @@ std::vector<PointStatistics> writeStatistics(io::ResultsFile& file, int realisat
       {"mu_s_ci95_low", realColumn(stats, [](S s) { return s.muStatic.ciLow; })},
       {"mu_s_ci95_high", realColumn(stats, [](S s) { return s.muStatic.ciHigh; })},
       {"mu_s_relative", realColumn(stats, [](S s) { return s.muStaticRelative.value; })},
-      {"mu_s_relative_error", realColumn(stats, [](S s) { return s.muStaticRelative.error; })},
+      {"mu_s_relative_ci95", realColumn(stats, [](S s) { return s.muStaticRelative.halfWidth; })},
       {"mu_k_mean", realColumn(stats, [](S s) { return s.muKinetic.mean; })},
       {"mu_k_std", realColumn(stats, [](S s) { return s.muKinetic.stdDev; })},
       {"mu_k_stderr", realColumn(stats, [](S s) { return s.muKinetic.stdError; })},
       {"mu_k_ci95_low", realColumn(stats, [](S s) { return s.muKinetic.ciLow; })},
       {"mu_k_ci95_high", realColumn(stats, [](S s) { return s.muKinetic.ciHigh; })},
       {"mu_k_relative", realColumn(stats, [](S s) { return s.muKineticRelative.value; })},
-      {"mu_k_relative_error", realColumn(stats, [](S s) { return s.muKineticRelative.error; })}};
+      {"mu_k_relative_ci95", realColumn(stats, [](S s) { return s.muKineticRelative.halfWidth; })}};
   std::vector<std::pair<std::string, std::vector<int>>> integer = {
       {"finished", integerColumn(stats, [](S s) { return s.finished; })},
       {"mu_s_count", integerColumn(stats, [](S s) { return s.muStatic.count; })},

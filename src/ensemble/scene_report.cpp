@@ -5,6 +5,7 @@
 #include "gradfric/core/petsc_call.hpp"
 #include "gradfric/sbm/model.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -81,6 +82,24 @@ void printSweep(MPI_Comm comm, const Scene& scene) {
                       scene.request.snapshotTimes.empty() ? "" : ", sigma_x/p snapshots"));
 }
 
+// Each point's discretisation bar with its basis (docs/accuracy.md, "The discretisation bar"); the
+// points that share one line are listed together.
+void printDiscretisation(MPI_Comm comm, const Scene& scene, bool kinetic) {
+  std::vector<std::pair<std::string, std::string>> lines;  // (bar and basis, its points)
+  for (int p = 0; p < scene.points(); ++p) {
+    const SbmDiscretisation bar = scene.discretisation(p, kinetic);
+    const std::string line = describeBar(bar) + (bar.measured ? ": " + bar.basis : "");
+    auto same = std::find_if(lines.begin(), lines.end(), [&](const auto& l) { return l.first == line; });
+    if (same == lines.end()) same = lines.insert(lines.end(), {line, ""});
+    same->second += (same->second.empty() ? "" : ", ") + std::to_string(p);
+  }
+  for (const auto& [line, points] : lines) {
+    const bool every = lines.size() == 1 && scene.points() > 1, several = points.find(',') != std::string::npos;
+    GF_CALL(PetscPrintf(comm, "  %s%s: %s\n", every ? "every point" : several ? "points " : "point ",
+                        every ? "" : points.c_str(), line.c_str()));
+  }
+}
+
 void printTable(MPI_Comm comm, const Scene& scene, const std::vector<PointStatistics>& stats, const char* title,
                 bool isStatic) {
   if (scene.target.active())  // the counts per point are in column R
@@ -88,8 +107,8 @@ void printTable(MPI_Comm comm, const Scene& scene, const std::vector<PointStatis
   else
     GF_CALL(PetscPrintf(comm, "\n%s over %d realisation(s) per point (95%% CI: Student t):\n", title,
                         scene.realisations));
-  GF_CALL(PetscPrintf(comm, "  %-5s %-32s %4s %10s %10s %10s %23s %19s\n", "point", "sweep", "R", "mean", "std",
-                      "std err", "95% CI", "rel. var. [%]"));
+  GF_CALL(PetscPrintf(comm, "  %-5s %-32s %4s %10s %10s %10s %23s %19s %11s\n", "point", "sweep", "R", "mean", "std",
+                      "std err", "95% CI", "rel. var. [%]", "discr. [%]"));
   for (size_t p = 0; p < stats.size(); ++p) {
     const Summary& s = isStatic ? stats[p].muStatic : stats[p].muKinetic;
     const RelativeVariation& v = isStatic ? stats[p].muStaticRelative : stats[p].muKineticRelative;
@@ -99,13 +118,17 @@ void printTable(MPI_Comm comm, const Scene& scene, const std::vector<PointStatis
     if (scene.sweep.reference[p] == static_cast<int>(p))
       std::snprintf(rel, sizeof rel, "%s", "reference");
     else if (std::isfinite(v.value))
-      std::snprintf(rel, sizeof rel, "%+7.3f +- %.3f", 100 * v.value, std::isfinite(v.error) ? 100 * v.error : 0.0);
+      std::snprintf(rel, sizeof rel, "%+7.3f +- %.3f", 100 * v.value, std::isfinite(v.halfWidth) ? 100 * v.halfWidth : 0.0);
     else
       std::snprintf(rel, sizeof rel, "%s", "(no reference)");
-    GF_CALL(PetscPrintf(comm, "  %-5zu %-32s %4d %10.6f %10.6f %10.6f %23s %19s%s\n", p,
+    const SbmDiscretisation bar = scene.discretisation(static_cast<int>(p), !isStatic);
+    char discretisation[32] = "n/m";  // not measured: the reason follows the table
+    if (bar.measured) std::snprintf(discretisation, sizeof discretisation, "+- %.2f", 100 * bar.relative);
+    GF_CALL(PetscPrintf(comm, "  %-5zu %-32s %4d %10.6f %10.6f %10.6f %23s %19s %11s%s\n", p,
                         pointLabel(scene.sweep, static_cast<int>(p)).c_str(), s.count, s.mean, s.stdDev, s.stdError,
-                        ci, rel, isStatic && stats[p].peaksUnconfirmed ? "  (unconfirmed peaks)" : ""));
+                        ci, rel, discretisation, isStatic && stats[p].peaksUnconfirmed ? "  (unconfirmed peaks)" : ""));
   }
+  printDiscretisation(comm, scene, !isStatic);
 }
 
 // Which points met -ensemble_target, and which stopped at the cap.
@@ -131,15 +154,21 @@ void printStatistics(MPI_Comm comm, const Scene& scene, const std::vector<PointS
     const auto& s = stats[0];
     GF_CALL(PetscPrintf(comm, "\nResult: mu_s = %.6f, mu_k = %.6f%s\n", s.muStatic.mean, s.muKinetic.mean,
                         s.peaksUnconfirmed ? "  (peak NOT confirmed before t_max: mu_s is the maximum reached)" : ""));
+    for (bool kinetic : {false, true})
+      if (!kinetic || scene.request.measurement.kinetic)
+        GF_CALL(PetscPrintf(comm, "  %s: %s\n", kinetic ? "mu_k" : "mu_s", describeBar(scene.discretisation(0, kinetic)).c_str()));
     return;
   }
   printTable(comm, scene, stats, "Global static friction mu_s", true);
   if (scene.request.measurement.kinetic) printTable(comm, scene, stats, "Global kinetic friction mu_k", false);
   GF_CALL(PetscPrintf(comm,
                       "  rel. var. = (mu - mu_0)/mu_0 against the non-graded point of the same angle and dispersion,"
-                      " +- %s\n",
-                      scene.commonStreams ? "the error of the paired differences (common random numbers)"
-                                          : "the error propagated from both standard errors"));
+                      " +- the 95 %% half-width: %s\n"
+                      "  discr. = the discretisation bound of the mean (lattice + time step; docs/accuracy.md), n/m: not "
+                      "measured\n",
+                      scene.commonStreams ? "the paired differences' standard error x t(0.975, pairs - 1) (common random "
+                                            "numbers)"
+                                          : "the error propagated from both standard errors x t(0.975, min(n, n_0) - 1)"));
   if (scene.target.active()) printTargetOutcome(comm, scene, stats);
 }
 

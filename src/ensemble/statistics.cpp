@@ -1,5 +1,6 @@
 #include "gradfric/ensemble/statistics.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -69,6 +70,8 @@ double studentTQuantile(double p, int dof) {
   return 0.5 * (lo + hi);
 }
 
+double t95(int dof) { return dof >= 1 ? studentTQuantile(0.975, dof) : kNaN; }
+
 Summary summarise(const std::vector<double>& values) {
   Summary s;
   double sum = 0.0;
@@ -91,20 +94,24 @@ Summary summarise(const std::vector<double>& values) {
     if (std::isfinite(v)) squares += (v - s.mean) * (v - s.mean);
   s.stdDev = std::sqrt(squares / (s.count - 1));
   s.stdError = s.stdDev / std::sqrt(static_cast<double>(s.count));
-  const double t = studentTQuantile(0.975, s.count - 1);
+  const double t = t95(s.count - 1);
   s.ciLow = s.mean - t * s.stdError;
   s.ciHigh = s.mean + t * s.stdError;
   return s;
 }
 
 RelativeVariation relativeVariation(const Summary& point, const Summary& reference, bool isReference) {
-  if (isReference) return {point.count > 0 ? 0.0 : kNaN, point.count > 0 ? 0.0 : kNaN};
+  if (isReference) {
+    const double zero = point.count > 0 ? 0.0 : kNaN;
+    return {zero, zero, zero};
+  }
   RelativeVariation r;
   const double m0 = reference.mean;
   r.value = (point.mean - m0) / m0;
   const double a = point.stdError / m0;
   const double b = point.mean * reference.stdError / (m0 * m0);
   r.error = std::sqrt(a * a + b * b);
+  r.halfWidth = t95(std::min(point.count, reference.count) - 1) * r.error;
   return r;
 }
 
@@ -115,7 +122,7 @@ RelativeVariation pairedRelativeVariation(const std::vector<double>& point, cons
       x.push_back(point[i]);
       y.push_back(reference[i]);
     }
-  RelativeVariation r{kNaN, kNaN};
+  RelativeVariation r{kNaN, kNaN, kNaN};
   if (x.empty()) return r;
   const Summary sx = summarise(x), sy = summarise(y);
   const double m = sx.mean, m0 = sy.mean;
@@ -124,7 +131,14 @@ RelativeVariation pairedRelativeVariation(const std::vector<double>& point, cons
   std::vector<double> z(x.size());
   for (size_t i = 0; i < x.size(); ++i) z[i] = x[i] / m0 - m * y[i] / (m0 * m0);
   r.error = summarise(z).stdError;
+  r.halfWidth = t95(static_cast<int>(x.size()) - 1) * r.error;
   return r;
+}
+
+std::vector<std::string> statisticsColumns() {
+  return {"mu_s_mean", "mu_s_std", "mu_s_stderr", "mu_s_ci95_low", "mu_s_ci95_high", "mu_s_relative",
+          "mu_s_relative_ci95", "mu_k_mean", "mu_k_std", "mu_k_stderr", "mu_k_ci95_low", "mu_k_ci95_high",
+          "mu_k_relative", "mu_k_relative_ci95"};
 }
 
 std::vector<PointStatistics> pointStatistics(int realisations, const std::vector<int>& reference,
@@ -154,7 +168,7 @@ std::vector<PointStatistics> pointStatistics(int realisations, const std::vector
   for (size_t p = 0; p < points; ++p) {
     const int ref = reference[p];
     if (ref < 0 || static_cast<size_t>(ref) >= points) {
-      out[p].muStaticRelative = out[p].muKineticRelative = {kNaN, kNaN};
+      out[p].muStaticRelative = out[p].muKineticRelative = {kNaN, kNaN, kNaN};
       continue;
     }
     const bool self = static_cast<size_t>(ref) == p;

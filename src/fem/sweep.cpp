@@ -4,6 +4,7 @@
 
 #include "gradfric/core/input_error.hpp"
 #include "gradfric/core/petsc_call.hpp"
+#include "gradfric/ensemble/statistics.hpp"
 #include "gradfric/ensemble/sweep_options.hpp"
 #include "gradfric/fem/stable_step.hpp"
 #include "gradfric/physics/field_options.hpp"
@@ -50,10 +51,7 @@ io::EnsembleLayout layoutOf(const FemSweep& s) {
   layout.historyCapacity = historyCapacity(s.params);
   layout.mapSide = s.params.nx;  // /properties: one column per hexahedron column along x
   // The columns ensemble::writeStatistics writes (the same as the spring-block ensemble's file).
-  layout.statisticsReal = {"mu_s_mean",      "mu_s_std",     "mu_s_stderr",         "mu_s_ci95_low",
-                           "mu_s_ci95_high", "mu_s_relative", "mu_s_relative_error", "mu_k_mean",
-                           "mu_k_std",       "mu_k_stderr",   "mu_k_ci95_low",       "mu_k_ci95_high",
-                           "mu_k_relative",  "mu_k_relative_error"};
+  layout.statisticsReal = ensemble::statisticsColumns();
   // The FEM's own: each point's discretisation error bar (error_estimate.hpp), relative, NaN where
   // no study measured it (sweep_run.cpp writes them with the statistics).
   layout.statisticsReal.push_back("mu_s_discretisation_error");

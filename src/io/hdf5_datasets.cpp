@@ -64,14 +64,15 @@ H5Dataset createIndexScale(hid_t parent, const char* name, hsize_t size, const s
   return d;
 }
 
-void writeDescribedColumn(hid_t parent, const std::string& name, const std::vector<double>& values,
-                          const std::string& units, const std::string& description, hid_t scale) {
+H5Dataset writeDescribedColumn(hid_t parent, const std::string& name, const std::vector<double>& values,
+                               const std::string& units, const std::string& description, hid_t scale) {
   const hsize_t n = values.size();
   H5Space space(GF_H5(H5Screate_simple(1, &n, nullptr)));
   H5Dataset d(GF_H5(H5Dcreate2(parent, name.c_str(), H5T_IEEE_F64LE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT)));
   if (n) GF_H5(H5Dwrite(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()));
   describe(d, units, description);
   attachScale(d, scale, 0);
+  return d;
 }
 
 }  // namespace gradfric::io

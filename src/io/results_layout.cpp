@@ -32,10 +32,27 @@ std::string statisticDescription(const std::string& name) {
   if (what == "ci95_low") return "lower end of the 95 % confidence interval of the mean of " + of;
   if (what == "ci95_high") return "upper end of the 95 % confidence interval of the mean of " + of;
   if (what == "relative") return "(" + of + " - " + of + "_0) / " + of + "_0 against /sweep/reference_point";
-  if (what == "relative_error") return "propagated error of " + of + "_relative";
-  if (what == "discretisation_error")  // FEM sweeps
+  if (what == "relative_ci95") return "95 % confidence half-width of " + of + "_relative";
+  if (what == "discretisation_error")  // FEM sweeps and spring-block ensembles
     return "relative discretisation error bound of " + of + " at the point's settings (NaN: not measured)";
+  if (what == "discretisation_lattice") return "its lattice term (N_b ladder), relative (NaN: not measured)";
+  if (what == "discretisation_dt") return "its time-step term, relative (NaN: not measured)";
   return name;
+}
+
+// What kind of interval a column is (its `interval` attribute; docs/ensemble.md, section 3), or "".
+std::string statisticInterval(const std::string& name) {
+  if (name.find("ci95") != std::string::npos || name == "target_half_width") {
+    if (name.find("relative") != std::string::npos)
+      return "95 % Student t half-width: the propagated standard error x t(0.975, min(n, n_0) - 1), or with "
+             "common random numbers the paired differences' x t(0.975, pairs - 1)";
+    return name == "target_half_width" ? "95 % Student t half-width (as mu_s_ci95_* and mu_s_relative_ci95)"
+                                       : "95 % Student t, n - 1 degrees of freedom";
+  }
+  if (name.find("discretisation") != std::string::npos)
+    return "bound from the convergence study (GCI with safety factor 1.25 and time-step term), not a statistical "
+           "interval";
+  return "";
 }
 
 
@@ -53,7 +70,8 @@ std::uint64_t layoutBytes(const EnsembleLayout& l, const SweepTable& sweep, cons
   bytes += tasks * (46 + 12);                                           // /realisations, /run
   if (C > 0) bytes += tasks * (32 * C + 4);                             // /history
   bytes += tasks * 8 * N * N * ((l.firstSlipMap ? 1 : 0) + (l.frictionFields ? 2 : 0) + S) + 8 * S * (tasks + 1);
-  bytes += 8 * P * (l.statisticsReal.size() + l.statisticsInteger.size());
+  bytes += 8 * P * (l.statisticsReal.size() + l.statisticsInteger.size()) + 256 * l.statisticsReal.size();
+  for (const auto& note : l.statisticsNotes) bytes += note[1].size() + note[2].size() + 128;
   for (const auto& a : scene) bytes += 3 * (a.name.size() + 128) + a.value.size() + a.unit.size() + a.origin.size();
   return withMetadataRoom(bytes + 64 * 2048);  // ~64 datasets and groups with their attributes
 }
@@ -226,8 +244,13 @@ void writeLayout(hid_t root, const EnsembleLayout& layout, const SweepTable& swe
   }
   {
     H5Group group = createGroup(root, "statistics");
-    for (const auto& name : layout.statisticsReal)
-      real(group, name.c_str(), {point}, "1", statisticDescription(name).c_str());
+    for (const auto& name : layout.statisticsReal) {
+      H5Dataset d = real(group, name.c_str(), {point}, "1", statisticDescription(name).c_str());
+      if (const std::string interval = statisticInterval(name); !interval.empty())
+        writeStringAttribute(d, "interval", interval);
+      for (const auto& [column, attribute, value] : layout.statisticsNotes)
+        if (column == name) writeStringAttribute(d, attribute, value);
+    }
     for (const auto& name : layout.statisticsInteger)
       make(group, name.c_str(), H5T_STD_I32LE, H5T_NATIVE_INT, {point}, 0, "1", statisticDescription(name).c_str());
   }

@@ -4,6 +4,8 @@
 #include "gradfric/calibration/spring_block_evaluation.hpp"
 #include "gradfric/sbm/model.hpp"
 
+#include "gradfric/ensemble/statistics.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -43,6 +45,9 @@ TEST(LoadingCurve, AGivenPeakSetsTheWindowAndNoiseGivesAnError) {
   EXPECT_LE(own.samples, 11);       // 0.1 <= mu <= 0.3
   EXPECT_NEAR(own.slope, 2.0, 0.2);
   EXPECT_GT(own.slopeStdError, 0.0);
+  // The 95 % half-width of the fit: Student t with samples - 2 degrees of freedom, wider than 1.96 SE.
+  EXPECT_NEAR(own.slopeHalfWidth, gradfric::ensemble::studentTQuantile(0.975, own.samples - 2) * own.slopeStdError, 1e-12);
+  EXPECT_GT(own.slopeHalfWidth, 2.2 * own.slopeStdError);
 }
 
 TEST(LoadingCurve, InterpolatesInsideAndIsNaNOutside) {

@@ -69,7 +69,28 @@ with h5py.File(out, "r") as f:
     assert dims("history/mu") == ["point", "realisation", "sample"], dims("history/mu")
     assert dims("maps/first_slip_time") == ["point", "realisation", "block_row", "block_column"]
     assert dims("properties/E") == ["point", "block_column"] and dims("statistics/mu_s_mean") == ["point"]
-    assert f.attrs["format_version"] == 2 and isinstance(f.attrs["format"], str)
+    assert f.attrs["format_version"] == 3 and isinstance(f.attrs["format"], str)
+    # One interval convention, named on every interval (docs/ensemble.md, section 3), and the
+    # discretisation bar with its basis per point (this scene's N_b is outside the study: NaN).
+    st = f["statistics"]
+    for name in ("mu_s_ci95_low", "mu_s_ci95_high", "mu_k_ci95_low", "mu_s_relative_ci95", "mu_k_relative_ci95"):
+        assert st[name].attrs["interval"].startswith("95 % Student t"), (name, st[name].attrs.get("interval"))
+    assert "mu_s_relative_error" not in st
+    counts = st["mu_s_count"][:]
+    t975 = {1: 12.7062047, 2: 4.30265273, 3: 3.18244631, 4: 2.77644511}  # Student t quantiles, n - 1 dof
+    for point, ref in enumerate(f["sweep/reference_point"][:]):
+        half = 0.5 * (st["mu_s_ci95_high"][point] - st["mu_s_ci95_low"][point])
+        mean, se = st["mu_s_mean"][point], st["mu_s_stderr"][point]
+        assert np.isclose(half, t975[counts[point] - 1] * se, rtol=1e-6), (point, half, se)
+        if ref >= 0 and ref != point:
+            m0, se0 = st["mu_s_mean"][ref], st["mu_s_stderr"][ref]
+            error = np.hypot(se / m0, mean * se0 / m0**2)
+            dof = min(counts[point], counts[ref]) - 1
+            assert np.isclose(st["mu_s_relative_ci95"][point], t975[dof] * error, rtol=1e-6), point
+    bar = st["mu_s_discretisation_error"]
+    assert bar.attrs["interval"].startswith("bound") and np.isnan(bar[:]).all()
+    basis = bar.attrs["basis"].split("\n")
+    assert len(basis) == len(counts) and all(b.startswith(f"point {p}: ") and len(b) > 12 for p, b in enumerate(basis)), basis
 
     scene = {k: v for k, v in f["scene"].attrs.items()}
     p, side = float(scene["plate_p"]), float(scene["plate_L"])

@@ -79,9 +79,13 @@ TEST(EnsembleStatistics, RelativeVariationAndPropagatedError) {
   EXPECT_NEAR(v.value, (0.76 - 0.95) / 0.95, 1e-15);
   const double expected = std::hypot(0.003 / 0.95, 0.76 * 0.002 / (0.95 * 0.95));
   EXPECT_NEAR(v.error, expected, 1e-15);
+  // The printed and stored interval: 95 % Student t with the smaller sample's n - 1 = 5 dof.
+  point.count = 6;
+  EXPECT_NEAR(relativeVariation(point, ref, false).halfWidth, 2.57058184 * expected, 1e-9);
   const RelativeVariation self = relativeVariation(ref, ref, true);
   EXPECT_EQ(self.value, 0.0);
   EXPECT_EQ(self.error, 0.0);
+  EXPECT_EQ(self.halfWidth, 0.0);
 }
 
 TEST(EnsembleStatistics, PointTableCountsOnlyFinishedRealisations) {
@@ -127,10 +131,12 @@ TEST(EnsembleStatistics, PairedRelativeVariation) {
   std::vector<double> z;
   for (size_t i = 0; i < y.size(); ++i) z.push_back(noisy[i] / m0 - m * y[i] / (m0 * m0));
   EXPECT_NEAR(p2.error, summarise(z).stdError, 1e-15);
+  EXPECT_NEAR(p2.halfWidth, 2.77644511 * p2.error, 1e-9);  // t(0.975, 5 pairs - 1)
   // Pairs with a NaN on either side are dropped; fewer than two pairs: no error estimate.
   const RelativeVariation p3 = pairedRelativeVariation({0.8, kNaN, 0.7}, {1.0, 1.0, kNaN});
   EXPECT_NEAR(p3.value, -0.2, 1e-15);
   EXPECT_TRUE(std::isnan(p3.error));
+  EXPECT_TRUE(std::isnan(p3.halfWidth));
 }
 
 TEST(EnsembleStatistics, PointTableUsesPairsWhenAsked) {

@@ -67,10 +67,14 @@ TEST(PrecisionTarget, NoEstimateDoublesAndVariationGrowsTheReference) {
   PrecisionTarget variation = absoluteTarget(0.001);
   variation.kind = TargetKind::Variation;
   std::vector<PointStatistics> stats{pointOf(8, 0.9, 0.001), pointOf(8, 0.7, 0.01)};
-  stats[0].muStaticRelative = {0.0, 0.0};
-  stats[1].muStaticRelative = {-0.22, 0.005};
+  stats[0].muStaticRelative = relativeVariation(stats[0].muStatic, stats[0].muStatic, true);
+  stats[1].muStaticRelative = relativeVariation(stats[1].muStatic, stats[0].muStatic, false);
   EXPECT_EQ(achievedHalfWidth(variation, stats, {0, 0}, 0), 0.0);  // the reference itself
-  EXPECT_NEAR(achievedHalfWidth(variation, stats, {0, 0}, 1), studentTQuantile(0.975, 7) * 0.005, 1e-15);
+  // The printed and stored half-width: the propagated error times t of the smaller sample's 7 dof.
+  const double error = stats[1].muStaticRelative.error;
+  ASSERT_GT(error, 0.0);
+  EXPECT_NEAR(achievedHalfWidth(variation, stats, {0, 0}, 1), studentTQuantile(0.975, 7) * error, 1e-15);
+  EXPECT_EQ(achievedHalfWidth(variation, stats, {0, 0}, 1), stats[1].muStaticRelative.halfWidth);
   const std::vector<int> next = planNextBatch(variation, {8, 8}, stats, {0, 0});
   EXPECT_EQ(next[1], 24);
   EXPECT_EQ(next[0], 24);  // every realisation of point 1 keeps its pair

@@ -33,11 +33,15 @@ def main(sbm_path, fem_path):
         if fem.attrs["realisations"] != 1 or fem.attrs["complete"] != 1:
             problems.append("not one complete run per point")
         a, b = datasets(sbm), datasets(fem)
-        # The FEM's own columns: each point's discretisation error bar (relative, NaN: not measured).
-        fem_only = {"statistics/mu_s_discretisation_error", "statistics/mu_k_discretisation_error"}
-        if not fem_only <= set(b):
-            problems.append(f"missing the FEM's error bars: {sorted(fem_only - set(b))}")
-        b = {n: d for n, d in b.items() if n not in fem_only}
+        # Both hold each point's discretisation error bar (relative, NaN: not measured); the
+        # ensemble also its two terms (lattice, time step: docs/accuracy.md).
+        bars = {"statistics/mu_s_discretisation_error", "statistics/mu_k_discretisation_error"}
+        if not bars <= set(b) or not bars <= set(a):
+            problems.append(f"missing error bars: {sorted((bars - set(b)) | (bars - set(a)))}")
+        sbm_only = {f"statistics/{m}_discretisation_{t}" for m in ("mu_s", "mu_k") for t in ("lattice", "dt")}
+        if not sbm_only <= set(a):
+            problems.append(f"missing the ensemble's bar terms: {sorted(sbm_only - set(a))}")
+        a = {n: d for n, d in a.items() if n not in sbm_only}
         wanted = {n for n in a if not n.startswith("maps/")}
         if wanted != set(b):
             problems.append(f"datasets differ: {sorted(wanted ^ set(b))}")

@@ -138,6 +138,21 @@ with gradfric.open(path("ens.h5")) as ds, h5py.File(path("ens.h5"), "r") as f:
             continue
         raise SystemExit("check_against_file accepted a wrong Dataset")
 
+# 1b. A file of format version 2 (one standard error in mu_*_relative_error): open() adds the 95 %
+# half-width later files store, t(0.975, min(n, n_0) - 1) x the error.
+shutil.copy(path("ens.h5"), path("ens_v2.h5"))
+with h5py.File(path("ens_v2.h5"), "r+") as f:
+    st = f["statistics"]
+    assert st["mu_s_relative_ci95"].attrs["interval"].startswith("95 % Student t")
+    half = st["mu_s_relative_ci95"][:]
+    f.attrs["format_version"] = 2
+    for mu in ("mu_s", "mu_k"):
+        st.move(f"{mu}_relative_ci95", f"{mu}_relative_error")
+        st[f"{mu}_relative_error"][...] = st[f"{mu}_relative_error"][:] / 12.7062047  # 2 realisations: 1 dof
+with gradfric.open(path("ens_v2.h5")) as old:
+    assert np.allclose(old["mu_s_relative_ci95"].values, half, rtol=1e-7, equal_nan=True), (old["mu_s_relative_ci95"].values, half)
+    assert "mu_s_relative_error" in old and old["mu_s_relative_ci95"].attrs["interval"].startswith("95 % Student t")
+
 # 2. A FEM run with a property field (/fields) and its pressure response.
 fem_out = "-output"
 run(fem, "-field_mu_profile", "step", "-field_mu_position", "3e-3", "-field_mu_delta", "0.2", "-fem_nx", "8",

@@ -19,6 +19,7 @@ struct LoadingFeatures {
   double peakTime = kNaN;  // its time [s]
   double slope = kNaN;     // d mu / dt over the window [1/s]
   double slopeStdError = kNaN;  // the fit's standard error [1/s] (NaN below 3 samples)
+  double slopeHalfWidth = kNaN;  // its 95 % Student t half-width, t(0.975, samples - 2) x slopeStdError [1/s]
   int samples = 0;              // samples in the window
 };
 

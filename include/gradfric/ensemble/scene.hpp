@@ -5,6 +5,7 @@
 // planResultsFile, openResultsFile, runTasks, finishResultsFile, printResults.
 #include "gradfric/core/options.hpp"
 #include "gradfric/ensemble/precision_target.hpp"
+#include "gradfric/ensemble/sbm_error_estimate.hpp"
 #include "gradfric/ensemble/sweep.hpp"
 #include "gradfric/io/results_file.hpp"
 #include "gradfric/physics/field.hpp"
@@ -56,6 +57,8 @@ struct Scene {
   // The model inputs of sweep point p.
   sbm::Parameters pointParameters(int p) const;
   Grading pointGrading(int p) const;
+  // The discretisation bar of point p's mean mu_s (kinetic false) or mu_k (docs/accuracy.md).
+  SbmDiscretisation discretisation(int p, bool kinetic) const;
 };
 
 // Collective: reads and checks every option (InputError on every rank alike); nullopt after -help.

@@ -32,9 +32,9 @@ std::vector<std::string> readStrings(hid_t dataset);
 // (h5netcdf) see a named axis.
 H5Dataset createIndexScale(hid_t parent, const char* name, hsize_t size, const std::string& description);
 // A float64 column written whole, described (units, description) and attached to scale along its
-// one dimension.
-void writeDescribedColumn(hid_t parent, const std::string& name, const std::vector<double>& values,
-                          const std::string& units, const std::string& description, hid_t scale);
+// one dimension; returned for further attributes.
+H5Dataset writeDescribedColumn(hid_t parent, const std::string& name, const std::vector<double>& values,
+                               const std::string& units, const std::string& description, hid_t scale);
 
 // Writes a hyperslab [offset, offset + count) of a dataset from contiguous memory.
 void writeSlab(hid_t dataset, hid_t memType, const std::vector<hsize_t>& offset, const std::vector<hsize_t>& count,

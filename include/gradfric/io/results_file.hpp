@@ -17,6 +17,7 @@
 
 #include <mpi.h>
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -25,7 +26,9 @@
 
 namespace gradfric::io {
 
-inline constexpr int kFormatVersion = 2;  // 2: units, dimension scales, forces, properties, provenance
+// 2: units, dimension scales, forces, properties, provenance; 3: every interval a 95 % Student t
+// interval (mu_*_relative_ci95 for mu_*_relative_error), an `interval` attribute on each, discretisation bars
+inline constexpr int kFormatVersion = 3;
 inline constexpr const char* kFormatName = "gradfric-sbm-ensemble";
 // The same layout filled by a sweep of finite-element runs (gradfric-fem, one run per point).
 inline constexpr const char* kFemSweepFormatName = "gradfric-fem-sweep";
@@ -42,6 +45,9 @@ struct EnsembleLayout {
   // Names of the per-point statistics columns (/statistics/<name>), real and integer.
   std::vector<std::string> statisticsReal;
   std::vector<std::string> statisticsInteger;
+  // Text attributes of statistics columns known before the run: (column, attribute, value), e.g.
+  // the basis of each point's discretisation bar.
+  std::vector<std::array<std::string, 3>> statisticsNotes;
 };
 
 // One row per sweep point.
