@@ -26,14 +26,16 @@ EdgeMap::EdgeMap(double ratio, int refinedBands) : ratio_(ratio), refinedBands_(
     throw std::invalid_argument("edge refinement ratio outside [1.1, 16] and not 1");
   if (refinedBands < 1 || refinedBands > kEdgeBandsMax) throw std::invalid_argument("refined bands outside 1..4");
   // The fewest interior cells per band q for which every refined band can hold a whole number of
-  // cells e with mean size q/e strictly between its end sizes (so the profile is monotone),
-  // e nearest to the geometric grading's count.
+  // cells e whose mean size q/e gives the profile an exponent alpha in [1/4, 4] (monotone and
+  // smooth: never a run of equal cells ending in a jump), e nearest to the geometric grading's
+  // count.
   for (int q = 1; q <= kLargestUnit; ++q) {
     std::vector<int> cells(refinedBands);
     bool fits = true;
     for (int k = 0; k < refinedBands && fits; ++k) {
       const double a = bandEndSize(ratio, refinedBands, k), c = bandEndSize(ratio, refinedBands, k + 1);
-      const int lo = static_cast<int>(std::floor(q / c)) + 1, hi = static_cast<int>(std::ceil(q / a)) - 1;
+      const int lo = static_cast<int>(std::ceil(q / (a + 0.8 * (c - a)))),  // alpha >= 1/4
+          hi = static_cast<int>(std::floor(q / (a + 0.2 * (c - a))));       // alpha <= 4
       const double geometric = q * (1.0 / a - 1.0 / c) / std::log(c / a);
       cells[k] = std::clamp(static_cast<int>(std::lround(geometric)), lo, hi);
       fits = lo <= hi;
