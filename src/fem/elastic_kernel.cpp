@@ -1,5 +1,6 @@
 // The specialised elastic kernels: f += -E_c K_hat u_e for every cell, scattered into f, with the
-// precomputed box-cell stiffness K_hat (E = 1).
+// precomputed box-cell stiffness K_hat (E = 1): one for every cell, or on an edge-graded mesh each
+// cell's from a table of shapes (cellShape).
 //  - elasticKernel: the dense one, a gather of the 24 element displacements, one 24x24
 //    matrix-vector product, a scatter-add (the reference, and the fallback).
 //  - elasticKernelBlocked: the same operator in the basis of the box's mirror symmetries. A box
@@ -126,6 +127,9 @@ __attribute__((always_inline)) inline void blockedCells(PetscInt numCells, const
     const double* laneBlocks[4] = {blocks, blocks, blocks, blocks};
     if (Shaped)
       for (int l = 0; l < 4; ++l) laneBlocks[l] = blocks + 72 * cellShape[c + std::min(l, lanes - 1)];
+    // Four cells of one shape (most of a graded mesh's interior): one block for all lanes.
+    const bool oneShape = !Shaped || (laneBlocks[1] == laneBlocks[0] && laneBlocks[2] == laneBlocks[0] &&
+                                      laneBlocks[3] == laneBlocks[0]);
     Lanes w[3][8];
     for (int a = 0; a < 8; ++a)
       for (int d = 0; d < 3; ++d)
@@ -135,7 +139,7 @@ __attribute__((always_inline)) inline void blockedCells(PetscInt numCells, const
     for (int chi = 0; chi < 8; ++chi) {
       const int s0 = chi ^ 1, s1 = chi ^ 2, s2 = chi ^ 4;
       const Lanes x0 = w[0][s0], x1 = w[1][s1], x2 = w[2][s2];
-      if (Shaped) {
+      if (!oneShape) {
         Lanes B[9] = {};  // block chi, each lane its cell's
         for (int i = 0; i < 9; ++i)
           B[i] = Lanes{laneBlocks[0][9 * chi + i], laneBlocks[1][9 * chi + i], laneBlocks[2][9 * chi + i],
@@ -144,7 +148,7 @@ __attribute__((always_inline)) inline void blockedCells(PetscInt numCells, const
         g[1][s1] = B[3] * x0 + B[4] * x1 + B[5] * x2;
         g[2][s2] = B[6] * x0 + B[7] * x1 + B[8] * x2;
       } else {
-        const double* B = blocks + 9 * chi;
+        const double* B = laneBlocks[0] + 9 * chi;
         g[0][s0] = B[0] * x0 + B[1] * x1 + B[2] * x2;
         g[1][s1] = B[3] * x0 + B[4] * x1 + B[5] * x2;
         g[2][s2] = B[6] * x0 + B[7] * x1 + B[8] * x2;
