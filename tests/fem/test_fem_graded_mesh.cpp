@@ -5,6 +5,7 @@
 #include <petscsf.h>
 #include "gradfric/core/petsc_handle.hpp"
 #include "gradfric/fem/contact_resultants.hpp"
+#include "gradfric/fem/mesh_sites.hpp"
 #include "gradfric/fem/simulation.hpp"
 #include "gradfric/fem/stable_step.hpp"
 #include "gradfric/fem/verlet_ts.hpp"
@@ -14,6 +15,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <random>
 #include <vector>
 
@@ -80,6 +82,31 @@ TEST(FemEdgeMap, DoublingNestsBandsLieOnFacesAndTheMapIsSymmetric) {
   EXPECT_THROW(EdgeMap(1.05, 1), std::invalid_argument);
   EXPECT_THROW(EdgeMap(4.0, 5), std::invalid_argument);
   EXPECT_THROW(EdgeMap(4.0, 1).nodes(13, kL), std::invalid_argument);
+}
+
+TEST(FemGradedMesh, MeanPreservingFieldsAreNormalisedOverTheGradedCellsAreaWeighted) {
+  PropertyField step;  // a step off-centre: its plain mean over the graded cells is not its area mean
+  step.length = kL;
+  step.shape = FieldShape::Step;
+  step.delta = 0.4;
+  step.position = 0.7e-3;
+  step.normalise = true;
+  PlateFields fields;
+  fields.modulus = std::make_shared<const PropertyField>(step);
+  Grading g;
+  g.fields = std::make_shared<const PlateFields>(fields);
+  const MeshAxis x = makeMeshAxis(EdgeGrading{4.0, kL / 10}, 48, kL), y = makeMeshAxis(EdgeGrading{4.0, kL / 10}, 24, kL);
+  const PropertySampler sampler = meshSampler(g, x, y);
+  double area = 0, weighted = 0, plain = 0;
+  for (int j = 0; j < y.cells(); ++j)
+    for (int i = 0; i < x.cells(); ++i) {
+      const double a = x.width(i) * y.width(j), f = sampler.modulus(x.unitCentre(i), y.unitCentre(j));
+      area += a;
+      weighted += a * f;
+      plain += f / (x.cells() * y.cells());
+    }
+  EXPECT_NEAR(weighted / area, 1.0, 1e-12);
+  EXPECT_GT(std::fabs(plain - 1.0), 1e-3) << "the test needs cells of unequal weight under the step";
 }
 
 TEST(FemGradedMesh, PatchTestUniformStrainGivesExactTractions) {
