@@ -101,6 +101,11 @@ void printPlan(MPI_Comm comm, const FemRun& run, const PlateModel& model, RunPar
   record->add({"damping", describeDamping(params), "", "damping active in the sliding step", OptionOrigin::Derived});
   record->add({"friction_state", describeFrictionState(params), "", "the friction law and its state (-friction_law)",
                OptionOrigin::Derived});
+  if (!params.edge.uniform())  // the uniform mesh's lines stay as they were
+    record->add({"mesh", "x: " + describeEdgeGrading(params.edge, params.nx, params.plate.length) +
+                             "; y: " + describeEdgeGrading(params.edge, params.ny, params.plate.length),
+                 "", "the in-plane mesh graded toward the edges (-fem_edge_ratio, -fem_edge_band)",
+                 OptionOrigin::Derived});
   record->print(comm, "gradfric-fem: resolved parameters");
   int size = 1;
   MPI_Comm_size(comm, &size);
@@ -114,6 +119,8 @@ void printPlan(MPI_Comm comm, const FemRun& run, const PlateModel& model, RunPar
               params.plate.velocity, params.plate.slidingAngle, describeContact(params).c_str(), params.frictionLaw.name.c_str(),
               params.frictionLaw.criticalVelocity,
               describeFrictionState(params).c_str(), model.timeStep(), model.stableTimeStep(), describeDamping(params).c_str());
+  if (!params.edge.uniform())
+    PetscPrintf(comm, "  in-plane mesh: %s\n", describeEdgeGrading(params.edge, params.nx, params.plate.length).c_str());
   if (run.grading.fields)
     for (const auto& line : describeFields(*run.grading.fields)) PetscPrintf(comm, "  %s\n", line.c_str());
 }

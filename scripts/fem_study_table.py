@@ -16,13 +16,16 @@ import sys
 G, H, P = 10e6 / (2 * (1 + 1 / 3)), 5e-5, 1e4
 
 
-def load(path):
+def load(path, edge=(1.0, 0.0)):
+    """The rows of one mesh family: edge = (edge_ratio, edge_band), (1, 0) the uniform meshes."""
     rows = {}
     with open(path) as f:
         for line in f:
             if line.startswith("#") or not line.strip():
                 continue
-            law, dc, prop, delta, n, nz, element, dts, contact, mu = line.split()
+            law, dc, prop, delta, n, nz, ratio, band, element, dts, contact, mu = line.split()
+            if float(ratio) != edge[0] or (edge[0] != 1.0 and abs(float(band) - edge[1]) > 1e-9 * edge[1]):
+                continue
             rows[(law, float(dc), prop, float(delta), int(n), int(nz), element, float(dts), contact)] = float(mu)
     return rows
 

@@ -1,5 +1,5 @@
 // The elastic internal force on the paper mesh: the specialised kernel (one precomputed 24x24
-// box-cell stiffness scaled by E) against PETSc's generic PetscFE residual
+// box-cell stiffness scaled by E, one per cell shape on an edge-graded mesh) against PETSc's generic PetscFE residual
 // (DMPlexTSComputeRHSFunctionFEM), and the whole right-hand side of one explicit step.
 // Prints the specialised/generic ratio at the end of the run. Scene from gradfric-fem's options
 // (mesh by -fem_nx/-fem_ny/-fem_nz), read and checked as the driver does.
@@ -84,7 +84,9 @@ void BM_WholeRightHandSide(benchmark::State& state) {
 
 // The cell kernel alone on this rank's cells (no ghost exchange): the dense 24x24 product against
 // the mirror-basis blocks (elastic_kernel.cpp), same input, in one run: their ratio is load-free.
-template <bool Blocked>
+// PerCellShape: each cell's own stiffness or blocks (an edge-graded mesh, -fem_edge_ratio), against
+// the first shape's for every cell on the same cells: the cost of the shape table.
+template <bool Blocked, bool PerCellShape = false>
 void kernelOnly(benchmark::State& state, const char* name) {
   PlateModel& m = model();
   OwnedVec xLocal;
@@ -93,23 +95,34 @@ void kernelOnly(benchmark::State& state, const char* name) {
   PetscInt n = 0;
   VecGetLocalSize(xLocal, &n);
   std::vector<double> f(n, 0.0);
-  std::array<double, 72> blocks{};
-  reflectionBlocks(m.elastic().element().stiffness.data(), &blocks);
+  std::vector<double> blocks, stiffnesses;  // per shape: 72 and 576 values
+  for (const BoxElement& e : m.elastic().elements()) {
+    std::array<double, 72> b{};
+    reflectionBlocks(e.stiffness.data(), &b);
+    blocks.insert(blocks.end(), b.begin(), b.end());
+    stiffnesses.insert(stiffnesses.end(), e.stiffness.begin(), e.stiffness.end());
+  }
+  const int* shape = PerCellShape ? m.mesh().cellShape().data() : nullptr;
   const PetscScalar* x = nullptr;
   VecGetArrayRead(xLocal, &x);
   const std::vector<PetscInt>& off = m.mesh().cellStateOffsets();
   const PetscInt cells = m.mesh().localCells();
   timeCalls(state, name, [&] {
     if (Blocked)
-      elasticKernelBlocked(cells, off.data(), m.elastic().cellModulus().data(), blocks.data(), x, f.data());
+      elasticKernelBlocked(cells, off.data(), m.elastic().cellModulus().data(), blocks.data(), x, f.data(), nullptr,
+                           shape);
     else
-      elasticKernel(cells, off.data(), m.elastic().cellModulus().data(), m.elastic().element().stiffness.data(), x,
-                    nullptr, 0.0, f.data());
+      elasticKernel(cells, off.data(), m.elastic().cellModulus().data(), stiffnesses.data(), x, nullptr, 0.0, f.data(),
+                    nullptr, shape);
   });
   VecRestoreArrayRead(xLocal, &x);
 }
 void BM_KernelDense(benchmark::State& state) { kernelOnly<false>(state, "kernel dense"); }
 void BM_KernelBlocked(benchmark::State& state) { kernelOnly<true>(state, "kernel blocked"); }
+void BM_KernelDensePerCellShape(benchmark::State& state) { kernelOnly<false, true>(state, "kernel dense, per-cell shape"); }
+void BM_KernelBlockedPerCellShape(benchmark::State& state) {
+  kernelOnly<true, true>(state, "kernel blocked, per-cell shape");
+}
 
 // Ranks other than 0 run the same (collective) benchmarks silently.
 class QuietReporter : public benchmark::BenchmarkReporter {
@@ -122,6 +135,8 @@ BENCHMARK(BM_ElasticSpecialised)->UseManualTime()->Unit(benchmark::kMillisecond)
 BENCHMARK(BM_ElasticGeneric)->UseManualTime()->Unit(benchmark::kMillisecond)->MinTime(2.0);
 BENCHMARK(BM_KernelDense)->UseManualTime()->Unit(benchmark::kMillisecond)->MinTime(1.0);
 BENCHMARK(BM_KernelBlocked)->UseManualTime()->Unit(benchmark::kMillisecond)->MinTime(1.0);
+BENCHMARK(BM_KernelDensePerCellShape)->UseManualTime()->Unit(benchmark::kMillisecond)->MinTime(1.0);
+BENCHMARK(BM_KernelBlockedPerCellShape)->UseManualTime()->Unit(benchmark::kMillisecond)->MinTime(1.0);
 BENCHMARK(BM_WholeRightHandSide)->UseManualTime()->Unit(benchmark::kMillisecond)->MinTime(1.0);
 
 const char help[] =
@@ -167,6 +182,13 @@ int main(int argc, char** argv) {
       std::printf("cell kernel alone: dense %.3f ms, blocked %.3f ms, ratio blocked/dense %.3f\n",
                   1e3 * gSecondsPerCall["kernel dense"], 1e3 * gSecondsPerCall["kernel blocked"],
                   gSecondsPerCall["kernel blocked"] / gSecondsPerCall["kernel dense"]);
+    for (const char* kind : {"dense", "blocked"}) {
+      const std::string one = std::string("kernel ") + kind, each = one + ", per-cell shape";
+      if (rank == 0 && gSecondsPerCall.count(one) && gSecondsPerCall.count(each))
+        std::printf("%s kernel, %zu cell shape(s): per-cell shape %.3f ms against one shape %.3f ms, ratio %.3f\n", kind,
+                    model().mesh().shapes().size(), 1e3 * gSecondsPerCall[each], 1e3 * gSecondsPerCall[one],
+                    gSecondsPerCall[each] / gSecondsPerCall[one]);
+    }
     gModel.reset();
   });
 }

@@ -32,11 +32,10 @@ BulkViscosity::BulkViscosity(const PlateMesh& mesh, double youngsModulus, double
     : mesh_(mesh),
       linear_(linear),
       quadratic_(quadratic),
-      density_(density),
-      length_(std::min({mesh.hx(), mesh.hy(), mesh.hz()})),
-      volume_(mesh.hx() * mesh.hy() * mesh.hz()),
-      gradient_(boxMeanShapeGradients(mesh.hx(), mesh.hy(), mesh.hz())) {
+      density_(density) {
   if (!active()) return;
+  for (const std::array<double, 3>& h : mesh.shapes())
+    shapes_.push_back({std::min({h[0], h[1], h[2]}), h[0] * h[1] * h[2], boxMeanShapeGradients(h[0], h[1], h[2])});
   const double plateLength = mesh.size().length;
   cellSpeed_.resize(mesh.localCells());
   for (PetscInt c = 0; c < mesh.localCells(); ++c) {
@@ -53,13 +52,14 @@ BulkViscosity::BulkViscosity(const PlateMesh& mesh, double youngsModulus, double
 // corner, 8 corners); returns the power of the cell.
 double BulkViscosity::cellForce(PetscInt c, const PetscScalar* x, std::array<double, 24>* w) const {
   const PetscInt* o = mesh_.cellStateOffsets().data() + 8 * c;
+  const Shape& shape = shapes_[mesh_.cellShape()[c]];
   double rate = 0;
   for (int a = 0; a < 8; ++a)
-    for (int d = 0; d < 3; ++d) rate += x[o[a] + 3 + d] * gradient_[a][d];
-  const double stress = bulkViscousStress(linear_, quadratic_, density_, cellSpeed_[c], length_, rate);
+    for (int d = 0; d < 3; ++d) rate += x[o[a] + 3 + d] * shape.gradient[a][d];
+  const double stress = bulkViscousStress(linear_, quadratic_, density_, cellSpeed_[c], shape.length, rate);
   for (int a = 0; a < 8; ++a)
-    for (int d = 0; d < 3; ++d) (*w)[3 * a + d] = volume_ * stress * gradient_[a][d];
-  return volume_ * stress * rate;
+    for (int d = 0; d < 3; ++d) (*w)[3 * a + d] = shape.volume * stress * shape.gradient[a][d];
+  return shape.volume * stress * rate;
 }
 
 void BulkViscosity::addForce(Vec X, Vec F, ExactSum* energy, double dt) {

@@ -3,7 +3,7 @@
 #include "gradfric/core/gather.hpp"
 #include "gradfric/core/petsc_call.hpp"
 #include "gradfric/core/reproducible_sum.hpp"
-#include "gradfric/physics/property_sampler.hpp"
+#include "gradfric/fem/mesh_sites.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -19,7 +19,7 @@ ContactBoundary::ContactBoundary(const PlateMesh& mesh, const PenaltyStiffness& 
   const std::vector<double> area = mesh.sumOverFaces(FaceSet::Bottom);
   // The property fields (or the bands) at the bottom faces' centres; mu_k has its own sum only
   // when a field gives it its own factor.
-  const PropertySampler sampler(grading, mesh.size().nx, mesh.size().ny);
+  const PropertySampler sampler = meshSampler(grading, mesh);
   const std::vector<double> graded = mesh.sumOverFaces(
       FaceSet::Bottom, [&](double x, double y) { return sampler.muStatic(x / length, y / length); });
   const bool ownKinetic = grading.fields && grading.fields->muKinetic != grading.fields->muStatic;

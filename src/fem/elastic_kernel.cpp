@@ -1,5 +1,6 @@
 // The specialised elastic kernels: f += -E_c K_hat u_e for every cell, scattered into f, with the
-// precomputed box-cell stiffness K_hat (E = 1).
+// precomputed box-cell stiffness K_hat (E = 1): one for every cell, or on an edge-graded mesh each
+// cell's from a table of shapes (cellShape).
 //  - elasticKernel: the dense one, a gather of the 24 element displacements, one 24x24
 //    matrix-vector product, a scatter-add (the reference, and the fallback).
 //  - elasticKernelBlocked: the same operator in the basis of the box's mirror symmetries. A box
@@ -19,12 +20,20 @@
 
 namespace gradfric::fem {
 
-__attribute__((target_clones("avx2", "default")))
-void elasticKernel(PetscInt numCells, const PetscInt* cellOffsets, const double* cellModulus, const double* stiffness,
-                   const double* u, const double* v, double beta, double* f, const PetscInt* outOffsets) {
+namespace {
+
+// One cell shape (stiffness) for all cells, or the shape of each cell (cellShape: an index into
+// the table of 576-value stiffnesses). Inlined into each clone, so the uniform mesh's loop is
+// the one it always was.
+template <bool Shaped>
+__attribute__((always_inline)) inline void denseCells(PetscInt numCells, const PetscInt* cellOffsets,
+                                                      const double* cellModulus, const double* stiffnesses,
+                                                      const int* cellShape, const double* u, const double* v,
+                                                      double beta, double* f, const PetscInt* outOffsets) {
   for (PetscInt c = 0; c < numCells; ++c) {
     const PetscInt* off = cellOffsets + 8 * c;
     const PetscInt* out = (outOffsets ? outOffsets : cellOffsets) + 8 * c;
+    const double* stiffness = Shaped ? stiffnesses + 576 * cellShape[c] : stiffnesses;
     double ue[24];
     if (v && beta != 0.0) {
       for (int a = 0; a < 8; ++a)
@@ -46,6 +55,18 @@ void elasticKernel(PetscInt numCells, const PetscInt* cellOffsets, const double*
     for (int a = 0; a < 8; ++a)
       for (int d = 0; d < 3; ++d) f[out[a] + d] += scale * fe[3 * a + d];
   }
+}
+
+}  // namespace
+
+__attribute__((target_clones("avx2", "default")))
+void elasticKernel(PetscInt numCells, const PetscInt* cellOffsets, const double* cellModulus, const double* stiffness,
+                   const double* u, const double* v, double beta, double* f, const PetscInt* outOffsets,
+                   const int* cellShape) {
+  if (cellShape)
+    denseCells<true>(numCells, cellOffsets, cellModulus, stiffness, cellShape, u, v, beta, f, outOffsets);
+  else
+    denseCells<false>(numCells, cellOffsets, cellModulus, stiffness, nullptr, u, v, beta, f, outOffsets);
 }
 
 namespace {
@@ -92,15 +113,23 @@ inline void walshHadamard(Lanes* x) {  // x[8], in place, unnormalised
       }
 }
 
-}  // namespace
-
-__attribute__((target_clones("avx2", "default")))
-void elasticKernelBlocked(PetscInt numCells, const PetscInt* cellOffsets, const double* cellModulus,
-                          const double* blocks, const double* u, double* f, const PetscInt* outOffsets) {
+// Blocks of one shape for all cells, or each lane's cell's own (cellShape: an index into the
+// table of 72-value blocks); the same arithmetic in every lane either way.
+template <bool Shaped>
+__attribute__((always_inline)) inline void blockedCells(PetscInt numCells, const PetscInt* cellOffsets,
+                                                        const double* cellModulus, const double* blocks,
+                                                        const int* cellShape, const double* u, double* f,
+                                                        const PetscInt* outOffsets) {
   for (PetscInt c = 0; c < numCells; c += 4) {
     const int lanes = static_cast<int>(std::min<PetscInt>(4, numCells - c));
     const PetscInt* off[4];
     for (int l = 0; l < 4; ++l) off[l] = cellOffsets + 8 * (c + std::min(l, lanes - 1));  // short tail: repeat
+    const double* laneBlocks[4] = {blocks, blocks, blocks, blocks};
+    if (Shaped)
+      for (int l = 0; l < 4; ++l) laneBlocks[l] = blocks + 72 * cellShape[c + std::min(l, lanes - 1)];
+    // Four cells of one shape (most of a graded mesh's interior): one block for all lanes.
+    const bool oneShape = !Shaped || (laneBlocks[1] == laneBlocks[0] && laneBlocks[2] == laneBlocks[0] &&
+                                      laneBlocks[3] == laneBlocks[0]);
     Lanes w[3][8];
     for (int a = 0; a < 8; ++a)
       for (int d = 0; d < 3; ++d)
@@ -108,12 +137,22 @@ void elasticKernelBlocked(PetscInt numCells, const PetscInt* cellOffsets, const 
     for (int d = 0; d < 3; ++d) walshHadamard(w[d]);
     Lanes g[3][8];
     for (int chi = 0; chi < 8; ++chi) {
-      const double* B = blocks + 9 * chi;
       const int s0 = chi ^ 1, s1 = chi ^ 2, s2 = chi ^ 4;
       const Lanes x0 = w[0][s0], x1 = w[1][s1], x2 = w[2][s2];
-      g[0][s0] = B[0] * x0 + B[1] * x1 + B[2] * x2;
-      g[1][s1] = B[3] * x0 + B[4] * x1 + B[5] * x2;
-      g[2][s2] = B[6] * x0 + B[7] * x1 + B[8] * x2;
+      if (!oneShape) {
+        Lanes B[9] = {};  // block chi, each lane its cell's
+        for (int i = 0; i < 9; ++i)
+          B[i] = Lanes{laneBlocks[0][9 * chi + i], laneBlocks[1][9 * chi + i], laneBlocks[2][9 * chi + i],
+                       laneBlocks[3][9 * chi + i]};
+        g[0][s0] = B[0] * x0 + B[1] * x1 + B[2] * x2;
+        g[1][s1] = B[3] * x0 + B[4] * x1 + B[5] * x2;
+        g[2][s2] = B[6] * x0 + B[7] * x1 + B[8] * x2;
+      } else {
+        const double* B = laneBlocks[0] + 9 * chi;
+        g[0][s0] = B[0] * x0 + B[1] * x1 + B[2] * x2;
+        g[1][s1] = B[3] * x0 + B[4] * x1 + B[5] * x2;
+        g[2][s2] = B[6] * x0 + B[7] * x1 + B[8] * x2;
+      }
     }
     for (int d = 0; d < 3; ++d) walshHadamard(g[d]);
     Lanes scale = {};
@@ -126,6 +165,18 @@ void elasticKernelBlocked(PetscInt numCells, const PetscInt* cellOffsets, const 
         for (int d = 0; d < 3; ++d) f[out[a] + d] += g[d][a][l];
     }
   }
+}
+
+}  // namespace
+
+__attribute__((target_clones("avx2", "default")))
+void elasticKernelBlocked(PetscInt numCells, const PetscInt* cellOffsets, const double* cellModulus,
+                          const double* blocks, const double* u, double* f, const PetscInt* outOffsets,
+                          const int* cellShape) {
+  if (cellShape)
+    blockedCells<true>(numCells, cellOffsets, cellModulus, blocks, cellShape, u, f, outOffsets);
+  else
+    blockedCells<false>(numCells, cellOffsets, cellModulus, blocks, nullptr, u, f, outOffsets);
 }
 
 }  // namespace gradfric::fem

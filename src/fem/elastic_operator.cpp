@@ -3,7 +3,7 @@
 #include "gradfric/core/petsc_call.hpp"
 #include "gradfric/core/reproducible_sum.hpp"
 #include "gradfric/fem/log_events.hpp"
-#include "gradfric/physics/property_sampler.hpp"
+#include "gradfric/fem/mesh_sites.hpp"
 
 #include <algorithm>
 #include <numeric>
@@ -33,16 +33,24 @@ ElasticOperator::ElasticOperator(const PlateMesh& mesh, double youngsModulus, do
                                  double stiffnessDamping, const Grading& grading, ElementType element,
                                  bool blockedKernel)
     : mesh_(mesh),
-      element_(makeBoxElement(mesh.hx(), mesh.hy(), mesh.hz(), poissonRatio, element)),
       beta_(stiffnessDamping) {
   evKernel_ = femLogEvents().elastic;
   evGeneric_ = femLogEvents().generic;
   const double length = mesh.size().length;
   cellModulus_.resize(mesh.localCells());
-  const PropertySampler sampler(grading, mesh.size().nx, mesh.size().ny);  // field or bands at the cell centroid
+  const PropertySampler sampler = meshSampler(grading, mesh);  // field or bands at the cell centroid
   for (PetscInt c = 0; c < mesh.localCells(); ++c)
     cellModulus_[c] = youngsModulus * sampler.modulus(mesh.cellCentres()[c][0] / length, mesh.cellCentres()[c][1] / length);
-  blocked_ = blockedKernel && reflectionBlocks(element_.stiffness.data(), &blocks_);
+  blocked_ = blockedKernel;
+  for (const std::array<double, 3>& h : mesh.shapes()) {
+    elements_.push_back(makeBoxElement(h[0], h[1], h[2], poissonRatio, element));
+    const std::array<double, 576>& k = elements_.back().stiffness;
+    stiffnesses_.insert(stiffnesses_.end(), k.begin(), k.end());
+    std::array<double, 72> blocks{};
+    blocked_ = blocked_ && reflectionBlocks(k.data(), &blocks);
+    blocks_.insert(blocks_.end(), blocks.begin(), blocks.end());
+  }
+  if (mesh.shapes().size() > 1) cellShape_ = mesh.cellShape();
   setupReference();
   GF_CALL(DMCreateGlobalVector(dmU_, uGlobal_.out()));
   GF_CALL(VecDuplicate(uGlobal_, fGlobal_.out()));
@@ -58,6 +66,7 @@ ElasticOperator::ElasticOperator(const PlateMesh& mesh, double youngsModulus, do
     for (PetscInt c : ordered.boundaryCells()) {
       boundaryDispOff_.insert(boundaryDispOff_.end(), cellDispOff_.begin() + 8 * c, cellDispOff_.begin() + 8 * c + 8);
       boundaryModulus_.push_back(cellModulus_[c]);
+      if (!cellShape_.empty()) boundaryShape_.push_back(cellShape_[c]);
     }
     boundarySlots_ = ordered.cornerSlots(3);
     slots_.assign(ordered.slotCount(3), 0.0);
@@ -68,12 +77,13 @@ void ElasticOperator::reorderSharedSums(const double* uLocal, double* global) {
   if (!shared_) return;
   std::fill(slots_.begin(), slots_.end(), 0.0);
   const PetscInt cells = static_cast<PetscInt>(boundaryModulus_.size());
+  const int* shape = boundaryShape_.empty() ? nullptr : boundaryShape_.data();
   if (blocked_)
     elasticKernelBlocked(cells, boundaryDispOff_.data(), boundaryModulus_.data(), blocks_.data(), uLocal, slots_.data(),
-                         boundarySlots_.data());
+                         boundarySlots_.data(), shape);
   else
-    elasticKernel(cells, boundaryDispOff_.data(), boundaryModulus_.data(), element_.stiffness.data(), uLocal, nullptr,
-                  0.0, slots_.data(), boundarySlots_.data());
+    elasticKernel(cells, boundaryDispOff_.data(), boundaryModulus_.data(), stiffnesses_.data(), uLocal, nullptr, 0.0,
+                  slots_.data(), boundarySlots_.data(), shape);
   mesh_.orderedAssembly().finish(3, slots_, global, 3, 0);
 }
 
@@ -96,12 +106,15 @@ void ElasticOperator::shuffleCellOrder(unsigned seed) {
   std::shuffle(order.begin(), order.end(), std::mt19937(seed));
   std::vector<PetscInt> offsets(cellDispOff_.size());
   std::vector<double> modulus(cells);
+  std::vector<int> shape(cellShape_.empty() ? 0 : cells);
   for (PetscInt c = 0; c < cells; ++c) {
     std::copy_n(cellDispOff_.begin() + 8 * order[c], 8, offsets.begin() + 8 * c);
     modulus[c] = cellModulus_[order[c]];
+    if (!shape.empty()) shape[c] = cellShape_[order[c]];
   }
   cellDispOff_ = std::move(offsets);
   shuffledModulus_ = std::move(modulus);
+  shuffledShape_ = std::move(shape);
 }
 
 void ElasticOperator::setForce(Vec X, Vec F) {
@@ -197,7 +210,7 @@ void ElasticOperator::cellStresses(Vec X, std::vector<std::array<double, 6>>* st
     double ue[24];
     for (int a = 0; a < 8; ++a)
       for (int d = 0; d < 3; ++d) ue[3 * a + d] = xl[off[8 * c + a] + d];
-    (*stress)[c] = cellAverageStress(element_, cellModulus_[c], ue);
+    (*stress)[c] = cellAverageStress(elements_[mesh_.cellShape()[c]], cellModulus_[c], ue);
   }
   GF_CALL(VecRestoreArrayRead(xLocal_, &xl));
 }
@@ -220,10 +233,12 @@ void ElasticOperator::kernelForce(Vec uLocal, Vec fLocal) {
 void ElasticOperator::applyKernel(const double* u, double* f) const {
   const PetscInt cells = mesh_.localCells();
   const double* modulus = shuffledModulus_.empty() ? cellModulus_.data() : shuffledModulus_.data();
+  const std::vector<int>& shapes = shuffledModulus_.empty() ? cellShape_ : shuffledShape_;
+  const int* shape = shapes.empty() ? nullptr : shapes.data();
   if (blocked_)
-    elasticKernelBlocked(cells, cellDispOff_.data(), modulus, blocks_.data(), u, f);
+    elasticKernelBlocked(cells, cellDispOff_.data(), modulus, blocks_.data(), u, f, nullptr, shape);
   else
-    elasticKernel(cells, cellDispOff_.data(), modulus, element_.stiffness.data(), u, nullptr, 0.0, f);
+    elasticKernel(cells, cellDispOff_.data(), modulus, stiffnesses_.data(), u, nullptr, 0.0, f, nullptr, shape);
 }
 
 void ElasticOperator::forceSpecialised(Vec u, Vec f) {
@@ -247,10 +262,12 @@ void ElasticOperator::addStiffnessDiagonal(Vec diag) {
   PetscScalar* d = nullptr;
   GF_CALL(VecGetArray(local, &d));
   const std::vector<double>& modulus = shuffledModulus_.empty() ? cellModulus_ : shuffledModulus_;
-  for (PetscInt c = 0; c < mesh_.localCells(); ++c)
+  const std::vector<int>& shapes = shuffledModulus_.empty() ? cellShape_ : shuffledShape_;
+  for (PetscInt c = 0; c < mesh_.localCells(); ++c) {
+    const double* stiffness = stiffnesses_.data() + (shapes.empty() ? 0 : 576 * shapes[c]);
     for (int a = 0; a < 8; ++a)
-      for (int k = 0; k < 3; ++k)
-        d[cellDispOff_[8 * c + a] + k] += modulus[c] * element_.stiffness[25 * (3 * a + k)];
+      for (int k = 0; k < 3; ++k) d[cellDispOff_[8 * c + a] + k] += modulus[c] * stiffness[25 * (3 * a + k)];
+  }
   GF_CALL(VecRestoreArray(local, &d));
   OwnedVec assembled;  // diag + the diagonal, its shared sums in the global cell order
   GF_CALL(VecDuplicate(diag, assembled.out()));
@@ -262,7 +279,7 @@ void ElasticOperator::addStiffnessDiagonal(Vec diag) {
       3, [&](PetscInt c, double* values) {
         for (int a = 0; a < 8; ++a)
           for (int k = 0; k < 3; ++k)  // c is a mesh cell: E in mesh order
-            values[3 * a + k] = cellModulus_[c] * element_.stiffness[25 * (3 * a + k)];
+            values[3 * a + k] = cellModulus_[c] * elements_[mesh_.cellShape()[c]].stiffness[25 * (3 * a + k)];
       },
       g, 3, 0);
   GF_CALL(VecRestoreArray(assembled, &g));

@@ -47,7 +47,7 @@ void ElasticOperator::setupReference() {
   GF_CALL(DMGetDS(dmU_, &ds));
   GF_CALL(PetscDSSetRHSResidual(ds, 0, nullptr, g1Elastic));
   GF_CALL(PetscDSSetImplicit(ds, 0, PETSC_FALSE));  // else the RHS residual is silently zero (3.18)
-  const PetscScalar constants[1] = {element_.poissonRatio};
+  const PetscScalar constants[1] = {elements_.front().poissonRatio};
   GF_CALL(PetscDSSetConstants(ds, 1, const_cast<PetscScalar*>(constants)));
   // E per cell as a piecewise-constant auxiliary field.
   GF_CALL(DMClone(dm, dmAux_.out()));

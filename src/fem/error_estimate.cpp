@@ -37,6 +37,7 @@ struct StudyRow {
   std::string law, property, element, contact;
   double slipLength = 0, delta = 0, dtSafety = 0, mu = 0;
   int n = 0, nz = 0;
+  double edgeRatio = 1, edgeBand = 0;  // the mesh's edge grading (edge_grading.hpp; ratio 1: uniform)
 };
 
 const std::vector<StudyRow>& studyRows() {
@@ -48,8 +49,8 @@ const std::vector<StudyRow>& studyRows() {
       if (line.empty() || line[0] == '#') continue;
       std::istringstream fields(line);
       StudyRow r;
-      if (fields >> r.law >> r.slipLength >> r.property >> r.delta >> r.n >> r.nz >> r.element >> r.dtSafety >> r.contact >>
-          r.mu)
+      if (fields >> r.law >> r.slipLength >> r.property >> r.delta >> r.n >> r.nz >> r.edgeRatio >> r.edgeBand >>
+          r.element >> r.dtSafety >> r.contact >> r.mu)
         parsed.push_back(r);
     }
     return parsed;
@@ -97,15 +98,28 @@ std::string percent(double fraction) {
   return text;
 }
 
-// The study's mu_s for the settings given (nullptr: not run).
+bool sameMesh(const StudyRow& r, const EdgeGrading& edge) {
+  if (edge.uniform()) return r.edgeRatio == 1.0;
+  return near(r.edgeRatio, edge.ratio) && near(r.edgeBand, edge.band);
+}
+
+// The study's mu_s for the settings given (nullptr: not run), on a mesh graded as `edge` (the
+// thickness, time-step and contact terms: the uniform mesh, EdgeGrading{}).
 const StudyRow* find(const FemParameters& q, const std::string& property, double delta, int n, int nz,
-                     double dtSafety, const char* contact) {
+                     double dtSafety, const char* contact, const EdgeGrading& edge = {}) {
   for (const StudyRow& r : studyRows())
     if (r.law == q.frictionLaw.name && near(r.slipLength, q.frictionLaw.slipLength) && r.property == property &&
-        std::fabs(r.delta - delta) < 1e-9 && r.n == n && r.nz == nz && r.element == elementTypeName(q.element) &&
-        std::fabs(r.dtSafety - dtSafety) < 1e-9 && r.contact == contact)
+        std::fabs(r.delta - delta) < 1e-9 && r.n == n && r.nz == nz && sameMesh(r, edge) &&
+        r.element == elementTypeName(q.element) && std::fabs(r.dtSafety - dtSafety) < 1e-9 && r.contact == contact)
       return &r;
   return nullptr;
+}
+
+std::string meshName(const FemParameters& q) {
+  if (q.edge.uniform()) return "";
+  char text[120];
+  std::snprintf(text, sizeof text, " edge-graded (ratio %g, band %g m)", q.edge.ratio, q.edge.band);
+  return text;
 }
 
 // The bound of one member of a refinement ladder (coarse, medium, fine at ratio 2; member 0, 1
@@ -155,22 +169,22 @@ ErrorTerm meshTerm(const FemParameters& q, const Grading& g, bool* coversThickne
       bool complete = true;
       for (int k = 0; k < 3; ++k)
         complete = complete && (m[k] = find(q, property, delta, coarsest << k, allDirections ? coarsestNz << k : q.nz,
-                                            0.6, "penalty")) != nullptr;
+                                            0.6, "penalty", q.edge)) != nullptr;
       if (!complete) continue;
-      char ladder[160];
+      char ladder[240];
       if (allDirections)
-        std::snprintf(ladder, sizeof ladder, "%dx%dx%d/%dx%dx%d/%dx%dx%d, all directions (run %dx%dx%d)", coarsest,
+        std::snprintf(ladder, sizeof ladder, "%dx%dx%d/%dx%dx%d/%dx%dx%d%s, all directions (run %dx%dx%d)", coarsest,
                       coarsest, coarsestNz, 2 * coarsest, 2 * coarsest, 2 * coarsestNz, 4 * coarsest, 4 * coarsest,
-                      4 * coarsestNz, q.nx, q.nx, q.nz);
+                      4 * coarsestNz, meshName(q).c_str(), q.nx, q.nx, q.nz);
       else
-        std::snprintf(ladder, sizeof ladder, "%dx%d/%d/%d x %d (run %dx%d)", coarsest, coarsest, 2 * coarsest,
-                      4 * coarsest, q.nz, q.nx, q.nx);
+        std::snprintf(ladder, sizeof ladder, "%dx%d/%d/%d x %d%s (run %dx%d)", coarsest, coarsest, 2 * coarsest,
+                      4 * coarsest, q.nz, meshName(q).c_str(), q.nx, q.nx);
       *coversThickness = allDirections;
       return ladderTerm("mesh", ladder, m, member);
     }
-  char text[200];
-  std::snprintf(text, sizeof text, "mesh %dx%dx%d %s (%s) not in the mesh study", q.nx, q.ny, q.nz,
-                elementTypeName(q.element), g.active() ? "graded" : "non-graded");
+  char text[300];
+  std::snprintf(text, sizeof text, "mesh %dx%dx%d%s %s (%s) not in the mesh study", q.nx, q.ny, q.nz,
+                meshName(q).c_str(), elementTypeName(q.element), g.active() ? "graded" : "non-graded");
   return {false, 0, text};
 }
 

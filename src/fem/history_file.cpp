@@ -4,7 +4,7 @@
 #include "gradfric/fem/error_estimate.hpp"
 #include "gradfric/io/file_room.hpp"
 #include "gradfric/io/hdf5_attributes.hpp"
-#include "gradfric/physics/property_sampler.hpp"
+#include "gradfric/fem/mesh_sites.hpp"
 
 #include <algorithm>
 #include <limits>
@@ -138,10 +138,11 @@ void writeHistoryFile(hid_t file, const HistoryContent& c) {
   {  // The property fields used: E per cell column, friction per bottom-face column (both vary along x only).
     const FemParameters& q = model.params();
     const Grading& g = model.grading();
-    const PropertySampler sampler(g, q.nx, q.ny);  // the fields (-field_*) or the bands
+    const MeshAxis columns = meshAxisX(q), rows = meshAxisY(q);  // mapped on a graded mesh
+    const PropertySampler sampler = meshSampler(g, columns, rows);  // the fields (-field_*) or the bands
     std::vector<double> x, modulus, muS, muK;
     for (int i = 0; i < q.nx; ++i) {
-      const double centre = (i + 0.5) / q.nx;
+      const double centre = columns.unitCentre(i);
       x.push_back(centre * q.plate.length);
       modulus.push_back(q.plate.youngsModulus * sampler.modulus(centre, 0.5));
       muS.push_back(q.plate.muStatic * sampler.muStatic(centre, 0.5));
@@ -151,7 +152,7 @@ void writeHistoryFile(hid_t file, const HistoryContent& c) {
       std::vector<double> maps[4];
       for (int j = 0; j < q.ny; ++j)
         for (int i = 0; i < q.nx; ++i) {
-          const double u = (i + 0.5) / q.nx, v = (j + 0.5) / q.ny;
+          const double u = columns.unitCentre(i), v = rows.unitCentre(j);
           maps[0].push_back(q.plate.youngsModulus * sampler.modulus(u, v));
           maps[1].push_back(q.plate.muStatic * sampler.muStatic(u, v));
           maps[2].push_back(q.plate.muKinetic * sampler.muKinetic(u, v));

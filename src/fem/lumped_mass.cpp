@@ -6,9 +6,9 @@
 namespace gradfric::fem {
 
 LumpedMass::LumpedMass(const PlateMesh& mesh, double density) : comm_(mesh.comm()) {
-  const double volume = mesh.hx() * mesh.hy() * mesh.hz();
-  const double share = density * volume / 8.0;
-  mass_ = mesh.sumOverCells(std::vector<double>(mesh.localCells(), share));
+  std::vector<double> share(mesh.localCells());  // each cell's mass on each of its corners
+  for (PetscInt c = 0; c < mesh.localCells(); ++c) share[c] = density * mesh.cellVolume(c) / 8.0;
+  mass_ = mesh.sumOverCells(share);
   inverse_.resize(mass_.size());
   for (std::size_t b = 0; b < mass_.size(); ++b) inverse_[b] = 1.0 / mass_[b];
 }

@@ -9,17 +9,14 @@
 
 namespace gradfric::fem {
 
-OrderedAssembly::OrderedAssembly(DM dm, int nx, int ny, double hx, double hy, double hz, PetscInt vStart,
-                                 PetscInt vEnd, const std::vector<PetscInt>& cellVertices,
-                                 const std::vector<std::array<double, 3>>& cellCentres,
+OrderedAssembly::OrderedAssembly(DM dm, int nx, int ny, PetscInt vStart, PetscInt vEnd,
+                                 const std::vector<PetscInt>& cellVertices, const std::vector<long>& cellGlobal,
                                  const std::vector<PetscInt>& blockOfVertex)
     : comm_(PetscObjectComm(reinterpret_cast<PetscObject>(dm))) {
   // The global cell index, x fastest: the order of the serial mesh, kept by the distribution.
-  const std::size_t cells = cellCentres.size();
+  const std::size_t cells = cellGlobal.size();
   long previous = -1;
-  for (const std::array<double, 3>& c : cellCentres) {
-    const long i = std::lround(c[0] / hx - 0.5), j = std::lround(c[1] / hy - 0.5), k = std::lround(c[2] / hz - 0.5);
-    const long key = (k * ny + j) * nx + i;
+  for (const long key : cellGlobal) {
     if (key <= previous)
       throw std::logic_error("plate mesh: this rank's cells are not in the global cell order, so the assembled "
                              "forces would depend on the partition");

@@ -95,6 +95,7 @@ void FemParameters::resolveDerived() {
   const double H = plate.thickness;
   if (kn <= 0) kn = penaltyFactor * shearModulus() / H;
   if (kt <= 0) kt = kn;
+  if (edge.band <= 0) edge.band = plate.length / kGradingBands;
   const double cs = shearWaveSpeed();
   if (settleDamping < 0) settleDamping = cs / H;
   if (peakDamping < 0) peakDamping = cs / H;
@@ -124,6 +125,30 @@ FrictionMeasurement derivedMeasurement() {
   return m;
 }
 
+// The edge grading's values, and nx, ny multiples of its unit (edge_grading.hpp).
+static void requireEdgeGrading(const OptionReader& o, const FemParameters& q) {
+  const double ratio = q.edge.ratio, L = q.plate.length;
+  if (!(ratio == 1.0 || (ratio >= kEdgeRatioMin && ratio <= kEdgeRatioMax)))
+    throw InputError(o.fullName("edge_ratio"), formatReal(ratio),
+                     "1 (uniform) or " + formatReal(kEdgeRatioMin) + " <= ratio <= " + formatReal(kEdgeRatioMax));
+  if (o.wasSet("edge_band")) {
+    const int bands = refinedBandsOf(q.edge.band, L);
+    if (!(q.edge.band > 0) || bands < 1 || bands > kEdgeBandsMax)
+      throw InputError(o.fullName("edge_band"), formatReal(q.edge.band),
+                       "k L/10 [m] with k = 1.." + std::to_string(kEdgeBandsMax) + " (L/10 = " + formatReal(L / kGradingBands) +
+                           " m: the grading bands' boundaries stay on element faces)");
+  }
+  if (q.edge.uniform()) return;
+  const EdgeMap map(ratio, refinedBandsOf(q.edge.band > 0 ? q.edge.band : L / kGradingBands, L));
+  for (const char* name : {"nx", "ny"}) {
+    const int n = name[1] == 'x' ? q.nx : q.ny;
+    if (n % map.cellsPerUnit() != 0)
+      throw InputError(o.fullName(name), std::to_string(n),
+                       "a multiple of " + std::to_string(map.cellsPerUnit()) + " with -fem_edge_ratio " + formatReal(ratio) +
+                           " (the cells of one unit of this grading: every band holds whole cells)");
+  }
+}
+
 FemParameters readFemParameters(MPI_Comm comm, RunParameters* record, const Plate& plate) {
   OptionReader o(comm, "fem_", "Finite-element plate model (3D, explicit)", record);
   FemParameters q;
@@ -131,6 +156,15 @@ FemParameters readFemParameters(MPI_Comm comm, RunParameters* record, const Plat
   q.nx = static_cast<int>(o.integer("nx", q.nx, 1, 100000, "1", "hexahedra along x (grading axis)"));
   q.ny = static_cast<int>(o.integer("ny", q.ny, 1, 100000, "1", "hexahedra along y"));
   q.nz = static_cast<int>(o.integer("nz", q.nz, 1, 100000, "1", "hexahedra through the thickness"));
+  q.edge.ratio = o.real("edge_ratio", q.edge.ratio, "1",
+                        "in-plane mesh graded toward the edges: interior element size / edge element size (1: uniform; "
+                        "else 1.1 to 16, the cells shrinking smoothly across the edge bands, nx and ny multiples of the "
+                        "grading's unit, which is printed; docs/fem.md)");
+  if (auto band = o.realIfSet("edge_band", "m",
+                              "width of the refined band at each edge with -fem_edge_ratio: k L/10, k = 1..4 (the "
+                              "grading bands' boundaries stay on element faces)",
+                              "L/10"))
+    q.edge.band = *band;
   q.element = o.choice("element", elementTypeName(q.element), {"q1", "q1i"},
                        "hexahedron: q1 trilinear, q1i with incompatible bending modes (C3D8I-like, condensed)") == "q1"
                   ? ElementType::Trilinear
@@ -205,6 +239,7 @@ FemParameters readFemParameters(MPI_Comm comm, RunParameters* record, const Plat
   o.requireAtLeast("nx", q.nx, 1);
   o.requireAtLeast("ny", q.ny, 1);
   o.requireAtLeast("nz", q.nz, 1);
+  requireEdgeGrading(o, q);
   if (isStateLaw(q.frictionLaw)) {  // the memory belongs to the stateless laws
     const char* allowed = "only with -friction_law exponential or coulomb (the state law's length is -friction_d_c)";
     if (o.wasSet("slip_length")) throw InputError(o.fullName("slip_length"), formatReal(q.slipLength), allowed);
@@ -261,6 +296,7 @@ FemParameters readFemParameters(MPI_Comm comm, RunParameters* record, const Plat
     o.recordDerived("peak_damping", derived.peakDamping, "1/s", "damping towards the slider from the confirmed peak on");
   if (!o.wasSet("ramp_time")) o.recordDerived("ramp_time", derived.rampTime, "s", "pressure ramp duration");
   if (!o.wasSet("settle_time")) o.recordDerived("settle_time", derived.settleTime, "s", "hold under pressure");
+  if (!o.wasSet("edge_band")) o.recordDerived("edge_band", derived.edge.band, "m", "width of the refined band at each edge");
   if (!o.wasSet("slide_time")) o.recordDerived("slide_time", derived.slideTime, "s", "longest sliding duration");
   return derived;
 }

@@ -26,12 +26,15 @@ void createQ1(MPI_Comm comm, const char* name, PetscFE* fe) {
 }  // namespace
 
 PlateMesh::PlateMesh(MPI_Comm comm, const MeshSize& size, const std::string& partitioner)
-    : comm_(comm), size_(size) {
+    : comm_(comm),
+      size_(size),
+      axisX_(makeMeshAxis(size.edge, size.nx, size.length)),
+      axisY_(makeMeshAxis(size.edge, size.ny, size.length)) {
   build(partitioner);
   buildCells();
   buildOwnedVertices();
-  ordered_ = std::make_unique<OrderedAssembly>(dm_, size_.nx, size_.ny, hx(), hy(), hz(), vStart_, vEnd_,
-                                               cellVertices_, cellCentre_, blockOfVertex_);
+  ordered_ = std::make_unique<OrderedAssembly>(dm_, size_.nx, size_.ny, vStart_, vEnd_, cellVertices_, cellGlobal_,
+                                               blockOfVertex_);
 }
 
 PetscInt PlateMesh::globalVertices() const {
@@ -44,6 +47,7 @@ void PlateMesh::build(const std::string& partitioner) {
   const PetscReal upper[3] = {size_.length, size_.length, size_.thickness};
   OwnedDM serial;
   GF_CALL(DMPlexCreateBoxMesh(comm_, 3, PETSC_FALSE, faces, lower, upper, nullptr, PETSC_TRUE, serial.out()));
+  if (graded()) mapCoordinates(serial);
   DM distributed = distributeMesh(serial, partitioner);
   if (distributed) {
     dm_ = OwnedDM(distributed);
@@ -57,6 +61,29 @@ void PlateMesh::build(const std::string& partitioner) {
   GF_CALL(DMSetField(dm_, 0, nullptr, reinterpret_cast<PetscObject>(feU.fe)));
   GF_CALL(DMSetField(dm_, 1, nullptr, reinterpret_cast<PetscObject>(feV.fe)));
   GF_CALL(DMCreateDS(dm_));
+}
+
+// The box's vertex at x = i L/nx (and y) moves to the map's node i: the serial mesh, before the
+// distribution, so every rank sees the mapped coordinates (and the partition is the uniform one's).
+void PlateMesh::mapCoordinates(DM serial) const {
+  Vec coords = nullptr;
+  GF_CALL(DMGetCoordinatesLocal(serial, &coords));
+  OwnedVec mapped;
+  GF_CALL(VecDuplicate(coords, mapped.out()));
+  GF_CALL(VecCopy(coords, mapped));
+  PetscInt n = 0;
+  GF_CALL(VecGetLocalSize(mapped, &n));
+  PetscScalar* x = nullptr;
+  GF_CALL(VecGetArray(mapped, &x));
+  const auto node = [](const MeshAxis& axis, double v) {
+    return axis.nodes[std::lround(v / axis.length() * axis.cells())];
+  };
+  for (PetscInt i = 0; i < n; i += 3) {
+    x[i] = node(axisX_, x[i]);
+    x[i + 1] = node(axisY_, x[i + 1]);
+  }
+  GF_CALL(VecRestoreArray(mapped, &x));
+  GF_CALL(DMSetCoordinatesLocal(serial, mapped));
 }
 
 // Every cell is an axis-aligned box: its vertices are put in element order by their position
@@ -115,6 +142,24 @@ void PlateMesh::buildCells() {
     cellCentre_[cell] = {centre[0], centre[1], centre[2]};
   }
   GF_CALL(VecRestoreArrayRead(coords, &x));
+  buildShapes();
+}
+
+// The cell's place in the serial mesh (x fastest), from its centre; its box from the width
+// classes of its column and row.
+void PlateMesh::buildShapes() {
+  const int classesY = static_cast<int>(axisY_.classWidth.size());
+  for (std::size_t cx = 0; cx < axisX_.classWidth.size(); ++cx)
+    for (int cy = 0; cy < classesY; ++cy) shapes_.push_back({axisX_.classWidth[cx], axisY_.classWidth[cy], hz()});
+  cellShape_.resize(numCells_);
+  cellGlobal_.resize(numCells_);
+  for (PetscInt c = 0; c < numCells_; ++c) {
+    const std::array<double, 3>& centre = cellCentre_[c];
+    const int i = axisX_.cellAt(centre[0]), j = axisY_.cellAt(centre[1]);
+    const long k = std::lround(centre[2] / hz() - 0.5);
+    cellShape_[c] = axisX_.widthClass[i] * classesY + axisY_.widthClass[j];
+    cellGlobal_[c] = (k * size_.ny + j) * size_.nx + i;
+  }
 }
 
 void PlateMesh::buildOwnedVertices() {
@@ -176,13 +221,14 @@ std::vector<double> PlateMesh::sumOverCells(const std::vector<double>& cellShare
 // A face of the set is a cell's bottom (corners a < 4) or top (a >= 4) in the bottom or top
 // layer; its centre has the cell centre's x and y.
 std::vector<double> PlateMesh::sumOverFaces(FaceSet set, const std::function<double(double, double)>& weight) const {
-  const double quarter = hx() * hy() / 4.0;
   const bool top = set == FaceSet::Top;
   const double layerZ = top ? size_.thickness - 0.5 * hz() : 0.5 * hz();
   std::vector<double> faceShare(numCells_, 0.0);
   for (PetscInt c = 0; c < numCells_; ++c) {
     const std::array<double, 3>& centre = cellCentre_[c];
-    if (std::fabs(centre[2] - layerZ) < 0.25 * hz()) faceShare[c] = weight ? quarter * weight(centre[0], centre[1]) : quarter;
+    if (!(std::fabs(centre[2] - layerZ) < 0.25 * hz())) continue;
+    const double quarter = cellSize(c)[0] * cellSize(c)[1] / 4.0;
+    faceShare[c] = weight ? quarter * weight(centre[0], centre[1]) : quarter;
   }
   return assemble([&](PetscInt c, int a) { return (a >= 4) == top ? faceShare[c] : 0.0; });
 }

@@ -3,7 +3,7 @@
 #include "gradfric/core/petsc_call.hpp"
 #include "gradfric/core/reproducible_sum.hpp"
 #include "gradfric/fem/log_events.hpp"
-#include "gradfric/physics/property_sampler.hpp"
+#include "gradfric/fem/mesh_sites.hpp"
 
 #include <cmath>
 
@@ -16,14 +16,14 @@ FemParameters resolved(FemParameters q) {
   return q;
 }
 
-MeshSize meshSize(const FemParameters& q) { return {q.nx, q.ny, q.nz, q.plate.length, q.plate.thickness}; }
+MeshSize meshSize(const FemParameters& q) { return {q.nx, q.ny, q.nz, q.plate.length, q.plate.thickness, q.edge}; }
 
 // A static pressure field (-field_p_*) as the top load's shape p(x, y)/p; empty when uniform. Used
 // while the top loading is built only.
 std::function<double(double, double)> pressureShapeOf(const Grading& grading, const FemParameters& q) {
   if (!grading.fields || !grading.fields->pressure) return {};
   const double length = q.plate.length;
-  return [sampler = PropertySampler(grading, q.nx, q.ny), length](double x, double y) {
+  return [sampler = meshSampler(grading, q), length](double x, double y) {
     return sampler.pressure(x / length, y / length);
   };
 }

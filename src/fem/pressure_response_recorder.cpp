@@ -80,7 +80,7 @@ PressureResponseMap PressureResponseRecorder::finish(const PlateModel& model, do
   for (std::size_t i = 0; i < nodes_; ++i) {
     const auto& node = nodes[i];
     const double slope = (sumMuP[i] - sumMu * sumP[i] / n) / variance;
-    const long long column = std::llround(node.x / mesh.hx()), row = std::llround(node.y / mesh.hy());
+    const long long column = mesh.axisX().nearestNode(node.x), row = mesh.axisY().nearestNode(node.y);
     local.insert(local.end(), {double(row * nx + column), slope, node.area,
                                (node.x - 0.5 * L) * cx + (node.y - 0.5 * L) * cy});
   }
@@ -100,7 +100,9 @@ PressureResponseMap PressureResponseRecorder::finish(const PlateModel& model, do
   }
   m.mean = mean / (L * L);
   m.momentOverThickness = moment / (L * L * H);
-  const double hx = mesh.hx(), hy = mesh.hy();
+  // Half the edge cells beyond the edge nodes (the uniform mesh's pixel; a graded mesh's map is
+  // on its node indices, its pixels unequal).
+  const double hx = mesh.axisX().width(0), hy = mesh.axisY().width(0);
   m.extent[0] = -0.5 * hx;
   m.extent[1] = L + 0.5 * hx;
   m.extent[2] = -0.5 * hy;

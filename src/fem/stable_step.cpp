@@ -4,6 +4,7 @@
 #include "gradfric/core/input_error.hpp"
 #include "gradfric/core/run_limits.hpp"
 #include "gradfric/fem/hex_element.hpp"
+#include "gradfric/fem/mesh_sites.hpp"
 #include "gradfric/physics/property_sampler.hpp"
 #include "gradfric/physics/stability.hpp"
 
@@ -18,11 +19,36 @@ namespace {
 // The largest local static coefficient of the contact: mu_s times the largest friction factor of
 // the grading or field over the bottom faces.
 double largestStaticFriction(const FemParameters& q, const Grading& grading) {
-  const PropertySampler sampler(grading, q.nx, q.ny);
+  const MeshAxis x = meshAxisX(q), y = meshAxisY(q);
+  const PropertySampler sampler = meshSampler(grading, x, y);
   double factor = 0;
   for (int j = 0; j < q.ny; ++j)
-    for (int i = 0; i < q.nx; ++i) factor = std::max(factor, sampler.muStatic((i + 0.5) / q.nx, (j + 0.5) / q.ny));
+    for (int i = 0; i < q.nx; ++i) factor = std::max(factor, sampler.muStatic(x.unitCentre(i), y.unitCentre(j)));
   return q.plate.muStatic * factor;
+}
+
+// The highest squared element frequency of an edge-graded mesh: each cell shape (a width class
+// along x and one along y) with the stiffest E among its cells; the smallest cells at the edges
+// usually decide, but a stiff band inside can.
+double gradedElementFrequencySquared(const FemParameters& q, const Grading& grading) {
+  const MeshAxis x = meshAxisX(q), y = meshAxisY(q);
+  const PropertySampler sampler = meshSampler(grading, x, y);
+  const std::size_t classesY = y.classWidth.size();
+  std::vector<double> factor(x.classWidth.size() * classesY, 0.0);
+  for (int j = 0; j < q.ny; ++j)
+    for (int i = 0; i < q.nx; ++i) {
+      double& f = factor[x.widthClass[i] * classesY + y.widthClass[j]];
+      f = std::max(f, sampler.modulus(x.unitCentre(i), y.unitCentre(j)));
+    }
+  double omega2 = 0;
+  for (std::size_t cx = 0; cx < x.classWidth.size(); ++cx)
+    for (std::size_t cy = 0; cy < classesY; ++cy) {
+      const BoxElement element = makeBoxElement(x.classWidth[cx], y.classWidth[cy], q.plate.thickness / q.nz,
+                                                q.plate.poissonRatio, q.element);
+      const double e = q.plate.youngsModulus * factor[cx * classesY + cy];
+      omega2 = std::max(omega2, elementMaxFrequencySquared(element, e, q.plate.density));
+    }
+  return omega2;
 }
 
 // frictionCoupling: the factor on the normal penalty spring (1: the springs alone).
@@ -39,9 +65,12 @@ double stableStep(const FemParameters& given, const Grading& grading, double fri
     for (int j = 0; j < q.ny; ++j)
       for (int i = 0; i < q.nx; ++i) factor = std::max(factor, sampler.modulus((i + 0.5) / q.nx, (j + 0.5) / q.ny));
   }
-  const double elementOmega2 = elementMaxFrequencySquared(element, q.plate.youngsModulus * factor, q.plate.density);
+  const double elementOmega2 = q.edge.uniform()
+                                   ? elementMaxFrequencySquared(element, q.plate.youngsModulus * factor, q.plate.density)
+                                   : gradedElementFrequencySquared(q, grading);
   double omega2 = elementOmega2;
-  // Penalty springs: k * area / nodal mass = 2 k / (rho hz) at every bottom node.
+  // Penalty springs: k * area / nodal mass = 2 k / (rho hz) at every bottom node (on a graded mesh
+  // too: a node's area and mass both sum the same in-plane cell areas).
   // Kinematic contact adds no spring: the element alone sets the step.
   if (q.contact && q.contactMethod == ContactMethod::Penalty)
     omega2 += 2.0 * std::max(q.kn * frictionCoupling, q.kt) / (q.plate.density * element.hz);

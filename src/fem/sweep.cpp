@@ -2,6 +2,8 @@
 // and the results file's layout, before any work.
 #include "gradfric/fem/sweep.hpp"
 
+#include "gradfric/fem/mesh_sites.hpp"
+
 #include "gradfric/core/input_error.hpp"
 #include "gradfric/core/petsc_call.hpp"
 #include "gradfric/ensemble/statistics.hpp"
@@ -68,9 +70,10 @@ io::SweepTable tableOf(const FemSweep& s) {
   const int n = static_cast<int>(s.params.nx);
   for (int p = 0; p < s.points(); ++p) {  // the properties the run samples (as its history file has them)
     const Grading g = s.pointGrading(p);
-    const PropertySampler sampler(g, static_cast<int>(s.params.nx), static_cast<int>(s.params.ny));
+    const MeshAxis columns = meshAxisX(s.params);
+    const PropertySampler sampler = meshSampler(g, s.params);
     for (int i = 0; i < n; ++i) {  // each hexahedron column's centre on the middle row
-      const double centre = (i + 0.5) / n;
+      const double centre = columns.unitCentre(i);
       table.modulus.push_back(plate.youngsModulus * sampler.modulus(centre, 0.5));
       table.muStatic.push_back(plate.muStatic * sampler.muStatic(centre, 0.5));
       table.muKinetic.push_back(plate.muKinetic * sampler.muKinetic(centre, 0.5));

@@ -1,5 +1,7 @@
 #include "gradfric/physics/field.hpp"
 
+#include "gradfric/physics/property_sampler.hpp"  // SiteGrid
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -107,6 +109,18 @@ double PropertyField::scaleFor(int nx, int ny) const {
   for (int j = 0; j < ny; ++j)
     for (int i = 0; i < nx; ++i) sum += profile((i + 0.5) / nx, (j + 0.5) / ny);
   return double(nx) * ny / sum;
+}
+
+double PropertyField::scaleFor(const SiteGrid& grid) const {
+  if (!normalise) return 1.0;
+  double sum = 0.0, area = 0.0;
+  for (std::size_t j = 0; j < grid.v.size(); ++j)
+    for (std::size_t i = 0; i < grid.u.size(); ++i) {
+      const double a = grid.du[i] * grid.dv[j];
+      sum += a * profile(grid.u[i], grid.v[j]);
+      area += a;
+    }
+  return area / sum;
 }
 
 bool PropertyField::variesAlongY() const {

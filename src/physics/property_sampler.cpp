@@ -13,6 +13,15 @@ PropertySampler::PropertySampler(const Grading& grading, int nx, int ny)
   if (fields_->pressure) scaleP_ = fields_->pressure->scaleFor(nx, ny);
 }
 
+PropertySampler::PropertySampler(const Grading& grading, const SiteGrid& grid)
+    : grading_(grading), fields_(grading.fields.get()) {
+  if (!fields_) return;
+  if (fields_->modulus) scaleE_ = fields_->modulus->scaleFor(grid);
+  if (fields_->muStatic) scaleS_ = fields_->muStatic->scaleFor(grid);
+  if (fields_->muKinetic) scaleK_ = fields_->muKinetic == fields_->muStatic ? scaleS_ : fields_->muKinetic->scaleFor(grid);
+  if (fields_->pressure) scaleP_ = fields_->pressure->scaleFor(grid);
+}
+
 double PropertySampler::modulus(double u, double v) const {
   if (fields_ && fields_->modulus) return field(fields_->modulus, scaleE_, u, v);
   return grading_.modulusFactor(u);

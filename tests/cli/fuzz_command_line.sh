@@ -201,6 +201,13 @@ sbm)
   ;;
 fem)
   run 2 -fem_nx "$F" -fem_nx 4294967297
+  # The mesh graded toward the edges: ratio, band and the mesh's unit (12 cells at ratio 4).
+  run 2 -fem_edge_ratio "$F" -fem_edge_ratio 0.5
+  run 2 -fem_edge_ratio "$F" -fem_edge_ratio nan
+  run 2 -fem_edge_ratio "$F" -fem_edge_ratio 17
+  run 2 -fem_edge_band "$F" -fem_edge_ratio 4 -fem_edge_band -5e-4
+  run 2 -fem_edge_band "$F" -fem_edge_ratio 4 -fem_edge_band 2.5e-3
+  run 2 -fem_ny "$F" -fem_edge_ratio 4 -fem_nx 24 -fem_ny 25
   run 2 -fem_nx "$F" -fem_nx 0
   run 2 -fem_nz "$F" -fem_nz -1
   run 2 -fem_nx "$F" -fem_nx 100000 -fem_ny 100000

@@ -135,6 +135,9 @@ TEST(FemErrorBar, OutsideTheStudiesItIsNotMeasured) {
   q = paperDefaults();
   q.nx = q.ny = 10;
   notMeasured(q, Grading{}, 0.6, "mesh 10x10x5 q1 (non-graded) not in the mesh study");
+  q = paperDefaults();  // an edge-graded mesh whose n and nz are those of the uniform ladder's rows
+  q.edge = EdgeGrading{8.0, 1e-3};
+  notMeasured(q, Grading{}, 0.6, "mesh 100x100x5 edge-graded (ratio 8, band 0.001 m) q1 (non-graded) not in the mesh study");
   q = paperDefaults();
   q.plate.slidingAngle = 90;
   notMeasured(q, Grading{}, 0.6, "sliding angle other than 0");

@@ -40,8 +40,12 @@ private:
   double cellForce(PetscInt cell, const PetscScalar* x, std::array<double, 24>* w) const;
 
   const PlateMesh& mesh_;
-  double linear_, quadratic_, density_, length_, volume_;
-  std::array<std::array<double, 3>, 8> gradient_;
+  double linear_, quadratic_, density_;
+  struct Shape {  // per cell shape (mesh.shapes()): smallest edge, volume, mean shape gradients
+    double length, volume;
+    std::array<std::array<double, 3>, 8> gradient;
+  };
+  std::vector<Shape> shapes_;
   std::vector<double> cellSpeed_;  // c_d of each local cell (graded E)
   OwnedVec xLocal_, fLocal_, fGlobal_;
 };

@@ -16,18 +16,22 @@ namespace gradfric::fem {
 // The kernel: f += -sum_cells E_c K_hat (u_e + beta v_e), scattered into f. cellOffsets: 8 local
 // offsets per cell (element node order); u, v, f index with them. v may be null (beta ignored).
 // outOffsets, when given, are where f takes the cells' forces instead (8 per cell: the ordered
-// assembly's slots). Hot: one clone per instruction set (elastic_kernel.cpp).
+// assembly's slots). Hot: one clone per instruction set (elastic_kernel.cpp). cellShape, when
+// given (an edge-graded mesh), indexes each cell's 576 values in the stiffness table.
 void elasticKernel(PetscInt numCells, const PetscInt* cellOffsets, const double* cellModulus, const double* stiffness,
-                   const double* u, const double* v, double beta, double* f, const PetscInt* outOffsets = nullptr);
+                   const double* u, const double* v, double beta, double* f, const PetscInt* outOffsets = nullptr,
+                   const int* cellShape = nullptr);
 
 // The box cell's stiffness in the basis of its three mirror symmetries (elastic_kernel.cpp): the
 // 8 diagonal 3 x 3 blocks of H K_hat H / 64, H the Walsh-Hadamard transform over the corners.
 // False when K_hat is not block diagonal in that basis (then the dense kernel must be used).
 bool reflectionBlocks(const double* stiffness, std::array<double, 72>* blocks);
 // The same force as elasticKernel (u only) through the blocks: ~4 x fewer flops, equal to
-// round-off; the scatter-add keeps the cell order.
+// round-off; the scatter-add keeps the cell order. cellShape, when given, indexes each cell's 72
+// values in the blocks table (each SIMD lane takes its cell's).
 void elasticKernelBlocked(PetscInt numCells, const PetscInt* cellOffsets, const double* cellModulus,
-                          const double* blocks, const double* u, double* f, const PetscInt* outOffsets = nullptr);
+                          const double* blocks, const double* u, double* f, const PetscInt* outOffsets = nullptr,
+                          const int* cellShape = nullptr);
 
 class ElasticOperator {
 public:
@@ -64,7 +68,9 @@ public:
   // order, as on another number of ranks. The same forces to round-off.
   void shuffleCellOrder(unsigned seed);
 
-  const BoxElement& element() const { return element_; }
+  // The box element of each cell shape (mesh.shapes(); one on a uniform mesh).
+  const BoxElement& element() const { return elements_.front(); }
+  const std::vector<BoxElement>& elements() const { return elements_; }
   const std::vector<double>& cellModulus() const { return cellModulus_; }
 
 private:
@@ -79,11 +85,14 @@ private:
   void fixSharedSums(Vec uLocal, Vec fGlobal);  // the same on PETSc vectors
 
   const PlateMesh& mesh_;
-  BoxElement element_;
+  std::vector<BoxElement> elements_;  // per shape
   double beta_;
   std::vector<double> cellModulus_;
   std::vector<double> shuffledModulus_;  // in the order of cellDispOff_ after shuffleCellOrder (else empty)
-  std::array<double, 72> blocks_{};
+  std::vector<double> stiffnesses_, blocks_;  // per shape: 576 and 72 values
+  // Per cell its shape in those tables, only when there is more than one (else the kernels take
+  // the single shape's values and no index: the uniform mesh's loops, unchanged).
+  std::vector<int> cellShape_, shuffledShape_, boundaryShape_;
   bool blocked_ = false;  // K_hat is block diagonal in the mirror basis (every box cell)
   std::vector<PetscInt> cellDispOff_;  // 8 offsets into a local displacement vector per cell
   // The ordered assembly's boundary cells: their displacement offsets, E and force slots.

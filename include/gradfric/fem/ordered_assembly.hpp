@@ -25,12 +25,11 @@ namespace gradfric::fem {
 class OrderedAssembly {
 public:
   // cellVertices: 8 per local cell in element order (a = i + 2 j + 4 k), vertex point minus
-  // vStart; cellCentres for the cells' global order; blockOfVertex: the owned block of a vertex
-  // (minus vStart) or -1. Throws if this rank's cells are not in global order (the sums off the
-  // shared vertices rely on it).
-  OrderedAssembly(DM dm, int nx, int ny, double hx, double hy, double hz, PetscInt vStart, PetscInt vEnd,
-                  const std::vector<PetscInt>& cellVertices, const std::vector<std::array<double, 3>>& cellCentres,
-                  const std::vector<PetscInt>& blockOfVertex);
+  // vStart; cellGlobal: each local cell's index in the serial mesh (x fastest, from its mapped
+  // centre); blockOfVertex: the owned block of a vertex (minus vStart) or -1. Throws if this
+  // rank's cells are not in global order (the sums off the shared vertices rely on it).
+  OrderedAssembly(DM dm, int nx, int ny, PetscInt vStart, PetscInt vEnd, const std::vector<PetscInt>& cellVertices,
+                  const std::vector<long>& cellGlobal, const std::vector<PetscInt>& blockOfVertex);
   ~OrderedAssembly();
   OrderedAssembly(const OrderedAssembly&) = delete;
   OrderedAssembly& operator=(const OrderedAssembly&) = delete;

@@ -1,6 +1,7 @@
 #pragma once
 // Parameters of the 3D finite-element plate model (all -fem_ options) and their reader.
 #include "gradfric/core/options.hpp"
+#include "gradfric/fem/edge_grading.hpp"
 #include "gradfric/fem/hex_element.hpp"
 #include "gradfric/physics/friction_history.hpp"
 #include "gradfric/physics/friction_laws_settings.hpp"
@@ -28,6 +29,9 @@ const char* contactMethodName(ContactMethod method);
 struct FemParameters {
   // Mesh and geometry
   int nx = 100, ny = 100, nz = 10;  // nz 10: the 3D ladder bounds mu_s there (docs/accuracy_fem.md)
+  // -fem_edge_ratio, -fem_edge_band: in-plane cells shrinking toward the edges (edge_grading.hpp;
+  // ratio 1, the default: the uniform mesh). The band is resolved to L/10 when not given.
+  EdgeGrading edge;
   ElementType element = ElementType::Trilinear;  // -fem_element q1 | q1i (docs/fem.md)
   bool blockedKernel = true;  // -fem_kernel blocked | dense (mirror-basis kernel, docs/accuracy_fem_history.md "Cost")
   // -fem_pressure_step static | dynamic: step 1 as the pressed equilibrium solved directly

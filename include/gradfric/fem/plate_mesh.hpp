@@ -1,10 +1,13 @@
 #pragma once
 // The plate's mesh: a DMPlex box of nx x ny x nz hexahedra over L x L x H, distributed by the
 // chosen partitioner, with the state layout of the explicit scheme (Q1 fields "displacement" and
-// "velocity", per vertex [u_x u_y u_z v_x v_y v_z]). Geometry only: no material, no loads.
+// "velocity", per vertex [u_x u_y u_z v_x v_y v_z]). Geometry only: no material, no loads. With an
+// edge grading the box's x and y coordinates go through its map (edge_grading.hpp) before the
+// distribution: the cells stay axis-aligned boxes, of a few distinct shapes.
 #include <petscsection.h>  // petsc_handle.hpp names PetscSFDestroy/PetscSectionDestroy without
 #include <petscsf.h>       // including their headers
 #include "gradfric/core/petsc_handle.hpp"
+#include "gradfric/fem/edge_grading.hpp"
 #include "gradfric/fem/ordered_assembly.hpp"
 
 #include <petscdmplex.h>
@@ -20,6 +23,7 @@ namespace gradfric::fem {
 struct MeshSize {
   int nx = 1, ny = 1, nz = 1;
   double length = 1, thickness = 1;  // L (x and y), H (z) [m]
+  EdgeGrading edge;                  // in-plane cells graded toward the edges (ratio 1: uniform)
 };
 
 // An owned vertex of the state vector: its block (6 values) and its position.
@@ -39,9 +43,21 @@ public:
   MPI_Comm comm() const { return comm_; }
   DM dm() const { return dm_; }  // the state DM
   const MeshSize& size() const { return size_; }
-  double hx() const { return size_.length / size_.nx; }
-  double hy() const { return size_.length / size_.ny; }
+  // The interior element sizes (every cell's on a uniform mesh: L/nx, L/ny, H/nz exactly).
+  double hx() const { return axisX_.classWidth.back(); }
+  double hy() const { return axisY_.classWidth.back(); }
   double hz() const { return size_.thickness / size_.nz; }
+  bool graded() const { return !size_.edge.uniform(); }
+  const MeshAxis& axisX() const { return axisX_; }
+  const MeshAxis& axisY() const { return axisY_; }
+  // The distinct cell boxes (hx, hy, hz; one on a uniform mesh) and each local cell's box.
+  const std::vector<std::array<double, 3>>& shapes() const { return shapes_; }
+  const std::vector<int>& cellShape() const { return cellShape_; }
+  const std::array<double, 3>& cellSize(PetscInt cell) const { return shapes_[cellShape_[cell]]; }
+  double cellVolume(PetscInt cell) const {
+    const std::array<double, 3>& h = cellSize(cell);
+    return h[0] * h[1] * h[2];
+  }
   PetscInt localCells() const { return numCells_; }
   PetscInt globalCells() const { return globalCells_; }
   PetscInt globalVertices() const;
@@ -66,7 +82,9 @@ public:
 
 private:
   void build(const std::string& partitioner);
+  void mapCoordinates(DM serial) const;
   void buildCells();
+  void buildShapes();
   void buildOwnedVertices();
   // Per owned block, the sum over the cells around the vertex of share(cell, a) for the cell's
   // corner a on it (in the global cell order, whatever the partition).
@@ -74,10 +92,14 @@ private:
 
   MPI_Comm comm_;
   MeshSize size_;
+  MeshAxis axisX_, axisY_;
   OwnedDM dm_;
   PetscInt numCells_ = 0, globalCells_ = 0, vStart_ = 0, vEnd_ = 0, ownedBlocks_ = 0;
   std::vector<PetscInt> cellVertices_, cellStateOff_;
   std::vector<std::array<double, 3>> cellCentre_;
+  std::vector<std::array<double, 3>> shapes_;
+  std::vector<int> cellShape_;
+  std::vector<long> cellGlobal_;  // per local cell: its index in the serial mesh, x fastest
   std::vector<OwnedVertex> owned_;
   std::vector<PetscInt> blockOfVertex_;  // per local vertex (minus vStart): its owned block or -1
   std::unique_ptr<OrderedAssembly> ordered_;

@@ -6,8 +6,9 @@
 
 namespace gradfric::fem {
 
-// The stable step for these parameters (no mesh needed: every cell is the same box): element
-// frequencies with the stiffest graded E, contact penalty, damping.
+// The stable step for these parameters (no mesh needed: the cells' boxes follow from the options):
+// element frequencies with the stiffest graded E (on an edge-graded mesh, each cell shape with the
+// stiffest E among its cells), contact penalty, damping.
 // The default step is dt_safety times this.
 double stableTimeStep(const FemParameters& params, const Grading& grading);
 // The largest step accepted: the same with the coupling of a sliding node's friction force to its

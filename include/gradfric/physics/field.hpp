@@ -15,6 +15,8 @@
 
 namespace gradfric {
 
+struct SiteGrid;  // property_sampler.hpp
+
 enum class FieldShape { Constant, Linear, Triangular, Exponential, Power, Step, Stripes, Bands, Map };
 const char* toString(FieldShape shape);
 
@@ -52,6 +54,9 @@ struct PropertyField {
   // The normalisation factor for a model whose sites are the centres of an nx x ny grid of equal
   // cells (SBM blocks, FEM bottom faces): 1 / mean of the profile there, or 1.
   double scaleFor(int nx, int ny) const;
+  // The same over a grid of unequal cells (a mesh graded toward the edges): 1 / the area-weighted
+  // mean of the profile at their centres.
+  double scaleFor(const SiteGrid& grid) const;
   // Whether f changes along y (the SBM then needs its stiffnesses, or strengths, per block).
   bool variesAlongY() const;
   // The scalar parameters a sweep can set by name: delta, exponent, angle, position, period, duty.

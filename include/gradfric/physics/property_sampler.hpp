@@ -2,19 +2,28 @@
 // The local factors of E, mu_s, mu_k and p at a model's sites: the property fields where the
 // scene has them (field.hpp), the -grading_* bands elsewhere (exactly grading.hpp's factors, so
 // the paper's gradings give the same numbers as before). A model's sites are the centres of an
-// nx x ny grid of equal cells (SBM blocks, FEM bottom faces): mean-preserving fields are
-// normalised over that grid. PETSc-free.
+// nx x ny grid of equal cells (SBM blocks, FEM bottom faces), or of the unequal cells of a mesh
+// graded toward the edges (SiteGrid): mean-preserving fields are normalised over that grid, area
+// weighted. PETSc-free.
 #include "gradfric/physics/field.hpp"
 #include "gradfric/physics/grading.hpp"
 #include "gradfric/physics/plate.hpp"
 
 #include <string>
+#include <vector>
 
 namespace gradfric {
+
+// The sites of a tensor-product grid of unequal cells, over L: centres u (along x), v (along y)
+// and widths du, dv (the cells' areas du dv weigh the normalisation).
+struct SiteGrid {
+  std::vector<double> u, du, v, dv;
+};
 
 class PropertySampler {
 public:
   PropertySampler(const Grading& grading, int nx, int ny);
+  PropertySampler(const Grading& grading, const SiteGrid& grid);
 
   // Factors at u = x / L, v = y / L (the plate's value times the factor is the local value).
   double modulus(double u, double v) const;

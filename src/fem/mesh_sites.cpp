@@ -1,0 +1,32 @@
+#include "gradfric/fem/mesh_sites.hpp"
+
+#include "gradfric/fem/plate_mesh.hpp"
+
+namespace gradfric::fem {
+
+MeshAxis meshAxisX(const FemParameters& q) { return makeMeshAxis(q.edge, q.nx, q.plate.length); }
+MeshAxis meshAxisY(const FemParameters& q) { return makeMeshAxis(q.edge, q.ny, q.plate.length); }
+
+PropertySampler meshSampler(const Grading& grading, const MeshAxis& x, const MeshAxis& y) {
+  if (x.uniform() && y.uniform()) return PropertySampler(grading, x.cells(), y.cells());
+  SiteGrid grid;
+  const auto fill = [](const MeshAxis& axis, std::vector<double>* centre, std::vector<double>* width) {
+    for (int i = 0; i < axis.cells(); ++i) {
+      centre->push_back(axis.unitCentre(i));
+      width->push_back(axis.width(i) / axis.length());
+    }
+  };
+  fill(x, &grid.u, &grid.du);
+  fill(y, &grid.v, &grid.dv);
+  return PropertySampler(grading, grid);
+}
+
+PropertySampler meshSampler(const Grading& grading, const PlateMesh& mesh) {
+  return meshSampler(grading, mesh.axisX(), mesh.axisY());
+}
+
+PropertySampler meshSampler(const Grading& grading, const FemParameters& q) {
+  return meshSampler(grading, meshAxisX(q), meshAxisY(q));
+}
+
+}  // namespace gradfric::fem

@@ -1,0 +1,291 @@
+// Meshes graded toward the edges (fem/edge_grading.hpp): the map (nesting, bands on faces,
+// symmetry, ratio 1 = uniform), the patch test, the stable step against the assembled M^-1 K, and
+// the moment balance of the contact pressure.
+#include <petscsection.h>
+#include <petscsf.h>
+#include "gradfric/core/petsc_handle.hpp"
+#include "gradfric/fem/contact_resultants.hpp"
+#include "gradfric/fem/mesh_sites.hpp"
+#include "gradfric/fem/simulation.hpp"
+#include "gradfric/fem/stable_step.hpp"
+#include "gradfric/fem/verlet_ts.hpp"
+#include "fem_test_util.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <random>
+#include <vector>
+
+using namespace gradfric;
+using namespace gradfric::fem;
+
+namespace {
+
+constexpr double kL = 5e-3;
+
+FemParameters graded(int nx, int ny, int nz, double ratio) {
+  FemParameters q = test::coarse(nx, ny, nz);
+  q.edge.ratio = ratio;
+  return q;
+}
+
+}  // namespace
+
+TEST(FemEdgeMap, RatioOneIsTheUniformMeshExactly) {
+  const MeshAxis axis = makeMeshAxis(EdgeGrading{}, 37, kL);
+  ASSERT_TRUE(axis.uniform());
+  ASSERT_EQ(axis.nodes.size(), 38u);
+  for (int i = 0; i <= 37; ++i) EXPECT_EQ(axis.nodes[i], i * (kL / 37));
+  EXPECT_EQ(axis.classWidth[0], kL / 37);
+  for (int i = 0; i < 37; ++i) EXPECT_EQ(axis.unitCentre(i), (i + 0.5) / 37);
+  // The mesh itself: one cell shape, the uniform box's.
+  PlateModel model(PETSC_COMM_WORLD, test::coarse(6, 5, 2), test::noGrading());
+  const PlateMesh& mesh = model.mesh();
+  ASSERT_EQ(mesh.shapes().size(), 1u);
+  EXPECT_EQ(mesh.shapes()[0][0], mesh.size().length / 6);
+  EXPECT_EQ(mesh.shapes()[0][1], mesh.size().length / 5);
+  EXPECT_EQ(mesh.shapes()[0][2], mesh.size().thickness / 2);
+}
+
+TEST(FemEdgeMap, DoublingNestsBandsLieOnFacesAndTheMapIsSymmetric) {
+  for (const double ratio : {1.5, 2.0, 4.0, 8.0, 16.0})
+    for (int bands = 1; bands <= kEdgeBandsMax; ++bands) {
+      const EdgeMap map(ratio, bands);
+      const int unit = map.cellsPerUnit();
+      SCOPED_TRACE("ratio " + std::to_string(ratio) + ", " + std::to_string(bands) + " band(s), unit " +
+                   std::to_string(unit));
+      const std::vector<double> coarse = map.nodes(2 * unit, kL), fine = map.nodes(4 * unit, kL);
+      for (int i = 0; i <= 2 * unit; ++i) EXPECT_EQ(fine[2 * i], coarse[i]) << "node " << i;  // nested, bit for bit
+      for (int i = 0; i < 4 * unit; ++i) ASSERT_GT(fine[i + 1], fine[i]) << "monotone at " << i;
+      for (int i = 0; i <= 2 * unit; ++i) EXPECT_EQ(fine[4 * unit - i], kL - fine[i]) << "symmetric at " << i;
+      int node = 0;  // every band boundary is a node
+      for (int k = 0; k < kGradingBands; ++k) {
+        EXPECT_NEAR(fine[node], k * kL / kGradingBands, 1e-15 * kL) << "band " << k;
+        node += map.cellsInBand(k, 4 * unit);
+      }
+      EXPECT_EQ(node, 4 * unit);
+      // Refined bands: the cell size grows smoothly from about h_i / ratio at the edge to h_i.
+      const MeshAxis axis = makeMeshAxis(EdgeGrading{ratio, bands * kL / kGradingBands}, 8 * unit, kL);
+      const double interior = axis.classWidth.back(), edge = axis.width(0);
+      EXPECT_NEAR(interior / edge, ratio, 0.15 * ratio);
+      EXPECT_LE(interior / edge, ratio * (1 + 1e-12));
+      for (int i = 0; i + 1 < axis.cells(); ++i) {
+        const double step = axis.width(i + 1) / axis.width(i);
+        EXPECT_LT(std::max(step, 1 / step), 1.6) << "between cells " << i << " and " << i + 1;
+      }
+      for (int i = 0; i < axis.cells(); ++i)  // the class widths are the cells' own
+        EXPECT_NEAR(axis.width(i), axis.nodes[i + 1] - axis.nodes[i], 1e-12 * kL);
+    }
+  EXPECT_THROW(EdgeMap(1.05, 1), std::invalid_argument);
+  EXPECT_THROW(EdgeMap(4.0, 5), std::invalid_argument);
+  EXPECT_THROW(EdgeMap(4.0, 1).nodes(13, kL), std::invalid_argument);
+}
+
+TEST(FemGradedMesh, MeanPreservingFieldsAreNormalisedOverTheGradedCellsAreaWeighted) {
+  PropertyField step;  // a step off-centre: its plain mean over the graded cells is not its area mean
+  step.length = kL;
+  step.shape = FieldShape::Step;
+  step.delta = 0.4;
+  step.position = 0.7e-3;
+  step.normalise = true;
+  PlateFields fields;
+  fields.modulus = std::make_shared<const PropertyField>(step);
+  Grading g;
+  g.fields = std::make_shared<const PlateFields>(fields);
+  const MeshAxis x = makeMeshAxis(EdgeGrading{4.0, kL / 10}, 48, kL), y = makeMeshAxis(EdgeGrading{4.0, kL / 10}, 24, kL);
+  const PropertySampler sampler = meshSampler(g, x, y);
+  double area = 0, weighted = 0, plain = 0;
+  for (int j = 0; j < y.cells(); ++j)
+    for (int i = 0; i < x.cells(); ++i) {
+      const double a = x.width(i) * y.width(j), f = sampler.modulus(x.unitCentre(i), y.unitCentre(j));
+      area += a;
+      weighted += a * f;
+      plain += f / (x.cells() * y.cells());
+    }
+  EXPECT_NEAR(weighted / area, 1.0, 1e-12);
+  EXPECT_GT(std::fabs(plain - 1.0), 1e-3) << "the test needs cells of unequal weight under the step";
+}
+
+TEST(FemGradedMesh, PatchTestUniformStrainGivesExactTractions) {
+  const FemParameters q = graded(24, 12, 3, 4.0);
+  PlateModel model(PETSC_COMM_WORLD, q, test::noGrading());
+  ASSERT_GT(model.mesh().shapes().size(), 1u);
+  DM dmU = model.elastic().displacementDM();
+  OwnedVec u, f;
+  ASSERT_EQ(DMCreateGlobalVector(dmU, u.out()), 0);
+  ASSERT_EQ(VecDuplicate(u, f.out()), 0);
+  const double A[3][3] = {{1e-3, 2e-4, -3e-4}, {5e-4, -7e-4, 1e-4}, {-2e-4, 6e-4, 4e-4}};
+  Vec coords = nullptr;
+  DMGetCoordinates(dmU, &coords);
+  const PetscScalar* x = nullptr;
+  PetscScalar* uu = nullptr;
+  PetscInt n = 0;
+  VecGetLocalSize(u, &n);
+  VecGetArrayRead(coords, &x);
+  VecGetArray(u, &uu);
+  for (PetscInt i = 0; i < n; i += 3)
+    for (int c = 0; c < 3; ++c) uu[i + c] = A[c][0] * x[i] + A[c][1] * x[i + 1] + A[c][2] * x[i + 2];
+  VecRestoreArray(u, &uu);
+  model.elastic().forceSpecialised(u, f);
+  const Lame l = lameFromYoung(q.plate.youngsModulus, q.plate.poissonRatio);
+  double eps[3][3], sigma[3][3];
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) eps[i][j] = 0.5 * (A[i][j] + A[j][i]);
+  const double tr = eps[0][0] + eps[1][1] + eps[2][2];
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) sigma[i][j] = 2 * l.mu * eps[i][j] + (i == j ? l.lambda * tr : 0.0);
+  // A node's share of a face: half of each neighbouring cell's width along both face directions.
+  const MeshAxis& ax = model.mesh().axisX();
+  const MeshAxis& ay = model.mesh().axisY();
+  const MeshAxis az = makeMeshAxis(EdgeGrading{}, q.nz, q.plate.thickness);
+  const auto share = [](const MeshAxis& axis, double v) {
+    const int k = axis.nearestNode(v);
+    return 0.5 * ((k > 0 ? axis.width(k - 1) : 0.0) + (k < axis.cells() ? axis.width(k) : 0.0));
+  };
+  const double scale = std::fabs(sigma[0][0]) * ax.width(0) * q.plate.thickness / q.nz;
+  const PetscScalar* ff = nullptr;
+  VecGetArrayRead(f, &ff);
+  int counts[3] = {0, 0, 0};  // interior nodes, x-face nodes, z-face nodes
+  for (PetscInt i = 0; i < n; i += 3) {
+    const double px = x[i], py = x[i + 1], pz = x[i + 2];
+    auto on = [](double v, double hi) { return std::fabs(v) < 1e-12 * hi || std::fabs(v - hi) < 1e-12 * hi; };
+    const bool bx = on(px, q.plate.length), by = on(py, q.plate.length), bz = on(pz, q.plate.thickness);
+    if (!bx && !by && !bz) {
+      ++counts[0];
+      for (int c = 0; c < 3; ++c) EXPECT_NEAR(ff[i + c], 0.0, 1e-10 * scale) << "interior node at " << px << ", " << py;
+    } else if (bx && !by && !bz) {
+      ++counts[1];
+      const double normal = px > 0.5 * q.plate.length ? 1.0 : -1.0, area = share(ay, py) * share(az, pz);
+      for (int c = 0; c < 3; ++c) EXPECT_NEAR(ff[i + c], -sigma[c][0] * normal * area, 1e-10 * scale);
+    } else if (bz && !bx && !by) {
+      ++counts[2];
+      const double normal = pz > 0.5 * q.plate.thickness ? 1.0 : -1.0, area = share(ax, px) * share(ay, py);
+      for (int c = 0; c < 3; ++c) EXPECT_NEAR(ff[i + c], -sigma[c][2] * normal * area, 1e-10 * scale);
+    }
+  }
+  VecRestoreArrayRead(f, &ff);
+  VecRestoreArrayRead(coords, &x);
+  int total[3];
+  MPI_Allreduce(counts, total, 3, MPI_INT, MPI_SUM, PETSC_COMM_WORLD);
+  EXPECT_EQ(total[0], 23 * 11 * 2);
+  EXPECT_EQ(total[1], 2 * 11 * 2);
+  EXPECT_EQ(total[2], 2 * 23 * 11);
+  // The mass and the bottom area of the graded cells add up to the plate's.
+  const double volume = q.plate.length * q.plate.length * q.plate.thickness;
+  EXPECT_NEAR(model.mass().total(), q.plate.density * volume, 1e-12 * q.plate.density * volume);
+}
+
+namespace {
+
+// The largest eigenvalue of the assembled M^-1 K (Rayleigh quotient of a power iteration from a
+// random start; from below).
+double largestFrequencySquared(PlateModel& model, int iterations) {
+  DM dmU = model.elastic().displacementDM();
+  OwnedVec v, kv;
+  DMCreateGlobalVector(dmU, v.out());
+  VecDuplicate(v, kv.out());
+  PetscInt n = 0;
+  VecGetLocalSize(v, &n);
+  const std::vector<double>& inverse = model.mass().inversePerBlock();
+  const std::vector<double>& mass = model.mass().perBlock();
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> uniform(-1, 1);
+  PetscScalar* a = nullptr;
+  VecGetArray(v, &a);
+  for (PetscInt i = 0; i < n; ++i) a[i] = uniform(random);
+  VecRestoreArray(v, &a);
+  double rayleigh = 0;
+  for (int it = 0; it < iterations; ++it) {
+    model.elastic().forceSpecialised(v, kv);  // -K v
+    const PetscScalar* f = nullptr;
+    PetscScalar* w = nullptr;
+    VecGetArrayRead(kv, &f);
+    VecGetArray(v, &w);
+    double local[3] = {0, 0, 0};  // v.Kv, v.Mv, |M^-1 K v|^2
+    for (PetscInt i = 0; i < n; ++i) {
+      local[0] += -f[i] * w[i];
+      local[1] += mass[i / 3] * w[i] * w[i];
+    }
+    for (PetscInt i = 0; i < n; ++i) {
+      w[i] = -f[i] * inverse[i / 3];
+      local[2] += w[i] * w[i];
+    }
+    double sum[3];
+    MPI_Allreduce(local, sum, 3, MPI_DOUBLE, MPI_SUM, model.comm());
+    rayleigh = sum[0] / sum[1];
+    for (PetscInt i = 0; i < n; ++i) w[i] /= std::sqrt(sum[2]);
+    VecRestoreArray(v, &w);
+    VecRestoreArrayRead(kv, &f);
+  }
+  return rayleigh;
+}
+
+}  // namespace
+
+TEST(FemGradedMesh, StableStepIsWithinTheAssembledOneAndARunThereStaysBounded) {
+  // Ratio 8 on a thick layer: the small edge cells, not the thickness, set the step.
+  FemParameters q = graded(28, 28, 1, 8.0);
+  q.contact = false;
+  q.plate.pressure = 0;
+  q.settleDamping = 0;
+  q.peakDamping = 0;
+  q.dtSafety = 1.0;
+  PlateModel model(PETSC_COMM_WORLD, q, test::linear(GradedProperty::YoungsModulus, 0.3));
+  const double computed = model.stableTimeStep();
+  const double truth = 2.0 / std::sqrt(largestFrequencySquared(model, 3000));
+  FemParameters uniform = q;
+  uniform.edge = EdgeGrading{};
+  const double interiorOnly = stableTimeStep(uniform, test::linear(GradedProperty::YoungsModulus, 0.3));
+  PetscPrintf(PETSC_COMM_WORLD, "stable step: computed %.4e s, assembled M^-1 K %.4e s (ratio %.3f); uniform mesh %.4e s\n",
+              computed, truth, computed / truth, interiorOnly);
+  EXPECT_LE(computed, truth * (1 + 1e-9));
+  EXPECT_GT(computed, 0.6 * truth);
+  EXPECT_LT(computed, 0.7 * interiorOnly) << "the edge cells must shorten the step";
+
+  // Verlet at the computed step from random velocities (every mode excited): bounded energy.
+  OwnedVec X(model.createState());
+  std::mt19937 random(3);
+  std::uniform_real_distribution<double> uniformVelocity(-1e-3, 1e-3);
+  test::setState(model, X, [&](const double*, double* u, double* v) {
+    for (int d = 0; d < 3; ++d) u[d] = 0, v[d] = uniformVelocity(random);
+  });
+  OwnedTS ts(createPlateTS(model, X));
+  Vec s = nullptr;
+  TSGetSolution(ts, &s);
+  const double e0 = model.kineticEnergy(s) + model.elasticEnergy(s);
+  double largest = e0;
+  for (int step = 0; step < 2000; ++step) {
+    ASSERT_EQ(TSStep(ts), 0);
+    TSGetSolution(ts, &s);
+    largest = std::max(largest, model.kineticEnergy(s) + model.elasticEnergy(s));
+  }
+  PetscPrintf(PETSC_COMM_WORLD, "2000 steps at the computed step: largest energy %.3f x the initial\n", largest / e0);
+  EXPECT_LT(largest, 3 * e0);
+}
+
+TEST(FemGradedMesh, ContactPressureBalancesTheTiltingMomentOfTheDrive) {
+  FemParameters q = graded(24, 24, 4, 4.0);
+  q.measurement.kinetic = false;  // stop at the confirmed peak
+  q.kn = q.kt = q.plate.youngsModulus * q.nz / q.plate.thickness;  // as the uniform test (test_fem_bending.cpp)
+  PlateModel model(PETSC_COMM_WORLD, q, test::noGrading());
+  const double H = q.plate.thickness, peak = q.eq2PeakTime();
+  int samples = 0;
+  double nextSample = 0.2 * peak;
+  runPlateExperiment(model, [&](double t, Vec) {
+    if (t < nextSample || t > 0.8 * peak) return;
+    nextSample += 0.1 * peak;
+    const ContactResultants c = contactResultants(model);
+    const double ratio = c.momentAboutY / (H * std::fabs(c.forceX));
+    PetscPrintf(PETSC_COMM_WORLD, "t = %.3e s: sum (x - L/2) p_c A / (H F) = %.4f; p_c trailing %.3f, centre %.3f, "
+                "leading %.3f p\n", t, ratio, c.trailingEdgePressure / q.plate.pressure,
+                c.centrePressure / q.plate.pressure, c.leadingEdgePressure / q.plate.pressure);
+    EXPECT_NEAR(ratio, 1.0, 0.02) << "at t = " << t;
+    EXPECT_LT(c.trailingEdgePressure, c.centrePressure);
+    EXPECT_GT(c.leadingEdgePressure, c.centrePressure);
+    ++samples;
+  });
+  EXPECT_GE(samples, 4);
+}
