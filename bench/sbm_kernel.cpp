@@ -6,6 +6,7 @@
 // The lattice (N_b = 120 by default, paper parameters, sigma = 2.8 %) is first driven past its
 // static peak so that blocks stick and slip as in a real run; then whole RK4 steps are timed.
 #include "gradfric/sbm/integrator.hpp"
+#include "gradfric/sbm/reference_lattice.hpp"
 #include "gradfric/sbm/kernel_isa.hpp"
 #include "gradfric/sbm/lattice.hpp"
 #include "gradfric/sbm/model.hpp"
