@@ -291,9 +291,11 @@ std::vector<std::string> activeEffects(const Parameters& p, const Grading& g, co
            << m.moment / p.plate.thickness << " H along the sliding direction, mean " << m.mean;
       effects.push_back(text.str());
     }
-    effects.push_back(p.skipIdle ? "idle work skipped: the quiet phase before the first slip in closed form, ended at "
-                                   "or before the first slip under the rising load (bit for bit)"
-                                 : "every block stepped from t = 0 (-sbm_skip_idle false)");
+    effects.push_back(!p.skipIdle ? "every block stepped from t = 0 (-sbm_skip_idle false)"
+                      : stateLaw  ? "every block stepped from t = 0 (the state law's kernel jumps the quiet phase "
+                                    "only under a constant pressure)"
+                                  : "idle work skipped: the quiet phase before the first slip in closed form, ended at "
+                                    "or before the first slip under the rising load (bit for bit)");
   } else {
     const bool verlet = p.integrator == Integrator::VelocityVerlet;
     effects.push_back(p.skipIdle ? std::string("idle work skipped: the phase before the first slip in closed form") +

@@ -23,8 +23,9 @@ using namespace gradfric::sbm;
 
 namespace {
 
-Parameters singleBlock(double velocity, double slipLength) {
+Parameters singleBlock(double velocity, double slipLength, Integrator integrator = Integrator::VelocityVerlet) {
   Parameters p = sbm::testing::paperParameters(2, 0.0);
+  p.integrator = integrator;
   p.plate.velocity = velocity;
   p.frictionLaw.name = "state";
   p.frictionLaw.slipLength = slipLength;
@@ -46,8 +47,11 @@ double frictionMagnitude(const ReferenceLattice<StateWeakening>& l) { return std
 // (a) Pulled at constant speed v through its slider spring, the block ends up sliding steadily at
 // v; its friction is then Eq. 1 at v, mu_k + (mu_s - mu_k) exp(-v/v_c), the law's steady state.
 TEST(SbmStateLaw, SteadySlidingIsEquationOne) {
-  for (double ratio : {1.0, 3.0}) {  // v / v_c
-    Parameters p = singleBlock(ratio * 1e-4, 1e-7);  // kappa 1.6: the onset is smooth, the sliding steady
+  // kappa 1.6: the onset is smooth, the sliding steady. v / v_c = 1 and 3 with Verlet, 1 with RK4.
+  const std::pair<double, Integrator> cases[] = {
+      {1.0, Integrator::VelocityVerlet}, {3.0, Integrator::VelocityVerlet}, {1.0, Integrator::RK4}};
+  for (const auto& [ratio, integrator] : cases) {
+    Parameters p = singleBlock(ratio * 1e-4, 1e-7, integrator);
     auto l = lattice(p);
     const double fn = p.normalForcePerBlock();
     const double relaxation = p.frictionLaw.slipLength / p.frictionLaw.criticalVelocity;
@@ -63,8 +67,9 @@ TEST(SbmStateLaw, SteadySlidingIsEquationOne) {
 // (b) Driven into fast slip (V >> v_c: kappa 0.41, the block slips off at tens of mm/s), the
 // friction against slip is the law's slip weakening, mu_k + (mu_s - mu_k) exp(-s/D_c): theta
 // grows as the slip s. Measured up to 3 D_c; its 1/e length is D_c.
-TEST(SbmStateLaw, FastSlipWeakensOverTheSlipLength) {
-  Parameters p = singleBlock(1e-3, 2.5e-8);
+namespace {
+void checkSlipWeakening(Integrator integrator) {
+  Parameters p = singleBlock(1e-3, 2.5e-8, integrator);
   const double dc = p.frictionLaw.slipLength, fn = p.normalForcePerBlock();
   const double drop = (p.plate.muStatic - p.plate.muKinetic) * fn;
   auto l = lattice(p);
@@ -86,6 +91,9 @@ TEST(SbmStateLaw, FastSlipWeakensOverTheSlipLength) {
   EXPECT_LT(largestDeviation, 0.005);  // measured 0.0012: theta lags the slip by v_c t / D_c
   EXPECT_NEAR(eFold, dc, 0.03 * dc);
 }
+}  // namespace
+TEST(SbmStateLaw, FastSlipWeakensOverTheSlipLength) { checkSlipWeakening(Integrator::VelocityVerlet); }
+TEST(SbmStateLaw, FastSlipWeakensOverTheSlipLengthRk4) { checkSlipWeakening(Integrator::RK4); }
 
 // (c) Once the first slip event ends the block rests while its slider reloads it: theta decays as
 // exp(-v_c t / D_c) (the law's healing, step by step), and the block slips again as soon as its
