@@ -6,6 +6,7 @@
 // The lattice (N_b = 120 by default, paper parameters, sigma = 2.8 %) is first driven past its
 // static peak so that blocks stick and slip as in a real run; then whole RK4 steps are timed.
 #include "gradfric/sbm/integrator.hpp"
+#include "gradfric/sbm/reference_lattice.hpp"
 #include "gradfric/sbm/kernel_isa.hpp"
 #include "gradfric/sbm/lattice.hpp"
 #include "gradfric/sbm/model.hpp"
@@ -50,7 +51,11 @@ void benchmarkStep(benchmark::State& state) {
   s.stiffness.smallStrain = SmallStrain;
   s.motion.integrator = scheme;
   s.motion.skipIdle = SkipIdle;  // false: the full sweep every step
-  Lattice<Law> lattice(s.stiffness, Law::make(s.friction, FrictionLawSettings{}), s.motion);
+  Lattice<Law> lattice(s.stiffness, [&] {
+    const std::size_t blocks = std::size_t(blocksPerSide) * blocksPerSide;
+    if constexpr (hasBlockState<Law>) return Law::make(s.friction, FrictionLawSettings{}, blocks);
+    else return Law::make(s.friction, FrictionLawSettings{});
+  }(), s.motion);
   // Warm up into the sliding phase: just past the loading time, most blocks slip.
   while (lattice.time() < 1.05 * s.parameters.loadingTime()) lattice.step();
   for (auto _ : state) benchmark::DoNotOptimize(lattice.step());
@@ -74,6 +79,20 @@ void BM_FastLatticeVerletSmallStrain(benchmark::State& state) {
 void BM_FastLatticeExponential(benchmark::State& state) {
   benchmarkStep<FastLattice, Integrator::RK4, ExponentialVelocityWeakening>(state);
 }
+// The state law's cost (reference_lattice.hpp): on the reference kernel, against the exponential
+// law on the same kernel and on the fast one (full sweep and active set), Verlet, the default.
+void BM_ReferenceLatticeVerletState(benchmark::State& state) {
+  benchmarkStep<ReferenceLattice, Integrator::VelocityVerlet, StateWeakening>(state);
+}
+void BM_ReferenceLatticeVerletExponential(benchmark::State& state) {
+  benchmarkStep<ReferenceLattice, Integrator::VelocityVerlet, ExponentialVelocityWeakening>(state);
+}
+void BM_FastLatticeVerletExponential(benchmark::State& state) {
+  benchmarkStep<FastLattice, Integrator::VelocityVerlet, ExponentialVelocityWeakening>(state);
+}
+void BM_FastLatticeVerletExponentialSkipIdle(benchmark::State& state) {
+  benchmarkStep<FastLattice, Integrator::VelocityVerlet, ExponentialVelocityWeakening, true>(state);
+}
 // The Verlet full sweep on each ISA version of the kernel (kernel_isa.hpp; the same numbers bit
 // for bit), where the processor has it.
 template <KernelIsa Isa>
@@ -95,6 +114,10 @@ BENCHMARK(BM_FastLatticeVerletSmallStrain)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FastLatticeVerletAvx2)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FastLatticeVerletBaseline)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ReferenceLattice)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ReferenceLatticeVerletState)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ReferenceLatticeVerletExponential)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_FastLatticeVerletExponential)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_FastLatticeVerletExponentialSkipIdle)->Unit(benchmark::kMillisecond);
 
 // Whole realisations of the default scene's graded plate (friction, linear, Delta = 0.2, the
 // driver's derived defaults), stepped from t = 0 (the old path) and with idle work skipped (the
@@ -189,6 +212,16 @@ int main(int argc, char** argv) {
   if (verlet > 0 && small > 0)
     std::printf("N_b = %d: velocity Verlet full sweep, small-strain springs %.1f ns per block per step (%.2fx the exact springs' cost)\n",
                 blocksPerSide, small, small / verlet);
+  const double state = reporter.nsPerBlockStep["BM_ReferenceLatticeVerletState"];
+  const double plainExponential = reporter.nsPerBlockStep["BM_ReferenceLatticeVerletExponential"];
+  const double fastExponential = reporter.nsPerBlockStep["BM_FastLatticeVerletExponential"];
+  const double activeExponential = reporter.nsPerBlockStep["BM_FastLatticeVerletExponentialSkipIdle"];
+  if (state > 0 && plainExponential > 0 && fastExponential > 0)
+    std::printf("N_b = %d: velocity Verlet, state law on the reference kernel %.1f ns per block per step; exponential "
+                "law on the reference kernel %.1f ns (%.2fx), on the fast kernel %.1f ns full sweep (%.1fx), %.1f ns "
+                "active set (%.1fx)\n",
+                blocksPerSide, state, plainExponential, state / plainExponential, fastExponential,
+                state / fastExponential, activeExponential, activeExponential > 0 ? state / activeExponential : 0.0);
   std::printf("kernel version in use: %s\n", kernelIsaName(kernelIsaInUse()));
   const double avx2 = reporter.nsPerBlockStep["BM_FastLatticeVerletAvx2"];
   const double baseline = reporter.nsPerBlockStep["BM_FastLatticeVerletBaseline"];

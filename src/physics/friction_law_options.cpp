@@ -23,8 +23,14 @@ FrictionLawSettings readFrictionLaw(MPI_Comm comm, RunParameters* record, const 
   s.criticalVelocity = o.real("v_c", s.criticalVelocity, "m/s", "critical velocity v_c of Eq. 1 (exponential, state)");
   o.requirePositive("v_c", s.criticalVelocity, "m/s");
   if (withState) {
-    s.slipLength = o.real("d_c", s.slipLength, "m",
-                          "weakening length D_c of the state law: mu falls from mu_s to mu_k over this slip");
+    const char* help = "weakening length D_c of the state law: mu falls from mu_s to mu_k over this slip";
+    // A model whose default law has no state (the SBM) records D_c only when its law uses it: its
+    // stateless scenes keep the /scene they had (a -resume of an older file still matches).
+    if (!isStateLaw(modelDefault) && !isStateLaw(s) && !o.wasSet("d_c")) {
+      o.realIfSet("d_c", "m", help, formatReal(s.slipLength));  // -help lists it
+      return s;
+    }
+    s.slipLength = o.real("d_c", s.slipLength, "m", help);
     if (o.wasSet("d_c") && !isStateLaw(s))
       throw InputError(o.fullName("d_c"), formatReal(s.slipLength), "only with -friction_law state");
     o.requirePositive("d_c", s.slipLength, "m");

@@ -6,6 +6,7 @@
 #include "gradfric/physics/friction_laws.hpp"
 #include "gradfric/physics/stability.hpp"
 #include "gradfric/sbm/integrator.hpp"
+#include "gradfric/sbm/reference_lattice.hpp"
 #include "gradfric/sbm/lattice.hpp"
 #include "gradfric/sbm/pressure_coupling.hpp"
 #include "gradfric/sbm/quiet_phase.hpp"
@@ -41,6 +42,11 @@ private:
 
 std::vector<double> asVector(const double* data, std::size_t n) { return std::vector<double>(data, data + n); }
 std::vector<double> asVector(std::vector<double> data, std::size_t) { return data; }
+
+// What the state law costs on the reference kernel, as measured (bench_sbm_kernel, docs/model.md).
+const char* const kStateLawCost =
+    "per block-step about 4x the exponential law on the fast kernel (1.6x on the reference kernel); "
+    "a 60 x 60 realisation about 5x";
 
 std::string likelyCause(const Parameters& p, double stable) {
   std::ostringstream m;
@@ -193,6 +199,13 @@ Result simulate(const Parameters& parameters, const Grading& grading, const Requ
   // The law's template parameter selects the compiled kernels (friction_laws.hpp).
   PressureCoupling* couple = coupling ? &*coupling : nullptr;
   const FrictionSites sites = coupling ? coupling->perSite() : FrictionSites(friction);
+  // A law with a per-block state runs on the reference kernel, whatever the kernel asked for.
+  const std::size_t blocks = std::size_t(p.blocksPerSide) * p.blocksPerSide;
+  if (withStateFrictionLaw(p.frictionLaw, sites, blocks, [&](auto law) {
+        ReferenceLattice<decltype(law)> lattice(stiffness, std::move(law), motion);
+        integrate(lattice, stiffness, friction, motion, p, q, stable, couple, result);
+      }))
+    return result;
   withFrictionLaw(p.frictionLaw, sites, [&](auto law) {
     using Law = decltype(law);
     if (kernel == Kernel::Fast && couple && motion.skipIdle) {
@@ -209,6 +222,12 @@ Result simulate(const Parameters& parameters, const Grading& grading, const Requ
     }
   });
   return result;
+}
+
+double regimeNumber(const Parameters& p) {
+  const Plate& plate = p.plate;
+  return plate.shearModulus() * p.frictionLaw.slipLength /
+         (p.layerThickness * plate.pressure * (plate.muStatic - plate.muKinetic));
 }
 
 std::vector<std::string> activeEffects(const Parameters& p, const Grading& g, const Request& q) {
@@ -236,6 +255,18 @@ std::vector<std::string> activeEffects(const Parameters& p, const Grading& g, co
     effects.push_back("no dispersion: no random draws, no per-block coefficients");
   }
   effects.push_back("friction law: " + describeFrictionLaw(p.frictionLaw));
+  const bool stateLaw = isStateLaw(p.frictionLaw);
+  if (stateLaw) {
+    effects.push_back(std::string("per-block state theta, advanced once per step from the block's slip; its strength is "
+                                  "the static threshold and the sliding force. Reference kernel (the fast kernel keeps "
+                                  "no state): ") + kStateLawCost);
+    std::ostringstream k;
+    k.precision(3);
+    k << "regime number kappa = K_s D_c / (F_n (mu_s - mu_k)) = G D_c / (l_z p (mu_s - mu_k)) = " << regimeNumber(p)
+      << (regimeNumber(p) < 1 ? " < 1: dynamic onset (a block weakens faster than its slider reloads)"
+                              : " >= 1: smooth onset (every block's slider outweighs its weakening)");
+    effects.push_back(k.str());
+  }
   effects.push_back(p.damping > 0 ? "viscous damping gamma = " + formatReal(p.damping) + " 1/s" : "no damping");
   if (p.pressureResponse.active()) {
     effects.push_back(p.pressureResponse.describe() +
@@ -260,13 +291,17 @@ std::vector<std::string> activeEffects(const Parameters& p, const Grading& g, co
            << m.moment / p.plate.thickness << " H along the sliding direction, mean " << m.mean;
       effects.push_back(text.str());
     }
-    effects.push_back(p.skipIdle ? "idle work skipped: the quiet phase before the first slip in closed form, ended at "
-                                   "or before the first slip under the rising load (bit for bit)"
-                                 : "every block stepped from t = 0 (-sbm_skip_idle false)");
+    effects.push_back(!p.skipIdle ? "every block stepped from t = 0 (-sbm_skip_idle false)"
+                      : stateLaw  ? "every block stepped from t = 0 (the state law's kernel jumps the quiet phase "
+                                    "only under a constant pressure)"
+                                  : "idle work skipped: the quiet phase before the first slip in closed form, ended at "
+                                    "or before the first slip under the rising load (bit for bit)");
   } else {
     const bool verlet = p.integrator == Integrator::VelocityVerlet;
     effects.push_back(p.skipIdle ? std::string("idle work skipped: the phase before the first slip in closed form") +
-                                       (verlet ? ", then the active set with held tiles (bit for bit)" : " (bit for bit)")
+                                       (stateLaw ? " (theta stays 0; bit for bit), then every block stepped"
+                                        : verlet ? ", then the active set with held tiles (bit for bit)"
+                                                 : " (bit for bit)")
                                  : "every block stepped from t = 0 (-sbm_skip_idle false)");
   }
   effects.push_back(p.smallStrain ? "small-strain springs: forces linearised about the rest directions (-sbm_spring)"

@@ -29,7 +29,7 @@ Parameters readParameters(MPI_Comm comm, RunParameters* record, const Plate& pla
                             "mass layer thickness l_z: block mass rho l_z l^2, slider K_s = G l^2/l_z (paper: 0.057 mm)");
   p.sigmaStatic = o.real("sigma_s", p.sigmaStatic, "1", "relative standard deviation of the local mu_s (0: no dispersion)");
   p.sigmaKinetic = o.real("sigma_k", p.sigmaKinetic, "1", "relative standard deviation of the local mu_k (0: no dispersion)");
-  p.frictionLaw = readFrictionLaw(o.comm(), record, p.frictionLaw, false);  // -friction_law, shared with the FEM
+  p.frictionLaw = readFrictionLaw(o.comm(), record, p.frictionLaw, true, plate.thickness);  // shared with the FEM
   p.blocksPerSide = static_cast<int>(o.integer("N", p.blocksPerSide, 2, 4096, "1", "blocks per side N_b"));
   const std::string integrator = o.choice("integrator", "verlet", {"rk4", "verlet"},
                                           "time integrator, fixed step: classical RK4 (4 force evaluations a step) or velocity Verlet (1)");

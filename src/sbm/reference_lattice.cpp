@@ -1,8 +1,10 @@
 // The plain reference: an array of blocks, each summing the forces of its 8 neighbours (every
 // spring evaluated twice), and textbook RK4 or velocity Verlet on the whole state vector. Same
 // physics, the same friction law and the same stick/slip rule as FastLattice; the tests compare
-// the two.
-#include "gradfric/sbm/integrator.hpp"
+// the two. With a law with a per-block state it is the model's kernel (reference_lattice.hpp).
+#include "gradfric/sbm/reference_lattice.hpp"
+
+#include "gradfric/sbm/quiet_phase.hpp"
 #include "gradfric/sbm/spring.hpp"
 
 #include <algorithm>
@@ -19,6 +21,43 @@ ReferenceLattice<Law>::ReferenceLattice(const LatticeStiffness& stiffness, Law l
   frictionY_.assign(blocks_.size(), 0.0);
   state_.assign(blocks_.size(), Stuck);
   everSlipped_.assign(blocks_.size(), 0);
+  if constexpr (hasBlockState<Law>) {
+    startX_.assign(blocks_.size(), 0.0);
+    startY_.assign(blocks_.size(), 0.0);
+    for (std::size_t i = 0; i < blocks_.size(); ++i) strength_.push_back(law_.strengthAt(int(i), law_.state[i]));
+    // The quiet phase: every block at rest at theta = 0 until the first one no longer holds at its
+    // strength there (not with strengths a caller changes between steps).
+    if (motion_.skipIdle && motion_.fixedStrengths) {
+      quietUntil_ = std::int64_t(1) << 52;
+      for (int r = 0; r < nb_; ++r)
+        for (int c = 0; c < nb_; ++c)
+          quietUntil_ = std::min(quietUntil_, firstSlipStepAtRest<StaticThreshold>(stiffness_.sliderAt(r, c),
+                                                                                strength_[r * nb_ + c], motion_,
+                                                                                quietUntil_));
+    }
+  }
+}
+
+// State laws: the state of every block over the step that just ended, from its slip (its
+// displacement increment: the substrate is fixed), committed once; its strength at the new state.
+template <class Law>
+void ReferenceLattice<Law>::advanceStates() {
+  if constexpr (hasBlockState<Law>) {
+    for (std::size_t i = 0; i < blocks_.size(); ++i) {
+      const double slip = std::hypot(blocks_[i].ux - startX_[i], blocks_[i].uy - startY_[i]);
+      strength_[i] = law_.advance(int(i), slip, motion_.timeStep);
+      startX_[i] = blocks_[i].ux;
+      startY_[i] = blocks_[i].uy;
+    }
+    law_.commit();
+  }
+}
+
+// The static threshold of block i at (r, c): mu_s,i F_n, or with a state law its current strength.
+template <class Law>
+double ReferenceLattice<Law>::staticThreshold(int r, int c, int i) const {
+  if constexpr (hasBlockState<Law>) return strength_[i];
+  else return law_.sites.staticAt(law_.sites.slot(r, c));
 }
 
 template <class Law>
@@ -120,20 +159,33 @@ StepObservation ReferenceLattice<Law>::step() {
   const double t = time();
   const bool verlet = motion_.integrator == Integrator::VelocityVerlet;
   StepObservation observation{t, 0.0, 0.0};
+  if (steps_ < quietUntil_) {  // at rest (state laws): the slider sums of the stepped run, in its order
+    for (int r = 0; r < nb_; ++r)
+      for (int c = 0; c < nb_; ++c) {
+        observation.sliderForceX += stiffness_.sliderAt(r, c) * (motion_.sliderVelocityX * t - blocks_[r * nb_ + c].ux);
+        observation.sliderForceY += stiffness_.sliderAt(r, c) * (motion_.sliderVelocityY * t - blocks_[r * nb_ + c].uy);
+      }
+    ++steps_;
+    return observation;
+  }
   std::vector<double> fx, fy;
   forces(blocks_, t, fx, fy);
   if (verlet) {  // close the previous step: v_n = v_{n-1/2} + h/2 a_n, that step's friction
     kick(fx, fy);
     markReversals();
   }
+  advanceStates();  // state laws only
   // Stick/slip transitions with the driving forces of the state at t_n.
   for (int r = 0; r < nb_; ++r) {
     for (int c = 0; c < nb_; ++c) {
       const int i = r * nb_ + c;
       observation.sliderForceX += stiffness_.sliderAt(r, c) * (motion_.sliderVelocityX * t - blocks_[i].ux);
       observation.sliderForceY += stiffness_.sliderAt(r, c) * (motion_.sliderVelocityY * t - blocks_[i].uy);
-      const double threshold = law_.sites.staticAt(law_.sites.slot(r, c));
-      switch (stickSlipChange(state_[i], Law::holds(fx[i] * fx[i] + fy[i] * fy[i], threshold))) {
+      const double force2 = fx[i] * fx[i] + fy[i] * fy[i], threshold = staticThreshold(r, c, i);
+      bool holds;
+      if constexpr (hasBlockState<Law>) holds = StaticThreshold::holds(force2, threshold);
+      else holds = Law::holds(force2, threshold);
+      switch (stickSlipChange(state_[i], holds)) {
         case StickSlipChange::StartsToSlip:
           state_[i] = Slipping;
           if (!everSlipped_[i]) {
@@ -158,9 +210,15 @@ StepObservation ReferenceLattice<Law>::step() {
       const Block& b = blocks_[i];
       const int slot = law_.sites.slot(r, c);
       const double speed2 = b.vx * b.vx + b.vy * b.vy;
-      const double perDirection =
-          frictionPerDirection(law_, law_.sites.staticAt(slot), law_.sites.kineticAt(slot),
-                               state_[i] == Stuck ? 0.0 : 1.0, speed2, fx[i] * fx[i] + fy[i] * fy[i]);
+      const double mobile = state_[i] == Stuck ? 0.0 : 1.0, force2 = fx[i] * fx[i] + fy[i] * fy[i];
+      double perDirection;
+      if constexpr (hasBlockState<Law>) {  // the strength at the block's state, along v (or F_mot from rest)
+        const double norm2 = speed2 > 0.0 ? speed2 : force2;
+        perDirection = norm2 > 0.0 ? mobile * strength_[i] / std::sqrt(norm2) : 0.0;
+      } else {
+        perDirection = frictionPerDirection(law_, law_.sites.staticAt(slot), law_.sites.kineticAt(slot), mobile,
+                                            speed2, force2);
+      }
       frictionX_[i] = perDirection * (speed2 > 0 ? b.vx : fx[i]);
       frictionY_[i] = perDirection * (speed2 > 0 ? b.vy : fy[i]);
     }
@@ -233,6 +291,7 @@ std::vector<double> ReferenceLattice<Law>::velocityY() const {
 
 #define GF_INSTANTIATE_REFERENCE_LATTICE(Law) template class ReferenceLattice<Law>;
 GF_FRICTION_LAWS(GF_INSTANTIATE_REFERENCE_LATTICE)
+GF_STATE_FRICTION_LAWS(GF_INSTANTIATE_REFERENCE_LATTICE)
 #undef GF_INSTANTIATE_REFERENCE_LATTICE
 
 }  // namespace gradfric::sbm

@@ -115,6 +115,11 @@ sbm)
   run 2 -sbm_dt_safety "$G" -sbm_dt_safety nan
   run 2 -friction_peak_drop "$G" -friction_peak_drop 2
   run 2 -sbm_sigma_s "$G" -sbm_sigma_s inf
+  # The state law on the blocks: 0 < D_c <= H, D_c only with -friction_law state.
+  run 2 -friction_d_c "$G" -friction_law state -friction_d_c 0
+  run 2 -friction_d_c "$G" -friction_law state -friction_d_c 1e-3
+  run 2 -friction_d_c "$G" -friction_law state -friction_d_c nan
+  run 2 "-friction_d_c = 1e-08: allowed only with -friction_law state" "$G" -friction_d_c 1e-8
   run 2 -sbm_gamma "$G" -sbm_gamma 1e300
   run 2 -grading_delta "$G" -grading_profile linear -grading_delta nan
   run 2 -grading_delta "$G" -grading_profile linear -grading_delta inf
@@ -297,6 +302,9 @@ study)
   run 2 "-study_N = 30,,60: .*item 2 is empty" "$S" -study_N 30,,60
   run 2 "unknown option -resume" "$S" -resume
   # The other drivers: the same vocabulary and refusals.
+  run 2 -friction_d_c "$S" -friction_law state -friction_d_c -1
+  run 2 -friction_d_c "$C" -friction_law state -friction_d_c 1
+  run 2 -friction_d_c "$D" -grading_profile linear -design_parameters grading_delta -design_lower 0 -design_upper 0.5 -design_target 0.9 -friction_law state -friction_d_c 0
   run 2 "-calibrate_output = c.opts: renamed.*; use -output = c.opts" "$C" -calibrate_output c.opts
   run 2 "-calibrate_output_overwrite: renamed.*; use -output_overwrite$" "$C" -calibrate_output_overwrite
   run 2 "-calibrate_window = 0.2 0.6: allowed one value" "$C" -calibrate_window 0.2 0.6

@@ -39,7 +39,9 @@ expect -sbm_dt -sbm_dt 0
 expect -sbm_dt -sbm_dt 1e-3
 expect -sbm_N -sbm_N 1
 expect -friction_law -friction_law rate_and_state
-expect -friction_law -friction_law state
+expect "-friction_d_c = 0: allowed > 0" -friction_law state -friction_d_c 0
+expect "-friction_d_c = 0.0001: allowed 0 < D_c <= H" -friction_law state -friction_d_c 1e-4
+expect "-friction_d_c = 1e-08: allowed only with -friction_law state" -friction_law exponential -friction_d_c 1e-8
 expect -friction_v_c -friction_law exponential -friction_v_c 0
 expect -friction_v_c -friction_v_c -1e-4
 expect -sbm_friction_law -sbm_friction_law exponential

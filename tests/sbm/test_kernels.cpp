@@ -1,5 +1,6 @@
 // The fast kernel and the plain reference compute the same physics.
 #include "gradfric/sbm/integrator.hpp"
+#include "gradfric/sbm/reference_lattice.hpp"
 #include "gradfric/sbm/lattice.hpp"
 #include "sbm_support.hpp"
 

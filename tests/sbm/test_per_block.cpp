@@ -7,6 +7,7 @@
 #include "gradfric/physics/field.hpp"
 #include "gradfric/physics/pressure_response.hpp"
 #include "gradfric/sbm/integrator.hpp"
+#include "gradfric/sbm/reference_lattice.hpp"
 #include "gradfric/sbm/kernel_isa.hpp"
 #include "gradfric/sbm/lattice.hpp"
 #include "sbm_support.hpp"

@@ -4,6 +4,7 @@
 // and the period is T = 2 (mu_s - mu_k) F_n / (K v) + (2 pi - 2 atan(A omega / v)) / omega with
 // A = (mu_s - mu_k) F_n / K and omega = sqrt(K / m).
 #include "gradfric/sbm/integrator.hpp"
+#include "gradfric/sbm/reference_lattice.hpp"
 #include "gradfric/sbm/lattice.hpp"
 #include "sbm_support.hpp"
 

@@ -71,7 +71,8 @@ const char* name(Integrator integrator) { return integrator == Integrator::RK4 ?
 
 TEST(SkipIdle, BitForBitTheSteppedRunOnEveryCodePath) {
   // Uniform and graded E x uniform, per-column and per-block friction x both integrators x both
-  // laws, with and without snapshots and first-slip maps, at several angles.
+  // laws (and the state law, on the reference kernel), with and without snapshots and first-slip
+  // maps, at several angles.
   struct Case {
     Grading grading;
     double sigma, theta;
@@ -83,7 +84,7 @@ TEST(SkipIdle, BitForBitTheSteppedRunOnEveryCodePath) {
   const Case cases[] = {{{}, 0.0, 0.0, false, true},       {friction, 0.0, 30.0, true, true},
                         {{}, 0.05, 45.0, true, false},     {modulus, 0.0, 90.0, false, true},
                         {modulus, 0.028, 0.0, true, true}, {both, 0.05, 135.0, false, false}};
-  for (const char* law : {"coulomb", "exponential"}) {
+  for (const char* law : {"coulomb", "exponential", "state"}) {
     for (Integrator integrator : {Integrator::RK4, Integrator::VelocityVerlet}) {
       for (const auto& c : cases) {
         Parameters p = sbm::testing::paperParameters(12, c.sigma, c.grading);

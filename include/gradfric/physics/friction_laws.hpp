@@ -3,13 +3,15 @@
 // GF_FRICTION_LAWS: the option's list of choices, the dispatch to the templated kernels and
 // their explicit instantiations all follow from this list. Laws with a per-site state variable
 // (state_weakening_law.hpp) are listed in GF_STATE_FRICTION_LAWS: the FEM contact takes both
-// lists (fem/contact_law.hpp); the spring-block kernels, which keep no per-block friction state,
-// take the first.
+// lists (fem/contact_law.hpp); the spring-block model takes both, the first on its fast kernel,
+// the second on its reference kernel (sbm/reference_lattice.hpp: the fast kernel keeps no
+// per-block friction state, and its files are not compiled for these laws).
 #include "gradfric/physics/coulomb_law.hpp"
 #include "gradfric/physics/exponential_law.hpp"
 #include "gradfric/physics/friction_laws_settings.hpp"
 #include "gradfric/physics/state_weakening_law.hpp"
 
+#include <cstddef>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -52,6 +54,21 @@ decltype(auto) withFrictionLaw(const FrictionLawSettings& settings, FrictionSite
   GF_FRICTION_LAWS(GF_LAW_VISIT)
 #undef GF_LAW_VISIT
   throw std::invalid_argument("unknown friction law '" + settings.name + "'");
+}
+
+// Calls visit(law) with the law with a per-site state named in the settings, built on these sites
+// for siteCount sites; returns false (visiting nothing) when the named law has no state.
+template <class Visitor>
+bool withStateFrictionLaw(const FrictionLawSettings& settings, FrictionSites sites, std::size_t siteCount,
+                          Visitor&& visit) {
+#define GF_STATE_LAW_VISIT(Law)                                \
+  if (settings.name == Law::name) {                            \
+    visit(Law::make(std::move(sites), settings, siteCount));   \
+    return true;                                               \
+  }
+  GF_STATE_FRICTION_LAWS(GF_STATE_LAW_VISIT)
+#undef GF_STATE_LAW_VISIT
+  return false;
 }
 
 // The law in words, with its parameters (printed among a run's active effects).

@@ -5,7 +5,8 @@
 //   FastLattice      structure of arrays, each spring evaluated once, the four RK stages fused
 //                    with the force sweep row by row (the production kernel);
 //   ReferenceLattice a plain array of blocks, each block summing its 8 neighbours (every spring
-//                    evaluated twice): simple enough to check by eye, the tests' reference.
+//                    evaluated twice): the tests' reference (reference_lattice.hpp), and the
+//                    kernel of the laws with a per-block state (GF_STATE_FRICTION_LAWS).
 //
 // Stick/slip and the RK stages (documented in README, "Spring-block model"):
 //  - the stick state is frozen during a step: a stuck block has zero velocity and acceleration
@@ -18,6 +19,8 @@
 //    |F_mot| > mu_s,i F_n starts to slip; a slipping block whose velocity reversed during the
 //    last step (it points against that step's friction force) re-sticks (velocity set to zero)
 //    if |F_mot| <= mu_s,i F_n, and slides on otherwise (the law's static threshold).
+//  - a law with a per-block state (the state law, reference_lattice.hpp) puts the block's
+//    strength at its current state in place of both mu_s,i F_n and the sliding force.
 // Velocity Verlet (Parameters::integrator) needs one force evaluation per step instead of four,
 // with the same stick/slip rule; between steps the velocities are the half-step ones.
 #include "gradfric/physics/friction_laws.hpp"
@@ -195,46 +198,6 @@ private:
   // the row's slider forces; Verlet's row of spring pieces (8 arrays of N_b + 1, RowPieces).
   std::vector<double> fx_, fy_, carryX_, carryY_, nextX_, nextY_, springX_, springY_, sliderRowX_, sliderRowY_;
   std::vector<double> rowPieces_;
-};
-
-template <class Law>
-class ReferenceLattice {
-public:
-  ReferenceLattice(const LatticeStiffness& stiffness, Law law, const Motion& motion);
-  StepObservation step();
-  double time() const { return double(steps_) * motion_.timeStep; }
-  std::int64_t steps() const { return steps_; }
-  int slippedBlocks() const { return slipped_; }
-  void recordFirstSlips(double* times) { firstSlip_ = times; }
-  std::vector<double> displacementX() const;
-  std::vector<double> displacementY() const;
-  std::vector<double> velocityX() const;
-  std::vector<double> velocityY() const;  // half-step velocity with Verlet
-  // Driving force F_mot (springs + slider) on every block at the current state (for tests).
-  void drivingForces(std::vector<double>& fx, std::vector<double>& fy) const;
-  Law& law() { return law_; }  // as FastLattice::law()
-
-  struct Block {
-    double ux, uy, vx, vy;
-  };
-
-private:
-  void forces(const std::vector<Block>& y, double t, std::vector<double>& fx, std::vector<double>& fy) const;
-  void derivative(const std::vector<Block>& y, double t, std::vector<Block>& dy) const;
-  void kick(const std::vector<double>& fx, const std::vector<double>& fy);  // Verlet half kick
-  void markReversals();
-  void rk4(double t);
-  std::vector<double> frictionX_, frictionY_;  // friction force of the step [N]
-  LatticeStiffness stiffness_;
-  Law law_;
-  Motion motion_;
-  int nb_;
-  std::int64_t steps_ = 0;
-  int slipped_ = 0;
-  double* firstSlip_ = nullptr;
-  std::vector<Block> blocks_;
-  std::vector<std::uint8_t> state_;
-  std::vector<std::uint8_t> everSlipped_;
 };
 
 }  // namespace gradfric::sbm

@@ -53,6 +53,11 @@ void setPhaseTimer(PhaseTimer timer);
 Result simulate(const Parameters& parameters, const Grading& grading, const Request& request, StreamKey key,
                 Kernel kernel = Kernel::Fast);
 
+// The spring-block regime number of a state law (docs/model.md): the slider stiffness per area
+// G / l_z against the law's weakening rate at onset p (mu_s - mu_k) / D_c, with the plate's mean
+// coefficients; the FEM's kappa with H -> l_z. Below 1 a block's onset is dynamic.
+double regimeNumber(const Parameters& parameters);
+
 // The effects a scene switches on, in words (printed at the start of a run).
 std::vector<std::string> activeEffects(const Parameters& parameters, const Grading& grading, const Request& request);
 
