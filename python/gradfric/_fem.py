@@ -37,6 +37,8 @@ def _fields(f):
     """/fields/<p>_map: fem_ny x fem_nx row-major, flat in the file (attributes rows, columns)."""
     out = {}
     for name, d in f.get("fields", {}).items():
+        if name in ("x", "y"):  # the maps' axes (format 3)
+            continue
         rows, columns = int(d.attrs["rows"]), int(d.attrs["columns"])
         out[f"fields_{name}"] = xr.Variable(("y", "x"), d[()].reshape(rows, columns),
                                             dict(_h5.attributes(d, skip=("rows", "columns")), hdf5_path=d.name))
@@ -62,18 +64,25 @@ def read(f):
     coords, data = _h5.collect(f, _PLAIN, skip=skip)
     data.update(_fields(f))
     if any(k.startswith("fields_") for k in data):
-        ny = data[next(k for k in data if k.startswith("fields_"))].shape[0]
-        side = float(_scene(f)["plate_L"][0])
-        coords["y"] = xr.Variable("y", (np.arange(ny) + 0.5) * side / ny,
-                                  {"units": "m", "description": "centre of each bottom cell row along y"})
+        if "fields/y" in f:  # the stored axis (a graded mesh's cells are unequal)
+            coords["y"] = _h5.variable(f["fields/y"], ("y",))
+        else:
+            ny = data[next(k for k in data if k.startswith("fields_"))].shape[0]
+            side = float(_scene(f)["plate_L"][0])
+            coords["y"] = xr.Variable("y", (np.arange(ny) + 0.5) * side / ny,
+                                      {"units": "m", "description": "centre of each bottom cell row along y"})
     if "pressure_response/g" in f:
         g = f["pressure_response/g"]
-        x0, x1, y0, y1 = g.attrs["extent"]  # pixel edges: nodes at the pixel centres
-        ny, nx = g.shape
-        coords["node_x"] = xr.Variable("node_x", x0 + (np.arange(nx) + 0.5) * (x1 - x0) / nx,
-                                       {"units": "m", "description": "bottom node position along x"})
-        coords["node_y"] = xr.Variable("node_y", y0 + (np.arange(ny) + 0.5) * (y1 - y0) / ny,
-                                       {"units": "m", "description": "bottom node position along y"})
+        if "pressure_response/node_x" in f:  # the stored node positions (format 3)
+            coords["node_x"] = _h5.variable(f["pressure_response/node_x"], ("node_x",))
+            coords["node_y"] = _h5.variable(f["pressure_response/node_y"], ("node_y",))
+        else:
+            x0, x1, y0, y1 = g.attrs["extent"]  # pixel edges: nodes at the pixel centres
+            ny, nx = g.shape
+            coords["node_x"] = xr.Variable("node_x", x0 + (np.arange(nx) + 0.5) * (x1 - x0) / nx,
+                                           {"units": "m", "description": "bottom node position along x"})
+            coords["node_y"] = xr.Variable("node_y", y0 + (np.arange(ny) + 0.5) * (y1 - y0) / ny,
+                                           {"units": "m", "description": "bottom node position along y"})
         data["pressure_response_g"] = _h5.variable(g, ("node_y", "node_x"))
     units = _h5.attributes(f["results/units"]) if "results/units" in f else {}
     for name, value in _h5.attributes(f["results"]).items():

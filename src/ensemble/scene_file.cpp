@@ -118,7 +118,7 @@ std::vector<PointStatistics> writeStatistics(io::ResultsFile& file, int realisat
                                              const std::vector<int>& reference, bool commonStreams,
                                              const PrecisionTarget* target) {
   // Every rank reads the small P x R tables and computes the same numbers; rank 0 writes them.
-  GF_CALL(PetscLogEventBegin(logEvents().statistics, 0, 0, 0, 0));
+  const LogEventScope timed(logEvents().statistics);
   const auto flags = file.finishedTasks();
   const std::vector<unsigned char> done(flags.begin(), flags.end());
   const auto stats = pointStatistics(realisations, reference, file.readRealisationReal("mu_s"),
@@ -160,9 +160,11 @@ std::vector<PointStatistics> writeStatistics(io::ResultsFile& file, int realisat
 }
 
 void finishResultsFile(MPI_Comm comm, io::ResultsFile& file, const io::OutputPlan& plan) {
-  file.markComplete();
-  file.close();
-  GF_CALL(PetscLogEventEnd(logEvents().statistics, 0, 0, 0, 0));
+  {
+    const LogEventScope timed(logEvents().write);
+    file.markComplete();
+    file.close();
+  }
   plan.commit(comm);
 }
 

@@ -12,6 +12,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <cstdio>
 #include <cstdlib>
 
@@ -55,12 +56,12 @@ double runTask(const Scene& scene, const Task& task, io::ResultsFile& file, int 
   const auto& events = logEvents();
   const StreamKey key{scene.seed, static_cast<std::uint32_t>(scene.commonStreams ? 0 : task.point),
                       static_cast<std::uint32_t>(task.realisation)};
-  GF_CALL(PetscLogEventBegin(events.task, 0, 0, 0, 0));
+  std::optional<LogEventScope> timed(std::in_place, events.task);
   const auto start = Clock::now();
   sbm::Result result = sbm::simulate(scene.pointParameters(task.point), scene.pointGrading(task.point),
                                      scene.request, key);
   const double wall = secondsSince(start);
-  GF_CALL(PetscLogEventEnd(events.task, 0, 0, 0, 0));
+  timed.reset();
   io::TaskOutput o = toTaskOutput(task, std::move(result), scene.history, wall, rank);
   if (scene.frictionFields) {  // the same draw as the run's (a pure function of the stream key)
     const sbm::Parameters q = scene.pointParameters(task.point);
@@ -77,9 +78,10 @@ double runTask(const Scene& scene, const Task& task, io::ResultsFile& file, int 
         o.localKinetic.push_back(field.kineticAt(row, column) / normal);
       }
   }
-  GF_CALL(PetscLogEventBegin(events.write, 0, 0, 0, 0));
-  file.writeTask(o);
-  GF_CALL(PetscLogEventEnd(events.write, 0, 0, 0, 0));
+  {
+    const LogEventScope writing(events.write);
+    file.writeTask(o);
+  }
   summary->friction.muStatic = o.friction.muStatic;
   summary->friction.muKinetic = o.friction.muKinetic;
   summary->friction.peakConfirmed = o.friction.peakConfirmed;

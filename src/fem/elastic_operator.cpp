@@ -16,14 +16,13 @@ const FemLogEvents& femLogEvents() {
   static FemLogEvents events;
   static bool registered = false;
   if (!registered) {
-    PetscClassId classId = 0;
-    GF_CALL(PetscClassIdRegister("gradfric FEM", &classId));
-    GF_CALL(PetscLogEventRegister("GfFemRHS", classId, &events.rhs));
-    GF_CALL(PetscLogEventRegister("GfFemElastic", classId, &events.elastic));
-    GF_CALL(PetscLogEventRegister("GfFemContact", classId, &events.contact));
-    GF_CALL(PetscLogEventRegister("GfFemGeneric", classId, &events.generic));
-    GF_CALL(PetscLogEventRegister("GfFemPostStep", classId, &events.postStep));
-    GF_CALL(PetscLogEventRegister("GfFemMonitor", classId, &events.monitor));
+    events.rhs = registerLogEvent("gradfric FEM", "GfFemRHS");
+    events.elastic = registerLogEvent("gradfric FEM", "GfFemElastic");
+    events.contact = registerLogEvent("gradfric FEM", "GfFemContact");
+    events.generic = registerLogEvent("gradfric FEM", "GfFemGeneric");
+    events.postStep = registerLogEvent("gradfric FEM", "GfFemPostStep");
+    events.monitor = registerLogEvent("gradfric FEM", "GfFemMonitor");
+    events.output = registerLogEvent("gradfric FEM", "GfFemOutput");
     registered = true;
   }
   return events;
@@ -222,9 +221,10 @@ void ElasticOperator::kernelForce(Vec uLocal, Vec fLocal) {
   PetscScalar* fl = nullptr;
   GF_CALL(VecGetArrayRead(uLocal, &ul));
   GF_CALL(VecGetArray(fLocal, &fl));
-  GF_CALL(PetscLogEventBegin(evKernel_, 0, 0, 0, 0));
-  applyKernel(ul, fl);
-  GF_CALL(PetscLogEventEnd(evKernel_, 0, 0, 0, 0));
+  {
+    const LogEventScope timed(evKernel_);
+    applyKernel(ul, fl);
+  }
   GF_CALL(PetscLogFlops((blocked_ ? 312.0 : 1152.0) * mesh_.localCells()));  // blocks + transforms, or 24x24
   GF_CALL(VecRestoreArrayRead(uLocal, &ul));
   GF_CALL(VecRestoreArray(fLocal, &fl));

@@ -4,6 +4,7 @@
 #include "gradfric/fem/elastic_operator.hpp"
 
 #include "gradfric/core/petsc_call.hpp"
+#include "gradfric/fem/log_events.hpp"
 
 #include <petscds.h>
 #include <petscfe.h>
@@ -88,9 +89,10 @@ void ElasticOperator::forceGeneric(Vec u, Vec f) {
   GF_CALL(DMGetLocalVector(dmU_, &fLoc));
   GF_CALL(DMGlobalToLocal(dmU_, u, INSERT_VALUES, uLoc));
   GF_CALL(VecZeroEntries(fLoc));
-  GF_CALL(PetscLogEventBegin(evGeneric_, 0, 0, 0, 0));
-  GF_CALL(DMPlexTSComputeRHSFunctionFEM(dmU_, 0.0, uLoc, fLoc, nullptr));
-  GF_CALL(PetscLogEventEnd(evGeneric_, 0, 0, 0, 0));
+  {
+    const LogEventScope timed(evGeneric_);
+    GF_CALL(DMPlexTSComputeRHSFunctionFEM(dmU_, 0.0, uLoc, fLoc, nullptr));
+  }
   GF_CALL(VecZeroEntries(f));
   GF_CALL(DMLocalToGlobal(dmU_, fLoc, ADD_VALUES, f));
   GF_CALL(DMRestoreLocalVector(dmU_, &uLoc));

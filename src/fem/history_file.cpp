@@ -4,6 +4,7 @@
 #include "gradfric/fem/error_estimate.hpp"
 #include "gradfric/io/file_room.hpp"
 #include "gradfric/io/hdf5_attributes.hpp"
+#include "gradfric/io/hdf5_datasets.hpp"
 #include "gradfric/fem/mesh_sites.hpp"
 
 #include <algorithm>
@@ -35,6 +36,11 @@ void writePressureResponse(hid_t file, const PressureResponseMap& m) {
   describe(map, "1",
            "change of the bottom contact pressure per unit of mu(t), (1/p) dp_c/dmu, at every bottom node [ny+1][nx+1] "
            "(rows along y); least squares over the loading phase; -pressure_response fem reads it");
+  // The node positions as the map's axes (dimension scales: named, with units, in h5py and xarray).
+  const H5Dataset nodeY = createCoordinateScale(group, "node_y", m.nodeY, "m", "bottom node position along y");
+  const H5Dataset nodeX = createCoordinateScale(group, "node_x", m.nodeX, "m", "bottom node position along x");
+  attachScale(map, nodeY, 0);
+  attachScale(map, nodeX, 1);
   writeRealsAttribute(map, "extent", m.extent, 4);
   writeRealsAttribute(map, "mu_window", m.window, 2);
   writeIntAttribute(map, "samples", static_cast<int>(m.samples));
@@ -62,7 +68,9 @@ void writeHistoryFile(hid_t file, const HistoryContent& c) {
   const int historyEvery = c.historyEvery;
   const std::optional<PressureResponseMap>& response = c.response;
   writeStringAttribute(file, "format", "gradfric-fem-history");
-  writeIntAttribute(file, "format_version", 2);  // 2: conventions of the ensemble file (docs/fem.md)
+  // 2: conventions of the ensemble file; 3: /fields maps 2D and /pressure_response/g on named
+  // axes holding the positions (docs/fem.md)
+  writeIntAttribute(file, "format_version", 3);
   writeIntAttribute(file, "complete", 0);
   auto vector = [](hid_t group, const char* name, const std::vector<double>& data, const char* units,
                    const char* description) {
@@ -159,12 +167,22 @@ void writeHistoryFile(hid_t file, const HistoryContent& c) {
           maps[3].push_back(q.plate.pressure * sampler.pressure(u, v));
         }
       H5Group fieldGroup = createGroup(file, "fields");
+      std::vector<double> cx, cy;  // the bottom cells' centres: the maps' axes
+      for (int i = 0; i < q.nx; ++i) cx.push_back(columns.unitCentre(i) * q.plate.length);
+      for (int j = 0; j < q.ny; ++j) cy.push_back(rows.unitCentre(j) * q.plate.length);
+      const H5Dataset y = createCoordinateScale(fieldGroup, "y", cy, "m", "centre of each bottom cell row along y");
+      const H5Dataset x = createCoordinateScale(fieldGroup, "x", cx, "m", "centre of each bottom cell column along x");
       const char* names[4] = {"E_map", "mu_s_map", "mu_k_map", "p_map"};
       const char* units[4] = {"Pa", "1", "1", "Pa"};
+      const hsize_t dims[2] = {hsize_t(q.ny), hsize_t(q.nx)};
       for (int k = 0; k < 4; ++k) {
-        H5Dataset d = vector(fieldGroup, names[k], maps[k], units[k],
-                             "property field at the centre of every bottom cell, fem_ny x fem_nx row-major (docs/fields.md)");
-        writeIntAttribute(d, "rows", q.ny);
+        H5Space space(GF_H5(H5Screate_simple(2, dims, nullptr)));
+        H5Dataset d(GF_H5(H5Dcreate2(fieldGroup, names[k], H5T_IEEE_F64LE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT)));
+        GF_H5(H5Dwrite(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, maps[k].data()));
+        describe(d, units[k], "property field at the centre of every bottom cell, [fem_ny][fem_nx] (docs/fields.md)");
+        attachScale(d, y, 0);
+        attachScale(d, x, 1);
+        writeIntAttribute(d, "rows", q.ny);  // as before the maps were 2D: readers of format 2 files
         writeIntAttribute(d, "columns", q.nx);
       }
     }

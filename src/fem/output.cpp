@@ -4,6 +4,7 @@
 #include "gradfric/core/input_error.hpp"
 #include "gradfric/core/petsc_call.hpp"
 #include "gradfric/fem/history_file.hpp"
+#include "gradfric/fem/log_events.hpp"
 #include "gradfric/fem/xdmf.hpp"
 #include "gradfric/io/collective_file.hpp"
 #include "gradfric/io/file_room.hpp"
@@ -105,26 +106,9 @@ void OutputFiles::createFieldDMs(PlateModel& model) {
   GF_CALL(DMCreateDS(stressDM_));
 }
 
-namespace {
-
-PetscLogEvent outputEvent() {
-  static PetscLogEvent event = 0;
-  if (!event) {
-    PetscClassId id = 0;
-    GF_CALL(PetscClassIdRegister("gradfric FEM output", &id));
-    GF_CALL(PetscLogEventRegister("GfFemOutput", id, &event));
-  }
-  return event;
-}
-}  // namespace
-
 void OutputFiles::writeSnapshot(PlateModel& model, Vec state, double t) {
   if (fieldsPath_.empty()) return;
-  struct EventScope {
-    PetscLogEvent e;
-    explicit EventScope(PetscLogEvent ev) : e(ev) { PetscLogEventBegin(e, 0, 0, 0, 0); }
-    ~EventScope() { PetscLogEventEnd(e, 0, 0, 0, 0); }
-  } scope(outputEvent());
+  const LogEventScope timed(femLogEvents().output);
   reserveSnapshotRoom(model);  // a full disk: the same CollectiveError on every rank, before any write
   try {
     writeFields(model, state, t);

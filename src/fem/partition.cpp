@@ -1,8 +1,6 @@
 #include "gradfric/fem/partition.hpp"
 
 #include "gradfric/core/petsc_call.hpp"
-#include <petscsection.h>  // petsc_handle.hpp names PetscSFDestroy/PetscSectionDestroy without
-#include <petscsf.h>       // including their headers
 #include "gradfric/core/petsc_handle.hpp"
 
 #include <metis.h>

@@ -66,7 +66,7 @@ Vec PlateModel::createState() const {
 // F = [v ; M^-1 f - gamma v], and the slider's constraint on the top.
 void PlateModel::rhs(double t, Vec X, Vec F) {
   const FemLogEvents& events = femLogEvents();
-  GF_CALL(PetscLogEventBegin(events.rhs, 0, 0, 0, 0));
+  const LogEventScope timed(events.rhs);
   const bool sliding = phase_ == Phase::Sliding;
   elastic_.setForce(X, F);
   top_.addPressure(t, sliding, F);
@@ -76,12 +76,11 @@ void PlateModel::rhs(double t, Vec X, Vec F) {
   const SlidingDamping damping = massDamping();
   ContactSums totals;
   if (params_.contact) {
-    GF_CALL(PetscLogEventBegin(events.contact, 0, 0, 0, 0));
+    const LogEventScope timedContact(events.contact);
     if (params_.contactMethod == ContactMethod::Kinematic)
       totals = contact_.addKinematicForce(X, F, mass_.perBlock(), damping, dt_);
     else
       totals = contact_.addForce(X, F, dt_);
-    GF_CALL(PetscLogEventEnd(events.contact, 0, 0, 0, 0));
   }
   const std::vector<double>& inverseMass = mass_.inversePerBlock();
   const std::vector<double>& blockMass = mass_.perBlock();
@@ -103,7 +102,6 @@ void PlateModel::rhs(double t, Vec X, Vec F) {
   totals.topZ = top_.areaWeightedLift(X);
   if (sliding) top_.constrainTangential(mass_.perBlock(), F, &totals.driveX, &totals.driveY);
   lastTotals_ = totals;
-  GF_CALL(PetscLogEventEnd(events.rhs, 0, 0, 0, 0));
 }
 
 void PlateModel::commitContact() {

@@ -5,6 +5,14 @@
 #include "gradfric/core/reproducible_sum.hpp"
 
 #include <petscksp.h>
+#include <petscversion.h>
+// The exact dot and norm replace entries of a vector's private table of operations (PETSc 3.18 has
+// no public VecSetOperation for them), whose layout PETSc may change between releases.
+#if PETSC_VERSION_LT(3, 18, 0)
+#error "the static solve's exact dot and norm need PETSc 3.18 or later (the private Vec operations they set)"
+#elif PETSC_VERSION_GE(3, 19, 0)
+#warning "the static solve's exact dot and norm were checked with PETSc 3.18: check the private Vec operations against this release"
+#endif
 #include <petsc/private/vecimpl.h>  // the place of dot and norm in the table of operations
 
 #include <algorithm>

@@ -91,6 +91,8 @@ PressureResponseMap PressureResponseRecorder::finish(const PlateModel& model, do
   if (rank != 0) return m;
   m.nx = nx;
   m.ny = ny;
+  m.nodeX = mesh.axisX().nodes;
+  m.nodeY = mesh.axisY().nodes;
   m.g.assign(std::size_t(nx) * ny, std::nan(""));
   double mean = 0.0, moment = 0.0;
   for (std::size_t k = 0; k + 3 < all.size(); k += 4) {

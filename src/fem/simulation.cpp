@@ -93,19 +93,17 @@ private:
   }
   static PetscErrorCode postStep(TS ts) {
     return guardedCallback([&] {
-      GF_CALL(PetscLogEventBegin(femLogEvents().postStep, 0, 0, 0, 0));
+      const LogEventScope timed(femLogEvents().postStep);
       GF_CALL(commitContactPostStep(ts));
       of(ts).afterStep(ts);
-      GF_CALL(PetscLogEventEnd(femLogEvents().postStep, 0, 0, 0, 0));
     });
   }
   static PetscErrorCode energyMonitor(TS, PetscInt step, PetscReal t, Vec X, void* ctx) {
     return guardedCallback([&] {
       auto* e = static_cast<Experiment*>(ctx);
       if (!e->sampled(step)) return;
-      GF_CALL(PetscLogEventBegin(femLogEvents().monitor, 0, 0, 0, 0));
+      const LogEventScope timed(femLogEvents().monitor);
       e->monitor_->afterStep(step, t, X, e->sample_.totals, e->sample_.mu);
-      GF_CALL(PetscLogEventEnd(femLogEvents().monitor, 0, 0, 0, 0));
     });
   }
   static PetscErrorCode snapshotMonitor(TS, PetscInt step, PetscReal t, Vec X, void* ctx) {

@@ -2,6 +2,15 @@
 
 #include "gradfric/core/petsc_call.hpp"
 
+#include <petscversion.h>
+// A TS implementation sees PETSc's private TS structure (data, vec_sol, ptime, time_step,
+// steprestart, default_adapt_type, ops->setup/step/reset/destroy), whose layout PETSc may change
+// between releases: this file is checked with PETSc 3.18 (Debian's, the project's stack).
+#if PETSC_VERSION_LT(3, 18, 0)
+#error "gfverlet needs PETSc 3.18 or later (the private TS members it sets)"
+#elif PETSC_VERSION_GE(3, 19, 0)
+#warning "gfverlet was checked with PETSc 3.18: check the private TS members it sets against this release (tests fem_*)"
+#endif
 #include <petsc/private/tsimpl.h>
 
 #include <cstring>

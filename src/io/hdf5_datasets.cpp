@@ -64,6 +64,17 @@ H5Dataset createIndexScale(hid_t parent, const char* name, hsize_t size, const s
   return d;
 }
 
+H5Dataset createCoordinateScale(hid_t parent, const char* name, const std::vector<double>& values,
+                                const std::string& units, const std::string& description) {
+  const hsize_t n = values.size();
+  H5Space space(GF_H5(H5Screate_simple(1, &n, nullptr)));
+  H5Dataset d(GF_H5(H5Dcreate2(parent, name, H5T_IEEE_F64LE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT)));
+  if (n) GF_H5(H5Dwrite(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()));
+  describe(d, units, description);
+  makeDimensionScale(d, name);
+  return d;
+}
+
 H5Dataset writeDescribedColumn(hid_t parent, const std::string& name, const std::vector<double>& values,
                                const std::string& units, const std::string& description, hid_t scale) {
   const hsize_t n = values.size();

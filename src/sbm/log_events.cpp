@@ -1,6 +1,6 @@
 #include "gradfric/sbm/log_events.hpp"
 
-#include "gradfric/core/petsc_call.hpp"
+#include "gradfric/core/log_event.hpp"
 #include "gradfric/sbm/model.hpp"
 
 #include <petsclog.h>
@@ -18,11 +18,9 @@ void end(Phase phase) { GF_CALL(PetscLogEventEnd(events[int(phase)], 0, 0, 0, 0)
 
 void installLogEvents() {
   static const bool registered = [] {
-    PetscClassId id;
-    GF_CALL(PetscClassIdRegister("SpringBlock", &id));
-    GF_CALL(PetscLogEventRegister("SbmSetup", id, &events[int(Phase::Setup)]));
-    GF_CALL(PetscLogEventRegister("SbmStep", id, &events[int(Phase::Step)]));
-    GF_CALL(PetscLogEventRegister("SbmSnapshot", id, &events[int(Phase::Snapshot)]));
+    events[int(Phase::Setup)] = registerLogEvent("gradfric spring-block", "GfSbmSetup");
+    events[int(Phase::Step)] = registerLogEvent("gradfric spring-block", "GfSbmStep");
+    events[int(Phase::Snapshot)] = registerLogEvent("gradfric spring-block", "GfSbmSnapshot");
     return true;
   }();
   (void)registered;

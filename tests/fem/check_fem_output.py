@@ -47,7 +47,7 @@ with h5py.File(out, "r") as f:
     assert "fem_nx" in scene and f["scene/units"].attrs["fem_nx"] == "1", dict(f["scene/units"].attrs)
     assert f["scene/origin"].attrs["fem_nx"] == "set"
     # The conventions: strings as str, flags as integers, every dataset with units and description.
-    assert isinstance(f.attrs["format"], str) and f.attrs["format_version"] == 2
+    assert isinstance(f.attrs["format"], str) and f.attrs["format_version"] == 3
     assert res["peak_confirmed"].dtype.kind == "i", res["peak_confirmed"].dtype
 
     def described(name, obj):

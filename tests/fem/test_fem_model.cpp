@@ -1,6 +1,4 @@
 // The assembled model: specialised kernel vs PETSc's generic PetscFE residual, patch test, mass.
-#include <petscsection.h>  // petsc_handle.hpp names PetscSFDestroy/PetscSectionDestroy without
-#include <petscsf.h>       // including their headers
 #include "gradfric/core/petsc_handle.hpp"
 #include "gradfric/fem/plate_model.hpp"
 #include "fem_test_util.hpp"

@@ -1,8 +1,6 @@
 #pragma once
 // PETSc log events of an ensemble run (-log_view): the tasks, their writes, the statistics.
-#include "gradfric/core/petsc_call.hpp"
-
-#include <petsclog.h>
+#include "gradfric/core/log_event.hpp"
 
 namespace gradfric::ensemble {
 
@@ -13,11 +11,9 @@ struct LogEvents {
 inline const LogEvents& logEvents() {
   static LogEvents events = [] {
     LogEvents e;
-    PetscClassId id;
-    GF_CALL(PetscClassIdRegister("Ensemble", &id));
-    GF_CALL(PetscLogEventRegister("EnsTask", id, &e.task));
-    GF_CALL(PetscLogEventRegister("EnsH5Write", id, &e.write));
-    GF_CALL(PetscLogEventRegister("EnsStatistics", id, &e.statistics));
+    e.task = registerLogEvent("gradfric ensemble", "GfEnsTask");
+    e.write = registerLogEvent("gradfric ensemble", "GfEnsH5Write");
+    e.statistics = registerLogEvent("gradfric ensemble", "GfEnsStatistics");
     return e;
   }();
   return events;

@@ -4,8 +4,6 @@
 // "velocity", per vertex [u_x u_y u_z v_x v_y v_z]). Geometry only: no material, no loads. With an
 // edge grading the box's x and y coordinates go through its map (edge_grading.hpp) before the
 // distribution: the cells stay axis-aligned boxes, of a few distinct shapes.
-#include <petscsection.h>  // petsc_handle.hpp names PetscSFDestroy/PetscSectionDestroy without
-#include <petscsf.h>       // including their headers
 #include "gradfric/core/petsc_handle.hpp"
 #include "gradfric/fem/edge_grading.hpp"
 #include "gradfric/fem/ordered_assembly.hpp"

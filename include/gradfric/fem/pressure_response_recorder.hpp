@@ -18,6 +18,7 @@ namespace gradfric::fem {
 struct PressureResponseMap {
   int nx = 0, ny = 0;                // nodes per row and rows: (fem_nx + 1) x (fem_ny + 1)
   std::vector<double> g;             // [ny][nx] row-major
+  std::vector<double> nodeX, nodeY;  // the node positions along x (nx) and y (ny) [m]
   double extent[4] = {0, 0, 0, 0};   // x0, x1, y0, y1 [m]: half a cell beyond the plate
   double window[2] = {0, 0};         // the mu window of the regression
   long long samples = 0;             // steps in it

@@ -31,6 +31,9 @@ std::vector<std::string> readStrings(hid_t dataset);
 // A dimension scale named name holding 0, 1, ..., size - 1 (int32, described): h5py and xarray
 // (h5netcdf) see a named axis.
 H5Dataset createIndexScale(hid_t parent, const char* name, hsize_t size, const std::string& description);
+// A described float64 axis (positions, times) made a dimension scale named name.
+H5Dataset createCoordinateScale(hid_t parent, const char* name, const std::vector<double>& values,
+                                const std::string& units, const std::string& description);
 // A float64 column written whole, described (units, description) and attached to scale along its
 // one dimension; returned for further attributes.
 H5Dataset writeDescribedColumn(hid_t parent, const std::string& name, const std::vector<double>& values,

@@ -1,5 +1,5 @@
 #pragma once
-// The PETSc log events of the spring-block model (SbmSetup, SbmStep, SbmSnapshot, -log_view):
+// The PETSc log events of the spring-block model (GfSbmSetup, GfSbmStep, GfSbmSnapshot, -log_view):
 // routes simulate()'s timing hooks (model.hpp) to PetscLogEventBegin/End. PETSc library.
 namespace gradfric::sbm {
 

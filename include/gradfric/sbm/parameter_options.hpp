@@ -9,7 +9,7 @@ namespace gradfric::sbm {
 
 // Reads -sbm_* (physics, numerics) and the observable options; validates before any work.
 // The grading is needed for the stability limit (the stiffest band). Also routes simulate()'s
-// timing hooks to the PETSc log events SbmSetup, SbmStep, SbmSnapshot (-log_view).
+// timing hooks to the PETSc log events GfSbmSetup, GfSbmStep, GfSbmSnapshot (-log_view).
 Parameters readParameters(MPI_Comm comm, RunParameters* record, const Plate& plate, const Grading& grading);
 Request readRequest(MPI_Comm comm, RunParameters* record, const Parameters& parameters);
 
