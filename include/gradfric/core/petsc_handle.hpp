@@ -1,5 +1,5 @@
 #pragma once
-// RAII ownership of PETSc objects: the destructor calls the matching XxxDestroy.
+// RAII ownership of PETSc objects (core/unique_handle.hpp): the destructor calls the matching XxxDestroy.
 #include <petscdm.h>
 #include <petscsection.h>
 #include <petscsf.h>
@@ -9,43 +9,19 @@
 #include <petscvec.h>
 #include <petscviewer.h>
 
-#include <utility>
+#include "gradfric/core/unique_handle.hpp"
 
 namespace gradfric {
 
 template <typename Handle, PetscErrorCode (*Destroy)(Handle*)>
-class PetscHandle {
-public:
-  PetscHandle() = default;
-  explicit PetscHandle(Handle h) : handle_(h) {}
-  ~PetscHandle() { reset(); }
-  PetscHandle(const PetscHandle&) = delete;
-  PetscHandle& operator=(const PetscHandle&) = delete;
-  PetscHandle(PetscHandle&& other) noexcept : handle_(std::exchange(other.handle_, nullptr)) {}
-  PetscHandle& operator=(PetscHandle&& other) noexcept {
-    if (this != &other) {
-      reset();
-      handle_ = std::exchange(other.handle_, nullptr);
-    }
-    return *this;
-  }
-
-  Handle get() const { return handle_; }
-  operator Handle() const { return handle_; }  // pass straight to PETSc calls
-  // For PETSc's create functions: XxxCreate(comm, handle.out()).
-  Handle* out() {
-    reset();
-    return &handle_;
-  }
-  Handle release() { return std::exchange(handle_, nullptr); }
-  void reset() {
-    if (handle_) Destroy(&handle_);  // destructors must not throw; PETSc reports its own errors
-    handle_ = nullptr;
-  }
-
-private:
-  Handle handle_ = nullptr;
+struct PetscDestroy {
+  static Handle empty() { return nullptr; }
+  static bool valid(Handle handle) { return handle != nullptr; }
+  static void close(Handle& handle) { Destroy(&handle); }
 };
+
+template <typename Handle, PetscErrorCode (*Destroy)(Handle*)>
+using PetscHandle = UniqueHandle<Handle, PetscDestroy<Handle, Destroy>>;
 
 using OwnedVec = PetscHandle<Vec, VecDestroy>;
 using OwnedMat = PetscHandle<Mat, MatDestroy>;

@@ -1,10 +1,11 @@
 #pragma once
 // Small helpers around the HDF5 C API: a throwing check and RAII ownership of hid_t handles.
+#include "gradfric/core/unique_handle.hpp"
+
 #include <hdf5.h>
 
 #include <stdexcept>
 #include <string>
-#include <utility>
 
 namespace gradfric::io {
 
@@ -21,36 +22,16 @@ private:
 
 [[noreturn]] void throwHdf5Error(const char* expression, const char* file, int line);
 
-// Owns one HDF5 identifier; the destructor calls the matching close function.
+// Owns one HDF5 identifier (core/unique_handle.hpp); the destructor calls the matching close function.
 template <herr_t (*Close)(hid_t)>
-class Hdf5Handle {
-public:
-  Hdf5Handle() = default;
-  explicit Hdf5Handle(hid_t id) : id_(id) {}
-  ~Hdf5Handle() { reset(); }
-  Hdf5Handle(const Hdf5Handle&) = delete;
-  Hdf5Handle& operator=(const Hdf5Handle&) = delete;
-  Hdf5Handle(Hdf5Handle&& other) noexcept : id_(std::exchange(other.id_, H5I_INVALID_HID)) {}
-  Hdf5Handle& operator=(Hdf5Handle&& other) noexcept {
-    if (this != &other) {
-      reset();
-      id_ = std::exchange(other.id_, H5I_INVALID_HID);
-    }
-    return *this;
-  }
-  hid_t get() const { return id_; }
-  operator hid_t() const { return id_; }
-  bool valid() const { return id_ >= 0; }
-  // Gives up ownership without closing (the caller closes and checks the result).
-  hid_t release() { return std::exchange(id_, H5I_INVALID_HID); }
-  void reset() {
-    if (id_ >= 0) Close(id_);
-    id_ = H5I_INVALID_HID;
-  }
-
-private:
-  hid_t id_ = H5I_INVALID_HID;
+struct Hdf5Close {
+  static hid_t empty() { return H5I_INVALID_HID; }
+  static bool valid(hid_t id) { return id >= 0; }
+  static void close(hid_t id) { Close(id); }
 };
+
+template <herr_t (*Close)(hid_t)>
+using Hdf5Handle = UniqueHandle<hid_t, Hdf5Close<Close>>;
 
 using H5File = Hdf5Handle<H5Fclose>;
 using H5Group = Hdf5Handle<H5Gclose>;
