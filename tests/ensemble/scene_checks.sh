@@ -89,8 +89,10 @@ kill_resume)
   grep -q "$done_count of 15 tasks already finished" "$work/resume.log" || fail "resume did not skip the finished tasks"
   [ ! -e "$work/cut.h5.partial" ] || fail "the .partial file was not renamed"
   same "$work/full.h5" "$work/cut.h5"
-  # A real kill: SIGKILL to every rank in the middle of the run (larger lattice: slower tasks).
-  big=("${scene[@]}" -sbm_N 40)
+  # A real kill: SIGKILL to every rank in the middle of the run. A larger lattice makes the tasks
+  # slow enough (about 0.3 s each, 15 on 2 ranks) that the run is still going when the poll below
+  # sees its first finished task; at 40 x 40 the whole run could end between two polls under load.
+  big=("${scene[@]}" -sbm_N 96)
   run 2 "${big[@]}" -output "$work/bigfull.h5" >/dev/null
   mpiexec --oversubscribe -n 2 "$driver" "${big[@]}" -output "$work/killed.h5" >"$work/killed.log" 2>&1 &
   launcher=$!
