@@ -118,25 +118,16 @@ TEST(FemGradedMesh, PatchTestUniformStrainGivesExactTractions) {
   ASSERT_EQ(DMCreateGlobalVector(dmU, u.out()), 0);
   ASSERT_EQ(VecDuplicate(u, f.out()), 0);
   const double A[3][3] = {{1e-3, 2e-4, -3e-4}, {5e-4, -7e-4, 1e-4}, {-2e-4, 6e-4, 4e-4}};
+  test::setLinearDisplacement(dmU, u, A);
+  model.elastic().forceSpecialised(u, f);
+  double sigma[3][3];
+  test::uniformStress(q.plate.youngsModulus, q.plate.poissonRatio, A, sigma);
   Vec coords = nullptr;
-  DMGetCoordinates(dmU, &coords);
+  DMGetCoordinates(dmU, &coords);  // the nodes' positions, read below
   const PetscScalar* x = nullptr;
-  PetscScalar* uu = nullptr;
+  VecGetArrayRead(coords, &x);
   PetscInt n = 0;
   VecGetLocalSize(u, &n);
-  VecGetArrayRead(coords, &x);
-  VecGetArray(u, &uu);
-  for (PetscInt i = 0; i < n; i += 3)
-    for (int c = 0; c < 3; ++c) uu[i + c] = A[c][0] * x[i] + A[c][1] * x[i + 1] + A[c][2] * x[i + 2];
-  VecRestoreArray(u, &uu);
-  model.elastic().forceSpecialised(u, f);
-  const Lame l = lameFromYoung(q.plate.youngsModulus, q.plate.poissonRatio);
-  double eps[3][3], sigma[3][3];
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) eps[i][j] = 0.5 * (A[i][j] + A[j][i]);
-  const double tr = eps[0][0] + eps[1][1] + eps[2][2];
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) sigma[i][j] = 2 * l.mu * eps[i][j] + (i == j ? l.lambda * tr : 0.0);
   // A node's share of a face: half of each neighbouring cell's width along both face directions.
   const MeshAxis& ax = model.mesh().axisX();
   const MeshAxis& ay = model.mesh().axisY();
