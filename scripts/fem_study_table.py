@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """The FEM convergence study's tables (docs/accuracy_fem.md) from its measurements
-(docs/fem_study.tsv), by the rule the code's error bar uses (src/fem/error_estimate.cpp): a ladder
+(docs/fem_study.tsv), by the rule the code's error bar uses (scripts/ladder_rule.py, core/refinement_ladder.hpp): a ladder
 of three in-plane meshes at ratio 2 converges when its differences shrink with
 an observed order p > 0.5 (second difference below 1/sqrt(2) of the first); then, if they keep
 their sign, the Richardson extrapolation (p capped at 2) and Roache's GCI 1.25 |mu(n) - mu_ext| /
@@ -12,6 +12,9 @@ mu_ext of each mesh; if they alternate, 1.25 x the distance to the farther of th
 import math
 import os
 import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from ladder_rule import judge  # noqa: E402  the rule the code's bars use
 
 G, H, P = 10e6 / (2 * (1 + 1 / 3)), 5e-5, 1e4
 
@@ -40,19 +43,17 @@ def ladder(rows, law, dc, prop, delta, nz=5):
 
 
 def analyse(mu):
-    """(differences, order, extrapolated, bounds of the three members) by the error bar's rule."""
-    first, second = mu[1] - mu[0], mu[2] - mu[1]
+    """(differences, order, extrapolated, bounds of the three members) by the shared rule."""
+    v = [judge(mu, member) for member in range(3)]
+    first, second = v[0]["first"], v[0]["second"]
     d = "%+.2f %%, %+.2f %%" % (100 * first / mu[0], 100 * second / mu[1])
-    if not abs(second) < abs(first) / math.sqrt(2):
+    if v[0]["outcome"] == "not converged":
         why = "signs differ, no shrinking" if first * second <= 0 else "order <= 0.5"
         return d, "none (%s)" % why, "", "not converged: no bar"
-    if first * second <= 0:  # alternating: the limit lies between the last two values
-        bounds = [125 * max(abs(m - mu[1]), abs(m - mu[2])) / abs(mu[2]) for m in mu]
-        return d, "oscillating", "between %.6f and %.6f" % (mu[1], mu[2]), " / ".join("%.2f %%" % b for b in bounds)
-    p = math.log(first / second) / math.log(2)
-    ext = mu[2] + second / (2 ** min(p, 2) - 1)
-    gci = ["%.2f %%" % (125 * abs(m - ext) / ext) for m in mu]
-    return d, "%.2f" % p, "%.6f" % ext, " / ".join(gci)
+    bounds = " / ".join("%.2f %%" % (100 * m["bound"]) for m in v)
+    if v[0]["outcome"] == "oscillating":
+        return d, "oscillating", "between %.6f and %.6f" % (mu[1], mu[2]), bounds
+    return d, "%.2f" % v[0]["order"], "%.6f" % v[0]["extrapolated"], bounds
 
 
 def main():

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The spring-block discretisation study's table (docs/accuracy.md, "The discretisation bar") from
 its measurements (docs/sbm_study.tsv), by the rule of the code's bar
-(src/ensemble/sbm_error_estimate.cpp): each difference of a lattice ladder N_b, 2 N_b, 4 N_b must
+(scripts/ladder_rule.py, core/refinement_ladder.hpp): each difference of a lattice ladder N_b, 2 N_b, 4 N_b must
 exceed its 95 % statistical half-width, and the ladder converges when the second difference stays
 below 1/sqrt(2) of the first (observed order p > 0.5) across both half-widths; then Roache's GCI
 (monotone; p capped at 2) or the bracket of the last two means (oscillating), widened by the
@@ -9,11 +9,11 @@ half-width of the distance, times 1.25. Otherwise no bar.
 
     sbm_study_table.py [docs/sbm_study.tsv]     prints a Markdown table
 """
-import math
 import os
 import sys
 
-from scipy.stats import t as student
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from ladder_rule import judge  # noqa: E402  the rule the code's bars use
 
 
 def load(path):
@@ -28,35 +28,21 @@ def load(path):
     return rows
 
 
-def half(members, c):
-    """95 % half-width of sum c_i mean_i, t of the smallest sample used."""
-    used = [m for m, k in zip(members, c) if k]
-    var = sum((k * m[2]) ** 2 for m, k in zip(members, c))
-    return student.ppf(0.975, min(m[0] for m in used) - 1) * math.sqrt(var)
-
-
 def verdict(m):
-    """The rule on one ladder of three (R, mean, se): (text, bound of its coarsest member or None)."""
-    a, b, c = (x[1] for x in m)
-    d1, d2 = b - a, c - b
-    h1, h2 = half(m, (-1, 1, 0)), half(m, (0, -1, 1))
-    order = math.log2(abs(d1 / d2)) if d2 else math.inf
-    diffs = f"{100 * d1 / a:+.3f} +- {100 * h1 / a:.3f} %, {100 * d2 / b:+.3f} +- {100 * h2 / b:.3f} %"
-    if abs(d1) <= h1 or abs(d2) <= h2:
-        return diffs, f"{order:.2f}", "a difference within its statistical error: proves nothing", None
-    if not abs(d2) + h2 < (abs(d1) - h1) / math.sqrt(2):
-        why = "<= 0.5" if order <= 0.5 else "> 0.5 only within the statistical error"
-        return diffs, f"{order:.2f}", f"not converged (order {why}): no bar", None
-    if d1 * d2 < 0:
-        far = 1 if abs(a - b) > abs(a - c) else 2
-        coeff = [1, 0, 0]
-        coeff[far] -= 1
-        bound = 1.25 * (abs(a - m[far][1]) + half(m, coeff)) / abs(c)
-        return diffs, "oscillating", f"GCI of N_b: {100 * bound:.2f} %", bound
-    r = 1 / (2 ** min(order, 2) - 1)
-    ext = c + r * d2
-    bound = 1.25 * (abs(a - ext) + half(m, (1, r, -1 - r))) / abs(ext)
-    return diffs, f"{order:.2f}", f"extrapolated {ext:.6f}, GCI of N_b: {100 * bound:.2f} %", bound
+    """The shared rule on one ladder of three (R, mean, se): (differences, order, text, bound of its
+    coarsest member or None)."""
+    v = judge([(x[1], x[2], x[0]) for x in m], 0)
+    a, b = m[0][1], m[1][1]
+    diffs = f"{100 * v['first'] / a:+.3f} +- {100 * v['h1'] / a:.3f} %, {100 * v['second'] / b:+.3f} +- {100 * v['h2'] / b:.3f} %"
+    order = f"{v['order']:.2f}"
+    if v["outcome"] == "no signal":
+        return diffs, order, "a difference within its statistical error: proves nothing", None
+    if v["outcome"] == "not converged":
+        why = "<= 0.5" if v["order"] <= 0.5 else "> 0.5 only within the statistical error"
+        return diffs, order, f"not converged (order {why}): no bar", None
+    if v["outcome"] == "oscillating":
+        return diffs, "oscillating", f"GCI of N_b: {100 * v['bound']:.2f} %", v["bound"]
+    return diffs, order, f"extrapolated {v['extrapolated']:.6f}, GCI of N_b: {100 * v['bound']:.2f} %", v["bound"]
 
 
 def main():

@@ -10,8 +10,8 @@
 // no bar, with the reason.
 #include "gradfric/ensemble/sbm_error_estimate.hpp"
 
+#include "gradfric/core/refinement_ladder.hpp"
 #include "gradfric/ensemble/sbm_study_data.hpp"  // generated: kSbmStudyTable, the text of docs/sbm_study.tsv
-#include "gradfric/ensemble/statistics.hpp"
 #include "gradfric/physics/field.hpp"
 
 #include <algorithm>
@@ -74,18 +74,6 @@ const SbmStudyRow* findLattice(const std::vector<SbmStudyRow>& study, const std:
         r.blocks == blocks && r.observable == observable)
       return &r;
   return nullptr;
-}
-
-// 95 % half-width of sum_i c_i mean_i over independent means, the t of the smallest sample.
-double halfWidthOf(const SbmStudyRow* const m[3], const double c[3]) {
-  double variance = 0;
-  int smallest = m[0]->realisations;
-  for (int i = 0; i < 3; ++i) {
-    if (c[i] == 0.0) continue;
-    variance += c[i] * c[i] * m[i]->stdError * m[i]->stdError;
-    smallest = std::min(smallest, m[i]->realisations);
-  }
-  return t95(smallest - 1) * std::sqrt(variance);
 }
 
 // The lattice term: the finest ladder holding the run's N_b (nearest the asymptotic range), taken
@@ -171,42 +159,33 @@ const std::vector<SbmStudyRow>& sbmStudy() {
 }
 
 SbmBarTerm latticeLadderTerm(const SbmStudyRow* const m[3], int member) {
-  const double coarse = m[0]->value, medium = m[1]->value, fine = m[2]->value, run = m[member]->value;
-  const double first = medium - coarse, second = fine - medium;
-  const double firstOf[3] = {-1, 1, 0}, secondOf[3] = {0, -1, 1};  // the differences as sums of the means
-  const double h1 = halfWidthOf(m, firstOf), h2 = halfWidthOf(m, secondOf);
+  LadderRung rungs[3];
+  for (int i = 0; i < 3; ++i) rungs[i] = {m[i]->value, m[i]->stdError, m[i]->realisations};
+  const LadderVerdict v = judgeLadder(rungs, member);
+  const double coarse = m[0]->value, medium = m[1]->value, fine = m[2]->value;
   char ladder[200], text[500];
   std::snprintf(ladder, sizeof ladder, "lattice N_b %d/%d/%d: %.6f, %.6f, %.6f (differences %+.3f %% +- %.3f %%, %+.3f %% +- %.3f %%)",
-                m[0]->blocks, m[1]->blocks, m[2]->blocks, coarse, medium, fine, 100 * first / coarse, 100 * h1 / coarse,
-                100 * second / medium, 100 * h2 / medium);
-  if (!(std::fabs(first) > h1) || !(std::fabs(second) > h2)) {
-    std::snprintf(text, sizeof text, "%s: a difference within its 95 %% statistical half-width, the ladder proves nothing",
-                  ladder);
-    return {false, 0, text};
+                m[0]->blocks, m[1]->blocks, m[2]->blocks, coarse, medium, fine, 100 * v.first / coarse,
+                100 * v.firstHalfWidth / coarse, 100 * v.second / medium, 100 * v.secondHalfWidth / medium);
+  switch (v.outcome) {
+    case LadderOutcome::NoSignal:
+      std::snprintf(text, sizeof text, "%s: a difference within its 95 %% statistical half-width, the ladder proves nothing",
+                    ladder);
+      return {false, 0, text};
+    case LadderOutcome::NotConverged:
+      std::snprintf(text, sizeof text, "%s: not converged, observed order %.2f %s", ladder, v.order,
+                    v.order <= 0.5 ? "<= 0.5" : "not above 0.5 across the statistical error");
+      return {false, 0, text};
+    case LadderOutcome::Oscillating:
+      std::snprintf(text, sizeof text, "%s, oscillating (limit between the last two), bound %s", ladder,
+                    percent(v.bound).c_str());
+      return {true, v.bound, text};
+    case LadderOutcome::Monotone:
+      break;
   }
-  const double order = std::log(std::fabs(first / second)) / std::log(2.0);
-  if (!(std::fabs(second) + h2 < (std::fabs(first) - h1) / std::sqrt(2.0))) {
-    std::snprintf(text, sizeof text, "%s: not converged, observed order %.2f %s", ladder, order,
-                  order <= 0.5 ? "<= 0.5" : "not above 0.5 across the statistical error");
-    return {false, 0, text};
-  }
-  if (first * second < 0) {  // alternating, shrinking: the limit lies between the last two means
-    const int far = std::fabs(run - medium) > std::fabs(run - fine) ? 1 : 2;
-    double c[3] = {0, 0, 0};
-    c[member] += 1;
-    c[far] -= 1;
-    const double bound = 1.25 * (std::fabs(run - m[far]->value) + halfWidthOf(m, c)) / std::fabs(fine);
-    std::snprintf(text, sizeof text, "%s, oscillating (limit between the last two), bound %s", ladder, percent(bound).c_str());
-    return {true, bound, text};
-  }
-  const double ratio = 1.0 / (std::pow(2.0, std::min(order, 2.0)) - 1.0);  // mu_ext = fine + ratio (fine - medium)
-  const double extrapolated = fine + ratio * second;
-  double c[3] = {0, ratio, -1 - ratio};
-  c[member] += 1;
-  const double bound = 1.25 * (std::fabs(run - extrapolated) + halfWidthOf(m, c)) / std::fabs(extrapolated);
-  std::snprintf(text, sizeof text, "%s, observed order %.2f, extrapolated %.6f, GCI %s", ladder, order, extrapolated,
-                percent(bound).c_str());
-  return {true, bound, text};
+  std::snprintf(text, sizeof text, "%s, observed order %.2f, extrapolated %.6f, GCI %s", ladder, v.order, v.extrapolated,
+                percent(v.bound).c_str());
+  return {true, v.bound, text};
 }
 
 SbmDiscretisation sbmDiscretisationError(const sbm::Parameters& parameters, const Grading& grading,

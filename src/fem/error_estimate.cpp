@@ -17,6 +17,7 @@
 // applied to the graded ones (said in the basis). The terms are added: their signs are not known.
 #include "gradfric/fem/error_estimate.hpp"
 
+#include "gradfric/core/refinement_ladder.hpp"
 #include "gradfric/fem/fem_study_data.hpp"  // generated: kFemStudyTable, the text of docs/fem_study.tsv
 #include "gradfric/physics/field.hpp"
 #include "gradfric/physics/state_weakening_law.hpp"
@@ -123,34 +124,26 @@ std::string meshName(const FemParameters& q) {
 }
 
 // The bound of one member of a refinement ladder (coarse, medium, fine at ratio 2; member 0, 1
-// or 2), or none where the ladder does not converge (its second difference not below 1/sqrt(2) of
-// the first: an observed order of 0.5 or less). Monotone: Roache's GCI about the Richardson
-// extrapolation (p capped at 2), 1.25 |mu(member) - mu_ext| / mu_ext. Oscillating (the differences
-// change sign while they shrink): the limit of an alternating sequence with shrinking steps lies
-// between its last two values, so 1.25 x the member's largest distance to them. term, ladder:
-// the names in the basis.
+// or 2) by the rule both models share (core/refinement_ladder.hpp), or none where the ladder does
+// not converge. term, ladder: the names in the basis.
 ErrorTerm ladderTerm(const char* term, const std::string& ladder, const StudyRow* const m[3], int member) {
-  const double coarse = m[0]->mu, medium = m[1]->mu, fine = m[2]->mu, run = m[member]->mu;
-  const double first = medium - coarse, second = fine - medium;
+  const LadderRung rungs[3] = {{m[0]->mu}, {m[1]->mu}, {m[2]->mu}};
+  const LadderVerdict v = judgeLadder(rungs, member);
+  const double coarse = m[0]->mu, medium = m[1]->mu, fine = m[2]->mu;
   char text[300];
-  if (!(std::fabs(second) < std::fabs(first) / std::sqrt(2.0))) {
+  if (!v.converged()) {
     std::snprintf(text, sizeof text, "%s not converged: %s give %.6f, %.6f, %.6f (differences %+.2f %%, %+.2f %%: %s)",
-                  term, ladder.c_str(), coarse, medium, fine, 100 * first / coarse, 100 * second / medium,
-                  first * second > 0 ? "observed order <= 0.5" : "they change sign and do not shrink");
+                  term, ladder.c_str(), coarse, medium, fine, 100 * v.first / coarse, 100 * v.second / medium,
+                  v.first * v.second > 0 ? "observed order <= 0.5" : "they change sign and do not shrink");
     return {false, 0, text};
   }
-  if (first * second <= 0) {
-    const double bound = 1.25 * std::max(std::fabs(run - medium), std::fabs(run - fine)) / std::fabs(fine);
+  if (v.outcome == LadderOutcome::Oscillating)
     std::snprintf(text, sizeof text, "%s %s: %.6f, %.6f, %.6f, oscillating convergence (limit between the last two), bound %s",
-                  term, ladder.c_str(), coarse, medium, fine, percent(bound).c_str());
-    return {true, bound, text};
-  }
-  const double order = std::log(first / second) / std::log(2.0);
-  const double extrapolated = fine + second / (std::pow(2.0, std::min(order, 2.0)) - 1.0);
-  const double bound = 1.25 * std::fabs(run - extrapolated) / std::fabs(extrapolated);
-  std::snprintf(text, sizeof text, "%s %s: %.6f, %.6f, %.6f, observed order %.2f, extrapolated %.6f, GCI %s", term,
-                ladder.c_str(), coarse, medium, fine, order, extrapolated, percent(bound).c_str());
-  return {true, bound, text};
+                  term, ladder.c_str(), coarse, medium, fine, percent(v.bound).c_str());
+  else
+    std::snprintf(text, sizeof text, "%s %s: %.6f, %.6f, %.6f, observed order %.2f, extrapolated %.6f, GCI %s", term,
+                  ladder.c_str(), coarse, medium, fine, v.order, v.extrapolated, percent(v.bound).c_str());
+  return {true, v.bound, text};
 }
 
 // The mesh term. A ladder refined in every direction (n x n x nz, 2n x 2n x 2nz, 4n x 4n x 4nz)

@@ -40,13 +40,9 @@ struct SbmBarTerm {
   std::string basis;    // what was measured, or why it was not
 };
 
-// The bound of member 0, 1 or 2 of a lattice ladder (N_b, 2 N_b, 4 N_b ensemble means), or none.
-// Each difference must exceed its 95 % statistical half-width (else the ladder proves nothing),
-// and the ladder converges when the second difference stays below 1/sqrt(2) of the first (observed
-// order p > 0.5) across both half-widths. Monotone: Roache's GCI, 1.25 (|mu(member) - mu_ext| + h)
-// / |mu_ext|, mu_ext the Richardson extrapolation with p capped at 2 and h the 95 % half-width of
-// mu(member) - mu_ext (p held). Alternating and shrinking: 1.25 (the member's largest distance to
-// the last two means + its half-width) / |last mean|. ladder: its name in the basis.
+// The bound of member 0, 1 or 2 of a lattice ladder (N_b, 2 N_b, 4 N_b ensemble means), or none,
+// by the rule both models share (core/refinement_ladder.hpp: each difference must exceed its 95 %
+// statistical half-width; GCI or bracket widened by the half-width). ladder: its name in the basis.
 SbmBarTerm latticeLadderTerm(const SbmStudyRow* const ladder[3], int member);
 
 struct SbmDiscretisation {

@@ -1,0 +1,56 @@
+"""The one rule by which a refinement ladder proves an error bar, for both models' tables
+(scripts/fem_study_table.py, scripts/sbm_study_table.py); the code's bars use the same rule in
+C++ (include/gradfric/core/refinement_ladder.hpp, tested against known limits).
+
+Three results at ratio 2 (coarse, medium, fine), deterministic or ensemble means (mean, standard
+error, realisations): a statistical ladder proves nothing unless each difference exceeds its 95 %
+half-width; it converges when the second difference stays below 1/sqrt(2) of the first (observed
+order p > 0.5) across both half-widths; then Roache's GCI about the Richardson extrapolation (p
+capped at 2) if the differences keep their sign, or the bracket of the last two values if they
+alternate, each widened by its half-width and times 1.25.
+"""
+import math
+
+
+def _t95(dof):
+    from scipy.stats import t as student  # only statistical ladders need it
+    return student.ppf(0.975, dof)
+
+
+def _half(rungs, c):
+    """95 % half-width of sum c_i value_i; rungs are (value, se, realisations); 0 if deterministic."""
+    used = [r for r, k in zip(rungs, c) if k and r[1]]
+    if not used:
+        return 0.0
+    var = sum((k * r[1]) ** 2 for r, k in zip(rungs, c))
+    return _t95(min(r[2] for r in used) - 1) * math.sqrt(var)
+
+
+def judge(rungs, member):
+    """rungs: three values, or three (value, standard error, realisations). Returns a dict: outcome
+    ('no signal', 'not converged', 'monotone', 'oscillating'), first, second, h1, h2, order,
+    extrapolated (monotone), bound (relative, of the member; None if not converged)."""
+    rungs = [r if isinstance(r, tuple) else (r, 0.0, 0) for r in rungs]
+    a, b, c = (r[0] for r in rungs)
+    first, second = b - a, c - b
+    h1, h2 = _half(rungs, (-1, 1, 0)), _half(rungs, (0, -1, 1))
+    order = math.log2(abs(first / second)) if second else math.inf
+    v = dict(first=first, second=second, h1=h1, h2=h2, order=order, extrapolated=None, bound=None)
+    statistical = any(r[1] for r in rungs)
+    if statistical and (abs(first) <= h1 or abs(second) <= h2):
+        return dict(v, outcome="no signal")
+    if not abs(second) + h2 < (abs(first) - h1) / math.sqrt(2):
+        return dict(v, outcome="not converged")
+    run = rungs[member][0]
+    if first * second <= 0:  # alternating: the limit lies between the last two values
+        far = 1 if abs(run - b) > abs(run - c) else 2
+        coeff = [0, 0, 0]
+        coeff[member] += 1
+        coeff[far] -= 1
+        return dict(v, outcome="oscillating", bound=1.25 * (abs(run - rungs[far][0]) + _half(rungs, coeff)) / abs(c))
+    ratio = 1 / (2 ** min(order, 2) - 1)
+    ext = c + ratio * second
+    coeff = [0, ratio, -1 - ratio]
+    coeff[member] += 1
+    return dict(v, outcome="monotone", extrapolated=ext,
+                bound=1.25 * (abs(run - ext) + _half(rungs, coeff)) / abs(ext))

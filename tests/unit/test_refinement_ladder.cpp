@@ -1,0 +1,88 @@
+// The rule both models use to turn a refinement ladder into an error bar
+// (core/refinement_ladder.hpp), on sequences whose limit is known: mu(h) = mu0 + C h^p.
+#include "gradfric/core/refinement_ladder.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace {
+
+using gradfric::judgeLadder;
+using gradfric::LadderOutcome;
+using gradfric::LadderRung;
+
+constexpr double kLimit = 0.93;
+
+// Rungs at h = 4, 2, 1 of mu0 + c h^p (coarse first).
+void powerLadder(double c, double p, LadderRung (&rungs)[3]) {
+  for (int k = 0; k < 3; ++k) rungs[k] = {kLimit + c * std::pow(2.0, p * (2 - k))};
+}
+
+TEST(RefinementLadder, SecondOrderIsExtrapolatedExactly) {
+  LadderRung rungs[3];
+  powerLadder(0.004, 2.0, rungs);
+  for (int member = 0; member < 3; ++member) {
+    const auto v = judgeLadder(rungs, member);
+    ASSERT_EQ(v.outcome, LadderOutcome::Monotone);
+    EXPECT_NEAR(v.order, 2.0, 1e-9);
+    EXPECT_NEAR(v.extrapolated, kLimit, 1e-12);
+    // Roache's GCI: 1.25 x the member's distance to the limit.
+    EXPECT_NEAR(v.bound, 1.25 * std::fabs(rungs[member].value - kLimit) / kLimit, 1e-12);
+  }
+}
+
+TEST(RefinementLadder, GciBoundsTheTrueErrorAtEveryOrderAboveOneHalf) {
+  for (double p : {0.6, 1.0, 1.7, 2.0, 3.0, 4.0})
+    for (double c : {0.01, -0.01}) {
+      LadderRung rungs[3];
+      powerLadder(c, p, rungs);
+      for (int member = 0; member < 3; ++member) {
+        const auto v = judgeLadder(rungs, member);
+        ASSERT_EQ(v.outcome, LadderOutcome::Monotone) << "p " << p;
+        EXPECT_NEAR(v.order, p, 1e-9);
+        EXPECT_GE(v.bound, std::fabs(rungs[member].value / kLimit - 1)) << "p " << p << " member " << member;
+      }
+    }
+}
+
+TEST(RefinementLadder, OrderAtOrBelowOneHalfProvesNothing) {
+  for (double p : {0.49, 0.3, 0.0, -0.5}) {
+    LadderRung rungs[3];
+    powerLadder(0.01, p, rungs);
+    EXPECT_EQ(judgeLadder(rungs, 1).outcome, LadderOutcome::NotConverged) << "p " << p;
+  }
+}
+
+TEST(RefinementLadder, AlternatingShrinkingBracketsTheLimit) {
+  // mu0 + c (-1/2)^k: the differences alternate and halve.
+  LadderRung rungs[3];
+  for (int k = 0; k < 3; ++k) rungs[k] = {kLimit + 0.02 * std::pow(-0.5, k)};
+  for (int member = 0; member < 3; ++member) {
+    const auto v = judgeLadder(rungs, member);
+    ASSERT_EQ(v.outcome, LadderOutcome::Oscillating);
+    EXPECT_GE(v.bound, std::fabs(rungs[member].value / kLimit - 1));
+  }
+  // Alternating without shrinking by 1/sqrt(2): no bound (the FEM's friction +0.2 ladder).
+  const LadderRung flat[3] = {{0.804064}, {0.805781}, {0.804198}};
+  EXPECT_EQ(judgeLadder(flat, 2).outcome, LadderOutcome::NotConverged);
+}
+
+TEST(RefinementLadder, StatisticalDifferencesMustExceedTheirHalfWidths) {
+  LadderRung rungs[3];
+  powerLadder(0.004, 2.0, rungs);  // differences 0.048 and 0.012
+  LadderRung noisy[3], precise[3];
+  for (int k = 0; k < 3; ++k) {
+    noisy[k] = {rungs[k].value, 0.01, 16};     // half-widths about 0.03: the second difference is noise
+    precise[k] = {rungs[k].value, 1e-4, 64};  // half-widths about 3e-4
+  }
+  EXPECT_EQ(judgeLadder(noisy, 2).outcome, LadderOutcome::NoSignal);
+  const auto deterministic = judgeLadder(rungs, 1), withError = judgeLadder(precise, 1);
+  ASSERT_EQ(withError.outcome, LadderOutcome::Monotone);
+  EXPECT_GT(withError.firstHalfWidth, 0.0);
+  // The same means with a statistical error get a wider bar, by the half-width of mu(2n) - mu_ext.
+  EXPECT_GT(withError.bound, deterministic.bound);
+  EXPECT_LT(withError.bound - deterministic.bound, 0.01);
+}
+
+}  // namespace
