@@ -2,6 +2,7 @@
 #include "gradfric/design/fem_check.hpp"
 
 #include "gradfric/fem/plate_model.hpp"
+#include "gradfric/fem/mesh_sites.hpp"
 #include "gradfric/fem/plate_ts.hpp"
 #include "gradfric/fem/simulation.hpp"
 #include "gradfric/fem/stable_step.hpp"
@@ -22,7 +23,7 @@ std::shared_ptr<FemCheck> readFemCheck(MPI_Comm comm, const Plate& plate) {
 void checkFemCheck(const FemCheck& check, const std::vector<Grading>& corners) {
   const fem::FemParameters& p = check.parameters;
   for (const Grading& g : corners) {
-    checkPlateFields(g, p.plate, p.nx, p.ny);
+    fem::checkMeshFields(g, p);
     fem::requireFemRunLength(p, g, &check.record);
   }
 }

@@ -1,14 +1,16 @@
 #include "gradfric/fem/mesh_sites.hpp"
 
 #include "gradfric/fem/plate_mesh.hpp"
+#include "gradfric/physics/field_options.hpp"
 
 namespace gradfric::fem {
 
 MeshAxis meshAxisX(const FemParameters& q) { return makeMeshAxis(q.edge, q.nx, q.plate.length); }
 MeshAxis meshAxisY(const FemParameters& q) { return makeMeshAxis(q.edge, q.ny, q.plate.length); }
 
-PropertySampler meshSampler(const Grading& grading, const MeshAxis& x, const MeshAxis& y) {
-  if (x.uniform() && y.uniform()) return PropertySampler(grading, x.cells(), y.cells());
+namespace {
+
+SiteGrid siteGrid(const MeshAxis& x, const MeshAxis& y) {
   SiteGrid grid;
   const auto fill = [](const MeshAxis& axis, std::vector<double>* centre, std::vector<double>* width) {
     for (int i = 0; i < axis.cells(); ++i) {
@@ -18,7 +20,14 @@ PropertySampler meshSampler(const Grading& grading, const MeshAxis& x, const Mes
   };
   fill(x, &grid.u, &grid.du);
   fill(y, &grid.v, &grid.dv);
-  return PropertySampler(grading, grid);
+  return grid;
+}
+
+}  // namespace
+
+PropertySampler meshSampler(const Grading& grading, const MeshAxis& x, const MeshAxis& y) {
+  if (x.uniform() && y.uniform()) return PropertySampler(grading, x.cells(), y.cells());
+  return PropertySampler(grading, siteGrid(x, y));
 }
 
 PropertySampler meshSampler(const Grading& grading, const PlateMesh& mesh) {
@@ -27,6 +36,15 @@ PropertySampler meshSampler(const Grading& grading, const PlateMesh& mesh) {
 
 PropertySampler meshSampler(const Grading& grading, const FemParameters& q) {
   return meshSampler(grading, meshAxisX(q), meshAxisY(q));
+}
+
+SiteGrid meshSiteGrid(const FemParameters& q) { return siteGrid(meshAxisX(q), meshAxisY(q)); }
+
+void checkMeshFields(const Grading& grading, const FemParameters& q) {
+  if (!grading.fields) return;
+  FemParameters resolved = q;  // the edge band's default
+  resolved.resolveDerived();
+  checkPlateFields(grading, q.plate, meshSampler(grading, resolved), meshSiteGrid(resolved));
 }
 
 }  // namespace gradfric::fem

@@ -1,5 +1,6 @@
 #include "gradfric/fem/scene_options.hpp"
 
+#include "gradfric/fem/mesh_sites.hpp"
 #include "gradfric/fem/plate_ts.hpp"
 #include "gradfric/fem/stable_step.hpp"
 #include "gradfric/physics/field_options.hpp"
@@ -19,7 +20,7 @@ FemScene readFemScene(MPI_Comm comm, RunParameters* record) {
 
 void checkFemScene(MPI_Comm comm, const FemScene& scene, RunParameters* record,
                    const std::vector<std::string>& extraPrefixes) {
-  checkPlateFields(scene.grading, scene.plate, static_cast<int>(scene.params.nx), static_cast<int>(scene.params.ny));
+  checkMeshFields(scene.grading, scene.params);
   readPlateTSOptions(comm);  // the -ts_ options: checked here, used by the run's TS
   std::vector<std::string> prefixes = {"plate_", "friction_", "fem_", "grading_", "field_"};
   prefixes.insert(prefixes.end(), extraPrefixes.begin(), extraPrefixes.end());

@@ -162,7 +162,7 @@ FemSweep buildFemSweep(MPI_Comm comm, const FemParameters& params, const Grading
   for (const auto& fields : valueFields) {
     Grading g = grading;
     g.fields = fields;
-    checkPlateFields(g, params.plate, static_cast<int>(params.nx), static_cast<int>(params.ny));
+    checkMeshFields(g, params);
   }
 
   ensemble::SweepPoint base;

@@ -259,10 +259,9 @@ std::shared_ptr<const PlateFields> readPlateFields(MPI_Comm comm, RunParameters*
   return std::make_shared<const PlateFields>(std::move(fields));
 }
 
-void checkPlateFields(const Grading& grading, const Plate& plate, int nx, int ny) {
-  if (!grading.fields) return;
-  const SiteProblem problem = checkSites(grading, plate, nx, ny);
-  if (problem.property.empty()) return;
+namespace {
+
+void refuseProblem(const Grading& grading, const SiteProblem& problem) {
   const PlateFields& f = *grading.fields;
   const PropertyField* blamed = problem.property == "E"      ? f.modulus.get()
                                 : problem.property == "mu_s" ? f.muStatic.get()
@@ -273,6 +272,20 @@ void checkPlateFields(const Grading& grading, const Plate& plate, int nx, int ny
         << " m, y = " << problem.where.y << " m)";
   if (!blamed) throw InputError("invalid property field: " + where.str());
   throw InputError(blamed->blameOption, blamed->blameValue, where.str());
+}
+
+}  // namespace
+
+void checkPlateFields(const Grading& grading, const Plate& plate, int nx, int ny) {
+  if (!grading.fields) return;
+  const SiteProblem problem = checkSites(grading, plate, nx, ny);
+  if (!problem.property.empty()) refuseProblem(grading, problem);
+}
+
+void checkPlateFields(const Grading& grading, const Plate& plate, const PropertySampler& sampler, const SiteGrid& grid) {
+  if (!grading.fields) return;
+  const SiteProblem problem = checkSites(sampler, plate, grid);
+  if (!problem.property.empty()) refuseProblem(grading, problem);
 }
 
 void checkSpringBlockFields(const Grading& grading, const Plate& plate, int blocksPerSide) {

@@ -57,8 +57,25 @@ bool PropertySampler::frictionVariesAlongY() const {
 
 bool PropertySampler::modulusVariesAlongY() const { return fields_ && fields_->modulus && fields_->modulus->variesAlongY(); }
 
+SiteGrid uniformSiteGrid(int nx, int ny) {
+  SiteGrid grid;
+  for (int i = 0; i < nx; ++i) {
+    grid.u.push_back((i + 0.5) / nx);
+    grid.du.push_back(1.0 / nx);
+  }
+  for (int j = 0; j < ny; ++j) {
+    grid.v.push_back((j + 0.5) / ny);
+    grid.dv.push_back(1.0 / ny);
+  }
+  return grid;
+}
+
 SiteProblem checkSites(const Grading& grading, const Plate& plate, int nx, int ny) {
-  const PropertySampler sampler(grading, nx, ny);
+  return checkSites(PropertySampler(grading, nx, ny), plate, uniformSiteGrid(nx, ny));
+}
+
+SiteProblem checkSites(const PropertySampler& sampler, const Plate& plate, const SiteGrid& grid) {
+  const int nx = static_cast<int>(grid.u.size()), ny = static_cast<int>(grid.v.size());
   SiteProblem problem;
   auto fail = [&](const char* property, const char* allowed, double u, double v, double value) {
     problem.property = property;
@@ -67,7 +84,7 @@ SiteProblem checkSites(const Grading& grading, const Plate& plate, int nx, int n
   };
   for (int j = 0; j < ny; ++j)
     for (int i = 0; i < nx; ++i) {
-      const double u = (i + 0.5) / nx, v = (j + 0.5) / ny;
+      const double u = grid.u[i], v = grid.v[j];
       const double e = plate.youngsModulus * sampler.modulus(u, v);
       const double s = plate.muStatic * sampler.muStatic(u, v);
       const double k = plate.muKinetic * sampler.muKinetic(u, v);

@@ -77,6 +77,9 @@ s "-field_mu_deltaa" -- -field_mu_profile linear -field_mu_deltaa 0.2
 # The FEM refuses the same way (its sites: cell centres of its mesh).
 expect 1 "$fem" -output "-field_E_delta = 1.5" "E > 0" -- -fem_nx 4 -fem_ny 4 -fem_nz 1 -field_E_profile linear -field_E_delta 1.5 -field_E_angle 90
 expect 1 "$fem" -output "-field_mu_map" "finite values" -- -fem_nx 4 -fem_ny 4 -fem_nz 1 -field_mu_profile map -field_mu_map "$scratch/nan.h5"
+# On a mesh graded toward the edges, at the cells of that mesh: E = 1 - 1.02 (1 - 2u) is positive at
+# the first centre of 30 equal cells (u = 1/60) but not at the first graded cell's (x = 31.5 um).
+expect 1 "$fem" -output "-field_E_delta = 1.02" "E > 0" "x = 3.15394e-05 m" -- -fem_nx 30 -fem_ny 30 -fem_nz 1 -fem_edge_ratio 4 -fem_edge_band 1e-3 -field_E_profile linear -field_E_delta 1.02
 # Every rank refuses (no hang, no file).
 expect 2 "$sbm" -output "-field_mu_map" "finite values" -- -field_mu_profile map -field_mu_map "$scratch/nan.h5"
 expect 2 "$sbm" -output "-field_p_delta = -1.2" -- -field_p_profile step -field_p_delta -1.2 -field_p_position 1e-3

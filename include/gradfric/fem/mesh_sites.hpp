@@ -19,4 +19,11 @@ PropertySampler meshSampler(const Grading& grading, const MeshAxis& x, const Mes
 PropertySampler meshSampler(const Grading& grading, const PlateMesh& mesh);
 PropertySampler meshSampler(const Grading& grading, const FemParameters& q);
 
+// The bottom cells' centres and widths (over L) of the mesh the parameters describe.
+SiteGrid meshSiteGrid(const FemParameters& q);
+
+// Refuses a property field out of range at a cell of this mesh (checkPlateFields at the cells the
+// run samples: on an edge-graded mesh, not the uniform grid's centres).
+void checkMeshFields(const Grading& grading, const FemParameters& q);
+
 }  // namespace gradfric::fem

@@ -5,6 +5,7 @@
 #include "gradfric/physics/field.hpp"
 #include "gradfric/physics/grading.hpp"
 #include "gradfric/physics/plate.hpp"
+#include "gradfric/physics/property_sampler.hpp"
 
 #include <memory>
 
@@ -24,6 +25,9 @@ std::shared_ptr<const PlateFields> readPlateFields(MPI_Comm comm, RunParameters*
 // Refuses, naming the field's option, a property out of range at a site of the model's nx x ny
 // grid (E, mu_s, p <= 0, mu_k > mu_s): its value and where on the plate. Same on every rank.
 void checkPlateFields(const Grading& grading, const Plate& plate, int nx, int ny);
+// The same at the sites of a grid of unequal cells (the FEM's edge-graded mesh), sampled by
+// `sampler` as the model samples them.
+void checkPlateFields(const Grading& grading, const Plate& plate, const PropertySampler& sampler, const SiteGrid& grid);
 
 // The spring-block model's check: the above on its block centres (an E field that varies along
 // y is taken: its stiffnesses are then per block, sbm/lattice.hpp).

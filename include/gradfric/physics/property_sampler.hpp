@@ -56,5 +56,9 @@ struct SiteProblem {
   FieldViolation where;
 };
 SiteProblem checkSites(const Grading& grading, const Plate& plate, int nx, int ny);
+// The same at the centres of the unequal cells of `grid`, sampled as the model samples them.
+SiteProblem checkSites(const PropertySampler& sampler, const Plate& plate, const SiteGrid& grid);
+// The centres and widths of an nx x ny grid of equal cells.
+SiteGrid uniformSiteGrid(int nx, int ny);
 
 }  // namespace gradfric
