@@ -26,7 +26,17 @@ def main():
         group = dst.create_group("pressure_response")
         copy = group.create_dataset("g", data=g[...], compression="gzip", compression_opts=9, shuffle=True)
         for k, v in g.attrs.items():
-            copy.attrs[k] = v
+            if k not in ("DIMENSION_LIST", "REFERENCE_LIST", "CLASS", "NAME"):  # references into the source file
+                copy.attrs[k] = v
+        # The node positions (format 3) as the map's dimension scales again, in this file.
+        for axis, name in ((1, "node_x"), (0, "node_y")):
+            if name in src["pressure_response"]:
+                node = group.create_dataset(name, data=src["pressure_response"][name][...])
+                for k, v in src["pressure_response"][name].attrs.items():
+                    if k not in ("DIMENSION_LIST", "REFERENCE_LIST", "CLASS", "NAME"):
+                        node.attrs[k] = v
+                node.make_scale(name)
+                copy.dims[axis].attach_scale(node)
         src.copy(src["scene"], dst, "scene")
         s = src["scene"].attrs
         grading = f"{s['grading_property']} {s['grading_profile']} Delta = {s['grading_delta']}"

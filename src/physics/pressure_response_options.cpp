@@ -15,6 +15,7 @@
 #include <memory>
 #include <sstream>
 #include <utility>
+#include <vector>
 
 namespace gradfric {
 
@@ -98,6 +99,30 @@ double measuredUpTo(const std::string& path) {
   return std::isfinite(window[1]) && window[1] > 0.0 ? window[1] : 0.0;
 }
 
+// The node positions along one axis of the file's g (/pressure_response/node_x or node_y, written
+// since results format 3), empty when the file has none.
+std::vector<double> nodePositions(const std::string& path, const char* name) {
+  const io::Hdf5PrintingOff quiet;
+  std::vector<double> nodes;
+  const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  if (file < 0) return nodes;
+  io::H5File closeFile(file);
+  const std::string dataset = std::string("pressure_response/") + name;
+  if (H5Lexists(file, "pressure_response", H5P_DEFAULT) <= 0 || H5Lexists(file, dataset.c_str(), H5P_DEFAULT) <= 0)
+    return nodes;
+  const hid_t set = H5Dopen2(file, dataset.c_str(), H5P_DEFAULT);
+  if (set < 0) return nodes;
+  const hid_t space = H5Dget_space(set);
+  const hssize_t n = H5Sget_simple_extent_npoints(space);
+  H5Sclose(space);
+  if (n > 0) {
+    nodes.resize(static_cast<std::size_t>(n));
+    if (H5Dread(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, nodes.data()) < 0) nodes.clear();
+  }
+  H5Dclose(set);
+  return nodes;
+}
+
 // One file's g, refused when it is not a finite map covering the plate (value: the option's whole text).
 FieldMap readResponseMap(const std::string& option, const std::string& value, const std::string& path,
                          const Plate& plate) {
@@ -116,6 +141,23 @@ FieldMap readResponseMap(const std::string& option, const std::string& value, co
     box << where << "a map covering the plate [0, " << plate.length << "]^2 m (its extent is " << map.x0 << ", "
         << map.x1 << ", " << map.y0 << ", " << map.y1 << "; -plate_L as in the FEM run)";
     throw InputError(option, value, box.str());
+  }
+  // The map is sampled as equal pixels centred on the nodes: a g measured on a mesh graded toward the
+  // edges (unequal node spacing) would be sampled at the wrong places.
+  for (const char* axis : {"node_x", "node_y"}) {
+    const std::vector<double> nodes = nodePositions(path, axis);
+    if (nodes.size() < 3) continue;
+    double smallest = nodes[1] - nodes[0], largest = smallest;
+    for (std::size_t i = 1; i + 1 < nodes.size(); ++i) {
+      smallest = std::min(smallest, nodes[i + 1] - nodes[i]);
+      largest = std::max(largest, nodes[i + 1] - nodes[i]);
+    }
+    if (largest - smallest > 1e-9 * largest) {
+      std::ostringstream text;
+      text << where << "a g measured on a uniform mesh (this file's " << axis << " spacing runs from " << smallest
+           << " to " << largest << " m: a mesh graded toward the edges; measure g with -fem_edge_ratio 1)";
+      throw InputError(option, value, text.str());
+    }
   }
   return map;
 }

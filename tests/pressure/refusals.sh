@@ -23,6 +23,11 @@ def h5(name, data, extent):
 nan = np.zeros((6, 6)); nan[4, 1] = np.nan
 h5("nan.h5", nan, (0, L, 0, L))
 h5("small.h5", np.zeros((6, 6)), (0, L / 2, 0, L))
+# A g on a mesh graded toward the edges: its node positions (format 3) unequally spaced along x.
+h5("graded.h5", np.zeros((6, 6)), (-L / 10, L * 1.1, -L / 10, L * 1.1))
+with h5py.File(f"{d}/graded.h5", "a") as f:
+    f["/pressure_response/node_x"] = np.array([0, 0.5, 1.5, 3.5, 4.5, 5]) * 1e-3
+    f["/pressure_response/node_y"] = np.linspace(0, L, 6)
 PY
 
 source "$source_dir/tests/common/expect_refusal.sh"
@@ -49,6 +54,7 @@ s "-pressure_response_file = $scratch/missing.h5" "cannot open" -- -pressure_res
 s "-pressure_response_file" "dataset '/pressure_response/g'" "gradfric-fem -output" -- -pressure_response fem -pressure_response_file "$source_dir/input/fields/linear_ramp.h5"
 s "-pressure_response_file" "finite g everywhere (pixel 1, 4" -- -pressure_response fem -pressure_response_file "$scratch/nan.h5"
 s "-pressure_response_file" "covering the plate" -- -pressure_response fem -pressure_response_file "$scratch/small.h5"
+s "-pressure_response_file" "a g measured on a uniform mesh" "node_x spacing runs from 0.0005 to 0.002 m" -- -pressure_response fem -pressure_response_file "$scratch/graded.h5"
 # The unloaded trailing edge: a concentration so sharp that a block's pressure turns negative
 # before mu(t) reaches 0.8 -plate_mu_s, the top of the FEM's regression window (200 blocks,
 # lambda = H / 10: g = -2.0 at the trailing edge).
