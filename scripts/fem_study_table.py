@@ -78,9 +78,11 @@ def main():
     print("| ladder | mu_s | differences | observed order | extrapolated | bounds of its members |")
     print("|---|---|---|---|---|---|")
     base = ("state", 2.5e-8, "none", 0.0, 100, 5, "q1", 0.6, "penalty")
-    ladders = [("all directions 50x50x5/100x100x10/200x200x20",
-                [base[:4] + (n, nz) + base[6:] for n, nz in ((50, 5), (100, 10), (200, 20))]),
-               ("nz 5/10/20", [base[:5] + (nz,) + base[6:] for nz in (5, 10, 20)]),
+    gradings = [("none", 0.0)] + sorted({(k[2], k[3]) for k in rows if k[2] != "none" and k[1] == 2.5e-8})
+    ladders = [("all directions 50x50x5/100x100x10/200x200x20" + ("" if prop == "none" else ", %s %+.1f" % (prop, delta)),
+                [base[:2] + (prop, delta, n, nz) + base[6:] for n, nz in ((50, 5), (100, 10), (200, 20))])
+               for prop, delta in gradings]
+    ladders += [("nz 5/10/20", [base[:5] + (nz,) + base[6:] for nz in (5, 10, 20)]),
                ("dt_safety 0.6/0.3/0.15", [base[:7] + (dts,) + base[8:] for dts in (0.6, 0.3, 0.15)])]
     for label, keys in ladders:
         if all(k in rows for k in keys):
