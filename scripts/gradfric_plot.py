@@ -7,8 +7,9 @@ RESULTS.h5 is a spring-block ensemble file (gradfric) or a finite-element histor
 (gradfric-fem). Figures written to DIR (default: beside the file), as PNG:
 
   <name>_mu_t.png           mu(t) histories, one curve per sweep point (paper Figures 2 and 6)
-  <name>_variation.png      relative variation of mu_s and mu_k against Delta with 95 % bands,
-                            SBM and FEM together (Figures 4, 7, 9, 10, 11); one curve per
+  <name>_variation.png      relative variation of each observable with statistics (mu_s, mu_k, ...,
+                            as the file lists them) against Delta with 95 % bands, SBM and FEM
+                            together (Figures 4, 7, 9, 10, 11); one curve per
                             sliding angle, property or profile when those are swept (Figure 8)
   <name>_first_slip.png     first-slip time on the plate (the detachment front)
   <name>_fields.png         the property fields a scene used (-field_*: E, mu_s, mu_k, p per
@@ -42,6 +43,8 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 
 ENSEMBLE_FORMATS = {"gradfric-sbm-ensemble": "SBM", "gradfric-fem-sweep": "FEM"}
+# A FEM history file (gradfric-fem, one run) does not list its observables yet: these of its /results.
+FEM_HISTORY_OBSERVABLES = ("mu_s", "mu_k")
 
 
 def refuse(message):
@@ -71,6 +74,8 @@ class Ensemble:
         self.points = ds.sizes["point"]
         self.done = ds["done"].values.astype(bool)
         self.scene = {k: ds.attrs[k] for k in ds.attrs["scene_options"]}
+        # The observables with statistics, as the file lists them (gradfric.open).
+        self.observables = list(ds.attrs["observables"])
 
     def label(self, p):
         parts = []
@@ -174,11 +179,16 @@ def pair_points(sbm, fem):
 
 
 def print_pairs(sbm, fem, pairs):
-    rel = {m: (m.statistic("mu_s_relative") * 100, m.statistic("mu_s_mean")) for m in (sbm, fem)}
-    print(f"gradfric_plot: {len(pairs)} FEM point(s) paired with spring-block points (mu_s, relative variation):")
+    names = [n for n in sbm.observables if n in fem.observables]
+    values = {(m, n): (m.statistic(f"{n}_mean"), m.statistic(f"{n}_relative") * 100) for m in (sbm, fem) for n in names}
+    print(f"gradfric_plot: {len(pairs)} FEM point(s) paired with spring-block points ({', '.join(names)}: "
+          "value and relative variation):")
     for p, q in pairs:
-        print(f"  FEM {p} <-> SBM {q}  {fem.label(p):<24s} FEM {rel[fem][1][p]:.6f} ({rel[fem][0][p]:+.3f} %)"
-              f"  SBM {rel[sbm][1][q]:.6f} ({rel[sbm][0][q]:+.3f} %)")
+        line = f"  FEM {p} <-> SBM {q}  {fem.label(p):<24s}"
+        for n in names:
+            (fm, fr), (sm, sr) = values[(fem, n)], values[(sbm, n)]
+            line += f"  {n}: FEM {fm[p]:.6g} ({fr[p]:+.3f} %)  SBM {sm[q]:.6g} ({sr[q]:+.3f} %)"
+        print(line)
 
 
 def plot_histories(ensemble, fems, png, sweeps=()):
@@ -211,9 +221,14 @@ def series_key(ensemble, p):
 
 
 def plot_variation(ensemble, fems, png, sweeps=()):
-    fig, axes = plt.subplots(1, 2, figsize=(12, 4.8))
-    for ax, name in zip(axes, ("mu_s", "mu_k")):
+    """One panel per observable with statistics, as the first file lists them."""
+    first = ensemble if ensemble is not None else (sweeps[0] if sweeps else None)
+    names = first.observables if first is not None else FEM_HISTORY_OBSERVABLES
+    fig, axes = plt.subplots(1, len(names), figsize=(6 * len(names), 4.8), squeeze=False)
+    for ax, name in zip(axes[0], names):
         for source in ([ensemble] if ensemble is not None else []) + list(sweeps):
+            if name not in source.observables:
+                continue
             relative = source.statistic(f"{name}_relative") * 100
             error = source.statistic(f"{name}_relative_ci95") * 100  # 95 % Student t half-width
             groups = {}
@@ -448,7 +463,8 @@ def main(argv=None):
     written = [plot_histories(ensemble, fems, prefix + "_mu_t.png", sweeps)]
     if ensemble is not None:
         # A relative variation needs a non-graded reference point in the sweep.
-        if len(set(ensemble.delta)) > 1 and np.isfinite(ensemble.statistic("mu_s_relative")).sum() > 1:
+        first = ensemble.observables[0]
+        if len(set(ensemble.delta)) > 1 and np.isfinite(ensemble.statistic(f"{first}_relative")).sum() > 1:
             written.append(plot_variation(ensemble, fems, prefix + "_variation.png", sweeps))
         written.append(plot_first_slip(ensemble, prefix + "_first_slip.png"))
         written.append(plot_fields(ensemble, prefix + "_fields.png"))

@@ -33,15 +33,25 @@ def read(f):
     attrs["sweep_axes"] = _h5.text(f["sweep"].attrs.get("axes", ""))
     attrs.update({k: v[0] for k, v in scene.items()})
     attrs["scene_options"] = list(scene)
+    attrs["observables"] = observables(f)
     attrs.update(_h5.provenance(f["run"]))
     return xr.Dataset(data, coords, attrs), scene
+
+
+def observables(f):
+    """The per-realisation observables with statistics, in the order the file made them: every
+    /realisations/<name> with a /statistics/<name>_mean (C++: physics/observables.hpp; the same
+    rule reads every format version). Their units and description are the datasets' attributes."""
+    names = [n for n in f["realisations"] if f"{n}_mean" in f["statistics"]]
+    # Datasets are allocated when created (contiguous, in creation order): their offsets keep it.
+    return sorted(names, key=lambda n: (f["realisations"][n].id.get_offset() or 0, n))
 
 
 def _old_relative_errors(data, coords):
     """Files before format version 3 stored one propagated standard error (mu_*_relative_error);
     they also get the 95 % half-width later files store (mu_*_relative_ci95): the error x
     t(0.975, min(n, n_0) - 1), n and n_0 the counts of the point and its reference."""
-    for mu in ("mu_s", "mu_k"):
+    for mu in [n[:-len("_relative_error")] for n in list(data) if n.endswith("_relative_error")]:
         old, new = data.get(f"{mu}_relative_error"), f"{mu}_relative_ci95"
         if old is None or new in data or f"{mu}_count" not in data or "reference_point" not in coords:
             continue

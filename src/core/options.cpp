@@ -20,14 +20,6 @@ namespace gradfric {
 
 namespace {
 
-const char* originText(OptionOrigin origin) {
-  switch (origin) {
-    case OptionOrigin::User: return "set";
-    case OptionOrigin::Derived: return "derived";
-    default: return "default";
-  }
-}
-
 std::string joined(const std::vector<std::string>& items, const char* separator) {
   std::string out;
   for (size_t i = 0; i < items.size(); ++i) out += (i ? separator : "") + items[i];
@@ -92,6 +84,14 @@ const char* kRealAllowed = "a finite real number (|x| <= 1.8e308; 0 or |x| >= 2.
 
 }  // namespace
 
+const char* originName(OptionOrigin origin) {
+  switch (origin) {
+    case OptionOrigin::User: return "set";
+    case OptionOrigin::Derived: return "derived";
+    default: return "default";
+  }
+}
+
 std::vector<std::string> knownOptionNames() { return {knownNames().begin(), knownNames().end()}; }
 
 void RunParameters::add(ResolvedOption option) {
@@ -116,7 +116,7 @@ void RunParameters::print(MPI_Comm comm, const char* title) const {
   for (const auto& o : options_) {
     std::string unit = o.unit.empty() ? "" : " [" + o.unit + "]";
     GF_CALL(PetscPrintf(comm, "  %-*s = %s%s  (%s)\n", static_cast<int>(width), o.name.c_str(), o.value.c_str(),
-                        unit.c_str(), originText(o.origin)));
+                        unit.c_str(), originName(o.origin)));
   }
 }
 

@@ -121,8 +121,7 @@ void saveDesignFile(MPI_Comm comm, const io::OutputPlan& plan, const Problem& pr
                      {"target_type", toString(problem.kind)},
                      {"free_parameters", names},
                      {"realisations_run", std::to_string(realisationsRun)}};
-  for (const auto& option : record.all())
-    file.attributes.emplace_back(option.name[0] == '-' ? option.name.substr(1) : option.name, option.value);
+  for (const auto& option : io::optionAttributes(record)) file.attributes.emplace_back(option.name, option.value);
   file.ladders.push_back(tableOf("evaluations", problem, log.all()));
   file.ladders.push_back(tableOf("design", problem, {result.design}));
   if (std::isfinite(result.slope))  // one parameter: its CI through the local slope
@@ -134,8 +133,7 @@ void saveDesignFile(MPI_Comm comm, const io::OutputPlan& plan, const Problem& pr
   if (fem) {
     study::LadderTable t;
     t.name = "fem_verification";
-    for (const auto& option : problem.fem->record.all())
-      t.texts.emplace_back(option.name[0] == '-' ? option.name.substr(1) : option.name, option.value);
+    for (const auto& option : io::optionAttributes(problem.fem->record)) t.texts.emplace_back(option.name, option.value);
     t.columns = {{"mu_s", {fem->muStatic}}, {"peak_confirmed", {fem->peakConfirmed ? 1.0 : 0.0}},
                  {"cells", {double(fem->cells)}}};
     file.ladders.push_back(t);

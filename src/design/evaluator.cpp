@@ -1,6 +1,8 @@
 // One evaluation of a design problem (include/gradfric/design/evaluator.hpp).
 #include "gradfric/design/evaluator.hpp"
 
+#include "gradfric/physics/observables.hpp"
+
 #include "gradfric/core/collective_error.hpp"
 #include "gradfric/core/petsc_call.hpp"
 #include "gradfric/ensemble/precision_target.hpp"
@@ -20,12 +22,14 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 // The ensemble's statistics of the first n realisations of each plate (P x n tables).
 std::vector<ensemble::PointStatistics> statisticsOf(const std::vector<const std::vector<double>*>& plates, int n,
                                                     const std::vector<int>& reference, bool paired) {
-  std::vector<double> muStatic, muKinetic;
+  std::vector<double> muStatic;
   for (const auto* values : plates) muStatic.insert(muStatic.end(), values->begin(), values->begin() + n);
-  muKinetic.assign(muStatic.size(), kNaN);
+  // A design measures mu_s alone (every other observable NaN).
+  std::vector<std::vector<double>> tables(statisticsObservables().size(), std::vector<double>(muStatic.size(), kNaN));
+  tables[statisticsIndex("mu_s")] = muStatic;
   const std::vector<signed char> confirmed(muStatic.size(), 1);
   const std::vector<unsigned char> done(muStatic.size(), 1);
-  return ensemble::pointStatistics(n, reference, muStatic, muKinetic, confirmed, done, paired);
+  return ensemble::pointStatistics(n, reference, tables, confirmed, done, paired);
 }
 
 }  // namespace
@@ -105,12 +109,13 @@ Evaluation Evaluator::evaluate(const std::vector<double>& x, double halfWidth, c
   e.phase = phase;
   e.x = x;
   e.realisations = n;
-  e.muStatic = statistics[p].muStatic.mean;
-  e.muStaticCiLow = statistics[p].muStatic.ciLow;
-  e.muStaticCiHigh = statistics[p].muStatic.ciHigh;
+  const std::size_t mu = statisticsIndex("mu_s");
+  e.muStatic = statistics[p].observables[mu].summary.mean;
+  e.muStaticCiLow = statistics[p].observables[mu].summary.ciLow;
+  e.muStaticCiHigh = statistics[p].observables[mu].summary.ciHigh;
   if (variation) {
     const double h = ensemble::achievedHalfWidth(target, statistics, referenceOf, 1);
-    e.value = statistics[1].muStaticRelative.value;
+    e.value = statistics[1].observables[mu].relative.value;
     e.ciLow = e.value - h;
     e.ciHigh = e.value + h;
   } else {

@@ -1,6 +1,8 @@
 // Precision on demand (include/gradfric/ensemble/precision_target.hpp).
 #include "gradfric/ensemble/precision_target.hpp"
 
+#include "gradfric/physics/observables.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -29,18 +31,19 @@ std::string toString(TargetKind kind) {
 
 double achievedHalfWidth(const PrecisionTarget& target, const std::vector<PointStatistics>& statistics,
                          const std::vector<int>& reference, int p) {
-  const PointStatistics& s = statistics[p];
-  const int n = s.muStatic.count;
+  // The target is about mu_s (-ensemble_target_type).
+  const ObservableStatistics& s = statistics[p].observables.at(statisticsIndex("mu_s"));
+  const int n = s.summary.count;
   switch (target.kind) {
-    case TargetKind::Absolute: return n >= 2 ? s.muStatic.ciHalfWidth() : kNaN;
-    case TargetKind::Relative: return n >= 2 ? s.muStatic.ciHalfWidth() / std::fabs(s.muStatic.mean) : kNaN;
+    case TargetKind::Absolute: return n >= 2 ? s.summary.ciHalfWidth() : kNaN;
+    case TargetKind::Relative: return n >= 2 ? s.summary.ciHalfWidth() / std::fabs(s.summary.mean) : kNaN;
     case TargetKind::Variation: {
       const int q = reference[p];
       if (q < 0) return kNaN;
       if (q == p) return 0.0;
       // The printed and stored 95 % half-width itself (statistics.hpp: the pairs, or with
       // independent streams the smaller sample, set the degrees of freedom).
-      return s.muStaticRelative.halfWidth;
+      return s.relative.halfWidth;
     }
   }
   return kNaN;
@@ -70,15 +73,14 @@ std::vector<int> planNextBatch(const PrecisionTarget& target, const std::vector<
 
 std::vector<PointStatistics> statisticsOfCounts(const std::vector<int>& counts, int realisations,
                                                 const std::vector<int>& reference,
-                                                const std::vector<double>& muStatic,
-                                                const std::vector<double>& muKinetic,
+                                                const std::vector<std::vector<double>>& tables,
                                                 const std::vector<signed char>& peakConfirmed,
                                                 const std::vector<unsigned char>& done, bool paired) {
   std::vector<unsigned char> within(done.size(), 0);
   const size_t R = static_cast<size_t>(realisations);
   for (size_t p = 0; p < counts.size(); ++p)
     for (size_t r = 0; r < static_cast<size_t>(counts[p]) && r < R; ++r) within[p * R + r] = done[p * R + r];
-  return pointStatistics(realisations, reference, muStatic, muKinetic, peakConfirmed, within, paired);
+  return pointStatistics(realisations, reference, tables, peakConfirmed, within, paired);
 }
 
 }  // namespace gradfric::ensemble

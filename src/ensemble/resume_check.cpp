@@ -105,8 +105,7 @@ std::string problemWith(const ResumeTarget& target, const Scene* scene, const st
     io::ResultsFile file = io::ResultsFile::openReadOnly(MPI_COMM_SELF, path);
     // Everything a resumed run reads: a damaged part shows here, not in the middle of the run.
     file.finishedTasks();
-    file.readRealisationReal("mu_s");
-    file.readRealisationReal("mu_k");
+    observableTables(file);
     file.readPeakConfirmed();
     const std::string differences = sceneDifferences(target, file, extension);
     const std::string mismatch = extension && scene && differences.empty() ? extensionMismatch(*scene, file) : "";

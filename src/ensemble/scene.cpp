@@ -4,6 +4,7 @@
 
 #include "gradfric/core/input_error.hpp"
 #include "gradfric/core/petsc_call.hpp"
+#include "gradfric/ensemble/statistics_columns.hpp"
 #include "gradfric/ensemble/sweep_options.hpp"
 #include "gradfric/physics/field_options.hpp"
 #include "gradfric/physics/grading_options.hpp"
@@ -43,16 +44,6 @@ double stiffestFactorOf(const Grading& g) {
   if (!g.gradesModulus()) return largest;
   for (int b = 0; b < g.bands; ++b) largest = std::max(largest, g.bandFactor(b));
   return largest;
-}
-
-std::string stripDash(const std::string& name) { return name.rfind('-', 0) == 0 ? name.substr(1) : name; }
-
-const char* originText(OptionOrigin origin) {
-  switch (origin) {
-    case OptionOrigin::User: return "set";
-    case OptionOrigin::Derived: return "derived";
-    default: return "default";
-  }
 }
 
 // Upper bound of the number of mu(t) samples one task records (sbm::simulate samples at t = 0
@@ -184,7 +175,7 @@ io::EnsembleLayout layoutOf(const Scene& s) {
   layout.firstSlipMap = s.request.measurement.firstSlipMap;
   layout.frictionFields = s.frictionFields;
   layout.snapshotTimes = s.request.snapshotTimes;
-  layout.statisticsReal = statisticsColumns();
+  layout.statistics = statisticsColumns();
   // Each point's discretisation bar (sbm_error_estimate.hpp): total, lattice and time-step terms,
   // and the basis of every point's bar as an attribute of the total.
   for (const char* mu : {"mu_s", "mu_k"}) {
@@ -193,14 +184,12 @@ io::EnsembleLayout layoutOf(const Scene& s) {
       basis += (p ? "\n" : "") + std::string("point ") + std::to_string(p) + ": " +
                s.discretisation(p, mu[3] == 'k').basis;
     }
-    for (const char* term : {"_discretisation_error", "_discretisation_lattice", "_discretisation_dt"})
-      layout.statisticsReal.push_back(mu + std::string(term));
-    layout.statisticsNotes.push_back({mu + std::string("_discretisation_error"), "basis", basis});
+    for (const char* term : {"error", "lattice", "dt"}) layout.statistics.push_back(discretisationColumn(mu, term));
+    layout.statistics[layout.statistics.size() - 3].attributes.emplace_back("basis", basis);
   }
-  layout.statisticsInteger = {"finished", "mu_s_count", "mu_k_count", "peaks_unconfirmed"};
   if (s.target.active()) {  // what the target asked and what each point reached
-    layout.statisticsReal.push_back("target_half_width");
-    layout.statisticsInteger.push_back("target_met");
+    const auto target = targetColumns();
+    layout.statistics.insert(layout.statistics.end(), target.begin(), target.end());
   }
   const double cells = static_cast<double>(layout.mapSide) * layout.mapSide;
   const double bytes = static_cast<double>(s.tasks()) *
@@ -322,10 +311,9 @@ std::optional<Scene> readScene(MPI_Comm comm, RunParameters* record) {
                              " has none: add 0 to -ensemble_delta)");
   s.layout = layoutOf(s);
   s.table = tableOf(s);
-  for (const auto& o : record->all()) {
-    if (!storedOption(o.name, s)) continue;
-    io::Attribute a{stripDash(o.name), o.value, o.unit, originText(o.origin)};
-    (kRunControl.count(o.name) ? s.runAttributes : s.sceneAttributes).push_back(a);
+  for (const io::Attribute& a : io::optionAttributes(*record)) {
+    if (!storedOption("-" + a.name, s)) continue;
+    (kRunControl.count("-" + a.name) ? s.runAttributes : s.sceneAttributes).push_back(a);
   }
   return s;
 }

@@ -6,6 +6,8 @@
 #include "gradfric/core/collective_error.hpp"
 #include "gradfric/core/petsc_call.hpp"
 #include "gradfric/ensemble/log_events.hpp"
+#include "gradfric/ensemble/statistics_columns.hpp"
+#include "gradfric/physics/observables.hpp"
 
 #include <limits>
 #include <string>
@@ -76,21 +78,13 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-template <class Get>
-std::vector<double> realColumn(const std::vector<PointStatistics>& stats, Get get) {
-  std::vector<double> v;
-  for (const auto& s : stats) v.push_back(get(s));
-  return v;
-}
-
-template <class Get>
-std::vector<int> integerColumn(const std::vector<PointStatistics>& stats, Get get) {
-  std::vector<int> v;
-  for (const auto& s : stats) v.push_back(get(s));
-  return v;
-}
-
 }  // namespace
+
+std::vector<std::vector<double>> observableTables(const io::ResultsFile& file) {
+  std::vector<std::vector<double>> tables;
+  for (const Observable& o : statisticsObservables()) tables.push_back(file.readRealisationReal(o.name));
+  return tables;
+}
 
 std::vector<PointStatistics> writeStatistics(io::ResultsFile& file, const Scene& scene) {
   auto stats = writeStatistics(file, scene.realisations, scene.sweep.reference, scene.commonStreams,
@@ -106,9 +100,9 @@ std::vector<PointStatistics> writeStatistics(io::ResultsFile& file, const Scene&
       lattice.push_back(e.lattice.measured ? e.lattice.relative : kNaN);
       step.push_back(e.timeStep.measured ? e.timeStep.relative : kNaN);
     }
-    bars.emplace_back(mu + std::string("_discretisation_error"), total);
-    bars.emplace_back(mu + std::string("_discretisation_lattice"), lattice);
-    bars.emplace_back(mu + std::string("_discretisation_dt"), step);
+    bars.emplace_back(discretisationColumn(mu, "error").name, total);
+    bars.emplace_back(discretisationColumn(mu, "lattice").name, lattice);
+    bars.emplace_back(discretisationColumn(mu, "dt").name, step);
   }
   file.writeStatistics(bars, {});
   return stats;
@@ -121,30 +115,9 @@ std::vector<PointStatistics> writeStatistics(io::ResultsFile& file, int realisat
   const LogEventScope timed(logEvents().statistics);
   const auto flags = file.finishedTasks();
   const std::vector<unsigned char> done(flags.begin(), flags.end());
-  const auto stats = pointStatistics(realisations, reference, file.readRealisationReal("mu_s"),
-                                     file.readRealisationReal("mu_k"), file.readPeakConfirmed(), done,
+  const auto stats = pointStatistics(realisations, reference, observableTables(file), file.readPeakConfirmed(), done,
                                      commonStreams);
-  using S = const PointStatistics&;
-  std::vector<std::pair<std::string, std::vector<double>>> real = {
-      {"mu_s_mean", realColumn(stats, [](S s) { return s.muStatic.mean; })},
-      {"mu_s_std", realColumn(stats, [](S s) { return s.muStatic.stdDev; })},
-      {"mu_s_stderr", realColumn(stats, [](S s) { return s.muStatic.stdError; })},
-      {"mu_s_ci95_low", realColumn(stats, [](S s) { return s.muStatic.ciLow; })},
-      {"mu_s_ci95_high", realColumn(stats, [](S s) { return s.muStatic.ciHigh; })},
-      {"mu_s_relative", realColumn(stats, [](S s) { return s.muStaticRelative.value; })},
-      {"mu_s_relative_ci95", realColumn(stats, [](S s) { return s.muStaticRelative.halfWidth; })},
-      {"mu_k_mean", realColumn(stats, [](S s) { return s.muKinetic.mean; })},
-      {"mu_k_std", realColumn(stats, [](S s) { return s.muKinetic.stdDev; })},
-      {"mu_k_stderr", realColumn(stats, [](S s) { return s.muKinetic.stdError; })},
-      {"mu_k_ci95_low", realColumn(stats, [](S s) { return s.muKinetic.ciLow; })},
-      {"mu_k_ci95_high", realColumn(stats, [](S s) { return s.muKinetic.ciHigh; })},
-      {"mu_k_relative", realColumn(stats, [](S s) { return s.muKineticRelative.value; })},
-      {"mu_k_relative_ci95", realColumn(stats, [](S s) { return s.muKineticRelative.halfWidth; })}};
-  std::vector<std::pair<std::string, std::vector<int>>> integer = {
-      {"finished", integerColumn(stats, [](S s) { return s.finished; })},
-      {"mu_s_count", integerColumn(stats, [](S s) { return s.muStatic.count; })},
-      {"mu_k_count", integerColumn(stats, [](S s) { return s.muKinetic.count; })},
-      {"peaks_unconfirmed", integerColumn(stats, [](S s) { return s.peaksUnconfirmed; })}};
+  auto [real, integer] = statisticsValues(stats);
   if (target) {  // the half-width each point reached and whether it met the target
     std::vector<double> reached;
     std::vector<int> met;

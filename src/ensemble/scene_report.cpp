@@ -3,6 +3,7 @@
 
 #include "gradfric/core/format.hpp"
 #include "gradfric/core/petsc_call.hpp"
+#include "gradfric/physics/observables.hpp"
 #include "gradfric/sbm/model.hpp"
 
 #include <algorithm>
@@ -100,20 +101,27 @@ void printDiscretisation(MPI_Comm comm, const Scene& scene, bool kinetic) {
   }
 }
 
-void printTable(MPI_Comm comm, const Scene& scene, const std::vector<PointStatistics>& stats, const char* title,
-                bool isStatic) {
+// The spring-block study bounds mu_s and mu_k (sbm_error_estimate.hpp); other observables have no bar.
+bool hasBar(const Observable& o) { return o.name == "mu_s" || o.name == "mu_k"; }
+
+// The table of observable o (statisticsObservables()[o]) over the sweep points.
+void printTable(MPI_Comm comm, const Scene& scene, const std::vector<PointStatistics>& stats, std::size_t o) {
+  const Observable observable = statisticsObservables()[o];
+  const std::string title = observable.title + " " + observable.name;
   if (scene.target.active())  // the counts per point are in column R
-    GF_CALL(PetscPrintf(comm, "\n%s, realisations per point set by the target (95%% CI: Student t):\n", title));
+    GF_CALL(PetscPrintf(comm, "\n%s, realisations per point set by the target (95%% CI: Student t):\n", title.c_str()));
   else
-    GF_CALL(PetscPrintf(comm, "\n%s over %d realisation(s) per point (95%% CI: Student t):\n", title,
+    GF_CALL(PetscPrintf(comm, "\n%s over %d realisation(s) per point (95%% CI: Student t):\n", title.c_str(),
                         scene.realisations));
   GF_CALL(PetscPrintf(comm, "  %-5s %-32s %4s %10s %10s %10s %23s %19s %11s\n", "point", "sweep", "R", "mean", "std",
                       "std err", "95% CI", "rel. var. [%]", "discr. [%]"));
+  // A pure number with 6 decimals (5 in the interval); others (times) with significant digits.
+  const bool pure = observable.unit == "1";
   for (size_t p = 0; p < stats.size(); ++p) {
-    const Summary& s = isStatic ? stats[p].muStatic : stats[p].muKinetic;
-    const RelativeVariation& v = isStatic ? stats[p].muStaticRelative : stats[p].muKineticRelative;
+    const Summary& s = stats[p].observables[o].summary;
+    const RelativeVariation& v = stats[p].observables[o].relative;
     char ci[64], rel[64];
-    std::snprintf(ci, sizeof ci, "[%.5f, %.5f]", s.ciLow, s.ciHigh);
+    std::snprintf(ci, sizeof ci, pure ? "[%.5f, %.5f]" : "[%.4g, %.4g]", s.ciLow, s.ciHigh);
     // A point compared with itself has no variation to show (its 0 +- 0 is by definition).
     if (scene.sweep.reference[p] == static_cast<int>(p))
       std::snprintf(rel, sizeof rel, "%s", "reference");
@@ -121,14 +129,18 @@ void printTable(MPI_Comm comm, const Scene& scene, const std::vector<PointStatis
       std::snprintf(rel, sizeof rel, "%+7.3f +- %.3f", 100 * v.value, std::isfinite(v.halfWidth) ? 100 * v.halfWidth : 0.0);
     else
       std::snprintf(rel, sizeof rel, "%s", "(no reference)");
-    const SbmDiscretisation bar = scene.discretisation(static_cast<int>(p), !isStatic);
     char discretisation[32] = "n/m";  // not measured: the reason follows the table
-    if (bar.measured) std::snprintf(discretisation, sizeof discretisation, "+- %.2f", 100 * bar.relative);
-    GF_CALL(PetscPrintf(comm, "  %-5zu %-32s %4d %10.6f %10.6f %10.6f %23s %19s %11s%s\n", p,
-                        pointLabel(scene.sweep, static_cast<int>(p)).c_str(), s.count, s.mean, s.stdDev, s.stdError,
-                        ci, rel, discretisation, isStatic && stats[p].peaksUnconfirmed ? "  (unconfirmed peaks)" : ""));
+    if (hasBar(observable)) {
+      const SbmDiscretisation bar = scene.discretisation(static_cast<int>(p), observable.name == "mu_k");
+      if (bar.measured) std::snprintf(discretisation, sizeof discretisation, "+- %.2f", 100 * bar.relative);
+    }
+    GF_CALL(PetscPrintf(comm, pure ? "  %-5zu %-32s %4d %10.6f %10.6f %10.6f %23s %19s %11s%s\n"
+                                   : "  %-5zu %-32s %4d %10.4g %10.4g %10.4g %23s %19s %11s%s\n",
+                        p, pointLabel(scene.sweep, static_cast<int>(p)).c_str(), s.count, s.mean, s.stdDev,
+                        s.stdError, ci, rel, discretisation,
+                        o == 0 && stats[p].peaksUnconfirmed ? "  (unconfirmed peaks)" : ""));
   }
-  printDiscretisation(comm, scene, !isStatic);
+  if (hasBar(observable)) printDiscretisation(comm, scene, observable.name == "mu_k");
 }
 
 // Which points met -ensemble_target, and which stopped at the cap.
@@ -150,17 +162,21 @@ void printTargetOutcome(MPI_Comm comm, const Scene& scene, const std::vector<Poi
 }
 
 void printStatistics(MPI_Comm comm, const Scene& scene, const std::vector<PointStatistics>& stats) {
+  const std::vector<Observable> rows = statisticsObservables();
   if (scene.points() == 1 && scene.realisations == 1) {
     const auto& s = stats[0];
-    GF_CALL(PetscPrintf(comm, "\nResult: mu_s = %.6f, mu_k = %.6f%s\n", s.muStatic.mean, s.muKinetic.mean,
+    std::string values;
+    for (std::size_t o = 0; o < rows.size(); ++o)
+      values += (o ? ", " : "") + rows[o].name + " = " + formatObservable(rows[o], s.observables[o].summary.mean);
+    GF_CALL(PetscPrintf(comm, "\nResult: %s%s\n", values.c_str(),
                         s.peaksUnconfirmed ? "  (peak NOT confirmed before t_max: mu_s is the maximum reached)" : ""));
     for (bool kinetic : {false, true})
       if (!kinetic || scene.request.measurement.kinetic)
         GF_CALL(PetscPrintf(comm, "  %s: %s\n", kinetic ? "mu_k" : "mu_s", describeBar(scene.discretisation(0, kinetic)).c_str()));
     return;
   }
-  printTable(comm, scene, stats, "Global static friction mu_s", true);
-  if (scene.request.measurement.kinetic) printTable(comm, scene, stats, "Global kinetic friction mu_k", false);
+  for (std::size_t o = 0; o < rows.size(); ++o)  // an observable of the kinetic window only when it was measured
+    if (!rows[o].kinetic || scene.request.measurement.kinetic) printTable(comm, scene, stats, o);
   GF_CALL(PetscPrintf(comm,
                       "  rel. var. = (mu - mu_0)/mu_0 against the non-graded point of the same angle and dispersion,"
                       " +- the 95 %% half-width: %s\n"

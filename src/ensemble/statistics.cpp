@@ -135,58 +135,53 @@ RelativeVariation pairedRelativeVariation(const std::vector<double>& point, cons
   return r;
 }
 
-std::vector<std::string> statisticsColumns() {
-  return {"mu_s_mean", "mu_s_std", "mu_s_stderr", "mu_s_ci95_low", "mu_s_ci95_high", "mu_s_relative",
-          "mu_s_relative_ci95", "mu_k_mean", "mu_k_std", "mu_k_stderr", "mu_k_ci95_low", "mu_k_ci95_high",
-          "mu_k_relative", "mu_k_relative_ci95"};
-}
-
 std::vector<PointStatistics> pointStatistics(int realisations, const std::vector<int>& reference,
-                                             const std::vector<double>& muStatic,
-                                             const std::vector<double>& muKinetic,
+                                             const std::vector<std::vector<double>>& tables,
                                              const std::vector<signed char>& peakConfirmed,
                                              const std::vector<unsigned char>& done, bool paired) {
   const size_t points = reference.size();
   const size_t R = static_cast<size_t>(realisations);
-  if (muStatic.size() != points * R || muKinetic.size() != points * R || peakConfirmed.size() != points * R ||
-      done.size() != points * R)
-    throw std::invalid_argument("pointStatistics: tables must be points x realisations");
+  bool sized = peakConfirmed.size() == points * R && done.size() == points * R;
+  for (const auto& table : tables) sized = sized && table.size() == points * R;
+  if (!sized) throw std::invalid_argument("pointStatistics: tables must be points x realisations");
   std::vector<PointStatistics> out(points);
   for (size_t p = 0; p < points; ++p) {
-    std::vector<double> s, k;
     for (size_t r = 0; r < R; ++r) {
       const size_t i = p * R + r;
       if (!done[i]) continue;
       ++out[p].finished;
       if (!peakConfirmed[i]) ++out[p].peaksUnconfirmed;
-      s.push_back(muStatic[i]);
-      k.push_back(muKinetic[i]);
     }
-    out[p].muStatic = summarise(s);
-    out[p].muKinetic = summarise(k);
+    for (const auto& table : tables) {
+      std::vector<double> values;
+      for (size_t r = 0; r < R; ++r)
+        if (done[p * R + r]) values.push_back(table[p * R + r]);
+      out[p].observables.push_back({summarise(values), {}});
+    }
   }
   for (size_t p = 0; p < points; ++p) {
     const int ref = reference[p];
-    if (ref < 0 || static_cast<size_t>(ref) >= points) {
-      out[p].muStaticRelative = out[p].muKineticRelative = {kNaN, kNaN, kNaN};
-      continue;
+    for (size_t o = 0; o < tables.size(); ++o) {
+      RelativeVariation& relative = out[p].observables[o].relative;
+      if (ref < 0 || static_cast<size_t>(ref) >= points) {
+        relative = {kNaN, kNaN, kNaN};
+        continue;
+      }
+      const bool self = static_cast<size_t>(ref) == p;
+      if (paired && !self) {
+        // Realisation r of both points, where both finished.
+        auto column = [&](size_t point, size_t other) {
+          std::vector<double> v(R, kNaN);
+          for (size_t r = 0; r < R; ++r)
+            if (done[point * R + r] && done[other * R + r]) v[r] = tables[o][point * R + r];
+          return v;
+        };
+        const size_t q = static_cast<size_t>(ref);
+        relative = pairedRelativeVariation(column(p, q), column(q, p));
+        continue;
+      }
+      relative = relativeVariation(out[p].observables[o].summary, out[ref].observables[o].summary, self);
     }
-    const bool self = static_cast<size_t>(ref) == p;
-    if (paired && !self) {
-      // Realisation r of both points, where both finished.
-      auto column = [&](const std::vector<double>& table, size_t point, size_t other) {
-        std::vector<double> v(R, kNaN);
-        for (size_t r = 0; r < R; ++r)
-          if (done[point * R + r] && done[other * R + r]) v[r] = table[point * R + r];
-        return v;
-      };
-      const size_t q = static_cast<size_t>(ref);
-      out[p].muStaticRelative = pairedRelativeVariation(column(muStatic, p, q), column(muStatic, q, p));
-      out[p].muKineticRelative = pairedRelativeVariation(column(muKinetic, p, q), column(muKinetic, q, p));
-      continue;
-    }
-    out[p].muStaticRelative = relativeVariation(out[p].muStatic, out[ref].muStatic, self);
-    out[p].muKineticRelative = relativeVariation(out[p].muKinetic, out[ref].muKinetic, self);
   }
   return out;
 }

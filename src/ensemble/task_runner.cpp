@@ -4,7 +4,9 @@
 #include "gradfric/core/collective_error.hpp"
 #include "gradfric/core/random_stream.hpp"
 #include "gradfric/ensemble/log_events.hpp"
+#include "gradfric/ensemble/scene_file.hpp"
 #include "gradfric/ensemble/scheduler.hpp"
+#include "gradfric/physics/observables.hpp"
 #include "gradfric/physics/property_sampler.hpp"
 #include "gradfric/sbm/model.hpp"
 
@@ -82,9 +84,9 @@ double runTask(const Scene& scene, const Task& task, io::ResultsFile& file, int 
     const LogEventScope writing(events.write);
     file.writeTask(o);
   }
-  summary->friction.muStatic = o.friction.muStatic;
-  summary->friction.muKinetic = o.friction.muKinetic;
-  summary->friction.peakConfirmed = o.friction.peakConfirmed;
+  // The measurement for the progress line, without the history (its samples are in the file).
+  summary->friction = std::move(o.friction);
+  summary->friction.time = summary->friction.mu = summary->friction.forceX = summary->friction.forceY = {};
   return wall;
 }
 
@@ -92,10 +94,10 @@ void printProgress(const Task& task, const io::TaskOutput& o, double wall, long 
                    long alreadyDone, long total, const Sweep& sweep, double elapsed, int rank) {
   const long left = pending - finishedAll;
   const double eta = finishedAll > 0 ? elapsed * left / finishedAll : NAN;
-  std::printf("[%ld/%ld] point %d (%s) realisation %d: mu_s = %.6f, mu_k = %.6f%s  task %.2f s on rank %d;"
+  std::printf("[%ld/%ld] point %d (%s) realisation %d: %s%s  task %.2f s on rank %d;"
               " elapsed %s, left ~%s\n",
-              finishedAll + alreadyDone, total, task.point, pointLabel(sweep, task.point).c_str(),
-              task.realisation, o.friction.muStatic, o.friction.muKinetic, o.friction.peakConfirmed ? "" : " (peak unconfirmed)", wall, rank,
+              finishedAll + alreadyDone, total, task.point, pointLabel(sweep, task.point).c_str(), task.realisation,
+              observablesText(o.friction).c_str(), o.friction.peakConfirmed ? "" : " (peak unconfirmed)", wall, rank,
               hms(elapsed).c_str(), left > 0 ? hms(eta).c_str() : "0:00:00");
   std::fflush(stdout);
 }
@@ -178,8 +180,8 @@ void runToTarget(MPI_Comm comm, const Scene& scene, io::ResultsFile& file, const
       continue;  // the same batch again: now complete, its statistics decide the next
     }
     const auto statistics =
-        statisticsOfCounts(counts, scene.realisations, scene.sweep.reference, file.readRealisationReal("mu_s"),
-                           file.readRealisationReal("mu_k"), file.readPeakConfirmed(), done, scene.commonStreams);
+        statisticsOfCounts(counts, scene.realisations, scene.sweep.reference, observableTables(file),
+                           file.readPeakConfirmed(), done, scene.commonStreams);
     const std::vector<int> next = planNextBatch(scene.target, counts, statistics, scene.sweep.reference);
     if (next == counts) return;
     counts = next;

@@ -6,7 +6,7 @@
 
 #include "gradfric/core/input_error.hpp"
 #include "gradfric/core/petsc_call.hpp"
-#include "gradfric/ensemble/statistics.hpp"
+#include "gradfric/ensemble/statistics_columns.hpp"
 #include "gradfric/ensemble/sweep_options.hpp"
 #include "gradfric/fem/stable_step.hpp"
 #include "gradfric/physics/field_options.hpp"
@@ -25,16 +25,6 @@ namespace {
 const std::set<std::string> kRunControl = {"-output",             "-output_overwrite",         "-resume",
                                            "-fem_sweep_abort_after", "-fem_sweep_ranks_per_run", "-fem_verbose"};
 
-const char* originText(OptionOrigin origin) {
-  switch (origin) {
-    case OptionOrigin::User: return "set";
-    case OptionOrigin::Derived: return "derived";
-    default: return "default";
-  }
-}
-
-std::string stripDash(const std::string& name) { return name.rfind('-', 0) == 0 ? name.substr(1) : name; }
-
 // mu(t) samples one run records at most: one at the start of sliding, then one per history
 // interval (at most one per step) up to the longest sliding time; a margin for the last step.
 int historyCapacity(const FemParameters& q) {
@@ -52,13 +42,11 @@ io::EnsembleLayout layoutOf(const FemSweep& s) {
   layout.realisations = 1;  // the FEM has no random draw: one run per point
   layout.historyCapacity = historyCapacity(s.params);
   layout.mapSide = s.params.nx;  // /properties: one column per hexahedron column along x
-  // The columns ensemble::writeStatistics writes (the same as the spring-block ensemble's file).
-  layout.statisticsReal = ensemble::statisticsColumns();
-  // The FEM's own: each point's discretisation error bar (error_estimate.hpp), relative, NaN where
-  // no study measured it (sweep_run.cpp writes them with the statistics).
-  layout.statisticsReal.push_back("mu_s_discretisation_error");
-  layout.statisticsReal.push_back("mu_k_discretisation_error");
-  layout.statisticsInteger = {"finished", "mu_s_count", "mu_k_count", "peaks_unconfirmed"};
+  // The columns ensemble::writeStatistics writes (the same as the spring-block ensemble's file),
+  // and the FEM's own: each point's discretisation error bar (error_estimate.hpp), relative, NaN
+  // where no study measured it (sweep_run.cpp writes them with the statistics).
+  layout.statistics = ensemble::statisticsColumns();
+  for (const char* mu : {"mu_s", "mu_k"}) layout.statistics.push_back(ensemble::discretisationColumn(mu, "error"));
   return layout;
 }
 
@@ -181,10 +169,8 @@ FemSweep buildFemSweep(MPI_Comm comm, const FemParameters& params, const Grading
     requireFemRunLength(s.pointParameters(p), s.pointGrading(p), &record);
   s.layout = layoutOf(s);
   s.table = tableOf(s);
-  for (const auto& o : record.all()) {
-    io::Attribute a{stripDash(o.name), o.value, o.unit, originText(o.origin)};
-    (kRunControl.count(o.name) ? s.runAttributes : s.sceneAttributes).push_back(a);
-  }
+  for (const io::Attribute& a : io::optionAttributes(record))
+    (kRunControl.count("-" + a.name) ? s.runAttributes : s.sceneAttributes).push_back(a);
   return s;
 }
 

@@ -12,6 +12,7 @@
 #include "gradfric/fem/sweep.hpp"
 #include "gradfric/io/output_plan.hpp"
 #include "gradfric/io/provenance.hpp"
+#include "gradfric/physics/observables.hpp"
 
 #include <petscsys.h>
 
@@ -148,9 +149,18 @@ ErrorBars errorBarsOf(const FemSweep& s) {
 
 void printTable(MPI_Comm comm, const FemSweep& s, const std::vector<ensemble::PointStatistics>& stats,
                 const ErrorBars& bars) {
+  // Per observable (physics/observables.hpp): its value and relative variation; mu_s with its bar.
+  const std::vector<Observable> rows = statisticsObservables();
+  std::string header = "  point sweep                   ";
+  for (std::size_t o = 0; o < rows.size(); ++o) {
+    char piece[96];
+    std::snprintf(piece, sizeof piece, "%s %10s%s %14s", o ? "  " : "", rows[o].name.c_str(),
+                  rows[o].name == "mu_s" ? " error [%]" : "", "rel. var. [%]");
+    header += piece;
+  }
   GF_CALL(PetscPrintf(comm, "FEM sweep results (one run per point; relative variation against the non-graded point;\n"
-                            "discretisation error bar of mu_s, 'n/m' where no study measured it):\n"
-                            "  point sweep                         mu_s   error [%%]   rel. var. [%%]        mu_k     rel. var. [%%]\n"));
+                            "discretisation error bar of mu_s, 'n/m' where no study measured it):\n%s\n",
+                      header.c_str()));
   // The reference point itself and a point without one show words, not a 0 or a nan.
   auto relative = [&](int p, double value) {
     char text[32];
@@ -161,11 +171,20 @@ void printTable(MPI_Comm comm, const FemSweep& s, const std::vector<ensemble::Po
   };
   for (int p = 0; p < s.points(); ++p) {
     const auto& st = stats[p];
-    char bar[32] = "      n/m";
-    if (std::isfinite(bars.muStatic[p])) std::snprintf(bar, sizeof bar, "%9.2f", 100 * bars.muStatic[p]);
-    GF_CALL(PetscPrintf(comm, "  %-5d %-24s %10.6f %s %14s   %10.6f %14s%s\n", p, ensemble::pointLabel(s.sweep, p).c_str(),
-                        st.muStatic.mean, bar, relative(p, st.muStaticRelative.value).c_str(), st.muKinetic.mean,
-                        relative(p, st.muKineticRelative.value).c_str(), st.peaksUnconfirmed > 0 ? "  (peak not confirmed)" : ""));
+    std::string line;
+    for (std::size_t o = 0; o < rows.size(); ++o) {
+      char piece[128], bar[32] = "";
+      if (rows[o].name == "mu_s") {
+        std::snprintf(bar, sizeof bar, " %s", "      n/m");
+        if (std::isfinite(bars.muStatic[p])) std::snprintf(bar, sizeof bar, " %9.2f", 100 * bars.muStatic[p]);
+      }
+      const double value = st.observables[o].summary.mean;
+      std::snprintf(piece, sizeof piece, rows[o].unit == "1" ? "%s %10.6f%s %14s" : "%s %10.4g%s %14s", o ? "  " : "",
+                    value, bar, relative(p, st.observables[o].relative.value).c_str());
+      line += piece;
+    }
+    GF_CALL(PetscPrintf(comm, "  %-5d %-24s%s%s\n", p, ensemble::pointLabel(s.sweep, p).c_str(), line.c_str(),
+                        st.peaksUnconfirmed > 0 ? "  (peak not confirmed)" : ""));
   }
 }
 
@@ -200,8 +219,8 @@ void runFemSweep(MPI_Comm comm, const FemSweep& s, const RunParameters& record) 
         const std::string window = !f.kineticComplete ? ""
                                    : " (window spread " + formatReal(100 * f.kineticSpread) + " %" +
                                          (!f.kineticSteadyTested ? ")" : f.kineticSteady ? ", steady)" : ", NOT steady)");
-        std::printf("[group %d] point %d (%s): mu_s = %.6f, mu_k = %.6f%s%s  run %.2f s, %lld steps\n", groups.group(),
-                    point, ensemble::pointLabel(s.sweep, point).c_str(), f.muStatic, f.muKinetic, window.c_str(),
+        std::printf("[group %d] point %d (%s): %s%s%s  run %.2f s, %lld steps\n", groups.group(), point,
+                    ensemble::pointLabel(s.sweep, point).c_str(), observablesText(f).c_str(), window.c_str(),
                     f.peakConfirmed ? "" : " (peak not confirmed)", o.wallSeconds,
                     static_cast<long long>(o.steps));
         std::fflush(stdout);

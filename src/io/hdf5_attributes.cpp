@@ -1,5 +1,7 @@
 #include "gradfric/io/hdf5_attributes.hpp"
 
+#include "gradfric/core/options.hpp"
+
 #include <hdf5_hl.h>
 
 #include <cstring>
@@ -129,6 +131,13 @@ std::vector<Attribute> readOptionRecord(hid_t parent, const char* name) {
     if (i < originValues.size() && originValues[i].first == a.name) a.origin = originValues[i].second;
     out.push_back(std::move(a));
   }
+  return out;
+}
+
+std::vector<Attribute> optionAttributes(const RunParameters& record) {
+  std::vector<Attribute> out;
+  for (const auto& o : record.all())
+    out.push_back({o.name.rfind('-', 0) == 0 ? o.name.substr(1) : o.name, o.value, o.unit, originName(o.origin)});
   return out;
 }
 

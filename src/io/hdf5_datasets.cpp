@@ -54,11 +54,11 @@ void writeSlab(hid_t dataset, hid_t memType, const std::vector<hsize_t>& offset,
 }
 
 H5Dataset createIndexScale(hid_t parent, const char* name, hsize_t size, const std::string& description) {
-  H5Space space(GF_H5(H5Screate_simple(1, &size, nullptr)));
-  H5Dataset d(GF_H5(H5Dcreate2(parent, name, H5T_STD_I32LE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT)));
+  // Allocated and filled at creation like every dataset of a parallel file (createDataset).
+  H5Dataset d = createDataset<int>(parent, name, H5T_STD_I32LE, H5T_NATIVE_INT, {size}, 0);
   std::vector<int> index(size);
   for (hsize_t i = 0; i < size; ++i) index[i] = static_cast<int>(i);
-  if (size) GF_H5(H5Dwrite(d, H5T_NATIVE_INT, H5S_ALL, H5S_ALL, H5P_DEFAULT, index.data()));
+  writeSlab(d, H5T_NATIVE_INT, {0}, {size}, index.data(), H5P_DEFAULT);
   describe(d, "1", description);
   makeDimensionScale(d, name);
   return d;

@@ -121,34 +121,15 @@ void ResultsFile::changeOnRank0(std::uint64_t bytes, const std::function<void(hi
 }
 
 void ResultsFile::openDatasets() {
-  const hid_t root = file_.get();
-  auto open = [&](const char* name) { return H5Dataset(GF_H5(H5Dopen2(root, name, H5P_DEFAULT))); };
-  muStatic_ = open("realisations/mu_s");
-  muKinetic_ = open("realisations/mu_k");
-  peakTime_ = open("realisations/peak_time");
-  endTime_ = open("realisations/end_time");
-  peakConfirmed_ = open("realisations/peak_confirmed");
-  steps_ = open("realisations/steps");
-  redrawn_ = open("realisations/redrawn_blocks");
-  done_ = open("realisations/done");
-  wallSeconds_ = open("run/wall_seconds");
-  taskRank_ = open("run/rank");
-  if (layout_.historyCapacity > 0) {
-    historyTime_ = open("history/time");
-    historyMu_ = open("history/mu");
-    historyForceX_ = open("history/force_x");
-    historyForceY_ = open("history/force_y");
-    historyLength_ = open("history/length");
-  }
-  if (layout_.firstSlipMap) firstSlip_ = open("maps/first_slip_time");
-  if (layout_.frictionFields) {
-    localStatic_ = open("maps/mu_s_local");
-    localKinetic_ = open("maps/mu_k_local");
-  }
-  if (!layout_.snapshotTimes.empty()) {
-    snapshotTime_ = open("maps/snapshot_time");
-    snapshots_ = open("maps/sigma_x_over_p");
-  }
+  schema_ = taskDatasets(layout_);
+  taskData_.clear();
+  for (const TaskDataset& d : schema_) taskData_.emplace_back(GF_H5(H5Dopen2(file_, d.path.c_str(), H5P_DEFAULT)));
+}
+
+hid_t ResultsFile::taskDataset(const std::string& path) const {
+  for (size_t i = 0; i < schema_.size(); ++i)
+    if (schema_[i].path == path) return i < taskData_.size() ? taskData_[i].get() : H5I_INVALID_HID;  // closed
+  throw Hdf5Error("no dataset " + path + " in " + path_);
 }
 
 std::vector<Attribute> ResultsFile::sceneAttributes() const { return readOptionRecord(file_, "scene"); }
@@ -159,69 +140,41 @@ void ResultsFile::writeTask(const TaskOutput& t) {
   FileWriteScope scope(path_);  // a failure names the file; the caller agrees on it
   if (t.point < 0 || t.point >= layout_.points || t.realisation < 0 || t.realisation >= layout_.realisations)
     throw Hdf5Error("task (" + std::to_string(t.point) + ", " + std::to_string(t.realisation) + ") outside the file");
-  const hsize_t p = static_cast<hsize_t>(t.point), r = static_cast<hsize_t>(t.realisation);
-  const std::vector<hsize_t> at{p, r}, one{1, 1};
-  const hid_t x = independent_;
-  if (layout_.historyCapacity > 0) {
-    const size_t n = std::min(t.friction.time.size(), t.friction.mu.size());
-    if (n > static_cast<size_t>(layout_.historyCapacity))
-      throw Hdf5Error("mu(t) history of task (" + std::to_string(t.point) + ", " + std::to_string(t.realisation) +
-                      ") has " + std::to_string(n) + " samples, more than the file's capacity " +
-                      std::to_string(layout_.historyCapacity));
-    // The whole row, padding included, so that a task redone after an interruption overwrites
-    // whatever a torn earlier write left.
-    const hsize_t C = static_cast<hsize_t>(layout_.historyCapacity);
-    std::vector<double> row(C, kNaN);
-    std::copy(t.friction.time.begin(), t.friction.time.begin() + n, row.begin());
-    writeSlab(historyTime_, H5T_NATIVE_DOUBLE, {p, r, 0}, {1, 1, C}, row.data(), x);
-    auto writeRow = [&](hid_t dataset, const std::vector<double>& values) {
-      std::fill(row.begin(), row.end(), kNaN);
-      std::copy(values.begin(), values.begin() + std::min(n, values.size()), row.begin());
-      writeSlab(dataset, H5T_NATIVE_DOUBLE, {p, r, 0}, {1, 1, C}, row.data(), x);
-    };
-    writeRow(historyMu_, t.friction.mu);
-    writeRow(historyForceX_, t.friction.forceX);
-    writeRow(historyForceY_, t.friction.forceY);
-    const int length = static_cast<int>(n);
-    writeSlab(historyLength_, H5T_NATIVE_INT, at, one, &length, x);
-  }
-  const hsize_t N = static_cast<hsize_t>(layout_.mapSide);
-  if (layout_.firstSlipMap) {
-    std::vector<double> map(N * N, kNaN);
-    if (t.firstSlipTime.size() == map.size()) map = t.firstSlipTime;
-    writeSlab(firstSlip_, H5T_NATIVE_DOUBLE, {p, r, 0, 0}, {1, 1, N, N}, map.data(), x);
-  }
-  if (layout_.frictionFields) {
-    for (auto [dataset, values] : {std::pair{localStatic_.get(), &t.localStatic}, std::pair{localKinetic_.get(), &t.localKinetic}}) {
-      std::vector<double> map(N * N, kNaN);
-      if (values->size() == map.size()) map = *values;
-      writeSlab(dataset, H5T_NATIVE_DOUBLE, {p, r, 0, 0}, {1, 1, N, N}, map.data(), x);
+  const size_t samples = std::min(t.friction.time.size(), t.friction.mu.size());
+  if (layout_.historyCapacity > 0 && samples > static_cast<size_t>(layout_.historyCapacity))
+    throw Hdf5Error("mu(t) history of task (" + std::to_string(t.point) + ", " + std::to_string(t.realisation) +
+                    ") has " + std::to_string(samples) + " samples, more than the file's capacity " +
+                    std::to_string(layout_.historyCapacity));
+  // Whole rows, padding included, so that a task redone after an interruption overwrites whatever
+  // a torn earlier write left; the done flag last: it says the rows above are complete.
+  auto write = [&](size_t i) {
+    const TaskDataset& d = schema_[i];
+    std::vector<hsize_t> offset{static_cast<hsize_t>(t.point), static_cast<hsize_t>(t.realisation)}, count{1, 1};
+    hsize_t extent = 1;
+    for (const auto& axis : d.axes) {
+      offset.push_back(0);
+      count.push_back(axisSize(layout_, axis));
+      extent *= count.back();
     }
-  }
-  const hsize_t S = layout_.snapshotTimes.size();
-  if (S > 0) {
-    std::vector<double> times(S, kNaN);
-    std::vector<double> maps(S * N * N, kNaN);
-    for (size_t s = 0; s < S && s < t.snapshots.size(); ++s) {
-      if (s < t.snapshotTime.size()) times[s] = t.snapshotTime[s];
-      if (t.snapshots[s].size() == N * N) std::copy(t.snapshots[s].begin(), t.snapshots[s].end(), maps.begin() + s * N * N);
+    const hid_t memory = memoryType(d.type);
+    if (d.type == TaskDataset::Type::Real) {
+      std::vector<double> row(extent, kNaN);
+      d.real(t, row);
+      writeSlab(taskData_[i], memory, offset, count, row.data(), independent_);
+      return;
     }
-    writeSlab(snapshotTime_, H5T_NATIVE_DOUBLE, {p, r, 0}, {1, 1, S}, times.data(), x);
-    writeSlab(snapshots_, H5T_NATIVE_DOUBLE, {p, r, 0, 0, 0}, {1, 1, S, N, N}, maps.data(), x);
-  }
-  writeSlab(muStatic_, H5T_NATIVE_DOUBLE, at, one, &t.friction.muStatic, x);
-  writeSlab(muKinetic_, H5T_NATIVE_DOUBLE, at, one, &t.friction.muKinetic, x);
-  writeSlab(peakTime_, H5T_NATIVE_DOUBLE, at, one, &t.friction.peakTime, x);
-  writeSlab(endTime_, H5T_NATIVE_DOUBLE, at, one, &t.endTime, x);
-  const std::int8_t confirmed = t.friction.peakConfirmed ? 1 : 0;
-  writeSlab(peakConfirmed_, H5T_NATIVE_INT8, at, one, &confirmed, x);
-  writeSlab(steps_, H5T_NATIVE_INT64, at, one, &t.steps, x);
-  writeSlab(redrawn_, H5T_NATIVE_INT, at, one, &t.redrawnBlocks, x);
-  writeSlab(wallSeconds_, H5T_NATIVE_DOUBLE, at, one, &t.wallSeconds, x);
-  writeSlab(taskRank_, H5T_NATIVE_INT, at, one, &t.rank, x);
-  // Last: the flag that says the task above is complete.
-  const std::int8_t done = 1;
-  writeSlab(done_, H5T_NATIVE_INT8, at, one, &done, x);
+    const std::int64_t value = d.integer(t);
+    const std::int8_t small = static_cast<std::int8_t>(value);
+    const int medium = static_cast<int>(value);
+    const void* data = d.type == TaskDataset::Type::Int8 ? static_cast<const void*>(&small)
+                       : d.type == TaskDataset::Type::Int32 ? static_cast<const void*>(&medium)
+                                                            : static_cast<const void*>(&value);
+    writeSlab(taskData_[i], memory, offset, count, data, independent_);
+  };
+  for (size_t i = 0; i < schema_.size(); ++i)
+    if (!schema_[i].doneFlag) write(i);
+  for (size_t i = 0; i < schema_.size(); ++i)
+    if (schema_[i].doneFlag) write(i);
 }
 
 void ResultsFile::flush() {
@@ -287,7 +240,7 @@ void ResultsFile::copyTasksFrom(const std::string& path) {
 }
 
 std::vector<std::uint8_t> ResultsFile::finishedTasks() const {
-  auto flags = readAll<std::int8_t>(done_, H5T_NATIVE_INT8);
+  auto flags = readAll<std::int8_t>(taskDataset("realisations/done"), H5T_NATIVE_INT8);
   return std::vector<std::uint8_t>(flags.begin(), flags.end());
 }
 
@@ -297,7 +250,7 @@ std::vector<double> ResultsFile::readRealisationReal(const std::string& name) co
 }
 
 std::vector<std::int8_t> ResultsFile::readPeakConfirmed() const {
-  return readAll<std::int8_t>(peakConfirmed_, H5T_NATIVE_INT8);
+  return readAll<std::int8_t>(taskDataset("realisations/peak_confirmed"), H5T_NATIVE_INT8);
 }
 
 std::vector<double> ResultsFile::readStatistic(const std::string& name) const {
@@ -346,32 +299,13 @@ void ResultsFile::markComplete() {
 }
 
 std::pair<std::uint64_t, std::uint64_t> ResultsFile::doneFlags() const {
-  const haddr_t offset = H5Dget_offset(done_);
+  const haddr_t offset = H5Dget_offset(taskDataset("realisations/done"));
   if (offset == HADDR_UNDEF) return {0, 0};
   return {offset, static_cast<std::uint64_t>(layout_.points) * static_cast<std::uint64_t>(layout_.realisations)};
 }
 
 void ResultsFile::close() {
-  muStatic_.reset();
-  muKinetic_.reset();
-  peakTime_.reset();
-  endTime_.reset();
-  peakConfirmed_.reset();
-  steps_.reset();
-  redrawn_.reset();
-  done_.reset();
-  wallSeconds_.reset();
-  taskRank_.reset();
-  historyTime_.reset();
-  historyMu_.reset();
-  historyForceX_.reset();
-  historyForceY_.reset();
-  historyLength_.reset();
-  firstSlip_.reset();
-  localStatic_.reset();
-  localKinetic_.reset();
-  snapshotTime_.reset();
-  snapshots_.reset();
+  taskData_.clear();
   independent_.reset();
   file_.reset();
 }

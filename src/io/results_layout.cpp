@@ -16,46 +16,6 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-// One line on each statistics column (docs/ensemble.md has the formulas).
-std::string statisticDescription(const std::string& name) {
-  if (name == "finished") return "realisations finished";
-  if (name == "target_half_width")
-    return "95 % CI half-width reached of the quantity -ensemble_target bounds (-ensemble_target_type)";
-  if (name == "target_met") return "1 if the point met -ensemble_target, 0 if it stopped at -ensemble_target_max";
-  if (name == "peaks_unconfirmed") return "realisations whose peak was not confirmed before -sbm_t_max";
-  const std::string of = name.substr(0, 4);  // mu_s or mu_k
-  const std::string what = name.size() > 5 ? name.substr(5) : "";
-  if (what == "count") return "finite values of " + of + " used for the statistics";
-  if (what == "mean") return "mean of " + of + " over the finished realisations";
-  if (what == "std") return "sample standard deviation (n - 1) of " + of;
-  if (what == "stderr") return "standard error of the mean of " + of;
-  if (what == "ci95_low") return "lower end of the 95 % confidence interval of the mean of " + of;
-  if (what == "ci95_high") return "upper end of the 95 % confidence interval of the mean of " + of;
-  if (what == "relative") return "(" + of + " - " + of + "_0) / " + of + "_0 against /sweep/reference_point";
-  if (what == "relative_ci95") return "95 % confidence half-width of " + of + "_relative";
-  if (what == "discretisation_error")  // FEM sweeps and spring-block ensembles
-    return "relative discretisation error bound of " + of + " at the point's settings (NaN: not measured)";
-  if (what == "discretisation_lattice") return "its lattice term (N_b ladder), relative (NaN: not measured)";
-  if (what == "discretisation_dt") return "its time-step term, relative (NaN: not measured)";
-  return name;
-}
-
-// What kind of interval a column is (its `interval` attribute; docs/ensemble.md, section 3), or "".
-std::string statisticInterval(const std::string& name) {
-  if (name.find("ci95") != std::string::npos || name == "target_half_width") {
-    if (name.find("relative") != std::string::npos)
-      return "95 % Student t half-width: the propagated standard error x t(0.975, min(n, n_0) - 1), or with "
-             "common random numbers the paired differences' x t(0.975, pairs - 1)";
-    return name == "target_half_width" ? "95 % Student t half-width (as mu_s_ci95_* and mu_s_relative_ci95)"
-                                       : "95 % Student t, n - 1 degrees of freedom";
-  }
-  if (name.find("discretisation") != std::string::npos)
-    return "bound from the convergence study (GCI with safety factor 1.25 and time-step term), not a statistical "
-           "interval";
-  return "";
-}
-
-
 }  // namespace
 
 std::uint64_t layoutBytes(const EnsembleLayout& l, const SweepTable& sweep, const std::vector<Attribute>& scene) {
@@ -67,11 +27,16 @@ std::uint64_t layoutBytes(const EnsembleLayout& l, const SweepTable& sweep, cons
     bytes += 8 * std::max<std::uint64_t>(v->size(), P * N);
   for (const auto* v : {&sweep.property, &sweep.profile})
     for (const auto& text : *v) bytes += text.size() + 8;
-  bytes += tasks * (46 + 12);                                           // /realisations, /run
-  if (C > 0) bytes += tasks * (32 * C + 4);                             // /history
-  bytes += tasks * 8 * N * N * ((l.firstSlipMap ? 1 : 0) + (l.frictionFields ? 2 : 0) + S) + 8 * S * (tasks + 1);
-  bytes += 8 * P * (l.statisticsReal.size() + l.statisticsInteger.size()) + 256 * l.statisticsReal.size();
-  for (const auto& note : l.statisticsNotes) bytes += note[1].size() + note[2].size() + 128;
+  for (const TaskDataset& d : taskDatasets(l)) {  // 8 bytes an element at most
+    std::uint64_t extent = 1;
+    for (const auto& axis : d.axes) extent *= axisSize(l, axis);
+    bytes += tasks * 8 * extent;
+  }
+  bytes += 8 * S;  // /maps/snapshot_times
+  for (const auto& c : l.statistics) {
+    bytes += 8 * P + 256 + c.description.size();
+    for (const auto& [name, value] : c.attributes) bytes += name.size() + value.size() + 128;
+  }
   for (const auto& a : scene) bytes += 3 * (a.name.size() + 128) + a.value.size() + a.unit.size() + a.origin.size();
   return withMetadataRoom(bytes + 64 * 2048);  // ~64 datasets and groups with their attributes
 }
@@ -103,13 +68,7 @@ void writeLayout(hid_t root, const EnsembleLayout& layout, const SweepTable& swe
   };
   std::vector<H5Dataset> scales;
   auto axis = [&](const char* name, hsize_t size, const char* description) {
-    H5Dataset d = createDataset<int>(root, name, H5T_STD_I32LE, H5T_NATIVE_INT, {size}, 0);
-    std::vector<int> index(size);
-    for (hsize_t i = 0; i < size; ++i) index[i] = static_cast<int>(i);
-    writeSlab(d, H5T_NATIVE_INT, {0}, {size}, index.data(), H5P_DEFAULT);
-    describe(d, "1", description);
-    makeDimensionScale(d, name);
-    scales.push_back(std::move(d));
+    scales.push_back(createIndexScale(root, name, size, description));
     return Axis{scales.back().get(), size};
   };
   const Axis point = axis("point", P, "sweep point index (row of /sweep)");
@@ -123,11 +82,12 @@ void writeLayout(hid_t root, const EnsembleLayout& layout, const SweepTable& swe
   auto make = [&](hid_t group, const char* name, hid_t fileType, hid_t memType, const std::vector<Axis>& axes,
                   auto fill, const char* units, const char* description) {
     std::vector<hsize_t> dims;
-    for (const auto& a : axes) dims.push_back(a.size);
-    H5Dataset d = createDataset(group, name, fileType, memType, dims, fill);
-    describe(d, units, description);
-    for (unsigned i = 0; i < axes.size(); ++i) attachScale(d, axes[i].scale, i);
-    return d;
+    std::vector<hid_t> attached;
+    for (const auto& a : axes) {
+      dims.push_back(a.size);
+      attached.push_back(a.scale);
+    }
+    return createDescribedDataset(group, name, fileType, memType, dims, fill, units, description, attached);
   };
   auto real = [&](hid_t group, const char* name, const std::vector<Axis>& axes, const char* units,
                   const char* description) {
@@ -189,70 +149,45 @@ void writeLayout(hid_t root, const EnsembleLayout& layout, const SweepTable& swe
     map("mu_k_map", "1", "mean local kinetic coefficient of every block, before dispersion", sweep.blockMuKinetic);
     map("p_map", "Pa", "normal pressure of every block (its normal force is p l^2)", sweep.blockPressure);
   }
-  {
-    H5Group group = createGroup(root, "realisations");
-    const std::vector<Axis> pr{point, realisation};
-    real(group, "mu_s", pr, "1", "global static friction coefficient: the maximum of mu(t) at the transition");
-    real(group, "mu_k", pr, "1", "global kinetic coefficient: mean of mu(t) over the window after the peak; NaN: none");
-    real(group, "peak_time", pr, "s", "time of the peak of mu(t)");
-    real(group, "end_time", pr, "s", "simulated time reached");
-    make(group, "peak_confirmed", H5T_STD_I8LE, H5T_NATIVE_INT8, pr, std::int8_t(0), "1",
-         "1 if the peak was confirmed, 0 if the run stopped at -sbm_t_max first");
-    make(group, "steps", H5T_STD_I64LE, H5T_NATIVE_INT64, pr, std::int64_t(0), "1", "time steps taken");
-    make(group, "redrawn_blocks", H5T_STD_I32LE, H5T_NATIVE_INT, pr, 0, "1",
-         "local coefficients redrawn to keep 0 < mu_k,i <= mu_s,i");
-    make(group, "done", H5T_STD_I8LE, H5T_NATIVE_INT8, pr, std::int8_t(0), "1",
-         "1: the task finished and its results are stored; 0: not run (yet)");
-  }
-  {
-    // No dimension scales here: a scale's REFERENCE_LIST would then name /run's datasets, and
-    // h5diff --exclude-path /run would still compare them through it.
-    H5Group group = createGroup(root, "run");
-    H5Dataset wall = createDataset<double>(group, "wall_seconds", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, {P, R}, kNaN);
-    describe(wall, "s", "wall time of each task [point, realisation]");
-    H5Dataset rank = createDataset<int>(group, "rank", H5T_STD_I32LE, H5T_NATIVE_INT, {P, R}, -1);
-    describe(rank, "1", "the MPI rank that ran each task [point, realisation]");
-  }
-  if (C > 0) {
-    H5Group group = createGroup(root, "history");
-    const std::vector<Axis> prc{point, realisation, sample};
-    real(group, "time", prc, "s", "time of each mu(t) sample; NaN after the last sample");
-    real(group, "mu", prc, "1", "mu(t) = |sum of the slider forces| / (p L^2); NaN after the last sample");
-    real(group, "force_x", prc, "N", "x component (grading axis) of the sum of the slider-spring forces on the plate");
-    real(group, "force_y", prc, "N", "y component of the sum of the slider-spring forces on the plate");
-    make(group, "length", H5T_STD_I32LE, H5T_NATIVE_INT, {point, realisation}, 0, "1", "number of samples of each task");
-  }
-  if (layout.firstSlipMap || layout.frictionFields || S > 0) {
-    H5Group group = createGroup(root, "maps");
-    if (layout.frictionFields) {
-      real(group, "mu_s_local", {point, realisation, row, column}, "1",
-           "local static coefficient mu_s,i of each block, as drawn for the realisation");
-      real(group, "mu_k_local", {point, realisation, row, column}, "1",
-           "local kinetic coefficient mu_k,i of each block, as drawn for the realisation");
-    }
-    if (layout.firstSlipMap)
-      real(group, "first_slip_time", {point, realisation, row, column}, "s",
-           "time of each block's first slip; NaN: never slipped");
-    if (S > 0) {
-      H5Dataset requested = real(group, "snapshot_times", {snapshot}, "s", "the requested snapshot times");
-      writeSlab(requested, H5T_NATIVE_DOUBLE, {0}, {S}, layout.snapshotTimes.data(), H5P_DEFAULT);
-      real(group, "snapshot_time", {point, realisation, snapshot}, "s",
-           "the time each snapshot was taken; NaN if the run ended before");
-      real(group, "sigma_x_over_p", {point, realisation, snapshot, row, column}, "1",
-           "longitudinal stress sigma_x / p of each block at each snapshot");
+  {  // What every task writes (results_schema.hpp), each group made where its first dataset is.
+    const std::vector<std::pair<std::string, Axis>> named = {
+        {"sample", sample}, {"snapshot", snapshot}, {"block_row", row}, {"block_column", column}};
+    std::vector<std::pair<std::string, H5Group>> groups;
+    for (const TaskDataset& spec : taskDatasets(layout)) {
+      const std::string groupName = spec.path.substr(0, spec.path.find('/'));
+      if (groups.empty() || groups.back().first != groupName) {
+        groups.emplace_back(groupName, createGroup(root, groupName.c_str()));
+        if (groupName == "maps" && S > 0) {  // the requested times, beside the maps taken at them
+          H5Dataset requested = real(groups.back().second, "snapshot_times", {snapshot}, "s", "the requested snapshot times");
+          writeSlab(requested, H5T_NATIVE_DOUBLE, {0}, {S}, layout.snapshotTimes.data(), H5P_DEFAULT);
+        }
+      }
+      std::vector<Axis> axes{point, realisation};
+      for (const auto& name : spec.axes)
+        axes.push_back(std::find_if(named.begin(), named.end(), [&](const auto& a) { return a.first == name; })->second);
+      const hid_t group = groups.back().second;
+      const std::string name = spec.path.substr(groupName.size() + 1);
+      // Under /run no scales: a scale's REFERENCE_LIST would name /run's datasets, and h5diff
+      // --exclude-path /run would still compare them through it.
+      std::vector<hsize_t> dims;
+      std::vector<hid_t> attached;
+      for (const auto& a : axes) {
+        dims.push_back(a.size);
+        if (spec.scales) attached.push_back(a.scale);
+      }
+      createTaskDataset(group, name, spec, dims, attached);
     }
   }
-  {
+  {  // The statistics: the real columns, then the integer ones.
     H5Group group = createGroup(root, "statistics");
-    for (const auto& name : layout.statisticsReal) {
-      H5Dataset d = real(group, name.c_str(), {point}, "1", statisticDescription(name).c_str());
-      if (const std::string interval = statisticInterval(name); !interval.empty())
-        writeStringAttribute(d, "interval", interval);
-      for (const auto& [column, attribute, value] : layout.statisticsNotes)
-        if (column == name) writeStringAttribute(d, attribute, value);
-    }
-    for (const auto& name : layout.statisticsInteger)
-      make(group, name.c_str(), H5T_STD_I32LE, H5T_NATIVE_INT, {point}, 0, "1", statisticDescription(name).c_str());
+    for (const bool integer : {false, true})
+      for (const StatisticColumn& c : layout.statistics) {
+        if (c.integer != integer) continue;
+        H5Dataset d = integer ? make(group, c.name.c_str(), H5T_STD_I32LE, H5T_NATIVE_INT, {point}, 0,
+                                     c.units.c_str(), c.description.c_str())
+                              : real(group, c.name.c_str(), {point}, c.units.c_str(), c.description.c_str());
+        for (const auto& [attribute, value] : c.attributes) writeStringAttribute(d, attribute, value);
+      }
   }
 }
 
@@ -282,7 +217,13 @@ void readLayout(hid_t root, EnsembleLayout* layout, SweepTable* sweep) {
     for (const std::string& name : linkNames(stats)) {
       H5Dataset d(GF_H5(H5Dopen2(stats, name.c_str(), H5P_DEFAULT)));
       H5Type type(GF_H5(H5Dget_type(d)));
-      (H5Tget_class(type) == H5T_FLOAT ? layout->statisticsReal : layout->statisticsInteger).push_back(name);
+      StatisticColumn column;
+      column.name = name;
+      column.integer = H5Tget_class(type) != H5T_FLOAT;
+      for (const auto& [attribute, text] : readStringAttributes(d))
+        if (attribute == "units") column.units = text;
+        else if (attribute == "description") column.description = text;
+      layout->statistics.push_back(column);
     }
   }
   {

@@ -52,8 +52,7 @@ std::vector<std::pair<std::string, std::string>> studyAttributes(
     const RunParameters& record, const std::vector<std::pair<std::string, std::string>>& first) {
   std::vector<std::pair<std::string, std::string>> attributes = {{"format", "gradfric-accuracy-study"}};
   attributes.insert(attributes.end(), first.begin(), first.end());
-  for (const auto& option : record.all())
-    attributes.emplace_back(option.name[0] == '-' ? option.name.substr(1) : option.name, option.value);
+  for (const auto& option : io::optionAttributes(record)) attributes.emplace_back(option.name, option.value);
   return attributes;
 }
 

@@ -1,6 +1,7 @@
 // Statistics of a sweep point: exact values for small samples, Student t quantiles against
 // tables, the relative variation and its propagated error.
 #include "gradfric/ensemble/statistics.hpp"
+#include "gradfric/ensemble/statistics_columns.hpp"
 
 #include <gtest/gtest.h>
 
@@ -94,22 +95,22 @@ TEST(EnsembleStatistics, PointTableCountsOnlyFinishedRealisations) {
   const std::vector<double> muK = {0.6, 0.6, 100.0, kNaN, 0.5, 0.7};
   const std::vector<signed char> confirmed = {1, 1, 1, 1, 0, 1};
   const std::vector<unsigned char> done = {1, 1, 0, 1, 1, 1};  // (0, 2) not finished: its 100 must not count
-  const auto stats = pointStatistics(3, {0, 0}, muS, muK, confirmed, done);
+  const auto stats = pointStatistics(3, {0, 0}, {muS, muK}, confirmed, done);
   ASSERT_EQ(stats.size(), 2u);
   EXPECT_EQ(stats[0].finished, 2);
-  EXPECT_NEAR(stats[0].muStatic.mean, 0.95, 1e-15);
-  EXPECT_NEAR(stats[0].muKinetic.mean, 0.6, 1e-15);
+  EXPECT_NEAR(stats[0].observables[0].summary.mean, 0.95, 1e-15);
+  EXPECT_NEAR(stats[0].observables[1].summary.mean, 0.6, 1e-15);
   EXPECT_EQ(stats[1].finished, 3);
   EXPECT_EQ(stats[1].peaksUnconfirmed, 1);
-  EXPECT_NEAR(stats[1].muStatic.mean, 0.7, 1e-15);
-  EXPECT_EQ(stats[1].muKinetic.count, 2);  // the NaN mu_k is skipped
-  EXPECT_NEAR(stats[1].muKinetic.mean, 0.6, 1e-15);
-  EXPECT_EQ(stats[0].muStaticRelative.value, 0.0);
-  EXPECT_NEAR(stats[1].muStaticRelative.value, (0.7 - 0.95) / 0.95, 1e-15);
-  EXPECT_GT(stats[1].muStaticRelative.error, 0.0);
-  const auto orphan = pointStatistics(3, {-1, -1}, muS, muK, confirmed, done);
-  EXPECT_TRUE(std::isnan(orphan[1].muStaticRelative.value));
-  EXPECT_THROW(pointStatistics(2, {0, 0}, muS, muK, confirmed, done), std::invalid_argument);
+  EXPECT_NEAR(stats[1].observables[0].summary.mean, 0.7, 1e-15);
+  EXPECT_EQ(stats[1].observables[1].summary.count, 2);  // the NaN mu_k is skipped
+  EXPECT_NEAR(stats[1].observables[1].summary.mean, 0.6, 1e-15);
+  EXPECT_EQ(stats[0].observables[0].relative.value, 0.0);
+  EXPECT_NEAR(stats[1].observables[0].relative.value, (0.7 - 0.95) / 0.95, 1e-15);
+  EXPECT_GT(stats[1].observables[0].relative.error, 0.0);
+  const auto orphan = pointStatistics(3, {-1, -1}, {muS, muK}, confirmed, done);
+  EXPECT_TRUE(std::isnan(orphan[1].observables[0].relative.value));
+  EXPECT_THROW(pointStatistics(2, {0, 0}, {muS, muK}, confirmed, done), std::invalid_argument);
 }
 
 TEST(EnsembleStatistics, PairedRelativeVariation) {
@@ -145,10 +146,47 @@ TEST(EnsembleStatistics, PointTableUsesPairsWhenAsked) {
   const std::vector<double> muK = {0.6, 0.6, 0.6, 0.48, 0.48, 0.48};
   const std::vector<signed char> confirmed(6, 1);
   const std::vector<unsigned char> done = {1, 1, 0, 1, 1, 1};
-  const auto paired = pointStatistics(3, {0, 0}, muS, muK, confirmed, done, true);
-  EXPECT_NEAR(paired[1].muStaticRelative.value, -0.2, 1e-14);  // over the common pairs 0 and 1
-  EXPECT_LT(paired[1].muStaticRelative.error, 1e-14);
-  EXPECT_EQ(paired[0].muStaticRelative.value, 0.0);
-  const auto independent = pointStatistics(3, {0, 0}, muS, muK, confirmed, done, false);
-  EXPECT_GT(independent[1].muStaticRelative.error, 1e-3);
+  const auto paired = pointStatistics(3, {0, 0}, {muS, muK}, confirmed, done, true);
+  EXPECT_NEAR(paired[1].observables[0].relative.value, -0.2, 1e-14);  // over the common pairs 0 and 1
+  EXPECT_LT(paired[1].observables[0].relative.error, 1e-14);
+  EXPECT_EQ(paired[0].observables[0].relative.value, 0.0);
+  const auto independent = pointStatistics(3, {0, 0}, {muS, muK}, confirmed, done, false);
+  EXPECT_GT(independent[1].observables[0].relative.error, 1e-3);
+}
+
+TEST(EnsembleStatistics, ColumnsComeFromTheObservableTable) {
+  // finished, then each observable with statistics (mu_s, mu_k: physics/observables.hpp) with its
+  // seven real columns and its count, then peaks_unconfirmed: the file's names of format 3.
+  std::vector<std::string> names;
+  for (const auto& c : statisticsColumns()) names.push_back(c.name + (c.integer ? ":int" : ""));
+  std::vector<std::string> expected = {"finished:int"};
+  for (const char* mu : {"mu_s", "mu_k"}) {
+    for (const char* s : {"_mean", "_std", "_stderr", "_ci95_low", "_ci95_high", "_relative", "_relative_ci95"})
+      expected.push_back(mu + std::string(s));
+    expected.push_back(mu + std::string("_count:int"));
+  }
+  expected.push_back("peaks_unconfirmed:int");
+  EXPECT_EQ(names, expected);
+  const auto columns = statisticsColumns();
+  EXPECT_EQ(columns[14].description, "(mu_k - mu_k_0) / mu_k_0 against /sweep/reference_point");
+  ASSERT_EQ(columns[4].attributes.size(), 1u);  // mu_s_ci95_low: an interval
+  EXPECT_EQ(columns[4].attributes[0].second, "95 % Student t, n - 1 degrees of freedom");
+  // The values line up with the names.
+  const auto stats = pointStatistics(2, {0}, {{1.0, 0.9}, {0.6, kNaN}}, {1, 1}, {1, 1});
+  const StatisticsValues values = statisticsValues(stats);
+  auto real = [&](const std::string& name) {
+    for (const auto& [n, v] : values.real)
+      if (n == name) return v.at(0);
+    return -1.0;
+  };
+  auto integer = [&](const std::string& name) {
+    for (const auto& [n, v] : values.integer)
+      if (n == name) return v.at(0);
+    return -1;
+  };
+  EXPECT_NEAR(real("mu_s_mean"), 0.95, 1e-15);
+  EXPECT_EQ(real("mu_k_mean"), 0.6);
+  EXPECT_EQ(integer("mu_k_count"), 1);
+  EXPECT_EQ(integer("finished"), 2);
+  EXPECT_EQ(values.real.size() + values.integer.size(), columns.size());
 }

@@ -16,7 +16,7 @@ PointStatistics pointOf(int n, double mean, double sd) {
   std::vector<double> v;
   for (int i = 0; i < n; ++i) v.push_back(mean + (i % 2 ? sd : -sd) * std::sqrt((n - 1.0) / n));
   PointStatistics s;
-  s.muStatic = summarise(v);
+  s.observables = {{summarise(v), {}}, {summarise({}), {}}};  // mu_s, mu_k (physics/observables.hpp)
   s.finished = n;
   return s;
 }
@@ -35,7 +35,7 @@ PrecisionTarget absoluteTarget(double h, int cap = 100) {
 TEST(PrecisionTarget, HalfWidthIsTheStudentInterval) {
   const PointStatistics s = pointOf(10, 0.9, 0.01);
   const std::vector<PointStatistics> stats{s};
-  const double expected = studentTQuantile(0.975, 9) * s.muStatic.stdDev / std::sqrt(10.0);
+  const double expected = studentTQuantile(0.975, 9) * s.observables[0].summary.stdDev / std::sqrt(10.0);
   EXPECT_NEAR(achievedHalfWidth(absoluteTarget(1), stats, {0}, 0), expected, 1e-15);
   PrecisionTarget relative = absoluteTarget(1);
   relative.kind = TargetKind::Relative;
@@ -67,14 +67,14 @@ TEST(PrecisionTarget, NoEstimateDoublesAndVariationGrowsTheReference) {
   PrecisionTarget variation = absoluteTarget(0.001);
   variation.kind = TargetKind::Variation;
   std::vector<PointStatistics> stats{pointOf(8, 0.9, 0.001), pointOf(8, 0.7, 0.01)};
-  stats[0].muStaticRelative = relativeVariation(stats[0].muStatic, stats[0].muStatic, true);
-  stats[1].muStaticRelative = relativeVariation(stats[1].muStatic, stats[0].muStatic, false);
+  stats[0].observables[0].relative = relativeVariation(stats[0].observables[0].summary, stats[0].observables[0].summary, true);
+  stats[1].observables[0].relative = relativeVariation(stats[1].observables[0].summary, stats[0].observables[0].summary, false);
   EXPECT_EQ(achievedHalfWidth(variation, stats, {0, 0}, 0), 0.0);  // the reference itself
   // The printed and stored half-width: the propagated error times t of the smaller sample's 7 dof.
-  const double error = stats[1].muStaticRelative.error;
+  const double error = stats[1].observables[0].relative.error;
   ASSERT_GT(error, 0.0);
   EXPECT_NEAR(achievedHalfWidth(variation, stats, {0, 0}, 1), studentTQuantile(0.975, 7) * error, 1e-15);
-  EXPECT_EQ(achievedHalfWidth(variation, stats, {0, 0}, 1), stats[1].muStaticRelative.halfWidth);
+  EXPECT_EQ(achievedHalfWidth(variation, stats, {0, 0}, 1), stats[1].observables[0].relative.halfWidth);
   const std::vector<int> next = planNextBatch(variation, {8, 8}, stats, {0, 0});
   EXPECT_EQ(next[1], 24);
   EXPECT_EQ(next[0], 24);  // every realisation of point 1 keeps its pair
@@ -85,9 +85,9 @@ TEST(PrecisionTarget, StatisticsSeeOnlyThePlannedRealisations) {
   const std::vector<double> mu{1, 2, 3, 4, 5, 6, 7, 8};
   const std::vector<signed char> confirmed(8, 1);
   const std::vector<unsigned char> done(8, 1);
-  const auto s = statisticsOfCounts({2, 3}, 4, {0, 0}, mu, mu, confirmed, done, false);
+  const auto s = statisticsOfCounts({2, 3}, 4, {0, 0}, {mu, mu}, confirmed, done, false);
   EXPECT_EQ(s[0].finished, 2);
-  EXPECT_DOUBLE_EQ(s[0].muStatic.mean, 1.5);
+  EXPECT_DOUBLE_EQ(s[0].observables[0].summary.mean, 1.5);
   EXPECT_EQ(s[1].finished, 3);
-  EXPECT_DOUBLE_EQ(s[1].muStatic.mean, 6.0);
+  EXPECT_DOUBLE_EQ(s[1].observables[0].summary.mean, 6.0);
 }

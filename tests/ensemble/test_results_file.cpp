@@ -34,8 +34,8 @@ EnsembleLayout smallLayout() {
   l.mapSide = 2;
   l.firstSlipMap = true;
   l.snapshotTimes = {1e-5, 2e-5};
-  l.statisticsReal = {"mu_s_mean"};
-  l.statisticsInteger = {"finished"};
+  l.statistics = {{"mu_s_mean", "1", "mean of mu_s", false, {{"interval", "none"}}},
+                  {"finished", "1", "realisations finished", true, {}}};
   return l;
 }
 
@@ -115,8 +115,13 @@ TEST(ResultsFile, EachRankWritesItsTasksAndEveryRankReadsThemBack) {
     EXPECT_TRUE(l.firstSlipMap);
     ASSERT_EQ(l.snapshotTimes.size(), 2u);
     EXPECT_DOUBLE_EQ(l.snapshotTimes[1], 2e-5);
-    EXPECT_EQ(l.statisticsReal, std::vector<std::string>{"mu_s_mean"});
-    EXPECT_EQ(l.statisticsInteger, std::vector<std::string>{"finished"});
+    ASSERT_EQ(l.statistics.size(), 2u);  // read back in name order, with type, units and description
+    EXPECT_EQ(l.statistics[0].name, "finished");
+    EXPECT_TRUE(l.statistics[0].integer);
+    EXPECT_EQ(l.statistics[1].name, "mu_s_mean");
+    EXPECT_FALSE(l.statistics[1].integer);
+    EXPECT_EQ(l.statistics[1].description, "mean of mu_s");
+    EXPECT_EQ(l.statistics[1].units, "1");
     const auto& s = f.sweep();
     EXPECT_EQ(s.axes, std::vector<std::string>{"delta"});
     EXPECT_EQ(s.delta, smallSweep().delta);

@@ -114,6 +114,7 @@ with gradfric.open(path("ens.h5")) as ds, h5py.File(path("ens.h5"), "r") as f:
     assert ds["time"].dims == ("point", "realisation", "sample") and ds["time"].attrs["units"] == "s"
     assert ds["mu"].dims == ("point", "realisation", "sample") and ds["force_x"].attrs["units"] == "N"
     assert ds["mu_s"].dims == ("point", "realisation") and ds["mu_s_mean"].dims == ("point",)
+    assert ds.attrs["observables"] == ["mu_s", "mu_k"], ds.attrs["observables"]  # found in the file, in its order
     assert ds["first_slip_time"].dims == ("point", "realisation", "block_row", "block_column")
     assert ds["sigma_x_over_p"].dims == ("point", "realisation", "snapshot", "block_row", "block_column")
     assert same(ds["snapshot_times"], [1.0e-4, 1.2e-4]) and ds["snapshot_times"].dims == ("snapshot",)

@@ -14,6 +14,8 @@
 namespace gradfric {
 
 enum class OptionOrigin { Default, User, Derived };
+// How the printout and the results files name an origin: default, set, derived.
+const char* originName(OptionOrigin origin);
 
 struct ResolvedOption {
   std::string name;  // with its leading dash, e.g. "-sbm_E"

@@ -50,8 +50,7 @@ std::vector<int> planNextBatch(const PrecisionTarget& target, const std::vector<
 // pointStatistics): what the plan sees of a file that may hold more.
 std::vector<PointStatistics> statisticsOfCounts(const std::vector<int>& counts, int realisations,
                                                 const std::vector<int>& reference,
-                                                const std::vector<double>& muStatic,
-                                                const std::vector<double>& muKinetic,
+                                                const std::vector<std::vector<double>>& tables,
                                                 const std::vector<signed char>& peakConfirmed,
                                                 const std::vector<unsigned char>& done, bool paired);
 

@@ -42,6 +42,10 @@ void checkExtendable(MPI_Comm comm, const Scene& scene, const std::string& path)
 // attributes (/run) are set.
 io::ResultsFile openResultsFile(MPI_Comm comm, const Scene& scene, const io::OutputPlan& plan);
 
+// Every rank: the P x R table of each observable with statistics (physics/observables.hpp), in
+// the table's order, as pointStatistics takes them.
+std::vector<std::vector<double>> observableTables(const io::ResultsFile& file);
+
 // Collective: the statistics of every point from the file's P x R tables, written to /statistics.
 std::vector<PointStatistics> writeStatistics(io::ResultsFile& file, const Scene& scene);
 // The same from what the statistics depend on (the FEM sweep: one realisation per point).

@@ -54,24 +54,26 @@ RelativeVariation relativeVariation(const Summary& point, const Summary& referen
 // t95(n - 1) e. Needs n >= 2 pairs, else NaN error.
 RelativeVariation pairedRelativeVariation(const std::vector<double>& point, const std::vector<double>& reference);
 
-// The real columns /statistics holds for every ensemble and FEM sweep (docs/ensemble.md, section 5),
-// in this order; *_ci95_* and *_relative_ci95 are 95 % Student t intervals.
-std::vector<std::string> statisticsColumns();
+// The statistics of one observable at one sweep point.
+struct ObservableStatistics {
+  Summary summary;
+  RelativeVariation relative;  // NaN when the point has no reference
+};
 
 // Everything the results file and the final table report for one sweep point.
 struct PointStatistics {
-  Summary muStatic, muKinetic;
-  RelativeVariation muStaticRelative, muKineticRelative;  // NaN when the point has no reference
+  // One per table given to pointStatistics, in its order (the file's and the printouts' order:
+  // statisticsObservables(), physics/observables.hpp).
+  std::vector<ObservableStatistics> observables;
   int finished = 0;           // realisations finished
   int peaksUnconfirmed = 0;   // of those, runs stopped at t_max before the peak was confirmed
 };
 
-// Tables are P x R, row-major. reference[p] is the non-graded point of p (p itself for a
-// non-graded point) or -1. Only finished realisations (done[i] != 0) count. paired: the relative
-// variations use pairedRelativeVariation (scenes run with common random numbers).
+// Tables are P x R, row-major, one per observable. reference[p] is the non-graded point of p (p
+// itself for a non-graded point) or -1. Only finished realisations (done[i] != 0) count. paired:
+// the relative variations use pairedRelativeVariation (scenes run with common random numbers).
 std::vector<PointStatistics> pointStatistics(int realisations, const std::vector<int>& reference,
-                                             const std::vector<double>& muStatic,
-                                             const std::vector<double>& muKinetic,
+                                             const std::vector<std::vector<double>>& tables,
                                              const std::vector<signed char>& peakConfirmed,
                                              const std::vector<unsigned char>& done, bool paired = false);
 

@@ -12,6 +12,10 @@
 #include <utility>
 #include <vector>
 
+namespace gradfric {
+class RunParameters;  // core/options.hpp
+}  // namespace gradfric
+
 namespace gradfric::io {
 
 // One resolved option of a scene.
@@ -45,5 +49,8 @@ void attachScale(hid_t dataset, hid_t scale, unsigned dim);
 // The option record (see above) as group `name` of parent. Collective in a parallel file.
 void writeOptionRecord(hid_t parent, const char* name, const std::vector<Attribute>& options);
 std::vector<Attribute> readOptionRecord(hid_t parent, const char* name);
+// Every option a run resolved, as the record stores it: the name without its leading dash, the
+// value and unit as printed, the origin as text (default, set, derived).
+std::vector<Attribute> optionAttributes(const RunParameters& record);
 
 }  // namespace gradfric::io

@@ -1,6 +1,7 @@
 #pragma once
 // Datasets of the gradfric files: created allocated and filled (so that later writes by one rank
 // touch no metadata), written and read whole or by hyperslab.
+#include "gradfric/io/hdf5_attributes.hpp"
 #include "gradfric/io/hdf5_handle.hpp"
 
 #include <algorithm>
@@ -21,6 +22,17 @@ H5Dataset createDataset(hid_t parent, const char* name, hid_t fileType, hid_t me
   GF_H5(H5Pset_fill_time(dcpl, H5D_FILL_TIME_ALLOC));
   GF_H5(H5Pset_fill_value(dcpl, memType, &fill));
   return H5Dataset(GF_H5(H5Dcreate2(parent, name, fileType, space, H5P_DEFAULT, dcpl, H5P_DEFAULT)));
+}
+
+// createDataset with its units and description set and scales[i] attached along dimension i.
+template <typename T>
+H5Dataset createDescribedDataset(hid_t parent, const char* name, hid_t fileType, hid_t memType,
+                                 const std::vector<hsize_t>& dims, T fill, const std::string& units,
+                                 const std::string& description, const std::vector<hid_t>& scales) {
+  H5Dataset d = createDataset(parent, name, fileType, memType, dims, fill);
+  describe(d, units, description);
+  for (unsigned i = 0; i < scales.size(); ++i) attachScale(d, scales[i], i);
+  return d;
 }
 
 // Fixed-width, null-padded strings, allocated at creation.

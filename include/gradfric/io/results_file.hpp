@@ -12,12 +12,12 @@
 // The layout is documented field by field in docs/ensemble.md.
 #include "gradfric/io/hdf5_attributes.hpp"
 #include "gradfric/io/hdf5_handle.hpp"
-#include "gradfric/physics/friction_history.hpp"
 #include "gradfric/io/provenance.hpp"
+#include "gradfric/io/results_schema.hpp"
+#include "gradfric/physics/friction_history.hpp"
 
 #include <mpi.h>
 
-#include <array>
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -33,6 +33,16 @@ inline constexpr const char* kFormatName = "gradfric-sbm-ensemble";
 // The same layout filled by a sweep of finite-element runs (gradfric-fem, one run per point).
 inline constexpr const char* kFemSweepFormatName = "gradfric-fem-sweep";
 
+// A per-point column of /statistics: real (float64, NaN until written) or integer (int32), with
+// its units, description and further text attributes (`interval`, `basis`).
+struct StatisticColumn {
+  std::string name;
+  std::string units = "1";
+  std::string description;
+  bool integer = false;
+  std::vector<std::pair<std::string, std::string>> attributes;
+};
+
 struct EnsembleLayout {
   std::string format = kFormatName;  // the root attribute `format`: kFormatName or kFemSweepFormatName
   int points = 0;        // P sweep points
@@ -42,12 +52,9 @@ struct EnsembleLayout {
   bool firstSlipMap = false;
   bool frictionFields = false;  // /maps/mu_s_local, mu_k_local: each realisation's local coefficients
   std::vector<double> snapshotTimes;  // requested sigma_x/p snapshot times [s] (S of them)
-  // Names of the per-point statistics columns (/statistics/<name>), real and integer.
-  std::vector<std::string> statisticsReal;
-  std::vector<std::string> statisticsInteger;
-  // Text attributes of statistics columns known before the run: (column, attribute, value), e.g.
-  // the basis of each point's discretisation bar.
-  std::vector<std::array<std::string, 3>> statisticsNotes;
+  // The per-point columns of /statistics (ensemble/statistics_columns.hpp makes them); read
+  // back from a file, a column has its name, type, units and description.
+  std::vector<StatisticColumn> statistics;
 };
 
 // One row per sweep point.
@@ -153,10 +160,10 @@ private:
   H5File file_;
   EnsembleLayout layout_;
   SweepTable sweep_;
-  H5Dataset muStatic_, muKinetic_, peakTime_, endTime_, peakConfirmed_, steps_, redrawn_, done_;
-  H5Dataset wallSeconds_, taskRank_;
-  H5Dataset historyTime_, historyMu_, historyForceX_, historyForceY_, historyLength_;
-  H5Dataset firstSlip_, localStatic_, localKinetic_, snapshotTime_, snapshots_;
+  // The task datasets (results_schema.hpp) and their open handles, in the same order.
+  std::vector<TaskDataset> schema_;
+  std::vector<H5Dataset> taskData_;
+  hid_t taskDataset(const std::string& path) const;
   H5PropertyList independent_;
 };
 

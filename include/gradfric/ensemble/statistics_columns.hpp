@@ -1,0 +1,31 @@
+#pragma once
+// The /statistics columns of every ensemble and FEM sweep file, generated from the observable
+// table (physics/observables.hpp): their names, units, descriptions and interval attributes, and
+// their values from the statistics of each point. One list for the writers (gradfric, the FEM
+// sweep) and the layout; nothing parses a column's name back.
+#include "gradfric/ensemble/statistics.hpp"
+#include "gradfric/io/results_file.hpp"
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace gradfric::ensemble {
+
+// finished, then per observable with statistics <name>_mean, _std, _stderr, _ci95_low, _ci95_high,
+// _relative, _relative_ci95 (real) and <name>_count (integer), then peaks_unconfirmed.
+std::vector<io::StatisticColumn> statisticsColumns();
+// A discretisation bar column of an observable: term "error" (the total, relative), "lattice" or
+// "dt" (its terms); NaN where not measured.
+io::StatisticColumn discretisationColumn(const std::string& observable, const std::string& term);
+// The precision target's columns (-ensemble_target): the half-width reached and whether it was met.
+std::vector<io::StatisticColumn> targetColumns();
+
+// The values of statisticsColumns() for every point, as ResultsFile::writeStatistics takes them.
+struct StatisticsValues {
+  std::vector<std::pair<std::string, std::vector<double>>> real;
+  std::vector<std::pair<std::string, std::vector<int>>> integer;
+};
+StatisticsValues statisticsValues(const std::vector<PointStatistics>& statistics);
+
+}  // namespace gradfric::ensemble

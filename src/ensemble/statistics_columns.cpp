@@ -1,0 +1,105 @@
+// The /statistics columns (include/gradfric/ensemble/statistics_columns.hpp).
+#include "gradfric/ensemble/statistics_columns.hpp"
+
+#include "gradfric/physics/observables.hpp"
+
+namespace gradfric::ensemble {
+
+namespace {
+
+const char* kMeanInterval = "95 % Student t, n - 1 degrees of freedom";
+const char* kRelativeInterval =
+    "95 % Student t half-width: the propagated standard error x t(0.975, min(n, n_0) - 1), or with common random "
+    "numbers the paired differences' x t(0.975, pairs - 1)";
+
+// One real column of an observable's statistics (docs/ensemble.md has the formulas).
+struct Column {
+  const char* suffix;
+  bool inObservableUnit;  // else a pure number (relative variations)
+  std::string (*describe)(const std::string& of);
+  const char* interval;  // "" if the column is not an interval
+  double (*value)(const ObservableStatistics&);
+};
+
+const Column kColumns[] = {
+    {"mean", true, [](const std::string& of) { return "mean of " + of + " over the finished realisations"; }, "",
+     [](const ObservableStatistics& s) { return s.summary.mean; }},
+    {"std", true, [](const std::string& of) { return "sample standard deviation (n - 1) of " + of; }, "",
+     [](const ObservableStatistics& s) { return s.summary.stdDev; }},
+    {"stderr", true, [](const std::string& of) { return "standard error of the mean of " + of; }, "",
+     [](const ObservableStatistics& s) { return s.summary.stdError; }},
+    {"ci95_low", true,
+     [](const std::string& of) { return "lower end of the 95 % confidence interval of the mean of " + of; },
+     kMeanInterval, [](const ObservableStatistics& s) { return s.summary.ciLow; }},
+    {"ci95_high", true,
+     [](const std::string& of) { return "upper end of the 95 % confidence interval of the mean of " + of; },
+     kMeanInterval, [](const ObservableStatistics& s) { return s.summary.ciHigh; }},
+    {"relative", false,
+     [](const std::string& of) { return "(" + of + " - " + of + "_0) / " + of + "_0 against /sweep/reference_point"; },
+     "", [](const ObservableStatistics& s) { return s.relative.value; }},
+    {"relative_ci95", false, [](const std::string& of) { return "95 % confidence half-width of " + of + "_relative"; },
+     kRelativeInterval, [](const ObservableStatistics& s) { return s.relative.halfWidth; }},
+};
+
+io::StatisticColumn column(std::string name, std::string units, std::string description, bool integer = false,
+                           const std::string& interval = "") {
+  io::StatisticColumn c{std::move(name), std::move(units), std::move(description), integer, {}};
+  if (!interval.empty()) c.attributes.emplace_back("interval", interval);
+  return c;
+}
+
+}  // namespace
+
+std::vector<io::StatisticColumn> statisticsColumns() {
+  std::vector<io::StatisticColumn> out{column("finished", "1", "realisations finished", true)};
+  for (const Observable& o : statisticsObservables()) {
+    for (const Column& c : kColumns)
+      out.push_back(column(o.name + "_" + c.suffix, c.inObservableUnit ? o.unit : "1", c.describe(o.name), false,
+                           c.interval));
+    out.push_back(column(o.name + "_count", "1", "finite values of " + o.name + " used for the statistics", true));
+  }
+  out.push_back(column("peaks_unconfirmed", "1", "realisations whose peak was not confirmed before -sbm_t_max", true));
+  return out;
+}
+
+io::StatisticColumn discretisationColumn(const std::string& observable, const std::string& term) {
+  const std::string description =
+      term == "error"     ? "relative discretisation error bound of " + observable +
+                                " at the point's settings (NaN: not measured)"
+      : term == "lattice" ? "its lattice term (N_b ladder), relative (NaN: not measured)"
+                          : "its time-step term, relative (NaN: not measured)";
+  return column(observable + "_discretisation_" + term, "1", description, false,
+                "bound from the convergence study (GCI with safety factor 1.25 and time-step term), not a "
+                "statistical interval");
+}
+
+std::vector<io::StatisticColumn> targetColumns() {
+  return {column("target_half_width", "1",
+                 "95 % CI half-width reached of the quantity -ensemble_target bounds (-ensemble_target_type)", false,
+                 "95 % Student t half-width (as mu_s_ci95_* and mu_s_relative_ci95)"),
+          column("target_met", "1", "1 if the point met -ensemble_target, 0 if it stopped at -ensemble_target_max",
+                 true)};
+}
+
+StatisticsValues statisticsValues(const std::vector<PointStatistics>& statistics) {
+  StatisticsValues out;
+  auto integer = [&](const std::string& name, auto get) {
+    std::vector<int> v;
+    for (const auto& s : statistics) v.push_back(get(s));
+    out.integer.emplace_back(name, v);
+  };
+  integer("finished", [](const PointStatistics& s) { return s.finished; });
+  const std::vector<Observable> rows = statisticsObservables();
+  for (std::size_t o = 0; o < rows.size(); ++o) {
+    for (const Column& c : kColumns) {
+      std::vector<double> v;
+      for (const auto& s : statistics) v.push_back(c.value(s.observables.at(o)));
+      out.real.emplace_back(rows[o].name + "_" + c.suffix, v);
+    }
+    integer(rows[o].name + "_count", [o](const PointStatistics& s) { return s.observables.at(o).summary.count; });
+  }
+  integer("peaks_unconfirmed", [](const PointStatistics& s) { return s.peaksUnconfirmed; });
+  return out;
+}
+
+}  // namespace gradfric::ensemble
