@@ -121,6 +121,8 @@ void printPlan(MPI_Comm comm, const FemRun& run, const PlateModel& model, RunPar
               describeFrictionState(params).c_str(), model.timeStep(), model.stableTimeStep(), describeDamping(params).c_str());
   if (!params.edge.uniform())
     PetscPrintf(comm, "  in-plane mesh: %s\n", describeEdgeGrading(params.edge, params.nx, params.plate.length).c_str());
+  for (const Layer* layer : model.layers())  // the physics terms of the right-hand side, in their order
+    PetscPrintf(comm, "  layer %s: %s\n", layer->name(), layer->describe().c_str());
   if (run.grading.fields)
     for (const auto& line : describeFields(*run.grading.fields)) PetscPrintf(comm, "  %s\n", line.c_str());
 }

@@ -11,7 +11,8 @@ What open() returns, by the file's `format` (attribute Dataset.attrs["format"]):
       (history sample times) along (point, realisation, sample), x and y the block centres [m].
       /realisations, /statistics, /history and /maps keep their names (mu_s, mu_s_mean, mu,
       first_slip_time, ...); /properties and /run are prefixed (properties_mu_s, run_wall_seconds).
-  gradfric-fem-history (docs/fem.md): dim time (mu, force_x, ...), x (properties_E, ...), with
+  gradfric-fem-history (docs/fem.md): dim time (mu, force_x, ...), x (properties_E), node_x
+      (properties_mu_s, ...: the values the physics used, format 4), with
       property fields y (fields_mu_s_map, ...), node_x/node_y (pressure_response_g); each
       /results attribute as a 0-d variable (mu_s, peak_time, ...).
   gradfric-accuracy-study (docs/accuracy.md): dims ladder, rung; setting, mu_s_error, ...

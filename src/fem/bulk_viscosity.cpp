@@ -2,6 +2,9 @@
 
 #include "gradfric/core/petsc_call.hpp"
 #include "gradfric/fem/hex_element.hpp"
+#include "gradfric/fem/state_view.hpp"
+
+#include <cstdio>
 
 #include <algorithm>
 #include <cmath>
@@ -27,21 +30,18 @@ double bulkViscousStress(double linear, double quadratic, double density, double
   return stress;
 }
 
-BulkViscosity::BulkViscosity(const PlateMesh& mesh, double youngsModulus, double poissonRatio, double density,
-                             double linear, double quadratic, const Grading& grading)
+BulkViscosity::BulkViscosity(const PlateMesh& mesh, const PlateProperties& properties, double linear,
+                             double quadratic)
     : mesh_(mesh),
       linear_(linear),
       quadratic_(quadratic),
-      density_(density) {
-  if (!active()) return;
+      density_(properties.plate().density) {
   for (const std::array<double, 3>& h : mesh.shapes())
     shapes_.push_back({std::min({h[0], h[1], h[2]}), h[0] * h[1] * h[2], boxMeanShapeGradients(h[0], h[1], h[2])});
-  const double plateLength = mesh.size().length;
   cellSpeed_.resize(mesh.localCells());
   for (PetscInt c = 0; c < mesh.localCells(); ++c) {
-    const Lame lame =
-        lameFromYoung(youngsModulus * grading.modulusFactor(mesh.cellCentres()[c][0] / plateLength), poissonRatio);
-    cellSpeed_[c] = std::sqrt((lame.lambda + 2 * lame.mu) / density);
+    const Lame lame = lameFromYoung(properties.cellModulus()[c], properties.plate().poissonRatio);
+    cellSpeed_[c] = std::sqrt((lame.lambda + 2 * lame.mu) / density_);
   }
   GF_CALL(DMCreateLocalVector(mesh.dm(), xLocal_.out()));
   GF_CALL(VecDuplicate(xLocal_, fLocal_.out()));
@@ -53,44 +53,61 @@ BulkViscosity::BulkViscosity(const PlateMesh& mesh, double youngsModulus, double
 double BulkViscosity::cellForce(PetscInt c, const PetscScalar* x, std::array<double, 24>* w) const {
   const PetscInt* o = mesh_.cellStateOffsets().data() + 8 * c;
   const Shape& shape = shapes_[mesh_.cellShape()[c]];
+  const StateView<const PetscScalar> state(x);
   double rate = 0;
   for (int a = 0; a < 8; ++a)
-    for (int d = 0; d < 3; ++d) rate += x[o[a] + 3 + d] * shape.gradient[a][d];
+    for (int d = 0; d < 3; ++d) rate += state.velocityAt(o[a])[d] * shape.gradient[a][d];
   const double stress = bulkViscousStress(linear_, quadratic_, density_, cellSpeed_[c], shape.length, rate);
   for (int a = 0; a < 8; ++a)
     for (int d = 0; d < 3; ++d) (*w)[3 * a + d] = shape.volume * stress * shape.gradient[a][d];
   return shape.volume * stress * rate;
 }
 
-void BulkViscosity::addForce(Vec X, Vec F, ExactSum* energy, double dt) {
-  if (!active()) return;
+void BulkViscosity::addForce(const LayerContext& ctx, Vec X, Vec F, ContactSums&) {
+  step_ = ExactSum();
   GF_CALL(DMGlobalToLocal(mesh_.dm(), X, INSERT_VALUES, xLocal_));
   GF_CALL(VecZeroEntries(fLocal_));
-  const PetscScalar* x = nullptr;
-  PetscScalar* fl = nullptr;
-  GF_CALL(VecGetArrayRead(xLocal_, &x));
-  GF_CALL(VecGetArray(fLocal_, &fl));
-  const std::vector<PetscInt>& off = mesh_.cellStateOffsets();
-  std::array<double, 24> w;
-  for (PetscInt c = 0; c < mesh_.localCells(); ++c) {
-    energy->add(cellForce(c, x, &w) * dt);
-    for (int a = 0; a < 8; ++a)
-      for (int d = 0; d < 3; ++d) fl[off[8 * c + a] + 3 + d] -= w[3 * a + d];
+  const ReadState x(xLocal_);
+  {
+    const WriteState fl(fLocal_);
+    const std::vector<PetscInt>& off = mesh_.cellStateOffsets();
+    std::array<double, 24> w;
+    for (PetscInt c = 0; c < mesh_.localCells(); ++c) {
+      step_.add(cellForce(c, x.data(), &w) * ctx.dt);
+      for (int a = 0; a < 8; ++a)
+        for (int d = 0; d < 3; ++d) fl.forceAt(off[8 * c + a])[d] -= w[3 * a + d];
+    }
   }
-  GF_CALL(VecRestoreArray(fLocal_, &fl));
   GF_CALL(VecZeroEntries(fGlobal_));
   GF_CALL(DMLocalToGlobal(mesh_.dm(), fLocal_, ADD_VALUES, fGlobal_));
-  PetscScalar* g = nullptr;  // the sums at the shared vertices in the global cell order
-  GF_CALL(VecGetArray(fGlobal_, &g));
-  mesh_.orderedAssembly().redo(
-      3, [&](PetscInt c, double* values) {
-        cellForce(c, x, &w);
-        for (int i = 0; i < 24; ++i) values[i] = -w[i];  // f - w is f + (-w), bit for bit
-      },
-      g, 6, 3);
-  GF_CALL(VecRestoreArray(fGlobal_, &g));
-  GF_CALL(VecRestoreArrayRead(xLocal_, &x));
+  {
+    const WriteState g(fGlobal_);  // the sums at the shared vertices in the global cell order
+    std::array<double, 24> w;
+    mesh_.orderedAssembly().redo(
+        3, [&](PetscInt c, double* values) {
+          cellForce(c, x.data(), &w);
+          for (int i = 0; i < 24; ++i) values[i] = -w[i];  // f - w is f + (-w), bit for bit
+        },
+        g.data(), StateLayout::kBlock, StateLayout::kVelocity);
+  }
   GF_CALL(VecAXPY(F, 1.0, fGlobal_));  // only the force slots of fGlobal are non-zero
+}
+
+LayerWork BulkViscosity::work() const {
+  LayerWork w;
+  w.rankShare = work_;
+  return w;
+}
+
+std::string BulkViscosity::describe() const {
+  char text[160];
+  std::snprintf(text, sizeof text, "b1 %.3g, b2 %.3g (Abaqus/Explicit's form, on the volumetric strain rate)", linear_,
+                quadratic_);
+  return text;
+}
+
+void BulkViscosity::writeProperties(PropertySink& sink) const {
+  sink.cellField("c_d", "m/s", "dilatational wave speed of the cell (bulk viscosity)", cellSpeed_);
 }
 
 }  // namespace gradfric::fem

@@ -3,7 +3,9 @@
 #include "gradfric/core/gather.hpp"
 #include "gradfric/core/petsc_call.hpp"
 #include "gradfric/core/reproducible_sum.hpp"
-#include "gradfric/fem/mesh_sites.hpp"
+#include "gradfric/fem/log_events.hpp"
+#include "gradfric/fem/lumped_mass.hpp"
+#include "gradfric/fem/state_view.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -11,50 +13,40 @@
 
 namespace gradfric::fem {
 
-ContactBoundary::ContactBoundary(const PlateMesh& mesh, const PenaltyStiffness& stiffness, double muStatic,
-                                 double muKinetic, const FrictionLawSettings& law, const Grading& grading,
-                                 double memoryLength, bool healingOnly)
-    : comm_(mesh.comm()), stiffness_(stiffness) {
-  const double length = mesh.size().length;
-  const std::vector<double> area = mesh.sumOverFaces(FaceSet::Bottom);
-  // The property fields (or the bands) at the bottom faces' centres; mu_k has its own sum only
-  // when a field gives it its own factor.
-  const PropertySampler sampler = meshSampler(grading, mesh);
-  const std::vector<double> graded = mesh.sumOverFaces(
-      FaceSet::Bottom, [&](double x, double y) { return sampler.muStatic(x / length, y / length); });
-  const bool ownKinetic = grading.fields && grading.fields->muKinetic != grading.fields->muStatic;
-  const std::vector<double> gradedKinetic =
-      ownKinetic ? mesh.sumOverFaces(FaceSet::Bottom,
-                                     [&](double x, double y) { return sampler.muKinetic(x / length, y / length); })
-                 : graded;
+ContactBoundary::ContactBoundary(const PlateProperties& properties, MPI_Comm comm, const ContactSettings& settings)
+    : comm_(comm), settings_(settings), stiffness_(settings.stiffness) {
   FrictionSites sites;
   sites.layout = SiteLayout::PerSite;
-  for (const OwnedVertex& v : mesh.ownedVertices()) {
-    if (!(area[v.block] > 0)) continue;
-    const double factor = graded[v.block] / area[v.block];  // area-weighted band factor
-    nodes_.push_back(Node{v.block, v.x, v.y, area[v.block]});
-    sites.staticStrength.push_back(muStatic * factor);
-    sites.kineticStrength.push_back(muKinetic * (gradedKinetic[v.block] / area[v.block]));
+  for (const BottomNode& b : properties.bottomNodes()) {
+    nodes_.push_back(Node{b.block, b.x, b.y, b.area});
+    sites.staticStrength.push_back(b.muStatic);
+    sites.kineticStrength.push_back(b.muKinetic);
   }
   sites.columns = static_cast<int>(nodes_.size());
-  law_ = makeContactLaw(law, std::move(sites), nodes_.size(), memoryLength, healingOnly);
+  law_ = makeContactLaw(settings.law, std::move(sites), nodes_.size(), settings.memoryLength, settings.healingOnly);
 }
 
-ContactSums ContactBoundary::addForce(Vec X, Vec F, double dt) {
-  const PetscScalar* x = nullptr;
-  PetscScalar* f = nullptr;
-  GF_CALL(VecGetArrayRead(X, &x));
-  GF_CALL(VecGetArray(F, &f));
-  ContactSums totals;
+void ContactBoundary::addForce(const LayerContext& ctx, Vec X, Vec F, ContactSums& sums) {
+  const LogEventScope timed(femLogEvents().contact);
+  if (settings_.kinematic)
+    addKinematicForce(X, F, ctx.mass->perBlock(), ctx.damping, ctx.dt, sums);
+  else
+    addPenaltyForce(X, F, ctx.dt, sums);
+}
+
+void ContactBoundary::addPenaltyForce(Vec X, Vec F, double dt, ContactSums& totals) {
+  const ReadState x(X);
+  const WriteState f(F);
   visitContactLaw(law_, [&](auto& law) {
     const bool state = hasSlipState(law);
     for (std::size_t site = 0; site < nodes_.size(); ++site) {
       Node& n = nodes_[site];
-      const PetscScalar* xb = x + 6 * n.block;
+      const PetscScalar* u = x.displacement(n.block);
+      const PetscScalar* v = x.velocity(n.block);
       const bool wasSlipping = n.state == ContactState::Slip;
-      const double slip = wasSlipping && state ? tangentialStep(n, xb) : 0.0;
-      const ContactTraction r = penaltyContact(stiffness_, law, static_cast<int>(site), xb[2], xb[0], xb[1], n.anchorX,
-                                               n.anchorY, xb[3], xb[4], wasSlipping, slip, dt);
+      const double slip = wasSlipping && state ? tangentialStep(n, u) : 0.0;
+      const ContactTraction r = penaltyContact(stiffness_, law, static_cast<int>(site), u[2], u[0], u[1], n.anchorX,
+                                               n.anchorY, v[0], v[1], wasSlipping, slip, dt);
       keepSlipState(law, static_cast<int>(site), r.state, r.strength);
       n.pendingX = r.anchorX;
       n.pendingY = r.anchorY;
@@ -62,59 +54,51 @@ ContactSums ContactBoundary::addForce(Vec X, Vec F, double dt) {
       n.pressure = r.pressure;
       n.tx = r.tx;
       n.ty = r.ty;
-      applyNodeForce(n, xb, f + 6 * n.block, n.area * r.tx, n.area * r.ty, n.area * r.pressure, totals);
+      applyNodeForce(n, u, f.force(n.block), n.area * r.tx, n.area * r.ty, n.area * r.pressure, totals);
     }
   });
-  totals.nodes = static_cast<long long>(nodes_.size());
-  GF_CALL(VecRestoreArrayRead(X, &x));
-  GF_CALL(VecRestoreArray(F, &f));
-  return totals;
+  totals.nodes += static_cast<long long>(nodes_.size());
 }
 
-ContactSums ContactBoundary::addKinematicForce(Vec X, Vec F, const std::vector<double>& mass,
-                                                 const SlidingDamping& damping, double dt) {
-  const PetscScalar* x = nullptr;
-  PetscScalar* f = nullptr;
-  GF_CALL(VecGetArrayRead(X, &x));
-  GF_CALL(VecGetArray(F, &f));
-  ContactSums totals;
+void ContactBoundary::addKinematicForce(Vec X, Vec F, const std::vector<double>& mass, const SlidingDamping& damping,
+                                        double dt, ContactSums& totals) {
+  const ReadState x(X);
+  const WriteState f(F);
   visitContactLaw(law_, [&](auto& law) {
     const bool state = hasSlipState(law);
     for (std::size_t site = 0; site < nodes_.size(); ++site) {
       Node& n = nodes_[site];
-      const PetscScalar* xb = x + 6 * n.block;
-      PetscScalar* fb = f + 6 * n.block;
+      const PetscScalar* u = x.displacement(n.block);
+      const PetscScalar* xv = x.velocity(n.block);
+      PetscScalar* fb = f.force(n.block);
       const double m = mass[n.block];
-      const double v[3] = {xb[3], xb[4], xb[5]};
-      const double aFree[3] = {fb[3] / m + damping.acceleration(v, 0), fb[4] / m + damping.acceleration(v, 1),
-                               fb[5] / m + damping.acceleration(v, 2)};
-      const double slip = state ? tangentialStep(n, xb) : 0.0;
-      const KinematicContactForce r = kinematicContact(law, static_cast<int>(site), m, dt, xb[2], v, aFree, slip);
+      const double v[3] = {xv[0], xv[1], xv[2]};
+      const double aFree[3] = {fb[0] / m + damping.acceleration(v, 0), fb[1] / m + damping.acceleration(v, 1),
+                               fb[2] / m + damping.acceleration(v, 2)};
+      const double slip = state ? tangentialStep(n, u) : 0.0;
+      const KinematicContactForce r = kinematicContact(law, static_cast<int>(site), m, dt, u[2], v, aFree, slip);
       keepSlipState(law, static_cast<int>(site), r.state, r.strength);
       n.pendingState = r.state;
       n.pressure = r.fn / n.area;
       n.tx = r.fx / n.area;
       n.ty = r.fy / n.area;
-      applyNodeForce(n, xb, fb, r.fx, r.fy, r.fn, totals);
+      applyNodeForce(n, u, fb, r.fx, r.fy, r.fn, totals);
     }
   });
-  totals.nodes = static_cast<long long>(nodes_.size());
-  GF_CALL(VecRestoreArrayRead(X, &x));
-  GF_CALL(VecRestoreArray(F, &f));
-  return totals;
+  totals.nodes += static_cast<long long>(nodes_.size());
 }
 
 // Both contact methods end the same way: the node's force is kept for the work of the step, added
-// to its block's right-hand side and counted (n.pendingState is set by the caller).
-void ContactBoundary::applyNodeForce(Node& n, const PetscScalar* xb, PetscScalar* fb, double fx, double fy, double fz,
-                                     ContactSums& totals) {
+// to its block's force slots and counted (n.pendingState is set by the caller).
+void ContactBoundary::applyNodeForce(Node& n, const PetscScalar* u, PetscScalar* force, double fx, double fy,
+                                     double fz, ContactSums& totals) {
   n.pendingForce[0] = fx;
   n.pendingForce[1] = fy;
   n.pendingForce[2] = fz;
-  for (int d = 0; d < 3; ++d) n.pendingU[d] = xb[d];
-  fb[3] += fx;
-  fb[4] += fy;
-  fb[5] += fz;
+  for (int d = 0; d < 3; ++d) n.pendingU[d] = u[d];
+  force[0] += fx;
+  force[1] += fy;
+  force[2] += fz;
   totals.fx.add(fx);
   totals.fy.add(fy);
   totals.fn.add(fz);
@@ -125,8 +109,8 @@ void ContactBoundary::applyNodeForce(Node& n, const PetscScalar* xb, PetscScalar
 }
 
 // The node's tangential displacement since the last commit: its slip over the step when it slides.
-double ContactBoundary::tangentialStep(const Node& n, const PetscScalar* xb) {
-  return std::hypot(xb[0] - n.u[0], xb[1] - n.u[1]);
+double ContactBoundary::tangentialStep(const Node& n, const PetscScalar* u) {
+  return std::hypot(u[0] - n.u[0], u[1] - n.u[1]);
 }
 
 double ContactBoundary::committedStrength(int site) const {
@@ -135,10 +119,39 @@ double ContactBoundary::committedStrength(int site) const {
   return strength;
 }
 
-double ContactBoundary::work() const {
+double ContactBoundary::contactWork() const {
   ExactSum total;  // the nodes' own sums, added exactly: the same bits on any number of ranks
   for (const Node& n : nodes_) total.add(n.work);
   return sumOverRanks(comm_, total);
+}
+
+LayerWork ContactBoundary::work() const {
+  LayerWork w;  // over ranks already, subtracted after the exact sums (the balance's bits)
+  w.overRanks = -contactWork();
+  w.hasOverRanks = true;
+  return w;
+}
+
+std::string ContactBoundary::describe() const {
+  return std::string(settings_.kinematic ? "kinematic" : "penalty") + " contact with the rigid plane, friction law " +
+         settings_.law.name + ", one site per bottom node";
+}
+
+void ContactBoundary::writeProperties(PropertySink& sink) const {
+  std::vector<PetscInt> blocks;
+  std::vector<double> muS, muK;
+  visitContactLaw(law_, [&](const auto& law) {
+    const FrictionSites& sites = sitesOf(law);
+    for (std::size_t site = 0; site < nodes_.size(); ++site) {
+      const int slot = sites.slotOfSite(static_cast<int>(site));
+      blocks.push_back(nodes_[site].block);
+      muS.push_back(sites.staticAt(slot));
+      muK.push_back(sites.kineticAt(slot));
+    }
+  });
+  const char* how = "of the bottom node: the area-weighted mean of its faces' factors";
+  sink.nodeField("mu_s", "1", std::string("local static coefficient ") + how, blocks, muS);
+  sink.nodeField("mu_k", "1", std::string("local kinetic coefficient ") + how, blocks, muK);
 }
 
 double ContactBoundary::largestStaticCoefficient() const {
@@ -225,18 +238,16 @@ double ContactBoundary::largestSlipPerStep(double until) const {
 }
 
 void ContactBoundary::penetration(Vec X, double* mean, double* minimum, double* maximum) const {
-  const PetscScalar* x = nullptr;
-  GF_CALL(VecGetArrayRead(X, &x));
   ExactSum s[2];
   double lo = 1e300, hi = -1e300;
+  const ReadState x(X);
   for (const Node& n : nodes_) {
-    const double pen = -x[6 * n.block + 2];
+    const double pen = -x.displacement(n.block)[2];
     s[0].add(pen);
     s[1].add(1);
     lo = std::min(lo, pen);
     hi = std::max(hi, pen);
   }
-  GF_CALL(VecRestoreArrayRead(X, &x));
   allreduceExact(comm_, s, 2);
   const double sum[2] = {s[0].value(), s[1].value()};
   GF_CALL_MPI(MPI_Allreduce(MPI_IN_PLACE, &lo, 1, MPI_DOUBLE, MPI_MIN, comm_));

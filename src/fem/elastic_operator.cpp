@@ -3,7 +3,7 @@
 #include "gradfric/core/petsc_call.hpp"
 #include "gradfric/core/reproducible_sum.hpp"
 #include "gradfric/fem/log_events.hpp"
-#include "gradfric/fem/mesh_sites.hpp"
+#include "gradfric/fem/state_view.hpp"
 
 #include <algorithm>
 #include <numeric>
@@ -28,19 +28,17 @@ const FemLogEvents& femLogEvents() {
   return events;
 }
 
-ElasticOperator::ElasticOperator(const PlateMesh& mesh, double youngsModulus, double poissonRatio,
-                                 double stiffnessDamping, const Grading& grading, ElementType element,
-                                 bool blockedKernel)
+ElasticOperator::ElasticOperator(const PlateMesh& mesh, const PlateProperties& properties,
+                                 const ElasticSettings& settings)
     : mesh_(mesh),
-      beta_(stiffnessDamping) {
+      settings_(settings),
+      beta_(settings.stiffnessDamping),
+      cellModulus_(properties.cellModulus()) {
   evKernel_ = femLogEvents().elastic;
   evGeneric_ = femLogEvents().generic;
-  const double length = mesh.size().length;
-  cellModulus_.resize(mesh.localCells());
-  const PropertySampler sampler = meshSampler(grading, mesh);  // field or bands at the cell centroid
-  for (PetscInt c = 0; c < mesh.localCells(); ++c)
-    cellModulus_[c] = youngsModulus * sampler.modulus(mesh.cellCentres()[c][0] / length, mesh.cellCentres()[c][1] / length);
-  blocked_ = blockedKernel;
+  const double poissonRatio = settings.poissonRatio;
+  const ElementType element = settings.element;
+  blocked_ = settings.blockedKernel;
   for (const std::array<double, 3>& h : mesh.shapes()) {
     elements_.push_back(makeBoxElement(h[0], h[1], h[2], poissonRatio, element));
     const std::array<double, 576>& k = elements_.back().stiffness;
@@ -116,22 +114,20 @@ void ElasticOperator::shuffleCellOrder(unsigned seed) {
   shuffledShape_ = std::move(shape);
 }
 
-void ElasticOperator::setForce(Vec X, Vec F) {
+void ElasticOperator::addForce(const LayerContext& ctx, Vec X, Vec F, ContactSums&) {
   const PetscInt blocks = mesh_.ownedBlocks();
   {
-    const PetscScalar* x = nullptr;
+    const ReadState x(X);
     PetscScalar* u = nullptr;
-    GF_CALL(VecGetArrayRead(X, &x));
     GF_CALL(VecGetArray(uGlobal_, &u));
     if (beta_ != 0.0) {
       for (PetscInt b = 0; b < blocks; ++b)
-        for (int d = 0; d < 3; ++d) u[3 * b + d] = x[6 * b + d] + beta_ * x[6 * b + 3 + d];
+        for (int d = 0; d < 3; ++d) u[3 * b + d] = x.displacement(b)[d] + beta_ * x.velocity(b)[d];
     } else {
       for (PetscInt b = 0; b < blocks; ++b)
-        for (int d = 0; d < 3; ++d) u[3 * b + d] = x[6 * b + d];
+        for (int d = 0; d < 3; ++d) u[3 * b + d] = x.displacement(b)[d];
     }
     GF_CALL(VecRestoreArray(uGlobal_, &u));
-    GF_CALL(VecRestoreArrayRead(X, &x));
   }
   GF_CALL(DMGlobalToLocal(dmU_, uGlobal_, INSERT_VALUES, uLocal_));
   kernelForce(uLocal_, fLocalU_);
@@ -139,14 +135,53 @@ void ElasticOperator::setForce(Vec X, Vec F) {
   GF_CALL(DMLocalToGlobal(dmU_, fLocalU_, ADD_VALUES, fGlobal_));
   fixSharedSums(uLocal_, fGlobal_);
   haveForce_ = true;
-  PetscScalar* f = nullptr;
-  const PetscScalar* fe = nullptr;
-  GF_CALL(VecGetArray(F, &f));
-  GF_CALL(VecGetArrayRead(fGlobal_, &fe));
-  for (PetscInt b = 0; b < blocks; ++b)
-    for (int d = 0; d < 3; ++d) f[6 * b + 3 + d] = fe[3 * b + d];
-  GF_CALL(VecRestoreArrayRead(fGlobal_, &fe));
-  GF_CALL(VecRestoreArray(F, &f));
+  {
+    const WriteState f(F);
+    const PetscScalar* fe = nullptr;
+    GF_CALL(VecGetArrayRead(fGlobal_, &fe));
+    if (ctx.setForce) {  // first in the list: no zeroing pass
+      for (PetscInt b = 0; b < blocks; ++b)
+        for (int d = 0; d < 3; ++d) f.force(b)[d] = fe[3 * b + d];
+    } else {
+      for (PetscInt b = 0; b < blocks; ++b)
+        for (int d = 0; d < 3; ++d) f.force(b)[d] += fe[3 * b + d];
+    }
+    GF_CALL(VecRestoreArrayRead(fGlobal_, &fe));
+  }
+  if (settings_.energyAudit && beta_ > 0) stiffnessPower_ = stiffnessDampingPower(X);
+}
+
+// beta v . K v = 2 beta x (the elastic energy of the velocity field taken as a displacement).
+double ElasticOperator::stiffnessDampingPower(Vec X) {
+  if (!velocityAsDisplacement_) GF_CALL(VecDuplicate(X, velocityAsDisplacement_.out()));
+  {
+    const ReadState x(X);
+    const WriteState w(velocityAsDisplacement_);
+    for (PetscInt b = 0; b < mesh_.ownedBlocks(); ++b)
+      for (int d = 0; d < 3; ++d) {
+        w.displacement(b)[d] = x.velocity(b)[d];
+        w.velocity(b)[d] = 0;
+      }
+  }
+  return 2.0 * beta_ * energy(velocityAsDisplacement_);
+}
+
+LayerWork ElasticOperator::work() const {
+  LayerWork w;  // always reported (0 without the audit): the balance's sums as they were
+  w.overRanks = stiffnessWork_;
+  w.hasOverRanks = true;
+  return w;
+}
+
+std::string ElasticOperator::describe() const {
+  std::string text = std::string(settings_.element == ElementType::Trilinear ? "q1" : "q1i") + " hexahedra, " +
+                     (blocked_ ? "blocked" : "dense") + " kernel";
+  if (beta_ > 0) text += ", stiffness-proportional damping " + std::to_string(beta_) + " s";
+  return text;
+}
+
+void ElasticOperator::writeProperties(PropertySink& sink) const {
+  sink.cellField("E", "Pa", "Young's modulus of the cell (the graded E at its centre)", cellModulus_);
 }
 
 // The energy of the displacements the last setForce saw (the blow-up monitor asks after a step,
@@ -156,14 +191,12 @@ void ElasticOperator::setForce(Vec X, Vec F) {
 bool ElasticOperator::lastForceIsFor(Vec X) {
   int mine = haveForce_ && beta_ == 0.0;
   if (mine) {
-    const PetscScalar* x = nullptr;
+    const ReadState x(X);
     const PetscScalar* u = nullptr;
-    GF_CALL(VecGetArrayRead(X, &x));
     GF_CALL(VecGetArrayRead(uGlobal_, &u));
     for (PetscInt b = 0; b < mesh_.ownedBlocks() && mine; ++b)
-      for (int d = 0; d < 3; ++d) mine = mine && u[3 * b + d] == x[6 * b + d];
+      for (int d = 0; d < 3; ++d) mine = mine && u[3 * b + d] == x.displacement(b)[d];
     GF_CALL(VecRestoreArrayRead(uGlobal_, &u));
-    GF_CALL(VecRestoreArrayRead(X, &x));
   }
   int all = 0;
   GF_CALL_MPI(MPI_Allreduce(&mine, &all, 1, MPI_INT, MPI_LAND, mesh_.comm()));
@@ -177,14 +210,12 @@ double ElasticOperator::energy(Vec X) {
       GF_CALL(VecDuplicate(uGlobal_, energyU_.out()));
       GF_CALL(VecDuplicate(uGlobal_, energyF_.out()));
     }
-    const PetscScalar* x = nullptr;
+    const ReadState x(X);
     PetscScalar* u = nullptr;
-    GF_CALL(VecGetArrayRead(X, &x));
     GF_CALL(VecGetArray(energyU_, &u));
     for (PetscInt b = 0; b < mesh_.ownedBlocks(); ++b)
-      for (int d = 0; d < 3; ++d) u[3 * b + d] = x[6 * b + d];
+      for (int d = 0; d < 3; ++d) u[3 * b + d] = x.displacement(b)[d];
     GF_CALL(VecRestoreArray(energyU_, &u));
-    GF_CALL(VecRestoreArrayRead(X, &x));
     forceSpecialised(energyU_, energyF_);
   }
   Vec uVec = last ? uGlobal_.get() : energyU_.get();
@@ -201,17 +232,15 @@ double ElasticOperator::energy(Vec X) {
 
 void ElasticOperator::cellStresses(Vec X, std::vector<std::array<double, 6>>* stress) {
   GF_CALL(DMGlobalToLocal(mesh_.dm(), X, INSERT_VALUES, xLocal_));
-  const PetscScalar* xl = nullptr;
-  GF_CALL(VecGetArrayRead(xLocal_, &xl));
+  const ReadState xl(xLocal_);
   const std::vector<PetscInt>& off = mesh_.cellStateOffsets();
   stress->resize(mesh_.localCells());
   for (PetscInt c = 0; c < mesh_.localCells(); ++c) {
     double ue[24];
     for (int a = 0; a < 8; ++a)
-      for (int d = 0; d < 3; ++d) ue[3 * a + d] = xl[off[8 * c + a] + d];
+      for (int d = 0; d < 3; ++d) ue[3 * a + d] = xl.displacementAt(off[8 * c + a])[d];
     (*stress)[c] = cellAverageStress(elements_[mesh_.cellShape()[c]], cellModulus_[c], ue);
   }
-  GF_CALL(VecRestoreArrayRead(xLocal_, &xl));
 }
 
 // fLocal = -K uLocal on this rank's cells (local vectors of the displacement DM).

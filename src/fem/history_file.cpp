@@ -6,6 +6,7 @@
 #include "gradfric/io/hdf5_attributes.hpp"
 #include "gradfric/io/hdf5_datasets.hpp"
 #include "gradfric/fem/mesh_sites.hpp"
+#include "gradfric/fem/plate_model.hpp"
 
 #include <algorithm>
 #include <limits>
@@ -69,8 +70,9 @@ void writeHistoryFile(hid_t file, const HistoryContent& c) {
   const std::optional<PressureResponseMap>& response = c.response;
   writeStringAttribute(file, "format", "gradfric-fem-history");
   // 2: conventions of the ensemble file; 3: /fields maps 2D and /pressure_response/g on named
-  // axes holding the positions (docs/fem.md)
-  writeIntAttribute(file, "format_version", 3);
+  // axes holding the positions; 4: /properties the values the physics used (the layers'), mu_s
+  // and mu_k per bottom node on node_x (docs/fem.md)
+  writeIntAttribute(file, "format_version", 4);
   writeIntAttribute(file, "complete", 0);
   auto vector = [](hid_t group, const char* name, const std::vector<double>& data, const char* units,
                    const char* description) {
@@ -143,20 +145,12 @@ void writeHistoryFile(hid_t file, const HistoryContent& c) {
                              "steps"})
       writeStringAttribute(units, name, "1");
   }
-  {  // The property fields used: E per cell column, friction per bottom-face column (both vary along x only).
+  {  // The property fields as given (-field_*), sampled at the bottom cells' centres: the input maps.
     const FemParameters& q = model.params();
     const Grading& g = model.grading();
     const MeshAxis columns = meshAxisX(q), rows = meshAxisY(q);  // mapped on a graded mesh
-    const PropertySampler sampler = meshSampler(g, columns, rows);  // the fields (-field_*) or the bands
-    std::vector<double> x, modulus, muS, muK;
-    for (int i = 0; i < q.nx; ++i) {
-      const double centre = columns.unitCentre(i);
-      x.push_back(centre * q.plate.length);
-      modulus.push_back(q.plate.youngsModulus * sampler.modulus(centre, 0.5));
-      muS.push_back(q.plate.muStatic * sampler.muStatic(centre, 0.5));
-      muK.push_back(q.plate.muKinetic * sampler.muKinetic(centre, 0.5));
-    }
     if (g.fields) {  // fields may vary along y: every bottom cell, [ny][nx] row-major
+      const PropertySampler sampler = meshSampler(g, columns, rows);
       std::vector<double> maps[4];
       for (int j = 0; j < q.ny; ++j)
         for (int i = 0; i < q.nx; ++i) {
@@ -186,16 +180,20 @@ void writeHistoryFile(hid_t file, const HistoryContent& c) {
         writeIntAttribute(d, "columns", q.nx);
       }
     }
+    // /properties: the values the physics used, from the layers (property_profiles.hpp): per cell
+    // on the column centres x, per node on the node positions node_x. Before format 4 mu_s and mu_k
+    // were the fields at the column centres; the contact uses each node's area-weighted mean.
     H5Group properties = createGroup(file, "properties");
+    std::vector<double> x, nodeX = model.mesh().axisX().nodes;
+    for (int i = 0; i < q.nx; ++i) x.push_back(columns.unitCentre(i) * q.plate.length);
     H5Dataset column = vector(properties, "x", x, "m", "centre of each cell column along the grading axis x");
     makeDimensionScale(column, "x");
-    const H5Dataset fields[] = {
-        vector(properties, "E", modulus, "Pa", "Young's modulus of every cell of the column"),
-        vector(properties, "mu_s", muS, "1",
-               "local static coefficient of the bottom faces of the column (a node takes the area-weighted mean "
-               "of its faces)"),
-        vector(properties, "mu_k", muK, "1", "local kinetic coefficient of the bottom faces of the column")};
-    for (const auto& d : fields) attachScale(d, column, 0);
+    H5Dataset node = vector(properties, "node_x", nodeX, "m", "position of each node column along x");
+    makeDimensionScale(node, "node_x");
+    for (const PropertyProfile& p : c.properties) {
+      const H5Dataset d = vector(properties, p.name.c_str(), p.values, p.unit.c_str(), p.description.c_str());
+      attachScale(d, p.perNode ? node : column, 0);
+    }
   }
   if (response) writePressureResponse(file, *response);
   {

@@ -2,6 +2,7 @@
 
 #include "gradfric/core/petsc_call.hpp"
 #include "gradfric/core/reproducible_sum.hpp"
+#include "gradfric/fem/state_view.hpp"
 
 namespace gradfric::fem {
 
@@ -20,12 +21,14 @@ double LumpedMass::total() const {
 }
 
 double LumpedMass::kineticEnergy(Vec X) const {
-  const PetscScalar* x = nullptr;
-  GF_CALL(VecGetArrayRead(X, &x));
   ExactSum e;
-  for (std::size_t b = 0; b < mass_.size(); ++b)
-    for (int d = 3; d < 6; ++d) e.add(0.5 * mass_[b] * x[6 * b + d] * x[6 * b + d]);
-  GF_CALL(VecRestoreArrayRead(X, &x));
+  {
+    const ReadState x(X);
+    for (std::size_t b = 0; b < mass_.size(); ++b) {
+      const PetscScalar* v = x.velocity(b);
+      for (int d = 0; d < 3; ++d) e.add(0.5 * mass_[b] * v[d] * v[d]);
+    }
+  }
   return sumOverRanks(comm_, e);
 }
 

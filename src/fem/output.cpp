@@ -210,7 +210,8 @@ void OutputFiles::writeHistory(const PlateModel& model, const FemRunResult& r, c
       PetscPrintf(model.comm(), "gradfric-fem: no /pressure_response in the results file: %s\n", e.what());
     }
   }
-  const HistoryContent content{model, r, record, params_.historyEvery, provenance_, response};
+  const std::vector<PropertyProfile> properties = gatherPropertyProfiles(model);  // collective
+  const HistoryContent content{model, r, record, params_.historyEvery, provenance_, response, properties};
   historyPlan_->writeOnRank0(model.comm(), [&](const std::string& tmp) {
     io::createHdf5File(tmp, historyFileBytes(content), [&](hid_t file) { writeHistoryFile(file, content); });
   });

@@ -2,6 +2,7 @@
 
 #include "gradfric/core/petsc_call.hpp"
 #include "gradfric/fem/partition.hpp"
+#include "gradfric/fem/state_view.hpp"
 
 #include <petscfe.h>
 
@@ -133,10 +134,12 @@ void PlateMesh::buildCells() {
       if (seen[a]) throw std::runtime_error("plate mesh: a cell is not an axis-aligned box");
       seen[a] = true;
       cellVertices_[8 * cell + a] = verts[k] - vStart_;
-      PetscInt soff = 0, voff = 0;
+      PetscInt soff = 0, uoff = 0, voff = 0;  // StateView's constant offsets are the section's
       GF_CALL(PetscSectionGetOffset(section, verts[k], &soff));
+      GF_CALL(PetscSectionGetFieldOffset(section, verts[k], 0, &uoff));
       GF_CALL(PetscSectionGetFieldOffset(section, verts[k], 1, &voff));
-      if (voff != soff + 3) throw std::runtime_error("plate mesh: unexpected state layout");
+      if (uoff != soff + StateLayout::kDisplacement || voff != soff + StateLayout::kVelocity)
+        throw std::runtime_error("plate mesh: unexpected state layout");
       cellStateOff_[8 * cell + a] = soff;
     }
     cellCentre_[cell] = {centre[0], centre[1], centre[2]};
@@ -173,7 +176,7 @@ void PlateMesh::buildOwnedVertices() {
   PetscInt localSize = 0, rStart = 0, rEnd = 0;
   GF_CALL(VecGetLocalSize(global, &localSize));
   GF_CALL(VecGetOwnershipRange(global, &rStart, &rEnd));
-  ownedBlocks_ = localSize / 6;
+  ownedBlocks_ = localSize / StateLayout::kBlock;
   const PetscScalar* x = nullptr;
   GF_CALL(VecGetArrayRead(coords, &x));
   blockOfVertex_.assign(vEnd_ - vStart_, -1);
@@ -181,10 +184,10 @@ void PlateMesh::buildOwnedVertices() {
     PetscInt goff = 0;
     GF_CALL(PetscSectionGetOffset(gsection, p, &goff));
     if (goff < 0) continue;  // not owned
-    blockOfVertex_[p - vStart_] = (goff - rStart) / 6;
+    blockOfVertex_[p - vStart_] = (goff - rStart) / StateLayout::kBlock;
     PetscInt off = 0;
     GF_CALL(PetscSectionGetOffset(coordSection, p, &off));
-    owned_.push_back({(goff - rStart) / 6, x[off], x[off + 1], x[off + 2]});
+    owned_.push_back({(goff - rStart) / StateLayout::kBlock, x[off], x[off + 1], x[off + 2]});
   }
   GF_CALL(VecRestoreArrayRead(coords, &x));
 }
@@ -207,9 +210,10 @@ std::vector<double> PlateMesh::assemble(const std::function<double(PetscInt, int
       1, [&](PetscInt c, double* values) {
         for (int a = 0; a < 8; ++a) values[a] = share(c, a);
       },
-      g, 6, 0);
+      g, StateLayout::kBlock, 0);
   std::vector<double> sums(ownedBlocks_);
-  for (PetscInt b = 0; b < ownedBlocks_; ++b) sums[b] = g[6 * b];
+  const StateView<PetscScalar> state(g);
+  for (PetscInt b = 0; b < ownedBlocks_; ++b) sums[b] = state.displacement(b)[0];
   GF_CALL(VecRestoreArray(global, &g));
   return sums;
 }

@@ -3,9 +3,7 @@
 #include "gradfric/core/petsc_call.hpp"
 #include "gradfric/core/reproducible_sum.hpp"
 #include "gradfric/fem/log_events.hpp"
-#include "gradfric/fem/mesh_sites.hpp"
-
-#include <cmath>
+#include "gradfric/fem/state_view.hpp"
 
 namespace gradfric::fem {
 
@@ -18,35 +16,34 @@ FemParameters resolved(FemParameters q) {
 
 MeshSize meshSize(const FemParameters& q) { return {q.nx, q.ny, q.nz, q.plate.length, q.plate.thickness, q.edge}; }
 
-// A static pressure field (-field_p_*) as the top load's shape p(x, y)/p; empty when uniform. Used
-// while the top loading is built only.
-std::function<double(double, double)> pressureShapeOf(const Grading& grading, const FemParameters& q) {
-  if (!grading.fields || !grading.fields->pressure) return {};
-  const double length = q.plate.length;
-  return [sampler = meshSampler(grading, q), length](double x, double y) {
-    return sampler.pressure(x / length, y / length);
-  };
+ElasticSettings elasticSettings(const FemParameters& q) {
+  return {q.plate.poissonRatio, q.stiffnessDamping, q.element, q.blockedKernel, q.energyAudit};
+}
+
+ContactSettings contactSettings(const FemParameters& q) {
+  return {q.contactMethod == ContactMethod::Kinematic, PenaltyStiffness{q.kn, q.kt}, q.frictionLaw, q.slipLength,
+          q.slipHealingOnly};
 }
 
 }  // namespace
 
+// The layers, one line each, in the order their forces are added (docs/fem.md, "Adding a FEM term").
 PlateModel::PlateModel(MPI_Comm comm, const FemParameters& params, const Grading& grading)
     : params_(resolved(params)),
       grading_(grading),
       mesh_(comm, meshSize(params_), params_.partitioner),
       mass_(mesh_, params_.plate.density),
-      elastic_(mesh_, params_.plate.youngsModulus, params_.plate.poissonRatio, params_.stiffnessDamping, grading,
-                params_.element, params_.blockedKernel),
-      bulk_(mesh_, params_.plate.youngsModulus, params_.plate.poissonRatio, params_.plate.density, params_.bulkLinear,
-            params_.bulkQuadratic, grading),
-      contact_(mesh_, PenaltyStiffness{params_.kn, params_.kt}, params_.plate.muStatic, params_.plate.muKinetic,
-               params_.frictionLaw, grading, params_.slipLength, params_.slipHealingOnly),
-      top_(mesh_, params_.plate.pressure, params_.rampTime, params_.plate.velocity, params_.plate.slidingAngle,
-           pressureShapeOf(grading, params_)) {
+      properties_(mesh_, params_.plate, grading_),
+      protocol_(params_) {
+  const FemParameters& q = params_;
+  elastic_ = add<ElasticOperator>(true, mesh_, properties_, elasticSettings(q));
+  top_ = add<TopLoading>(true, mesh_, properties_);
+  if (q.bulkLinear > 0 || q.bulkQuadratic > 0) add<BulkViscosity>(true, mesh_, properties_, q.bulkLinear, q.bulkQuadratic);
+  contact_ = add<ContactBoundary>(q.contact, properties_, comm, contactSettings(q));
+  if (MassDamping::wanted(q)) damping_ = add<MassDamping>(true, q, mesh_.ownedBlocks());
+
   stableDt_ = fem::stableTimeStep(params_, grading_);
   dt_ = fem::chooseTimeStep(params_, grading_);
-  dampingStep_.assign(mesh_.ownedBlocks(), 0.0);
-  dampingWork_.assign(mesh_.ownedBlocks(), 0.0);
   if (dt_ > stableDt_)  // only with -fem_dt_check false
     GF_CALL(PetscPrintf(comm,
                         "WARNING: -fem_dt_check false (testing only): dt %.4g s is above the stable step %.4g s; the "
@@ -62,108 +59,83 @@ Vec PlateModel::createState() const {
   return X;
 }
 
-// The one right-hand side: each layer adds its force to the force slots of F, then
-// F = [v ; M^-1 f - gamma v], and the slider's constraint on the top.
+// The one right-hand side: each layer adds its force to the force slots of F (the first may set
+// them), then F = [v ; M^-1 f - gamma v], then the layers' constraints on the accelerations.
 void PlateModel::rhs(double t, Vec X, Vec F) {
-  const FemLogEvents& events = femLogEvents();
-  const LogEventScope timed(events.rhs);
-  const bool sliding = phase_ == Phase::Sliding;
-  elastic_.setForce(X, F);
-  top_.addPressure(t, sliding, F);
-  bulkStep_ = ExactSum();
-  bulk_.addForce(X, F, &bulkStep_, dt_);
-  if (params_.energyAudit && elastic_.stiffnessDamping() > 0) stiffnessPower_ = stiffnessDampingPower(X);
-  const SlidingDamping damping = massDamping();
-  ContactSums totals;
-  if (params_.contact) {
-    const LogEventScope timedContact(events.contact);
-    if (params_.contactMethod == ContactMethod::Kinematic)
-      totals = contact_.addKinematicForce(X, F, mass_.perBlock(), damping, dt_);
-    else
-      totals = contact_.addForce(X, F, dt_);
+  const LogEventScope timed(femLogEvents().rhs);
+  LayerContext ctx;
+  ctx.t = t;
+  ctx.dt = dt_;
+  ctx.sliding = protocol_.sliding();
+  ctx.pressure = protocol_.pressureAt(t);
+  ctx.damping = protocol_.massDamping();
+  ctx.mass = &mass_;
+  const bool firstSets = !layers_.empty() && layers_.front()->setsForce();
+  if (!firstSets) {
+    const WriteState f(F);
+    for (PetscInt b = 0; b < mesh_.ownedBlocks(); ++b)
+      for (int d = 0; d < 3; ++d) f.force(b)[d] = 0.0;
   }
+  ContactSums sums;
+  for (std::size_t i = 0; i < layers_.size(); ++i) {
+    ctx.setForce = i == 0 && firstSets;
+    layers_[i]->addForce(ctx, X, F, sums);
+  }
+  ctx.setForce = false;
+  accelerate(ctx, X, F);
+  for (Layer* layer : layers_) layer->constrain(ctx, X, F, sums);
+  lastTotals_ = sums;
+}
+
+void PlateModel::accelerate(const LayerContext& ctx, Vec X, Vec F) {
   const std::vector<double>& inverseMass = mass_.inversePerBlock();
   const std::vector<double>& blockMass = mass_.perBlock();
-  const PetscScalar* x = nullptr;
-  PetscScalar* f = nullptr;
-  GF_CALL(VecGetArrayRead(X, &x));
-  GF_CALL(VecGetArray(F, &f));
+  const SlidingDamping& damping = ctx.damping;
+  double* energy = damping_ ? damping_->stepEnergy() : nullptr;
+  const ReadState x(X);
+  const WriteState f(F);
   for (std::size_t b = 0; b < inverseMass.size(); ++b) {
-    PetscScalar* fb = f + 6 * b;
-    const PetscScalar* xb = x + 6 * b;
+    const PetscScalar* v = x.velocity(b);
+    PetscScalar* rate = f.displacement(b);
+    PetscScalar* a = f.force(b);
     for (int d = 0; d < 3; ++d) {
-      fb[d] = xb[3 + d];
-      fb[3 + d] = fb[3 + d] * inverseMass[b] + damping.acceleration(xb + 3, d);
+      rate[d] = v[d];
+      a[d] = a[d] * inverseMass[b] + damping.acceleration(v, d);
     }
-    dampingStep_[b] = damping.power(blockMass[b], xb + 3) * dt_;
+    if (energy) energy[b] = damping.power(blockMass[b], v) * ctx.dt;
   }
-  GF_CALL(VecRestoreArray(F, &f));
-  GF_CALL(VecRestoreArrayRead(X, &x));
-  totals.topZ = top_.areaWeightedLift(X);
-  if (sliding) top_.constrainTangential(mass_.perBlock(), F, &totals.driveX, &totals.driveY);
-  lastTotals_ = totals;
 }
 
-void PlateModel::commitContact() {
-  contact_.commit();
-  for (std::size_t b = 0; b < dampingWork_.size(); ++b)  // the rhs of the step saw the mid-step velocities
-    dampingWork_[b] += dampingStep_[b];
-  if (bulk_.active()) bulkWork_ += bulkStep_;
-  stiffnessWork_ += stiffnessPower_ * dt_;
+void PlateModel::postStep() {
+  for (Layer* layer : layers_) layer->postStep(dt_);
 }
 
+// The layers' exact shares summed over ranks at once, then the values already over ranks in the
+// list's order (the stiffness audit's, minus the contact's work): the bits of the balance as before.
 double PlateModel::dissipatedEnergy() const {
-  ExactSum damping = bulkWork_;
-  for (double w : dampingWork_) damping.add(w);
-  return sumOverRanks(comm(), damping) + stiffnessWork_ - contact_.work();
-}
-
-// beta v . K v = 2 beta x (the elastic energy of the velocity field taken as a displacement).
-double PlateModel::stiffnessDampingPower(Vec X) {
-  if (!velocityAsDisplacement_) GF_CALL(VecDuplicate(X, velocityAsDisplacement_.out()));
-  const PetscScalar* x = nullptr;
-  PetscScalar* w = nullptr;
-  PetscInt n = 0;
-  GF_CALL(VecGetLocalSize(X, &n));
-  GF_CALL(VecGetArrayRead(X, &x));
-  GF_CALL(VecGetArray(velocityAsDisplacement_, &w));
-  for (PetscInt b = 0; b < n; b += 6)
-    for (int d = 0; d < 3; ++d) {
-      w[b + d] = x[b + 3 + d];
-      w[b + 3 + d] = 0;
-    }
-  GF_CALL(VecRestoreArray(velocityAsDisplacement_, &w));
-  GF_CALL(VecRestoreArrayRead(X, &x));
-  return 2.0 * elastic_.stiffnessDamping() * elastic_.energy(velocityAsDisplacement_);
-}
-
-SlidingDamping PlateModel::massDamping() const {
-  SlidingDamping d;
-  if (phase_ != Phase::Sliding) {
-    d.lab = params_.settleDamping;
-    return d;
+  ExactSum share;
+  std::vector<double> overRanks;
+  for (const Layer* layer : layers_) {
+    const LayerWork w = layer->work();
+    share += w.rankShare;
+    if (w.hasOverRanks) overRanks.push_back(w.overRanks);
   }
-  d.lab = params_.slideDamping;
-  if (peakDampingOn_) {
-    const double theta = params_.plate.angleRadians();
-    d.slider = params_.peakDamping;
-    d.sliderVelocity[0] = params_.plate.velocity * std::cos(theta);
-    d.sliderVelocity[1] = params_.plate.velocity * std::sin(theta);
-  }
-  return d;
+  double e = sumOverRanks(comm(), share);
+  for (double o : overRanks) e += o;
+  return e;
 }
 
 bool PlateModel::startPeakDamping() {
-  if (peakDampingOn_ || phase_ != Phase::Sliding) return false;
-  peakDampingOn_ = true;
-  if (params_.peakStiffnessDamping > 0) elastic_.setStiffnessDamping(params_.stiffnessDamping + params_.peakStiffnessDamping);
-  return params_.peakDamping > 0 || params_.peakStiffnessDamping > 0;
+  if (protocol_.peakDampingOn() || !protocol_.sliding()) return false;
+  const bool any = protocol_.startPeakDamping();
+  if (params_.peakStiffnessDamping > 0) elastic_->setStiffnessDamping(protocol_.stiffnessDamping());
+  return any;
 }
 
 void PlateModel::startSliding(Vec X) {
-  phase_ = Phase::Sliding;
-  top_.startSliding(X);
-  contact_.resetSlipRecord();
+  protocol_.setPhase(Phase::Sliding);
+  top_->startSliding(X);
+  contact_->resetSlipRecord();
 }
 
 ContactTotals PlateModel::contactTotals() const {

@@ -32,8 +32,8 @@ PetscErrorCode keepCallbackError(std::exception_ptr error, const char* what) {
 }
 }  // namespace detail
 
-PetscErrorCode commitContactPostStep(TS ts) {
-  return guardedCallback([&] { modelOf(ts).commitContact(); });
+PetscErrorCode layersPostStep(TS ts) {
+  return guardedCallback([&] { modelOf(ts).postStep(); });
 }
 
 void solvePlateTS(TS ts) {
@@ -75,7 +75,7 @@ TS createPlateTS(PlateModel& model, Vec state) {
     GF_CALL(TSSetProblemType(ts, TS_NONLINEAR));
     GF_CALL(TSSetType(ts, TSGFVERLET));
     GF_CALL(TSSetRHSFunction(ts, nullptr, rhsCallback, &model));
-    GF_CALL(TSSetPostStep(ts, commitContactPostStep));
+    GF_CALL(TSSetPostStep(ts, layersPostStep));
     GF_CALL(TSSetTimeStep(ts, model.timeStep()));
     GF_CALL(TSSetMaxTime(ts, 1e30));  // the experiment stops itself (TS_CONVERGED_USER); -ts_max_time may stop it earlier
     GF_CALL(TSSetMaxSteps(ts, PETSC_MAX_INT));

@@ -3,6 +3,7 @@
 #include "gradfric/core/petsc_call.hpp"
 #include "gradfric/core/petsc_handle.hpp"
 #include "gradfric/core/reproducible_sum.hpp"
+#include "gradfric/fem/state_view.hpp"
 
 #include <petscksp.h>
 #include <petscversion.h>
@@ -171,15 +172,13 @@ PressedEquilibrium solvePressedEquilibrium(PlateModel& model, Vec X, double rela
     OwnedVec stateForce;
     GF_CALL(VecDuplicate(X, stateForce.out()));
     GF_CALL(VecZeroEntries(stateForce));
-    model.top().addPressure(0.0, true, stateForce);
-    const PetscScalar* f = nullptr;
+    model.top().addPressure(q.plate.pressure, stateForce);
+    const ReadState f(stateForce);
     PetscScalar* b = nullptr;
-    GF_CALL(VecGetArrayRead(stateForce, &f));
     GF_CALL(VecGetArray(load, &b));
     for (PetscInt k = 0; k < n / 3; ++k)
-      for (int d = 0; d < 3; ++d) b[3 * k + d] = f[6 * k + 3 + d];
+      for (int d = 0; d < 3; ++d) b[3 * k + d] = f.force(k)[d];
     GF_CALL(VecRestoreArray(load, &b));
-    GF_CALL(VecRestoreArrayRead(stateForce, &f));
   }
   {  // the contact springs at rest: k A per bottom node, tangential and normal
     GF_CALL(VecZeroEntries(penalty));
@@ -225,15 +224,15 @@ PressedEquilibrium solvePressedEquilibrium(PlateModel& model, Vec X, double rela
   }
   {  // X = [u, 0]
     const PetscScalar* uu = nullptr;
-    PetscScalar* x = nullptr;
     GF_CALL(VecGetArrayRead(u, &uu));
-    GF_CALL(VecGetArray(X, &x));
-    for (PetscInt k = 0; k < n / 3; ++k)
-      for (int d = 0; d < 3; ++d) {
-        x[6 * k + d] = uu[3 * k + d];
-        x[6 * k + 3 + d] = 0.0;
-      }
-    GF_CALL(VecRestoreArray(X, &x));
+    {
+      const WriteState x(X);
+      for (PetscInt k = 0; k < n / 3; ++k)
+        for (int d = 0; d < 3; ++d) {
+          x.displacement(k)[d] = uu[3 * k + d];
+          x.velocity(k)[d] = 0.0;
+        }
+    }
     GF_CALL(VecRestoreArrayRead(u, &uu));
   }
   // The contact law on the solution (anchors at rest, as the springs above): stick everywhere?
@@ -250,7 +249,7 @@ PressedEquilibrium solvePressedEquilibrium(PlateModel& model, Vec X, double rela
     GF_CALL(VecZeroEntries(X));
     return out;
   }
-  model.commitContact();
+  model.postStep();
   out.holds = true;
   return out;
 }

@@ -1,6 +1,7 @@
 #include "gradfric/fem/run_estimate.hpp"
 
 #include "gradfric/fem/stable_step.hpp"
+#include "gradfric/fem/state_view.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -25,7 +26,7 @@ RunEstimate estimateRun(const FemParameters& given, const Grading& grading, int 
   e.ranks = ranks;
   e.cells = static_cast<long long>(q.nx) * q.ny * q.nz;
   e.vertices = static_cast<long long>(q.nx + 1) * (q.ny + 1) * (q.nz + 1);
-  e.unknowns = 6 * e.vertices;
+  e.unknowns = StateLayout::kBlock * e.vertices;
   e.rankZeroMemory = kBaseMemory + kMemoryPerCell * static_cast<double>(e.cells);
   const double dt = chooseTimeStep(q, grading);
   e.pressureSteps = q.staticPressureStep ? 0 : std::llround(std::ceil((q.rampTime + q.settleTime) / dt));

@@ -1,8 +1,9 @@
 // The experiment as one TSSolve (PETSc's way, as PyLith's TimeDependent):
 //  - pre-step: the start of sliding (step 2) once step 1 (ramp + settle) is over: the top's
 //    tangential velocity is set and the TS told to restart its step (TSRestartStep);
-//  - post-step: the contact state of the accepted step is committed, the step's totals are summed
-//    over ranks, mu(t) fed to the shared FrictionHistory and its stop rule applied
+//  - post-step: each layer's post-step (the contact state of the accepted step committed, the
+//    damping's work), then the observers: the step's totals are summed over ranks, mu(t) fed to
+//    the shared FrictionHistory and its stop rule applied
 //    (TS_CONVERGED_USER once the -friction_observables are known, or at the end of the sliding
 //    time). The rule must see this step's mu: a monitor runs after the post-step and TSStep resets
 //    the converged reason, so only the post-step can stop the solve at this step. For the
@@ -94,7 +95,7 @@ private:
   static PetscErrorCode postStep(TS ts) {
     return guardedCallback([&] {
       const LogEventScope timed(femLogEvents().postStep);
-      GF_CALL(commitContactPostStep(ts));
+      GF_CALL(layersPostStep(ts));  // the layers first, then the observers
       of(ts).afterStep(ts);
     });
   }
@@ -129,7 +130,7 @@ private:
     if (model_.phase() != Phase::Pressure) return;
     PetscReal t = 0;
     GF_CALL(TSGetTime(ts, &t));
-    if (t < q_.rampTime + q_.settleTime - 0.5 * r_.dt) return;
+    if (!model_.protocol().settled(t, r_.dt)) return;
     r_.settledNormalForce = model_.contactTotals().fn / normal_;
     if (q_.verbose)
       GF_CALL(PetscPrintf(model_.comm(), "  step 1 done: t = %.4e s, %ld steps, normal force %.6f p L^2\n", t,
@@ -190,12 +191,9 @@ private:
     sample_.mu = mu;
     if (recordOnset_) model_.recordOnset(tSliding);
     // The damping of the sliding plate starts at the confirmed peak (mu_s is then the undamped
-    // run's), or with -fem_peak_damping_start at the first drop of mu after the first slip or at
-    // once (study options: they can damp the peak).
-    using Start = FemParameters::DampingStart;
-    const bool pastPeak = history_.peakConfirmed() || q_.peakDampingStart == Start::Sliding ||
-                          (q_.peakDampingStart == Start::Drop && totals.slip > 0 &&
-                           mu < (1.0 - q_.measurement.peakDrop) * history_.peak());
+    // run's), or as -fem_peak_damping_start says (loading_protocol.hpp).
+    const bool pastPeak =
+        model_.protocol().peakDampingDue(history_.peakConfirmed(), totals.slip > 0, mu, history_.peak());
     if (pastPeak && !model_.peakDampingOn() && model_.startPeakDamping()) {
       r_.peakDampingStart = tSliding;
       if (q_.verbose)
@@ -207,7 +205,7 @@ private:
     r_.forceX.push_back(totals.fx);
     r_.forceY.push_back(totals.fy);
     const bool known = q_.stopWhenKnown && history_.known();
-    if (known || tSliding >= q_.slideTime - 0.5 * r_.dt) GF_CALL(TSSetConvergedReason(ts, TS_CONVERGED_USER));
+    if (known || model_.protocol().slideOver(tSliding, r_.dt)) GF_CALL(TSSetConvergedReason(ts, TS_CONVERGED_USER));
   }
 
   PlateModel& model_;

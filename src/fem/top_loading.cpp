@@ -2,70 +2,71 @@
 
 #include "gradfric/core/petsc_call.hpp"
 #include "gradfric/core/reproducible_sum.hpp"
+#include "gradfric/fem/lumped_mass.hpp"
+#include "gradfric/fem/state_view.hpp"
 
-#include <algorithm>
 #include <cmath>
 
 namespace gradfric::fem {
 
-TopLoading::TopLoading(const PlateMesh& mesh, double pressure, double rampTime, double velocity, double angleDegrees,
-                       const std::function<double(double, double)>& pressureShape)
-    : comm_(mesh.comm()), pressure_(pressure), rampTime_(rampTime) {
-  const double theta = angleDegrees * M_PI / 180.0;
-  velocityX_ = velocity * std::cos(theta);
-  velocityY_ = velocity * std::sin(theta);
-  const std::vector<double> area = mesh.sumOverFaces(FaceSet::Top, pressureShape);
-  for (const OwnedVertex& v : mesh.ownedVertices())
-    if (area[v.block] > 0) nodes_.push_back({v.block, area[v.block]});
+TopLoading::TopLoading(const PlateMesh& mesh, const PlateProperties& properties)
+    : comm_(mesh.comm()), properties_(properties) {
+  const Plate& plate = properties.plate();
+  const double theta = plate.slidingAngle * M_PI / 180.0;
+  velocityX_ = plate.velocity * std::cos(theta);
+  velocityY_ = plate.velocity * std::sin(theta);
 }
 
-double TopLoading::pressureAt(double t, bool sliding) const {
-  if (sliding || rampTime_ <= 0) return pressure_;
-  return pressure_ * std::min(1.0, t / rampTime_);
+void TopLoading::addForce(const LayerContext& ctx, Vec X, Vec F, ContactSums& sums) {
+  addPressure(ctx.pressure, F);
+  const ReadState x(X);
+  for (const TopNode& n : properties_.topNodes()) sums.topZ.add(n.load * x.displacement(n.block)[2]);
 }
 
-void TopLoading::addPressure(double t, bool sliding, Vec F) const {
-  const double p = pressureAt(t, sliding);
-  PetscScalar* f = nullptr;
-  GF_CALL(VecGetArray(F, &f));
-  for (const Node& n : nodes_) f[6 * n.block + 5] -= p * n.area;
-  GF_CALL(VecRestoreArray(F, &f));
+void TopLoading::addPressure(double p, Vec F) const {
+  const WriteState f(F);
+  for (const TopNode& n : properties_.topNodes()) f.force(n.block)[2] -= p * n.load;
+}
+
+void TopLoading::constrain(const LayerContext& ctx, Vec, Vec F, ContactSums& sums) {
+  if (!ctx.sliding) return;
+  const std::vector<double>& mass = ctx.mass->perBlock();
+  const WriteState f(F);
+  for (const TopNode& n : properties_.topNodes()) {
+    double* a = f.force(n.block);
+    sums.driveX.add(-(mass[n.block] * a[0]));
+    sums.driveY.add(-(mass[n.block] * a[1]));
+    a[0] = a[1] = 0.0;
+  }
 }
 
 void TopLoading::startSliding(Vec X) const {
-  PetscScalar* x = nullptr;
-  GF_CALL(VecGetArray(X, &x));
-  for (const Node& n : nodes_) {
-    x[6 * n.block + 3] = velocityX_;
-    x[6 * n.block + 4] = velocityY_;
+  const WriteState x(X);
+  for (const TopNode& n : properties_.topNodes()) {
+    x.velocity(n.block)[0] = velocityX_;
+    x.velocity(n.block)[1] = velocityY_;
   }
-  GF_CALL(VecRestoreArray(X, &x));
-}
-
-void TopLoading::constrainTangential(const std::vector<double>& mass, Vec F, ExactSum* driveX, ExactSum* driveY) const {
-  PetscScalar* f = nullptr;
-  GF_CALL(VecGetArray(F, &f));
-  for (const Node& n : nodes_) {
-    driveX->add(-(mass[n.block] * f[6 * n.block + 3]));
-    driveY->add(-(mass[n.block] * f[6 * n.block + 4]));
-    f[6 * n.block + 3] = f[6 * n.block + 4] = 0.0;
-  }
-  GF_CALL(VecRestoreArray(F, &f));
-}
-
-ExactSum TopLoading::areaWeightedLift(Vec X) const {
-  const PetscScalar* x = nullptr;
-  GF_CALL(VecGetArrayRead(X, &x));
-  ExactSum z;
-  for (const Node& n : nodes_) z.add(n.area * x[6 * n.block + 2]);
-  GF_CALL(VecRestoreArrayRead(X, &x));
-  return z;
 }
 
 double TopLoading::area() const {
   ExactSum a;
-  for (const Node& n : nodes_) a.add(n.area);
+  for (const TopNode& n : properties_.topNodes()) a.add(n.load);
   return sumOverRanks(comm_, a);
+}
+
+std::string TopLoading::describe() const {
+  return "pressure ramped then held on the top face, which slides at v, theta in step 2";
+}
+
+void TopLoading::writeProperties(PropertySink& sink) const {
+  std::vector<PetscInt> blocks;
+  std::vector<double> factor;
+  for (const TopNode& n : properties_.topNodes()) {
+    blocks.push_back(n.block);
+    factor.push_back(properties_.plate().pressure * (n.load / n.area));
+  }
+  sink.nodeField("p", "Pa", "top pressure of the node at full load (its faces' pressure factors, area-weighted)",
+                 blocks, factor);
 }
 
 }  // namespace gradfric::fem

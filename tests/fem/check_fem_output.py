@@ -47,7 +47,7 @@ with h5py.File(out, "r") as f:
     assert "fem_nx" in scene and f["scene/units"].attrs["fem_nx"] == "1", dict(f["scene/units"].attrs)
     assert f["scene/origin"].attrs["fem_nx"] == "set"
     # The conventions: strings as str, flags as integers, every dataset with units and description.
-    assert isinstance(f.attrs["format"], str) and f.attrs["format_version"] == 3
+    assert isinstance(f.attrs["format"], str) and f.attrs["format_version"] == 4
     assert res["peak_confirmed"].dtype.kind == "i", res["peak_confirmed"].dtype
 
     def described(name, obj):
@@ -57,6 +57,8 @@ with h5py.File(out, "r") as f:
     f.visititems(described)
     # Axes as dimension scales.
     assert f["history/mu"].dims[0].keys() == ["time"] and f["properties/E"].dims[0].keys() == ["x"]
+    # The contact's own coefficients, per bottom node (format 4).
+    assert f["properties/mu_s"].dims[0].keys() == ["node_x"]
     # The force components give mu: |(Fx, Fy)| / (p L^2).
     p = float(scene["plate_p"])
     side = float(scene["plate_L"])

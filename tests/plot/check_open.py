@@ -161,7 +161,9 @@ run(fem, "-field_mu_profile", "step", "-field_mu_position", "3e-3", "-field_mu_d
 with gradfric.open(path("fem.h5")) as ds, h5py.File(path("fem.h5"), "r") as f:
     expect_dims(ds, {"time": len(f["history/time"]), "x": 8, "y": 6, "node_x": 9, "node_y": 7})
     assert ds.attrs["format"] == "gradfric-fem-history" and ds["mu"].dims == ("time",) and ds["time"].attrs["units"] == "s"
-    assert same(ds["time"], f["history/time"][:]) and ds["properties_mu_s"].dims == ("x",)
+    # /properties holds the physics' values (format 4): mu per bottom node, on node_x.
+    assert same(ds["time"], f["history/time"][:]) and ds["properties_mu_s"].dims == ("node_x",)
+    assert ds["properties_E"].dims == ("x",)
     assert ds["fields_mu_s_map"].dims == ("y", "x") and ds["pressure_response_g"].dims == ("node_y", "node_x")
     assert np.allclose(ds["node_x"], np.linspace(0, 0.005, 9)) and np.allclose(ds["y"], (np.arange(6) + 0.5) * 0.005 / 6)
     mu_map = ds["fields_mu_s_map"]  # the step at x = 3 mm: 1 - D before, 1 + D beyond, every row alike

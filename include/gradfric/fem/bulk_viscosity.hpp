@@ -8,8 +8,8 @@
 // the mean shape-function gradient is exact for eps_v', and the nodal force f_a = -V sigma_bv
 // grad N_a is its work conjugate, so the dissipated power is exactly V sigma_bv eps_v' >= 0.
 #include "gradfric/core/exact_sum.hpp"
-#include "gradfric/fem/plate_mesh.hpp"
-#include "gradfric/physics/grading.hpp"
+#include "gradfric/fem/layer.hpp"
+#include "gradfric/fem/plate_properties.hpp"
 
 #include <array>
 #include <vector>
@@ -24,17 +24,21 @@ std::array<std::array<double, 3>, 8> boxMeanShapeGradients(double hx, double hy,
 double bulkViscousStress(double linear, double quadratic, double density, double dilatationalSpeed,
                          double length, double volumetricRate);
 
-class BulkViscosity {
+// The layer (on with b1 or b2 > 0): c_d from each cell's E (plate_properties.hpp).
+class BulkViscosity : public Layer {
 public:
-  BulkViscosity(const PlateMesh& mesh, double youngsModulus, double poissonRatio, double density, double linear,
-                double quadratic, const Grading& grading);
+  BulkViscosity(const PlateMesh& mesh, const PlateProperties& properties, double linear, double quadratic);
   BulkViscosity(const BulkViscosity&) = delete;
   BulkViscosity& operator=(const BulkViscosity&) = delete;
 
-  bool active() const { return linear_ > 0 || quadratic_ > 0; }
-  // Adds the viscous force of the velocities of X (global state) to the force slots of F; returns
-  // this rank's dissipated power (>= 0) [W].
-  void addForce(Vec X, Vec F, ExactSum* energy, double dt);
+  // The viscous force of the velocities of X into the force slots of F; the energy it takes over
+  // the step (power x dt, exact) is added to the work by the post-step.
+  const char* name() const override { return "bulk viscosity"; }
+  void addForce(const LayerContext& ctx, Vec X, Vec F, ContactSums& sums) override;
+  void postStep(double) override { work_ += step_; }
+  LayerWork work() const override;
+  std::string describe() const override;
+  void writeProperties(PropertySink& sink) const override;
 
 private:
   double cellForce(PetscInt cell, const PetscScalar* x, std::array<double, 24>* w) const;
@@ -47,6 +51,7 @@ private:
   };
   std::vector<Shape> shapes_;
   std::vector<double> cellSpeed_;  // c_d of each local cell (graded E)
+  ExactSum step_, work_;           // this rank's energy of the last right-hand side, and since the start
   OwnedVec xLocal_, fLocal_, fGlobal_;
 };
 

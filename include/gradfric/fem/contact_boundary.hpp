@@ -8,9 +8,9 @@
 #include "gradfric/fem/contact_kinematic.hpp"
 #include "gradfric/fem/contact_law.hpp"
 #include "gradfric/fem/contact_penalty.hpp"
+#include "gradfric/fem/layer.hpp"
+#include "gradfric/fem/plate_properties.hpp"
 #include "gradfric/fem/sliding_damping.hpp"
-#include "gradfric/fem/plate_mesh.hpp"
-#include "gradfric/physics/grading.hpp"
 #include "gradfric/physics/process_zone.hpp"
 
 #include "gradfric/core/exact_sum.hpp"
@@ -20,24 +20,16 @@
 
 namespace gradfric::fem {
 
-// Totals of one evaluation summed over ranks (PlateModel::contactTotals).
-struct ContactTotals {
-  double fx = 0, fy = 0, fn = 0;  // total contact force on the plate [N]
-  double topZ = 0;                // sum over the top nodes of area * u_z [m^3] (pressure work -p dZ)
-  double driveX = 0, driveY = 0;  // force of the slider on the top in step 2 [N] (work: F . v dt)
-  long long stick = 0, slip = 0, open = 0;
-  long long everSlipped = 0;      // nodes that slipped or lost contact since resetSlipRecord
-  long long nodes = 0;            // bottom nodes
+struct ContactSettings {
+  bool kinematic = false;      // -fem_contact kinematic: exact contact (gfverlet), else penalty springs
+  PenaltyStiffness stiffness;  // the penalty springs
+  FrictionLawSettings law;     // the friction law of every node (contact_law.hpp)
+  double memoryLength = 0.0;   // with a stateless law, its friction memory's slip length [m] (0: none)
+  bool healingOnly = false;    // the memory's weakening at once, only the healing over it
 };
 
-// The same totals on this rank, as exact sums (core/exact_sum.hpp), so that their totals over
-// ranks have the same bits on any number of ranks.
-struct ContactSums {
-  ExactSum fx, fy, fn, topZ, driveX, driveY;
-  long long stick = 0, slip = 0, open = 0, everSlipped = 0, nodes = 0;
-};
-
-class ContactBoundary {
+// The contact layer: the last force of the list (the kinematic contact needs every other force).
+class ContactBoundary : public Layer {
 public:
   struct Node {
     PetscInt block;  // owned block in the global state vector
@@ -53,22 +45,25 @@ public:
     double pendingForce[3] = {0, 0, 0}, pendingU[3] = {0, 0, 0};
   };
 
-  // muStatic, muKinetic: the plate's mean coefficients, graded by grading's friction factor;
-  // law: the friction law of every node (contact_law.hpp); memoryLength: with a stateless law, the
-  // slip length of its friction memory [m] (0: the law without state); healingOnly: the memory's
-  // weakening at once, only the healing over it (slip_state_law.hpp).
-  ContactBoundary(const PlateMesh& mesh, const PenaltyStiffness& stiffness, double muStatic, double muKinetic,
-                  const FrictionLawSettings& law, const Grading& grading, double memoryLength = 0.0,
-                  bool healingOnly = false);
+  // The nodes and their coefficients mu_s, mu_k: properties.bottomNodes().
+  ContactBoundary(const PlateProperties& properties, MPI_Comm comm, const ContactSettings& settings);
 
-  // Adds the contact force of the state X (global) to the force slots of F and returns the
-  // totals of this rank; the new contact state is pending. dt: the step (the law's state evolves
-  // over it).
-  ContactSums addForce(Vec X, Vec F, double dt);
+  // The layer: the contact force of the state X (penalty, or kinematic from F's other forces, the
+  // mass and the mass damping of ctx) into the force slots of F and the step's totals; the new
+  // contact state is pending until the post-step commits it.
+  const char* name() const override { return "contact"; }
+  void addForce(const LayerContext& ctx, Vec X, Vec F, ContactSums& sums) override;
+  void postStep(double) override { commit(); }
+  LayerWork work() const override;  // minus the work of the contact forces on the plate
+  std::string describe() const override;
+  void writeProperties(PropertySink& sink) const override;
+
+  // The penalty contact's force; dt: the step (the law's state evolves over it).
+  void addPenaltyForce(Vec X, Vec F, double dt, ContactSums& totals);
   // Kinematic contact (gfverlet): F's force slots hold every other force; the acceleration the
   // RHS will return is F / m plus the mass-proportional damping (mass per block); dt the step.
-  ContactSums addKinematicForce(Vec X, Vec F, const std::vector<double>& mass, const SlidingDamping& damping,
-                                  double dt);
+  void addKinematicForce(Vec X, Vec F, const std::vector<double>& mass, const SlidingDamping& damping, double dt,
+                         ContactSums& totals);
   void commit();  // accept the pending contact state (after a step)
   void resetSlipRecord();  // from now on, everSlipped counts slips after this point (and the slip per step)
   // After each sliding step at time t, with a law that weakens over a slip (the state law): notes
@@ -84,7 +79,7 @@ public:
   // Work of the contact forces on the plate over the committed steps, summed over ranks [J]
   // (negative: friction and the inelastic normal impacts dissipate; with penalties it includes
   // the energy the springs store).
-  double work() const;
+  double contactWork() const;
 
   const std::vector<Node>& nodes() const { return nodes_; }
   const ContactLaw& law() const { return law_; }  // its per-node state
@@ -95,6 +90,7 @@ public:
 
 private:
   MPI_Comm comm_;
+  ContactSettings settings_;
   PenaltyStiffness stiffness_;
   std::vector<Node> nodes_;
   ContactLaw law_;  // one site per node: its local coefficients (area-weighted over its faces' bands)
@@ -104,7 +100,7 @@ private:
   // to the totals, and keeps it pending until commit.
   void applyNodeForce(Node& n, const PetscScalar* xb, PetscScalar* fb, double fx, double fy, double fz,
                       ContactSums& totals);
-  static double tangentialStep(const Node& n, const PetscScalar* xb);
+  static double tangentialStep(const Node& n, const PetscScalar* u);
 };
 
 }  // namespace gradfric::fem

@@ -5,8 +5,9 @@
 // (elastic_reference.cpp). Works on a displacement-only DM (3 values per vertex): half the
 // communication of the 6-value state.
 #include "gradfric/fem/hex_element.hpp"
+#include "gradfric/fem/layer.hpp"
 #include "gradfric/fem/plate_mesh.hpp"
-#include "gradfric/physics/grading.hpp"
+#include "gradfric/fem/plate_properties.hpp"
 
 #include <array>
 #include <vector>
@@ -33,20 +34,35 @@ void elasticKernelBlocked(PetscInt numCells, const PetscInt* cellOffsets, const 
                           const double* blocks, const double* u, double* f, const PetscInt* outOffsets = nullptr,
                           const int* cellShape = nullptr);
 
-class ElasticOperator {
+struct ElasticSettings {
+  double poissonRatio = 1.0 / 3.0;
+  double stiffnessDamping = 0.0;  // Rayleigh beta [s]
+  // The hexahedron whose box-cell stiffness the kernel applies; PETSc's generic reference
+  // (forceGeneric) is the trilinear one only.
+  ElementType element = ElementType::Trilinear;
+  bool blockedKernel = false;  // elasticKernelBlocked instead of the dense product (equal to round-off)
+  bool energyAudit = false;    // integrate the stiffness-proportional dissipation (one more pass a step)
+};
+
+// The elastic layer: always on, first in the list (it sets the force slots).
+class ElasticOperator : public Layer {
 public:
-  // E of a cell = youngsModulus x grading's modulus factor at the cell centre's x / L.
-  // element: the hexahedron whose box-cell stiffness the kernel applies; PETSc's generic
-  // reference (forceGeneric) is the trilinear one only. blockedKernel: elasticKernelBlocked
-  // instead of the dense product (forces equal to round-off, not bit for bit).
-  ElasticOperator(const PlateMesh& mesh, double youngsModulus, double poissonRatio, double stiffnessDamping,
-                  const Grading& grading, ElementType element = ElementType::Trilinear, bool blockedKernel = false);
+  // E of a cell: properties.cellModulus() (the graded E at the cell centre).
+  ElasticOperator(const PlateMesh& mesh, const PlateProperties& properties, const ElasticSettings& settings);
   ElasticOperator(const ElasticOperator&) = delete;
   ElasticOperator& operator=(const ElasticOperator&) = delete;
 
-  // Sets the force slots (3..5 of each block) of the global state-layout vector F to the internal
-  // force of the global state X (displacement + beta velocity). Slots 0..2 are left alone.
-  void setForce(Vec X, Vec F);
+  // The layer: the internal force of the global state X (displacement + beta velocity) into the
+  // force slots of F; with the energy audit, the power of the stiffness damping, whose work the
+  // post-step integrates.
+  const char* name() const override { return "elastic"; }
+  void addForce(const LayerContext& ctx, Vec X, Vec F, ContactSums& sums) override;
+  void postStep(double dt) override { stiffnessWork_ += stiffnessPower_ * dt; }
+  LayerWork work() const override;
+  std::string describe() const override;
+  void writeProperties(PropertySink& sink) const override;
+  bool setsForce() const override { return true; }
+
   double energy(Vec X);  // (1/2) u . K u, summed over ranks [J]
   // Rayleigh beta [s] from now on (the damping switched on at the confirmed peak).
   void setStiffnessDamping(double beta) { beta_ = beta; }
@@ -83,10 +99,14 @@ private:
   // OrderedAssembly): global is a global displacement-DM array holding the assembled force.
   void reorderSharedSums(const double* uLocal, double* global);
   void fixSharedSums(Vec uLocal, Vec fGlobal);  // the same on PETSc vectors
+  double stiffnessDampingPower(Vec X);  // beta v . K v over ranks [W]
 
   const PlateMesh& mesh_;
+  ElasticSettings settings_;
   std::vector<BoxElement> elements_;  // per shape
   double beta_;
+  double stiffnessPower_ = 0, stiffnessWork_ = 0;  // over ranks (energy audit only)
+  OwnedVec velocityAsDisplacement_;             // for the audit: v in the displacement slots
   std::vector<double> cellModulus_;
   std::vector<double> shuffledModulus_;  // in the order of cellDispOff_ after shuffleCellOrder (else empty)
   std::vector<double> stiffnesses_, blocks_;  // per shape: 576 and 72 values

@@ -4,6 +4,7 @@
 // response, the resolved options and the provenance. Serial: rank 0 writes it.
 #include "gradfric/core/options.hpp"
 #include "gradfric/fem/pressure_response_recorder.hpp"
+#include "gradfric/fem/property_profiles.hpp"
 #include "gradfric/fem/simulation.hpp"
 #include "gradfric/io/provenance.hpp"
 
@@ -21,6 +22,7 @@ struct HistoryContent {
   int historyEvery = 1;  // every n-th step of mu(t) is kept
   const io::Provenance& provenance;
   const std::optional<PressureResponseMap>& response;
+  const std::vector<PropertyProfile>& properties;  // the physics' values (gatherPropertyProfiles)
 };
 
 // Fills an open, empty HDF5 file.

@@ -1,29 +1,36 @@
 #pragma once
-// The FEM model of the plate as a composition of its layers (PyLith-like): the mesh
-// (plate_mesh), the lumped mass (lumped_mass), the elastic operator (elastic_operator), the bulk
-// viscosity (bulk_viscosity, optional), the contact boundary (contact_boundary, penalty or
-// kinematic: the kinematic contact comes last, it needs every other force) and the top loading
-// (top_loading). rhs() sums their
-// contributions into the one right-hand side the TS calls:
-//   state per vertex [u_x u_y u_z v_x v_y v_z] (fields "displacement", "velocity");
-//   RHS = [v ; M^-1 (f_int + f_pressure + f_contact) - gamma v], the top's tangential
-//   acceleration held at zero while it slides.
+// The FEM model of the plate (PyLith-like): the mesh (plate_mesh), the lumped mass (lumped_mass),
+// the local properties built once (plate_properties), the loading protocol (loading_protocol) and
+// a list of physics layers (layer.hpp), each adding its force to the one right-hand side the TS
+// calls:
+//   state per vertex [u_x u_y u_z v_x v_y v_z] (fields "displacement", "velocity"; state_view.hpp);
+//   RHS = [v ; M^-1 (sum of the layers' forces) - gamma v], then the layers' constraints (the top's
+//   tangential acceleration held at zero while it slides).
+// The layers, in the order their forces are added: the elastic operator (always; it sets the
+// force slots), the top loading (always), the bulk viscosity (optional), the contact boundary
+// (penalty or kinematic: the kinematic contact comes last, it needs every other force), the mass
+// damping (it acts on the accelerations, in the M^-1 pass).
 #include "gradfric/fem/bulk_viscosity.hpp"
 #include "gradfric/fem/contact_boundary.hpp"
 #include "gradfric/fem/elastic_operator.hpp"
+#include "gradfric/fem/layer.hpp"
+#include "gradfric/fem/loading_protocol.hpp"
 #include "gradfric/fem/lumped_mass.hpp"
+#include "gradfric/fem/mass_damping.hpp"
 #include "gradfric/fem/parameters.hpp"
 #include "gradfric/fem/plate_mesh.hpp"
-#include "gradfric/fem/sliding_damping.hpp"
+#include "gradfric/fem/plate_properties.hpp"
 #include "gradfric/fem/stable_step.hpp"
 #include "gradfric/fem/top_loading.hpp"
 #include "gradfric/physics/grading.hpp"
 
 #include <petscts.h>
 
-namespace gradfric::fem {
+#include <memory>
+#include <utility>
+#include <vector>
 
-enum class Phase { Pressure, Sliding };
+namespace gradfric::fem {
 
 class PlateModel {
 public:
@@ -39,59 +46,66 @@ public:
   double stableTimeStep() const { return stableDt_; }
   double timeStep() const { return dt_; }
 
-  // The layers.
   const PlateMesh& mesh() const { return mesh_; }
   const LumpedMass& mass() const { return mass_; }
-  ElasticOperator& elastic() { return elastic_; }
-  const ContactBoundary& contact() const { return contact_; }
-  const TopLoading& top() const { return top_; }
+  const PlateProperties& properties() const { return properties_; }
+  // The active layers, in the order of their forces; and the ones other code needs by name (the
+  // contact boundary is built also when -fem_contact none leaves it out of the list).
+  const std::vector<Layer*>& layers() const { return layers_; }
+  ElasticOperator& elastic() { return *elastic_; }
+  const ContactBoundary& contact() const { return *contact_; }
+  const TopLoading& top() const { return *top_; }
 
   // Time integration.
   Vec createState() const;  // zero state (global)
   void rhs(double t, Vec X, Vec F);
-  void commitContact();  // the TS post-step, after each accepted step: contact state, damping work
-  void recordOnset(double t) { contact_.recordOnset(t); }  // for the interface resolution check (sliding)
-  Phase phase() const { return phase_; }
-  void setPhase(Phase phase) { phase_ = phase; }
+  void postStep();  // the TS post-step, after each accepted step: every layer's, in the list's order
+  void recordOnset(double t) { contact_->recordOnset(t); }  // for the interface resolution check (sliding)
+
+  // The loading protocol (loading_protocol.hpp).
+  const LoadingProtocol& protocol() const { return protocol_; }
+  Phase phase() const { return protocol_.phase(); }
+  void setPhase(Phase phase) { protocol_.setPhase(phase); }
   void startSliding(Vec X);  // phase Sliding; the top's tangential velocity set to the slider's
   // Switches on the damping of the sliding plate (params.peakDamping, peakStiffnessDamping) from the
   // next step on: called once the static peak is confirmed. True if any damping was switched on.
   bool startPeakDamping();
-  bool peakDampingOn() const { return peakDampingOn_; }
-  SlidingDamping massDamping() const;  // of the current phase
-  double pressureAt(double t) const { return top_.pressureAt(t, phase_ == Phase::Sliding); }
+  bool peakDampingOn() const { return protocol_.peakDampingOn(); }
+  double pressureAt(double t) const { return protocol_.pressureAt(t); }
+
   ContactTotals contactTotals() const;  // of the last rhs evaluation, summed over ranks
   double kineticEnergy(Vec X) const { return mass_.kineticEnergy(X); }
-  double elasticEnergy(Vec X) { return elastic_.energy(X); }
-  // Energy the contact forces and the damping (mass-proportional, bulk viscosity, and the
-  // stiffness-proportional term with params.energyAudit) took from the plate since the start of
-  // the run, summed over ranks [J]: friction, inelastic impacts, damping, and with penalties the
-  // energy the springs hold.
+  double elasticEnergy(Vec X) { return elastic_->energy(X); }
+  // Energy the layers took from the plate since the start of the run, summed over ranks [J]:
+  // friction, inelastic impacts, damping (mass-proportional, bulk viscosity, and the
+  // stiffness-proportional term with params.energyAudit), and with penalties the springs' energy.
   double dissipatedEnergy() const;
 
 private:
-  double stiffnessDampingPower(Vec X);  // over ranks [W]
+  // Builds a layer; it joins the list when active.
+  template <class L, class... Args>
+  L* add(bool active, Args&&... args) {
+    owned_.push_back(std::make_unique<L>(std::forward<Args>(args)...));
+    if (active) layers_.push_back(owned_.back().get());
+    return static_cast<L*>(owned_.back().get());
+  }
+  // F = [v ; M^-1 f + the mass damping's acceleration]; the damping's energy per block to its layer.
+  void accelerate(const LayerContext& ctx, Vec X, Vec F);
 
   FemParameters params_;
   Grading grading_;
   PlateMesh mesh_;
   LumpedMass mass_;
-  ElasticOperator elastic_;
-  BulkViscosity bulk_;
-  ContactBoundary contact_;
-  TopLoading top_;
+  PlateProperties properties_;
+  LoadingProtocol protocol_;
+  std::vector<std::unique_ptr<Layer>> owned_;
+  std::vector<Layer*> layers_;
+  ElasticOperator* elastic_ = nullptr;
+  TopLoading* top_ = nullptr;
+  ContactBoundary* contact_ = nullptr;
+  MassDamping* damping_ = nullptr;  // null when no mass damping is on
   double stableDt_ = 0, dt_ = 0;
-  Phase phase_ = Phase::Pressure;
   ContactSums lastTotals_;  // this rank's
-  bool peakDampingOn_ = false;
-  // The mass damping's energy per owned block over the step of the last rhs (power x dt), and its
-  // running sum per block: each block's sum is the same on any partition, and the total over blocks
-  // is exact (dissipatedEnergy), so it has the same bits on any number of ranks. The bulk
-  // viscosity's (per cell, rarely on) goes straight into exact sums.
-  std::vector<double> dampingStep_, dampingWork_;
-  ExactSum bulkStep_, bulkWork_;
-  double stiffnessPower_ = 0, stiffnessWork_ = 0;  // over ranks (params.energyAudit only)
-  OwnedVec velocityAsDisplacement_;             // for the audit: v in the displacement slots
 };
 
 }  // namespace gradfric::fem

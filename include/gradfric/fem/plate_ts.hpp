@@ -1,8 +1,8 @@
 #pragma once
 // The TS of a plate model and the boundary between PETSc's callbacks and C++ exceptions.
 //  - createPlateTS: type gfverlet (unless -ts_type says otherwise), fixed step model.timeStep(),
-//    the model's right-hand side, and a post-step that commits the contact state of the accepted
-//    step (TSSetPostStep: PETSc calls it from TSSolve only, not from a bare TSStep).
+//    the model's right-hand side, and a post-step that runs the layers' post-step after each
+//    accepted step (TSSetPostStep: PETSc calls it from TSSolve only, not from a bare TSStep).
 //  - guardedCallback: runs the body of a PETSc callback; an exception becomes a PETSc error code
 //    and is kept, and solvePlateTS rethrows it as it was (a NumericalInstability stays one).
 #include "gradfric/fem/plate_model.hpp"
@@ -19,9 +19,9 @@ TS createPlateTS(PlateModel& model, Vec state);
 // early and the options count as used (checkUnusedOptions runs before the model exists).
 void readPlateTSOptions(MPI_Comm comm);
 
-// The post-step of createPlateTS (commit the contact state): call it first from a post-step that
-// replaces it.
-PetscErrorCode commitContactPostStep(TS ts);
+// The post-step of createPlateTS (the layers' post-step: contact state, damping work): call it
+// first from a post-step that replaces it, then the observers.
+PetscErrorCode layersPostStep(TS ts);
 
 // TSSolve(ts, nullptr); rethrows the exception a guarded callback raised, else throws
 // PetscCallError on a PETSc error.
