@@ -15,7 +15,8 @@ install(DIRECTORY ${PROJECT_SOURCE_DIR}/input/ DESTINATION ${GRADFRIC_INSTALL_DA
         FILES_MATCHING PATTERN "*.opts" PATTERN "*.yaml" PATTERN "*.h5" PATTERN "*.png")
 # The plotting scripts work on any results file; scripts/setup.sh, run-*.sh and
 # reproduce_paper.sh drive a source tree and stay there.
-install(PROGRAMS ${PROJECT_SOURCE_DIR}/scripts/gradfric_plot.py ${PROJECT_SOURCE_DIR}/scripts/plot_accuracy.py
+install(PROGRAMS ${PROJECT_SOURCE_DIR}/scripts/gradfric_plot.py ${PROJECT_SOURCE_DIR}/scripts/gradfric_plot_data.py
+                 ${PROJECT_SOURCE_DIR}/scripts/plot_accuracy.py
                  ${PROJECT_SOURCE_DIR}/scripts/plot_design.py
                  ${PROJECT_SOURCE_DIR}/scripts/plot_calibration.py
         DESTINATION ${GRADFRIC_INSTALL_DATADIR}/scripts)

@@ -11,7 +11,7 @@ cmake --install "$build" --prefix "$prefix" > "$2/install.log"
 
 fail() { echo "FAIL: $*" >&2; exit 1; }
 for f in bin/gradfric bin/gradfric-fem bin/gradfric-study bin/gradfric-design \
-         share/gradfric/scripts/gradfric_plot.py share/gradfric/slurm/sbm_ensemble.sbatch \
+         share/gradfric/scripts/gradfric_plot.py share/gradfric/scripts/gradfric_plot_data.py share/gradfric/slurm/sbm_ensemble.sbatch \
          share/gradfric/slurm/submit_chain.sh share/gradfric/slurm/fem_sweep.sbatch share/gradfric/slurm/design.sbatch; do
   [ -x "$prefix/$f" ] || fail "$f not installed as an executable"
 done

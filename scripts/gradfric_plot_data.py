@@ -1,0 +1,160 @@
+"""The results files gradfric_plot.py draws, read through gradfric.open (python/gradfric): the
+ensemble layout (a spring-block ensemble or a FEM sweep), a FEM history, and the pairing of FEM
+points with spring-block points of the same grading and angle."""
+import os
+import sys
+
+import numpy as np
+
+# python/ beside scripts/, in the source tree and in the install tree (share/gradfric): first, so
+# that the script reads with the package of its own version.
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.realpath(__file__)), "..", "python"))
+import gradfric  # noqa: E402
+
+ENSEMBLE_FORMATS = {"gradfric-sbm-ensemble": "SBM", "gradfric-fem-sweep": "FEM"}
+# A FEM history file (gradfric-fem, one run) does not list its observables yet: these of its /results.
+FEM_HISTORY_OBSERVABLES = ("mu_s", "mu_k")
+
+
+def refuse(message):
+    """Input the tool cannot use: one line on stderr, exit code 2 (the drivers' rule)."""
+    print(f"gradfric_plot: error: {message}", file=sys.stderr)
+    sys.exit(2)
+
+
+class Ensemble:
+    """A results file with the ensemble layout (docs/ensemble.md): a spring-block ensemble
+    (gradfric) or a FEM sweep (gradfric-fem, one run per point; docs/fem.md)."""
+
+    def __init__(self, path, ds=None):
+        self.path = path
+        self.ds = ds = gradfric.open(path) if ds is None else ds
+        self.format = ds.attrs.get("format", "")
+        if self.format not in ENSEMBLE_FORMATS:
+            raise ValueError(f"{path} is not a gradfric ensemble or FEM sweep file")
+        self.model = ENSEMBLE_FORMATS[self.format]
+        self.axes = [a for a in ds.attrs["sweep_axes"].split(",") if a]
+        self.delta = ds["delta"].values
+        self.theta = ds["theta"].values
+        self.sigma = ds["sigma"].values
+        self.property = list(ds["property"].values)
+        self.profile = list(ds["profile"].values)
+        self.field_value = ds["field_value"].values if "field_value" in ds.coords else None
+        self.points = ds.sizes["point"]
+        self.done = ds["done"].values.astype(bool)
+        self.scene = {k: ds.attrs[k] for k in ds.attrs["scene_options"]}
+        # The observables with statistics, as the file lists them (gradfric.open).
+        self.observables = list(ds.attrs["observables"])
+
+    def label(self, p):
+        parts = []
+        for axis in self.axes or ["delta"]:
+            if axis == "delta":
+                parts.append(f"Delta={self.delta[p]:g}")
+            elif axis == "theta":
+                parts.append(f"theta={self.theta[p]:g} deg")
+            elif axis == "sigma":
+                parts.append(f"sigma={100 * self.sigma[p]:g} %")
+            elif axis == "property":
+                parts.append(self.property[p])
+            elif axis == "profile":
+                parts.append(self.profile[p])
+            elif axis.startswith("field_") and self.field_value is not None:
+                parts.append(f"{axis[6:]}={self.field_value[p]:g}")
+        return ", ".join(parts)
+
+    def statistic(self, name):
+        return self.ds[name].values
+
+    def has(self, name):
+        return name in self.ds
+
+    def histories(self, p):
+        """Every finished realisation's (time, mu) of point p."""
+        if "mu" not in self.ds:
+            return []
+        out = []
+        for r in np.flatnonzero(self.done[p]):
+            n = int(self.ds["length"][p, r])
+            if n > 0:
+                out.append((self.ds["time"][p, r, :n].values, self.ds["mu"][p, r, :n].values))
+        return out
+
+
+class FemHistory:
+    """A finite-element history file (layout: docs/fem.md)."""
+
+    def __init__(self, path, ds=None):
+        self.path = path
+        ds = gradfric.open(path) if ds is None else ds
+        if ds.attrs.get("format") != "gradfric-fem-history":
+            raise ValueError(f"{path} is not a gradfric-fem history file")
+        self.time = ds["time"].values
+        self.mu = ds["mu"].values
+        # the numbers only: /results also holds text (the error bars' basis, the window's description)
+        self.results = {k: float(v) for k, v in ds.data_vars.items()
+                        if v.attrs["hdf5_path"].startswith("/results@") and v.dtype.kind in "iuf"}
+        self.parameters = {k: ds.attrs[k] for k in ds.attrs["scene_options"]}
+        self.delta = float(self.parameters.get("grading_delta", self.parameters.get("-grading_delta", 0.0)))
+        self.profile = self.parameters.get("grading_profile", self.parameters.get("-grading_profile", "none"))
+        if self.profile == "none":
+            self.delta = 0.0
+        self.thickness = self.parameters.get("plate_H", self.parameters.get("-plate_H", self.parameters.get("fem_H", "")))
+
+
+def load(path):
+    """An Ensemble (ensemble or FEM sweep) or a FemHistory; ValueError for any other file."""
+    ds = gradfric.open(path)
+    return Ensemble(path, ds) if ds.attrs.get("format") in ENSEMBLE_FORMATS else FemHistory(path, ds)
+
+
+def pair_key(ensemble, p, digits=9):
+    """What a point's physics depends on across the models: its grading, its angle (every
+    non-graded point is the same plate whatever its nominal property or profile) and the value of
+    a swept field parameter (-ensemble_field), named by its axis."""
+    theta = round(float(ensemble.theta[p]), digits)
+    delta = round(float(ensemble.delta[p]), digits)
+    field = tuple(a for a in ensemble.axes if a.startswith("field_"))
+    if field and ensemble.field_value is not None:
+        field += (round(float(ensemble.field_value[p]), digits),)
+    if ensemble.profile[p] == "none" or delta == 0.0:
+        return ("none", "none", 0.0, theta) + field
+    return (ensemble.property[p], ensemble.profile[p], delta, theta) + field
+
+
+def pair_points(sbm, fem):
+    """[(FEM point, SBM point)] for every point of the FEM sweep; refuses (exit 2) a sweep of
+    another plate or with a point the spring-block file does not have."""
+    # The plate, and the property fields (-field_*: the same surface apart from the swept value).
+    names = [k for k in fem.scene if k.startswith("plate_") or k.startswith("field_") or k == "grading_bands"]
+    differ = [f"-{k}: FEM {fem.scene[k]}, SBM {sbm.scene.get(k, '(not set)')}" for k in names
+              if (k in sbm.scene or k.startswith("field_")) and sbm.scene.get(k) != fem.scene[k]]
+    if differ:
+        refuse(f"{fem.path} and {sbm.path} do not describe the same plate: " + "; ".join(differ))
+    by_key = {}
+    for q in range(sbm.points):
+        by_key.setdefault(pair_key(sbm, q), q)
+    pairs, missing = [], []
+    for p in range(fem.points):
+        q = by_key.get(pair_key(fem, p))
+        if q is None:
+            missing.append(f"point {p} ({fem.label(p)}, {fem.property[p]} {fem.profile[p]}, theta={fem.theta[p]:g})")
+        else:
+            pairs.append((p, q))
+    if missing:
+        refuse(f"{fem.path} does not match {sbm.path}: no spring-block point with the grading, angle and field value of FEM "
+               + ", ".join(missing))
+    return pairs
+
+
+def print_pairs(sbm, fem, pairs):
+    names = [n for n in sbm.observables if n in fem.observables]
+    values = {(m, n): (m.statistic(f"{n}_mean"), m.statistic(f"{n}_relative") * 100) for m in (sbm, fem) for n in names}
+    print(f"gradfric_plot: {len(pairs)} FEM point(s) paired with spring-block points ({', '.join(names)}: "
+          "value and relative variation):")
+    for p, q in pairs:
+        line = f"  FEM {p} <-> SBM {q}  {fem.label(p):<24s}"
+        for n in names:
+            (fm, fr), (sm, sr) = values[(fem, n)], values[(sbm, n)]
+            line += f"  {n}: FEM {fm[p]:.6g} ({fr[p]:+.3f} %)  SBM {sm[q]:.6g} ({sr[q]:+.3f} %)"
+        print(line)
