@@ -60,8 +60,7 @@ io::ResultsFile openResultsFile(MPI_Comm comm, const Scene& scene, const io::Out
     return resumed;
   }();
   try {
-    file.setRunAttributes(scene.runAttributes);
-    file.setProvenance(io::collectProvenance(comm));  // version, command line, options files, date, ranks
+    file.setRun(scene.runAttributes, io::collectProvenance(comm));  // and version, command line, options files, date, ranks
   } catch (const CollectiveError& e) {
     const bool resumed = plan.start() == io::OutputStart::ContinueTemporary || plan.start() == io::OutputStart::ContinueFinished;
     if (!resumed) {
@@ -135,8 +134,7 @@ std::vector<PointStatistics> writeStatistics(io::ResultsFile& file, int realisat
 void finishResultsFile(MPI_Comm comm, io::ResultsFile& file, const io::OutputPlan& plan) {
   {
     const LogEventScope timed(logEvents().write);
-    file.markComplete();
-    file.close();
+    file.markCompleteAndClose();
   }
   plan.commit(comm);
 }

@@ -2,6 +2,7 @@
 #include "gradfric/ensemble/task_runner.hpp"
 
 #include "gradfric/core/collective_error.hpp"
+#include "gradfric/core/quiet_wait.hpp"
 #include "gradfric/core/random_stream.hpp"
 #include "gradfric/ensemble/log_events.hpp"
 #include "gradfric/ensemble/scene_file.hpp"
@@ -144,6 +145,7 @@ void runBatch(MPI_Comm comm, const Scene& scene, io::ResultsFile& file, const st
       }
     }
   }
+  waitForRanks(comm);  // the tail: a rank out of tasks sleeps until the last one finishes
   file.flush();
   try {
     agreeOnError(comm, failure);

@@ -80,8 +80,7 @@ io::ResultsFile openSweepFile(MPI_Comm comm, const FemSweep& s, const io::Output
     return io::ResultsFile::open(comm, plan.workPath());
   }();
   try {
-    file.setRunAttributes(s.runAttributes);
-    file.setProvenance(io::collectProvenance(comm));
+    file.setRun(s.runAttributes, io::collectProvenance(comm));
   } catch (const CollectiveError& e) {
     if (plan.start() == io::OutputStart::Fresh) {
       plan.discard(comm);  // a new file without a run: nothing to keep
