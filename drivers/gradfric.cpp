@@ -7,7 +7,7 @@
 // option with its default and unit. See README.md and docs/ensemble.md.
 #include "gradfric/core/driver.hpp"
 #include "gradfric/core/options.hpp"
-#include "gradfric/ensemble/interruption.hpp"
+#include "gradfric/campaign/interruption.hpp"
 #include "gradfric/ensemble/scene.hpp"
 #include "gradfric/ensemble/scene_file.hpp"
 #include "gradfric/ensemble/scene_report.hpp"

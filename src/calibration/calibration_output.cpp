@@ -17,7 +17,7 @@ namespace gradfric::calibration {
 
 namespace {
 
-double halfWidth(const ensemble::Summary& s) { return s.ciHalfWidth(); }
+double halfWidth(const campaign::Summary& s) { return s.ciHalfWidth(); }
 
 // Each comma-separated path made absolute (from the working directory the run resolved it in).
 std::string absolutePaths(const std::string& value) {

@@ -22,7 +22,7 @@ Residual residualOf(const Calibration& c, const Evaluation& e) {
   return {e.slope.mean / c.target.slope - 1.0, e.peak.mean - c.target.peak};
 }
 
-double halfWidth(const ensemble::Summary& s) { return s.ciHalfWidth(); }
+double halfWidth(const campaign::Summary& s) { return s.ciHalfWidth(); }
 
 // How far an evaluation is from convergence: <= 1 when both residuals are within tolerance.
 double misfit(const Calibration& c, const Evaluation& e) {

@@ -1,7 +1,7 @@
 // Loading slope and static peak of a mu(t) curve (include/gradfric/calibration/loading_curve.hpp).
 #include "gradfric/calibration/loading_curve.hpp"
 
-#include "gradfric/ensemble/statistics.hpp"
+#include "gradfric/campaign/statistics.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -51,7 +51,7 @@ LoadingFeatures loadingFeatures(const std::vector<double>& time, const std::vect
     ss += r * r;
   }
   f.slopeStdError = std::sqrt(ss / (k - 2) / sxx);
-  f.slopeHalfWidth = ensemble::t95(k - 2) * f.slopeStdError;  // the fit has k - 2 degrees of freedom
+  f.slopeHalfWidth = campaign::t95(k - 2) * f.slopeStdError;  // the fit has k - 2 degrees of freedom
   return f;
 }
 

@@ -80,8 +80,8 @@ Evaluation evaluateSpringBlocks(MPI_Comm comm, const SpringBlockScene& scene, do
     e.taskSeconds += slot[3];
     for (std::size_t k = 0; k < G; ++k) e.meanCurve[k] += slot[4 + k] / R;  // NaN stays NaN
   }
-  e.peak = ensemble::summarise(peaks);
-  e.slope = ensemble::summarise(slopes);
+  e.peak = campaign::summarise(peaks);
+  e.slope = campaign::summarise(slopes);
   e.wallSeconds = MPI_Wtime() - wall0;
   return e;
 }

@@ -1,7 +1,7 @@
 // The rule of include/gradfric/core/refinement_ladder.hpp.
 #include "gradfric/core/refinement_ladder.hpp"
 
-#include "gradfric/ensemble/statistics.hpp"  // t95
+#include "gradfric/campaign/statistics.hpp"  // t95
 
 #include <algorithm>
 #include <cmath>
@@ -20,7 +20,7 @@ double halfWidthOf(const LadderRung (&m)[3], const double (&c)[3]) {
     variance += c[i] * c[i] * m[i].stdError * m[i].stdError;
     smallest = smallest == 0 ? m[i].realisations : std::min(smallest, m[i].realisations);
   }
-  return variance == 0.0 ? 0.0 : ensemble::t95(smallest - 1) * std::sqrt(variance);
+  return variance == 0.0 ? 0.0 : campaign::t95(smallest - 1) * std::sqrt(variance);
 }
 
 }  // namespace

@@ -5,8 +5,8 @@
 
 #include "gradfric/core/collective_error.hpp"
 #include "gradfric/core/petsc_call.hpp"
-#include "gradfric/ensemble/precision_target.hpp"
-#include "gradfric/ensemble/scheduler.hpp"
+#include "gradfric/campaign/precision_target.hpp"
+#include "gradfric/campaign/scheduler.hpp"
 #include "gradfric/sbm/model.hpp"
 
 #include <algorithm>
@@ -20,7 +20,7 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // The ensemble's statistics of the first n realisations of each plate (P x n tables).
-std::vector<ensemble::PointStatistics> statisticsOf(const std::vector<const std::vector<double>*>& plates, int n,
+std::vector<campaign::PointStatistics> statisticsOf(const std::vector<const std::vector<double>*>& plates, int n,
                                                     const std::vector<int>& reference, bool paired) {
   std::vector<double> muStatic;
   for (const auto* values : plates) muStatic.insert(muStatic.end(), values->begin(), values->begin() + n);
@@ -29,7 +29,7 @@ std::vector<ensemble::PointStatistics> statisticsOf(const std::vector<const std:
   tables[statisticsIndex("mu_s")] = muStatic;
   const std::vector<signed char> confirmed(muStatic.size(), 1);
   const std::vector<unsigned char> done(muStatic.size(), 1);
-  return ensemble::pointStatistics(n, reference, tables, confirmed, done, paired);
+  return campaign::pointStatistics(n, reference, tables, confirmed, done, paired);
 }
 
 }  // namespace
@@ -50,7 +50,7 @@ void Evaluator::run(const std::vector<Batch>& batches) {
   double seconds = 0.0;
   std::string failure;
   {
-    ensemble::TaskCounter counter(comm_, ensemble::Schedule::Dynamic);
+    campaign::TaskCounter counter(comm_, campaign::Schedule::Dynamic);
     for (long k = counter.next(); k < static_cast<long>(tasks.size()); k = counter.next()) {
       const Batch& b = batches[tasks[k].batch];
       const Grading grading = b.x ? problem_.gradingAt(*b.x) : problem_.referenceGrading();
@@ -81,8 +81,8 @@ Evaluation Evaluator::evaluate(const std::vector<double>& x, double halfWidth, c
   std::vector<double>& mine = values_[{stream, x}];
   std::vector<double>& reference = reference_[stream];
   const bool variation = problem_.kind == TargetKind::Variation;
-  ensemble::PrecisionTarget target;
-  target.kind = variation ? ensemble::TargetKind::Variation : ensemble::TargetKind::Absolute;
+  campaign::PrecisionTarget target;
+  target.kind = variation ? campaign::TargetKind::Variation : campaign::TargetKind::Absolute;
   target.halfWidth = halfWidth;
   target.first = problem_.firstBatch;
   target.cap = problem_.cap;
@@ -91,7 +91,7 @@ Evaluation Evaluator::evaluate(const std::vector<double>& x, double halfWidth, c
   const std::vector<const std::vector<double>*> plates =
       variation ? std::vector<const std::vector<double>*>{&reference, &mine} : std::vector<const std::vector<double>*>{&mine};
   int n = std::min(problem_.cap, std::max({problem_.firstBatch, static_cast<int>(mine.size()), atLeast}));
-  std::vector<ensemble::PointStatistics> statistics;
+  std::vector<campaign::PointStatistics> statistics;
   for (;;) {
     std::vector<Batch> batches;
     if (variation) batches.push_back({nullptr, stream, n, &reference});
@@ -99,7 +99,7 @@ Evaluation Evaluator::evaluate(const std::vector<double>& x, double halfWidth, c
     run(batches);
     statistics = statisticsOf(plates, n, referenceOf, variation);
     const std::vector<int> counts(plates.size(), n);
-    const std::vector<int> next = ensemble::planNextBatch(target, counts, statistics, referenceOf);
+    const std::vector<int> next = campaign::planNextBatch(target, counts, statistics, referenceOf);
     if (next == counts) break;
     n = *std::max_element(next.begin(), next.end());
   }
@@ -114,7 +114,7 @@ Evaluation Evaluator::evaluate(const std::vector<double>& x, double halfWidth, c
   e.muStaticCiLow = statistics[p].observables[mu].summary.ciLow;
   e.muStaticCiHigh = statistics[p].observables[mu].summary.ciHigh;
   if (variation) {
-    const double h = ensemble::achievedHalfWidth(target, statistics, referenceOf, 1);
+    const double h = campaign::achievedHalfWidth(target, statistics, referenceOf, 1);
     e.value = statistics[1].observables[mu].relative.value;
     e.ciLow = e.value - h;
     e.ciHigh = e.value + h;

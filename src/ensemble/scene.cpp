@@ -4,8 +4,8 @@
 
 #include "gradfric/core/input_error.hpp"
 #include "gradfric/core/petsc_call.hpp"
-#include "gradfric/ensemble/statistics_columns.hpp"
-#include "gradfric/ensemble/sweep_options.hpp"
+#include "gradfric/campaign/statistics_columns.hpp"
+#include "gradfric/campaign/sweep_options.hpp"
 #include "gradfric/physics/field_options.hpp"
 #include "gradfric/physics/grading_options.hpp"
 #include "gradfric/physics/property_sampler.hpp"
@@ -239,12 +239,6 @@ sbm::Parameters Scene::pointParameters(int p) const {
 
 SbmDiscretisation Scene::discretisation(int p, bool kinetic) const {
   return sbmDiscretisationError(pointParameters(p), pointGrading(p), request.measurement, kinetic);
-}
-
-Grading Scene::pointGrading(int p) const {
-  Grading g = gradingOf(sweep.points[p], baseGrading.bands);
-  g.fields = pointFields.empty() ? fields : pointFields[p];
-  return g;
 }
 
 std::optional<Scene> readScene(MPI_Comm comm, RunParameters* record) {

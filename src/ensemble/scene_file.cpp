@@ -5,8 +5,8 @@
 
 #include "gradfric/core/collective_error.hpp"
 #include "gradfric/core/petsc_call.hpp"
-#include "gradfric/ensemble/log_events.hpp"
-#include "gradfric/ensemble/statistics_columns.hpp"
+#include "gradfric/campaign/log_events.hpp"
+#include "gradfric/campaign/statistics_columns.hpp"
 #include "gradfric/physics/observables.hpp"
 
 #include <limits>
@@ -60,8 +60,7 @@ io::ResultsFile openResultsFile(MPI_Comm comm, const Scene& scene, const io::Out
     return resumed;
   }();
   try {
-    file.setRunAttributes(scene.runAttributes);
-    file.setProvenance(io::collectProvenance(comm));  // version, command line, options files, date, ranks
+    file.setRun(scene.runAttributes, io::collectProvenance(comm));  // and version, command line, options files, date, ranks
   } catch (const CollectiveError& e) {
     const bool resumed = plan.start() == io::OutputStart::ContinueTemporary || plan.start() == io::OutputStart::ContinueFinished;
     if (!resumed) {
@@ -79,12 +78,6 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 }  // namespace
-
-std::vector<std::vector<double>> observableTables(const io::ResultsFile& file) {
-  std::vector<std::vector<double>> tables;
-  for (const Observable& o : statisticsObservables()) tables.push_back(file.readRealisationReal(o.name));
-  return tables;
-}
 
 std::vector<PointStatistics> writeStatistics(io::ResultsFile& file, const Scene& scene) {
   auto stats = writeStatistics(file, scene.realisations, scene.sweep.reference, scene.commonStreams,
@@ -106,39 +99,6 @@ std::vector<PointStatistics> writeStatistics(io::ResultsFile& file, const Scene&
   }
   file.writeStatistics(bars, {});
   return stats;
-}
-
-std::vector<PointStatistics> writeStatistics(io::ResultsFile& file, int realisations,
-                                             const std::vector<int>& reference, bool commonStreams,
-                                             const PrecisionTarget* target) {
-  // Every rank reads the small P x R tables and computes the same numbers; rank 0 writes them.
-  const LogEventScope timed(logEvents().statistics);
-  const auto flags = file.finishedTasks();
-  const std::vector<unsigned char> done(flags.begin(), flags.end());
-  const auto stats = pointStatistics(realisations, reference, observableTables(file), file.readPeakConfirmed(), done,
-                                     commonStreams);
-  auto [real, integer] = statisticsValues(stats);
-  if (target) {  // the half-width each point reached and whether it met the target
-    std::vector<double> reached;
-    std::vector<int> met;
-    for (int p = 0; p < static_cast<int>(reference.size()); ++p) {
-      reached.push_back(achievedHalfWidth(*target, stats, reference, p));
-      met.push_back(reached.back() <= target->halfWidth ? 1 : 0);
-    }
-    real.emplace_back("target_half_width", reached);
-    integer.emplace_back("target_met", met);
-  }
-  file.writeStatistics(real, integer);
-  return stats;
-}
-
-void finishResultsFile(MPI_Comm comm, io::ResultsFile& file, const io::OutputPlan& plan) {
-  {
-    const LogEventScope timed(logEvents().write);
-    file.markComplete();
-    file.close();
-  }
-  plan.commit(comm);
 }
 
 }  // namespace gradfric::ensemble

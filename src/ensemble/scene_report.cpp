@@ -13,33 +13,6 @@
 
 namespace gradfric::ensemble {
 
-std::string hms(double seconds) {
-  if (!std::isfinite(seconds) || seconds < 0) return "?";
-  const long s = static_cast<long>(seconds + 0.5);
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%ld:%02ld:%02ld", s / 3600, (s / 60) % 60, s % 60);
-  return buffer;
-}
-
-std::string pointLabel(const Sweep& sweep, int p) {
-  const SweepPoint& q = sweep.points[p];
-  std::ostringstream out;
-  bool first = true;
-  auto add = [&](const std::string& text) {
-    out << (first ? "" : ", ") << text;
-    first = false;
-  };
-  for (const auto& axis : sweep.axes) {
-    if (axis == "delta") add("Delta=" + formatReal(q.delta));
-    if (axis == "theta") add("theta=" + formatReal(q.theta));
-    if (axis == "sigma") add("sigma=" + formatReal(q.sigma));
-    if (axis == "property") add("property=" + q.property);
-    if (axis == "profile") add("profile=" + q.profile);
-    if (axis.rfind("field_", 0) == 0) add(axis.substr(6) + "=" + formatReal(q.fieldValue));
-  }
-  return first ? "single point" : out.str();
-}
-
 namespace {
 
 // The effects of the most strongly graded point (the sweep line lists the others).

@@ -3,9 +3,9 @@
 
 #include "gradfric/core/collective_error.hpp"
 #include "gradfric/core/random_stream.hpp"
-#include "gradfric/ensemble/log_events.hpp"
+#include "gradfric/campaign/log_events.hpp"
 #include "gradfric/ensemble/scene_file.hpp"
-#include "gradfric/ensemble/scheduler.hpp"
+#include "gradfric/campaign/runner.hpp"
 #include "gradfric/physics/observables.hpp"
 #include "gradfric/physics/property_sampler.hpp"
 #include "gradfric/sbm/model.hpp"
@@ -53,8 +53,8 @@ io::TaskOutput toTaskOutput(const Task& task, sbm::Result&& result, bool history
   return o;
 }
 
-// Runs one realisation and writes it; returns its wall time.
-double runTask(const Scene& scene, const Task& task, io::ResultsFile& file, int rank, io::TaskOutput* summary) {
+// Runs one realisation: what the file keeps of it.
+io::TaskOutput runTask(const Scene& scene, const Task& task, int rank) {
   const auto& events = logEvents();
   const StreamKey key{scene.seed, static_cast<std::uint32_t>(scene.commonStreams ? 0 : task.point),
                       static_cast<std::uint32_t>(task.realisation)};
@@ -80,14 +80,7 @@ double runTask(const Scene& scene, const Task& task, io::ResultsFile& file, int 
         o.localKinetic.push_back(field.kineticAt(row, column) / normal);
       }
   }
-  {
-    const LogEventScope writing(events.write);
-    file.writeTask(o);
-  }
-  // The measurement for the progress line, without the history (its samples are in the file).
-  summary->friction = std::move(o.friction);
-  summary->friction.time = summary->friction.mu = summary->friction.forceX = summary->friction.forceY = {};
-  return wall;
+  return o;
 }
 
 void printProgress(const Task& task, const io::TaskOutput& o, double wall, long finishedAll, long pending,
@@ -111,48 +104,30 @@ void abortIfDue(const Scene& scene, long finishedOverall, int rank) {
   std::_Exit(86);
 }
 
-// One batch of tasks over the ranks. `before` counts the tasks this run finished in earlier
-// batches, `total` is the denominator of the progress line.
+// One batch of tasks over the ranks (the campaign runner, one rank per realisation). `before`
+// counts the tasks this run finished in earlier batches, `total` is the progress line's denominator.
 void runBatch(MPI_Comm comm, const Scene& scene, io::ResultsFile& file, const std::vector<Task>& tasks,
               const std::string& resultsPath, long before, long total, TaskTally* tally, long* ranHere,
               double* secondsHere) {
   int rank = 0;
   GF_CALL_MPI(MPI_Comm_rank(comm, &rank));
-  std::string failure;
-  const auto start = tally->start;
-  {
-    TaskCounter counter(comm, scene.schedule == "dynamic" ? Schedule::Dynamic : Schedule::Static);
-    for (;;) {
-      if (scene.abortAfter > 0) abortIfDue(scene, before + counter.finishedSoFar(), rank);
-      const long index = counter.next();
-      if (index >= static_cast<long>(tasks.size())) break;
-      const Task task = tasks[index];
-      try {
-        io::TaskOutput o;
-        const double wall = runTask(scene, task, file, rank, &o);
-        ++*ranHere;
-        *secondsHere += wall;
-        const long finishedAll = counter.finishOne();
-        if (scene.monitor)
-          printProgress(task, o, wall, before + finishedAll, before + static_cast<long>(tasks.size()),
-                        tally->alreadyDone, total, scene.sweep, secondsSince(start), rank);
-        abortIfDue(scene, before + finishedAll, rank);
-      } catch (const std::exception& e) {
-        failure = "task (point " + std::to_string(task.point) + ", realisation " + std::to_string(task.realisation) +
-                  ") failed on rank " + std::to_string(rank) + ": " + e.what();
-        break;  // the other ranks finish their tasks; everything finished stays in the file
-      }
-    }
-  }
-  file.flush();
-  try {
-    agreeOnError(comm, failure);
-  } catch (const CollectiveError& e) {
-    file.close();
-    throw CollectiveError(std::string(e.what()) + "; the finished tasks are in " + resultsPath +
-                          ", continue with -resume");
-  }
-  file.flush();  // sync, barrier, sync: every rank now reads what the others wrote
+  ModelAdapter model;
+  model.schedule = scene.schedule == "dynamic" ? Schedule::Dynamic : Schedule::Static;
+  model.run = [&](const Task& task, MPI_Comm) { return runTask(scene, task, rank); };
+  model.finished = [&](const Task& task, const io::TaskOutput& o, long, long finishedAll, bool) {
+    if (scene.monitor)
+      printProgress(task, o, o.wallSeconds, before + finishedAll, before + static_cast<long>(tasks.size()),
+                    tally->alreadyDone, total, scene.sweep, secondsSince(tally->start), rank);
+    abortIfDue(scene, before + finishedAll, rank);
+  };
+  if (scene.abortAfter > 0) model.beforeNext = [&](long finishedSoFar) { abortIfDue(scene, before + finishedSoFar, rank); };
+  model.failure = [](const Task& task, int, int rank, const std::string& what) {
+    return "task (point " + std::to_string(task.point) + ", realisation " + std::to_string(task.realisation) +
+           ") failed on rank " + std::to_string(rank) + ": " + what;
+  };
+  const RunnerCount count = runPending(comm, file, tasks, model, resultsPath);
+  *ranHere += count.ran;
+  *secondsHere += count.seconds;
 }
 
 // A precision target: batches until every point meets it or reaches the cap. The plan is replayed

@@ -6,8 +6,8 @@
 
 #include "gradfric/core/input_error.hpp"
 #include "gradfric/core/petsc_call.hpp"
-#include "gradfric/ensemble/statistics_columns.hpp"
-#include "gradfric/ensemble/sweep_options.hpp"
+#include "gradfric/campaign/statistics_columns.hpp"
+#include "gradfric/campaign/sweep_options.hpp"
 #include "gradfric/fem/stable_step.hpp"
 #include "gradfric/physics/field_options.hpp"
 #include "gradfric/physics/property_sampler.hpp"
@@ -45,13 +45,13 @@ io::EnsembleLayout layoutOf(const FemSweep& s) {
   // The columns ensemble::writeStatistics writes (the same as the spring-block ensemble's file),
   // and the FEM's own: each point's discretisation error bar (error_estimate.hpp), relative, NaN
   // where no study measured it (sweep_run.cpp writes them with the statistics).
-  layout.statistics = ensemble::statisticsColumns();
-  for (const char* mu : {"mu_s", "mu_k"}) layout.statistics.push_back(ensemble::discretisationColumn(mu, "error"));
+  layout.statistics = campaign::statisticsColumns();
+  for (const char* mu : {"mu_s", "mu_k"}) layout.statistics.push_back(campaign::discretisationColumn(mu, "error"));
   return layout;
 }
 
 io::SweepTable tableOf(const FemSweep& s) {
-  io::SweepTable table = ensemble::sweepColumns(s.sweep);  // the ensemble's /sweep columns
+  io::SweepTable table = campaign::sweepColumns(s.sweep);  // the ensemble's /sweep columns
   for (const auto& q : s.sweep.points)
     if (q.fieldSwept) table.fieldValue.push_back(q.fieldValue);
   const Plate& plate = s.params.plate;
@@ -86,7 +86,7 @@ io::SweepTable tableOf(const FemSweep& s) {
 SweepOptions readSweepOptions(MPI_Comm comm, RunParameters* record) {
   SweepOptions s;
   OptionReader ens(comm, "ensemble_", "FEM sweep: the ensemble's sweep lists, one FEM run per point", record);
-  s.lists = ensemble::readSweepLists(ens);
+  s.lists = campaign::readSweepLists(ens);
   OptionReader sw(comm, "fem_sweep_", "FEM sweep over groups of ranks (docs/fem.md)", record);
   const PetscInt ranks = sw.integer("ranks_per_run", 1, 1, 1000000, "1",
                                     "ranks of each run's sub-communicator; must divide the number of ranks");
@@ -100,7 +100,7 @@ SweepOptions readSweepOptions(MPI_Comm comm, RunParameters* record) {
   sw.requireAtLeast("abort_after", abortAfter, 0);
   s.ranksPerRun = static_cast<int>(ranks);
   s.abortAfter = static_cast<long>(abortAfter);
-  s.requested = ensemble::anySwept(s.lists) || sw.wasSet("ranks_per_run") || out.wasSet("resume") ||
+  s.requested = campaign::anySwept(s.lists) || sw.wasSet("ranks_per_run") || out.wasSet("resume") ||
                 sw.wasSet("abort_after");
   return s;
 }
@@ -114,13 +114,6 @@ FemParameters FemSweep::pointParameters(int p) const {
   return q;
 }
 
-Grading FemSweep::pointGrading(int p) const {
-  Grading g = ensemble::gradingOf(sweep.points[p], baseGrading.bands);
-  // The property fields (-field_*): the same at every point, or the point's value of -ensemble_field.
-  g.fields = pointFields.empty() ? baseGrading.fields : pointFields[p];
-  return g;
-}
-
 FemSweep buildFemSweep(MPI_Comm comm, const FemParameters& params, const Grading& grading,
                        const SweepOptions& options, bool compareSbm, const RunParameters& record) {
   FemSweep s;
@@ -130,7 +123,7 @@ FemSweep buildFemSweep(MPI_Comm comm, const FemParameters& params, const Grading
   if (!options.lists.sigma.empty())
     throw InputError("-ensemble_sigma", "(a list)",
                      "no sigma sweep in the FEM: its local coefficients are not dispersed (sweep sigma with gradfric)");
-  ensemble::checkSweepLists(options.lists, grading);
+  campaign::checkSweepLists(options.lists, grading);
   int size = 1;
   GF_CALL_MPI(MPI_Comm_size(comm, &size));
   if (options.ranksPerRun > size || size % options.ranksPerRun != 0)
@@ -145,20 +138,20 @@ FemSweep buildFemSweep(MPI_Comm comm, const FemParameters& params, const Grading
   s.output = params.output.empty() ? "gradfric_fem_sweep.h5" : params.output;
 
   // A field sweep: the scene's fields with each value, every one checked on the mesh before any work.
-  ensemble::SweepLists lists = options.lists;
-  const auto valueFields = ensemble::fieldsPerValue(&lists, grading.fields);
+  campaign::SweepLists lists = options.lists;
+  const auto valueFields = campaign::fieldsPerValue(&lists, grading.fields);
   for (const auto& fields : valueFields) {
     Grading g = grading;
     g.fields = fields;
     checkMeshFields(g, params);
   }
 
-  ensemble::SweepPoint base;
+  campaign::SweepPoint base;
   base.delta = grading.delta;
   base.property = toString(grading.property);
   base.profile = toString(grading.profile);
   base.theta = params.plate.slidingAngle;
-  s.sweep = ensemble::buildSweep(lists, base);
+  s.sweep = campaign::buildSweep(lists, base);
   for (const auto& q : s.sweep.points)  // each point's fields, in the ensemble's order
     if (q.fieldSwept) {
       const auto at = std::find(lists.fieldValues.begin(), lists.fieldValues.end(), q.fieldValue);

@@ -2,9 +2,10 @@
 #include "gradfric/core/collective_error.hpp"
 #include "gradfric/core/format.hpp"
 #include "gradfric/core/petsc_call.hpp"
-#include "gradfric/ensemble/interruption.hpp"
-#include "gradfric/ensemble/scene_file.hpp"
-#include "gradfric/ensemble/scene_report.hpp"
+#include "gradfric/campaign/campaign_file.hpp"
+#include "gradfric/campaign/interruption.hpp"
+#include "gradfric/campaign/resume_check.hpp"
+#include "gradfric/campaign/runner.hpp"
 #include "gradfric/fem/error_estimate.hpp"
 #include "gradfric/fem/plate_model.hpp"
 #include "gradfric/fem/simulation.hpp"
@@ -27,33 +28,6 @@ namespace gradfric::fem {
 
 namespace {
 
-// The sub-communicator of this rank's group: ranks [g k, (g + 1) k) of comm, k = ranks per run.
-class GroupComm {
-public:
-  GroupComm(MPI_Comm comm, int ranksPerRun) {
-    int rank = 0, size = 1;
-    GF_CALL_MPI(MPI_Comm_rank(comm, &rank));
-    GF_CALL_MPI(MPI_Comm_size(comm, &size));
-    group_ = rank / ranksPerRun;
-    groups_ = size / ranksPerRun;
-    GF_CALL_MPI(MPI_Comm_split(comm, group_, rank, &comm_));
-    GF_CALL_MPI(MPI_Comm_rank(comm_, &rankInGroup_));
-  }
-  ~GroupComm() {
-    if (comm_ != MPI_COMM_NULL) MPI_Comm_free(&comm_);
-  }
-  GroupComm(const GroupComm&) = delete;
-  GroupComm& operator=(const GroupComm&) = delete;
-  MPI_Comm comm() const { return comm_; }
-  int group() const { return group_; }
-  int groups() const { return groups_; }
-  bool leader() const { return rankInGroup_ == 0; }
-
-private:
-  MPI_Comm comm_ = MPI_COMM_NULL;
-  int group_ = 0, groups_ = 1, rankInGroup_ = 0;
-};
-
 io::OutputPlan planSweepFile(MPI_Comm comm, const FemSweep& s) {
   io::OutputRequest request;
   request.option = "-output";
@@ -73,15 +47,14 @@ io::ResultsFile openSweepFile(MPI_Comm comm, const FemSweep& s, const io::Output
                           plan.path().c_str()));
       return io::ResultsFile::create(comm, plan.workPath(), s.layout, s.table, s.sceneAttributes);
     }
-    ensemble::checkResumable(
-        comm, ensemble::ResumeTarget{s.sceneAttributes, s.layout, "-resume", "-output_overwrite"},
+    campaign::checkResumable(
+        comm, campaign::ResumeTarget{s.sceneAttributes, s.layout, "-resume", "-output_overwrite"},
         plan.workPath());
     GF_CALL(PetscPrintf(comm, "Resuming %s\n", plan.workPath().c_str()));
     return io::ResultsFile::open(comm, plan.workPath());
   }();
   try {
-    file.setRunAttributes(s.runAttributes);
-    file.setProvenance(io::collectProvenance(comm));
+    file.setRun(s.runAttributes, io::collectProvenance(comm));
   } catch (const CollectiveError& e) {
     if (plan.start() == io::OutputStart::Fresh) {
       plan.discard(comm);  // a new file without a run: nothing to keep
@@ -118,13 +91,15 @@ void abortIfDue(const FemSweep& s, long ranHere, int rank) {
   std::_Exit(86);
 }
 
-void printPlan(MPI_Comm comm, const FemSweep& s, const GroupComm& groups, long pending) {
+void printPlan(MPI_Comm comm, const FemSweep& s, long pending) {
+  int size = 1;
+  GF_CALL_MPI(MPI_Comm_size(comm, &size));
   std::string axes;
   for (const auto& a : s.sweep.axes) axes += (axes.empty() ? "" : ",") + a;
   GF_CALL(PetscPrintf(comm,
                       "FEM sweep: %d point(s) (axes: %s), %ld to run, on %d group(s) of %d rank(s); "
                       "%d x %d x %d hexahedra per run\n",
-                      s.points(), axes.empty() ? "none" : axes.c_str(), pending, groups.groups(),
+                      s.points(), axes.empty() ? "none" : axes.c_str(), pending, size / s.options.ranksPerRun,
                       s.options.ranksPerRun, s.params.nx, s.params.ny, s.params.nz));
 }
 
@@ -147,7 +122,7 @@ ErrorBars errorBarsOf(const FemSweep& s) {
   return bars;
 }
 
-void printTable(MPI_Comm comm, const FemSweep& s, const std::vector<ensemble::PointStatistics>& stats,
+void printTable(MPI_Comm comm, const FemSweep& s, const std::vector<campaign::PointStatistics>& stats,
                 const ErrorBars& bars) {
   // Per observable (physics/observables.hpp): its value and relative variation; mu_s with its bar.
   const std::vector<Observable> rows = statisticsObservables();
@@ -183,9 +158,21 @@ void printTable(MPI_Comm comm, const FemSweep& s, const std::vector<ensemble::Po
                     value, bar, relative(p, st.observables[o].relative.value).c_str());
       line += piece;
     }
-    GF_CALL(PetscPrintf(comm, "  %-5d %-24s%s%s\n", p, ensemble::pointLabel(s.sweep, p).c_str(), line.c_str(),
+    GF_CALL(PetscPrintf(comm, "  %-5d %-24s%s%s\n", p, campaign::pointLabel(s.sweep, p).c_str(), line.c_str(),
                         st.peaksUnconfirmed > 0 ? "  (peak not confirmed)" : ""));
   }
+}
+
+// The group leader's line for a finished point: mu_k with its window's spread, and whether it was steady.
+void printPoint(const FemSweep& s, int point, const io::TaskOutput& o, int group) {
+  const FrictionSummary& f = o.friction;
+  const std::string window = !f.kineticComplete ? ""
+                             : " (window spread " + formatReal(100 * f.kineticSpread) + " %" +
+                                   (!f.kineticSteadyTested ? ")" : f.kineticSteady ? ", steady)" : ", NOT steady)");
+  std::printf("[group %d] point %d (%s): %s%s%s  run %.2f s, %lld steps\n", group, point,
+              campaign::pointLabel(s.sweep, point).c_str(), observablesText(f).c_str(), window.c_str(),
+              f.peakConfirmed ? "" : " (peak not confirmed)", o.wallSeconds, static_cast<long long>(o.steps));
+  std::fflush(stdout);
 }
 
 }  // namespace
@@ -197,64 +184,35 @@ void runFemSweep(MPI_Comm comm, const FemSweep& s, const RunParameters& record) 
   io::ResultsFile file = openSweepFile(comm, s, plan);    // a file to resume is checked first
   record.print(comm, "gradfric-fem: resolved parameters (FEM sweep)");
   const auto flags = file.finishedTasks();
-  const std::vector<ensemble::Task> pending =
-      ensemble::pendingTasks(s.sweep, 1, std::vector<unsigned char>(flags.begin(), flags.end()));
-  GroupComm groups(comm, s.options.ranksPerRun);
-  printPlan(comm, s, groups, static_cast<long>(pending.size()));
+  const std::vector<campaign::Task> pending =
+      campaign::pendingTasks(s.sweep, 1, std::vector<unsigned char>(flags.begin(), flags.end()));
+  printPlan(comm, s, static_cast<long>(pending.size()));
   const double wall0 = MPI_Wtime();
-  long ranHere = 0;
-  std::string failure;
-  std::optional<ensemble::InterruptionNotice> notice;  // Ctrl-C, SIGTERM: while the points run
-  notice.emplace(comm, file, plan.workPath(), "points", "-resume");
-  // Round robin over the groups in the fixed order of pendingTasks: the same points run on the
-  // same groups whatever the timing, and no number in the file depends on which group ran it.
-  for (size_t i = groups.group(); i < pending.size(); i += groups.groups()) {
-    const int point = pending[i].point;
-    std::string local;  // this rank's error in this point, if any
-    try {
-      const io::TaskOutput o = runPoint(s, point, groups.comm(), rank);
-      if (groups.leader()) {
-        file.writeTask(o);
-        const FrictionSummary& f = o.friction;  // mu_k with its window's spread, and whether it was steady
-        const std::string window = !f.kineticComplete ? ""
-                                   : " (window spread " + formatReal(100 * f.kineticSpread) + " %" +
-                                         (!f.kineticSteadyTested ? ")" : f.kineticSteady ? ", steady)" : ", NOT steady)");
-        std::printf("[group %d] point %d (%s): %s%s%s  run %.2f s, %lld steps\n", groups.group(), point,
-                    ensemble::pointLabel(s.sweep, point).c_str(), observablesText(f).c_str(), window.c_str(),
-                    f.peakConfirmed ? "" : " (peak not confirmed)", o.wallSeconds,
-                    static_cast<long long>(o.steps));
-        std::fflush(stdout);
-      }
-    } catch (const std::exception& e) {
-      local = "FEM sweep point " + std::to_string(point) + " (" + ensemble::pointLabel(s.sweep, point) +
-              ") failed in group " + std::to_string(groups.group()) + ": " + e.what();
-    }
-    // The group agrees before its next run (a collective on its communicator): an error on one
-    // member, e.g. the leader's write, ends the loop on all of them instead of leaving the others
-    // waiting in the next run. The other groups finish their runs; what finished stays in the file.
-    int failed = local.empty() ? 0 : 1, anyFailed = 0;
-    GF_CALL_MPI(MPI_Allreduce(&failed, &anyFailed, 1, MPI_INT, MPI_MAX, groups.comm()));
-    if (anyFailed) {
-      failure = local;
-      break;
-    }
-    ++ranHere;
+  // Round robin over the groups in the fixed order of pendingTasks (the static schedule): the same
+  // points run on the same groups whatever the timing, and no number in the file depends on which
+  // group ran it.
+  campaign::ModelAdapter model;
+  model.ranksPerRun = s.options.ranksPerRun;
+  model.schedule = campaign::Schedule::Static;
+  model.unit = "points";
+  model.run = [&](const campaign::Task& task, MPI_Comm group) { return runPoint(s, task.point, group, rank); };
+  model.finished = [&](const campaign::Task& task, const io::TaskOutput& o, long ranHere, long, bool leader) {
+    if (leader) printPoint(s, task.point, o, rank / s.options.ranksPerRun);
     abortIfDue(s, ranHere, rank);
+  };
+  model.failure = [&](const campaign::Task& task, int group, int, const std::string& what) {
+    return "FEM sweep point " + std::to_string(task.point) + " (" + campaign::pointLabel(s.sweep, task.point) +
+           ") failed in group " + std::to_string(group) + ": " + what;
+  };
+  {
+    const campaign::InterruptionNotice notice(comm, file, plan.workPath(), "points", "-resume");  // Ctrl-C, SIGTERM
+    campaign::runPending(comm, file, pending, model, plan.workPath());
   }
-  notice.reset();
-  file.flush();
-  try {
-    agreeOnError(comm, failure);
-  } catch (const CollectiveError& e) {
-    file.close();
-    throw CollectiveError(std::string(e.what()) + "; the finished points are in " + plan.workPath() +
-                          ", continue with -resume");
-  }
-  const auto stats = ensemble::writeStatistics(file, 1, s.sweep.reference, false);
+  const auto stats = campaign::writeStatistics(file, 1, s.sweep.reference, false);
   const ErrorBars bars = errorBarsOf(s);
   file.writeStatistics({{"mu_s_discretisation_error", bars.muStatic}, {"mu_k_discretisation_error", bars.muKinetic}},
                        {});
-  ensemble::finishResultsFile(comm, file, plan);  // complete: renamed into place
+  campaign::finishResultsFile(comm, file, plan);  // complete: renamed into place
   printTable(comm, s, stats, bars);
   GF_CALL(PetscPrintf(comm, "FEM sweep: %zu run(s) in %.2f s wall; results in %s\n", pending.size(),
                       MPI_Wtime() - wall0, plan.path().c_str()));

@@ -8,6 +8,7 @@
 #include "results_layout.hpp"
 
 #include "gradfric/core/collective_error.hpp"
+#include "gradfric/core/quiet_wait.hpp"
 #include "gradfric/io/collective_file.hpp"
 #include "gradfric/io/file_room.hpp"
 #include "gradfric/io/hdf5_datasets.hpp"
@@ -45,6 +46,7 @@ void onRank0(MPI_Comm comm, const std::string& path, const std::function<void()>
       error = e.what();
     }
   }
+  waitForRanks(comm);  // the others sleep while rank 0 works
   agreeOnError(comm, error);
 }
 
@@ -285,17 +287,26 @@ void ResultsFile::setRunAttributes(const std::vector<Attribute>& attributes) {
   });
 }
 
-void ResultsFile::setProvenance(const Provenance& provenance) {
+void ResultsFile::setProvenance(const Provenance& provenance) { setRun({}, provenance); }
+
+void ResultsFile::setRun(const std::vector<Attribute>& attributes, const Provenance& provenance) {
   std::uint64_t bytes = 2 * (provenance.commandLine.size() + provenance.version.size() + provenance.commit.size()) + 2048;
   for (const auto& [name, text] : provenance.optionsFiles) bytes += 2 * (name.size() + text.size()) + 256;
-  changeOnRank0(withMetadataRoom(bytes), [&](hid_t file) {
+  for (const auto& a : attributes) bytes += 2 * (a.name.size() + a.value.size()) + 256;
+  changeOnRank0(withMetadataRoom(bytes), [&](hid_t file) {  // one close and reopen for both
     H5Group run(GF_H5(H5Gopen2(file, "run", H5P_DEFAULT)));
+    for (const auto& a : attributes) writeStringAttribute(run, a.name, a.value);
     writeProvenance(run, provenance);
   });
 }
 
 void ResultsFile::markComplete() {
   changeOnRank0(0, [](hid_t file) { writeIntAttribute(file, "complete", 1); });  // in place: no room needed
+}
+
+void ResultsFile::markCompleteAndClose() {
+  close();
+  onRank0(comm_, path_, [&] { changeHdf5File(path_, 0, [](hid_t file) { writeIntAttribute(file, "complete", 1); }); });
 }
 
 std::pair<std::uint64_t, std::uint64_t> ResultsFile::doneFlags() const {

@@ -4,7 +4,7 @@
 #include "gradfric/calibration/spring_block_evaluation.hpp"
 #include "gradfric/sbm/model.hpp"
 
-#include "gradfric/ensemble/statistics.hpp"
+#include "gradfric/campaign/statistics.hpp"
 
 #include <gtest/gtest.h>
 
@@ -46,7 +46,7 @@ TEST(LoadingCurve, AGivenPeakSetsTheWindowAndNoiseGivesAnError) {
   EXPECT_NEAR(own.slope, 2.0, 0.2);
   EXPECT_GT(own.slopeStdError, 0.0);
   // The 95 % half-width of the fit: Student t with samples - 2 degrees of freedom, wider than 1.96 SE.
-  EXPECT_NEAR(own.slopeHalfWidth, gradfric::ensemble::studentTQuantile(0.975, own.samples - 2) * own.slopeStdError, 1e-12);
+  EXPECT_NEAR(own.slopeHalfWidth, gradfric::campaign::studentTQuantile(0.975, own.samples - 2) * own.slopeStdError, 1e-12);
   EXPECT_GT(own.slopeHalfWidth, 2.2 * own.slopeStdError);
 }
 

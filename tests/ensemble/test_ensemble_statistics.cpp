@@ -1,14 +1,14 @@
 // Statistics of a sweep point: exact values for small samples, Student t quantiles against
 // tables, the relative variation and its propagated error.
-#include "gradfric/ensemble/statistics.hpp"
-#include "gradfric/ensemble/statistics_columns.hpp"
+#include "gradfric/campaign/statistics.hpp"
+#include "gradfric/campaign/statistics_columns.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
 
-using namespace gradfric::ensemble;
+using namespace gradfric::campaign;
 
 namespace {
 const double kNaN = std::numeric_limits<double>::quiet_NaN();

@@ -1,13 +1,13 @@
 // The sweep: Cartesian product in a fixed order, the non-graded reference of every point, and
 // the pending-task list (finished tasks skipped, expensive points first).
-#include "gradfric/ensemble/sweep.hpp"
+#include "gradfric/campaign/sweep.hpp"
 
 #include <gtest/gtest.h>
 
 #include <set>
 
 using namespace gradfric;
-using namespace gradfric::ensemble;
+using namespace gradfric::campaign;
 
 namespace {
 SweepPoint basePoint() {

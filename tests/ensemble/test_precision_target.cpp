@@ -1,13 +1,13 @@
 // The batch plan of a precision target: met points stop, unmet points grow towards the count their
 // standard error predicts (at least +1, at most x3, never past the cap), the reference of a
 // variation target grows with its points, and the half-widths are the 95 % CI's.
-#include "gradfric/ensemble/precision_target.hpp"
+#include "gradfric/campaign/precision_target.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-using namespace gradfric::ensemble;
+using namespace gradfric::campaign;
 
 namespace {
 

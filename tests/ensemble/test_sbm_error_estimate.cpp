@@ -3,7 +3,7 @@
 // statistical error), the settings outside the study, and the embedded table's rows.
 #include "gradfric/ensemble/sbm_error_estimate.hpp"
 
-#include "gradfric/ensemble/statistics.hpp"
+#include "gradfric/campaign/statistics.hpp"
 
 #include <gtest/gtest.h>
 
@@ -12,6 +12,7 @@
 
 using namespace gradfric;
 using namespace gradfric::ensemble;
+using namespace gradfric::campaign;
 
 namespace {
 

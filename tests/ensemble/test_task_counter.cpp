@@ -1,6 +1,6 @@
 // The task counter hands out every index exactly once over all ranks, dynamic or static, also
 // with more ranks than tasks; the finished count reaches the number of tasks.
-#include "gradfric/ensemble/scheduler.hpp"
+#include "gradfric/campaign/scheduler.hpp"
 
 #include <gtest/gtest.h>
 #include <petscsys.h>
@@ -9,7 +9,7 @@
 
 #include <vector>
 
-using namespace gradfric::ensemble;
+using namespace gradfric::campaign;
 
 namespace {
 void checkEveryIndexOnce(Schedule schedule, long tasks) {

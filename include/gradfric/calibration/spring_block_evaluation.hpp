@@ -6,7 +6,7 @@
 // measured quantities then move smoothly with l_z and sigma, which the secant steps need, and the
 // final scene run by gradfric with the same seed gives the same numbers.
 #include "gradfric/calibration/loading_curve.hpp"
-#include "gradfric/ensemble/statistics.hpp"
+#include "gradfric/campaign/statistics.hpp"
 #include "gradfric/physics/grading.hpp"
 #include "gradfric/sbm/parameters.hpp"
 
@@ -29,8 +29,8 @@ struct Evaluation {
   double layerThickness = 0.0;  // l_z [m]
   double sigma = 0.0;           // sigma_s = sigma_k
   double timeStep = 0.0;        // dt [s] (the shipped default for this l_z)
-  ensemble::Summary peak;       // mu_s over the realisations
-  ensemble::Summary slope;      // each realisation's loading slope [1/s]
+  campaign::Summary peak;       // mu_s over the realisations
+  campaign::Summary slope;      // each realisation's loading slope [1/s]
   std::vector<double> meanCurve;  // mean mu on the comparison grid; NaN where a realisation had ended
   int unconfirmed = 0;            // realisations whose peak was not confirmed
   double wallSeconds = 0.0;       // of the whole evaluation

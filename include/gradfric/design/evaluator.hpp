@@ -1,7 +1,7 @@
 #pragma once
 // One evaluation of a design problem: a spring-block ensemble of the family's plate at parameter
 // values x, run in batches over the ranks of a communicator until the 95 % CI half-width of the
-// target's quantity reaches what the search asks for (ensemble::planNextBatch), or the cap.
+// target's quantity reaches what the search asks for (campaign::planNextBatch), or the cap.
 //
 // Realisation r of every evaluation draws from the stream (seed, stream, r), and so does the
 // reference (non-graded) plate of a Variation target: the evaluations of a search share their

@@ -4,9 +4,9 @@
 // The run itself is a sequence of named steps (drivers/gradfric.cpp): readScene, printScene,
 // planResultsFile, openResultsFile, runTasks, finishResultsFile, printResults.
 #include "gradfric/core/options.hpp"
-#include "gradfric/ensemble/precision_target.hpp"
+#include "gradfric/campaign/precision_target.hpp"
 #include "gradfric/ensemble/sbm_error_estimate.hpp"
-#include "gradfric/ensemble/sweep.hpp"
+#include "gradfric/campaign/campaign.hpp"
 #include "gradfric/io/results_file.hpp"
 #include "gradfric/physics/field.hpp"
 #include "gradfric/physics/grading.hpp"
@@ -22,11 +22,14 @@
 
 namespace gradfric::ensemble {
 
-struct Scene {
+// The spring-block model's campaign: its sweep, tasks, statistics, scheduler and runner are the
+// campaign component's (include/gradfric/campaign/), named here without the prefix.
+using namespace campaign;
+
+// The campaign's record (sweep, grading, results file) plus the spring-block model's options.
+struct Scene : campaign::Campaign {
   // -ensemble_* and -output* options.
-  Grading baseGrading;
-  std::shared_ptr<const PlateFields> fields;  // -field_* (null: none), the same at every point
-  std::vector<std::shared_ptr<const PlateFields>> pointFields;  // per point with -ensemble_field (else empty)
+  std::shared_ptr<const PlateFields> fields;  // -field_* (null: none), the same at every point (baseGrading.fields)
   int realisations = 1;          // per point; with a target, the cap (-ensemble_target_max)
   PrecisionTarget target;        // -ensemble_target*: inactive (halfWidth 0) for a fixed count
   bool extend = false;           // -ensemble_extend: add realisations or points to a finished file
@@ -39,24 +42,15 @@ struct Scene {
   std::string schedule = "dynamic";
   bool dryRun = false;
   long abortAfter = 0;  // testing only: every rank exits abruptly after this many tasks
-  std::string output;
   bool overwrite = false;
   // -sbm_* options: one time step for the whole sweep, from its stiffest point.
   sbm::Parameters parameters;
   sbm::Request request;
   double stiffestFactor = 1.0;  // the largest modulus factor of any point
-  // What follows.
-  Sweep sweep;
-  io::EnsembleLayout layout;
-  io::SweepTable table;
-  std::vector<io::Attribute> sceneAttributes;  // stored under /scene: define the results
-  std::vector<io::Attribute> runAttributes;    // stored under /run: steer this run only
 
-  int points() const { return static_cast<int>(sweep.points.size()); }
   int tasks() const { return points() * realisations; }
-  // The model inputs of sweep point p.
+  // The model inputs of sweep point p (its grading: Campaign::pointGrading).
   sbm::Parameters pointParameters(int p) const;
-  Grading pointGrading(int p) const;
   // The discretisation bar of point p's mean mu_s (kinetic false) or mu_k (docs/accuracy.md).
   SbmDiscretisation discretisation(int p, bool kinetic) const;
 };

@@ -2,7 +2,7 @@
 // What a spring-block scene run prints: the plan before any work, the statistics and the cost
 // after it (rank 0 prints; every rank calls).
 #include "gradfric/ensemble/scene.hpp"
-#include "gradfric/ensemble/statistics.hpp"
+#include "gradfric/campaign/statistics.hpp"
 
 #include <chrono>
 #include <string>
@@ -17,11 +17,6 @@ struct TaskTally {
   double taskSeconds = 0.0;    // their wall time, summed
   std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();  // of the tasks
 };
-
-// "Delta=0.1, theta=30" for the swept quantities of point p.
-std::string pointLabel(const Sweep& sweep, int p);
-// h:mm:ss, "?" for a negative or infinite time.
-std::string hms(double seconds);
 
 // The resolved parameters, the active effects and the sweep.
 void printScene(MPI_Comm comm, const Scene& scene, const RunParameters& record);

@@ -138,8 +138,12 @@ public:
   void setRunAttributes(const std::vector<Attribute>& attributes);
   // Collective: software version and commit, command line, options files, date, ranks in /run.
   void setProvenance(const Provenance& provenance);
+  // Collective: both of the above with one close and reopen of the file.
+  void setRun(const std::vector<Attribute>& attributes, const Provenance& provenance);
   // Collective: sets the root attribute complete = 1.
   void markComplete();
+  // Collective: the same, leaving the file closed (the end of a run: no reopening to close again).
+  void markCompleteAndClose();
   // Collective.
   void close();
   // Where the done flags are: their byte offset in the file and their count (P x R, one byte

@@ -3,14 +3,14 @@
 // table (physics/observables.hpp): their names, units, descriptions and interval attributes, and
 // their values from the statistics of each point. One list for the writers (gradfric, the FEM
 // sweep) and the layout; nothing parses a column's name back.
-#include "gradfric/ensemble/statistics.hpp"
+#include "gradfric/campaign/statistics.hpp"
 #include "gradfric/io/results_file.hpp"
 
 #include <string>
 #include <utility>
 #include <vector>
 
-namespace gradfric::ensemble {
+namespace gradfric::campaign {
 
 // finished, then per observable with statistics <name>_mean, _std, _stderr, _ci95_low, _ci95_high,
 // _relative, _relative_ci95 (real) and <name>_count (integer), then peaks_unconfirmed.
@@ -28,4 +28,4 @@ struct StatisticsValues {
 };
 StatisticsValues statisticsValues(const std::vector<PointStatistics>& statistics);
 
-}  // namespace gradfric::ensemble
+}  // namespace gradfric::campaign

@@ -15,7 +15,7 @@
 
 #include <string>
 
-namespace gradfric::ensemble {
+namespace gradfric::campaign {
 
 class InterruptionNotice {
 public:
@@ -33,4 +33,4 @@ public:
   InterruptionNotice& operator=(const InterruptionNotice&) = delete;
 };
 
-}  // namespace gradfric::ensemble
+}  // namespace gradfric::campaign

@@ -1,9 +1,9 @@
-// The /statistics columns (include/gradfric/ensemble/statistics_columns.hpp).
-#include "gradfric/ensemble/statistics_columns.hpp"
+// The /statistics columns (include/gradfric/campaign/statistics_columns.hpp).
+#include "gradfric/campaign/statistics_columns.hpp"
 
 #include "gradfric/physics/observables.hpp"
 
-namespace gradfric::ensemble {
+namespace gradfric::campaign {
 
 namespace {
 
@@ -102,4 +102,4 @@ StatisticsValues statisticsValues(const std::vector<PointStatistics>& statistics
   return out;
 }
 
-}  // namespace gradfric::ensemble
+}  // namespace gradfric::campaign

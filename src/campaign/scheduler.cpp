@@ -1,8 +1,8 @@
-#include "gradfric/ensemble/scheduler.hpp"
+#include "gradfric/campaign/scheduler.hpp"
 
 #include "gradfric/core/petsc_call.hpp"
 
-namespace gradfric::ensemble {
+namespace gradfric::campaign {
 
 TaskCounter::TaskCounter(MPI_Comm comm, Schedule schedule) : comm_(comm), schedule_(schedule) {
   GF_CALL_MPI(MPI_Comm_rank(comm, &rank_));
@@ -49,4 +49,4 @@ long TaskCounter::finishedSoFar() {
   return fetchAdd(1, false);
 }
 
-}  // namespace gradfric::ensemble
+}  // namespace gradfric::campaign

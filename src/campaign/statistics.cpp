@@ -1,11 +1,11 @@
-#include "gradfric/ensemble/statistics.hpp"
+#include "gradfric/campaign/statistics.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 
-namespace gradfric::ensemble {
+namespace gradfric::campaign {
 
 namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
@@ -186,4 +186,4 @@ std::vector<PointStatistics> pointStatistics(int realisations, const std::vector
   return out;
 }
 
-}  // namespace gradfric::ensemble
+}  // namespace gradfric::campaign

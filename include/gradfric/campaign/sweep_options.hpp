@@ -3,7 +3,7 @@
 // checked one way for the spring-block ensemble (gradfric) and the FEM sweep (gradfric-fem), so
 // that a scene line means the same in both and their results files have the same axes.
 #include "gradfric/core/options.hpp"
-#include "gradfric/ensemble/sweep.hpp"
+#include "gradfric/campaign/sweep.hpp"
 #include "gradfric/io/results_file.hpp"
 #include "gradfric/physics/field.hpp"
 #include "gradfric/physics/grading.hpp"
@@ -11,7 +11,7 @@
 #include <memory>
 #include <vector>
 
-namespace gradfric::ensemble {
+namespace gradfric::campaign {
 
 // Reads the lists from a reader of prefix "ensemble_" (-help lists them there), the field sweep
 // (-ensemble_field, -ensemble_field_values) included; refuses |Delta| >= 1 at once (before a
@@ -36,4 +36,4 @@ bool anySwept(const SweepLists& lists);
 // both writers; the model fills the /properties fields.
 io::SweepTable sweepColumns(const Sweep& sweep);
 
-}  // namespace gradfric::ensemble
+}  // namespace gradfric::campaign

@@ -1,5 +1,5 @@
-// Precision on demand (include/gradfric/ensemble/precision_target.hpp).
-#include "gradfric/ensemble/precision_target.hpp"
+// Precision on demand (include/gradfric/campaign/precision_target.hpp).
+#include "gradfric/campaign/precision_target.hpp"
 
 #include "gradfric/physics/observables.hpp"
 
@@ -8,7 +8,7 @@
 #include <limits>
 #include <stdexcept>
 
-namespace gradfric::ensemble {
+namespace gradfric::campaign {
 
 namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
@@ -83,4 +83,4 @@ std::vector<PointStatistics> statisticsOfCounts(const std::vector<int>& counts, 
   return pointStatistics(realisations, reference, tables, peakConfirmed, within, paired);
 }
 
-}  // namespace gradfric::ensemble
+}  // namespace gradfric::campaign

@@ -1,5 +1,5 @@
-// The notice on SIGINT and SIGTERM while tasks run (include/gradfric/ensemble/interruption.hpp).
-#include "gradfric/ensemble/interruption.hpp"
+// The notice on SIGINT and SIGTERM while tasks run (include/gradfric/campaign/interruption.hpp).
+#include "gradfric/campaign/interruption.hpp"
 
 #include <fcntl.h>
 #include <unistd.h>
@@ -10,7 +10,7 @@
 #include <cstring>
 #include <ctime>
 
-namespace gradfric::ensemble {
+namespace gradfric::campaign {
 
 namespace {
 
@@ -154,4 +154,4 @@ InterruptionNotice::~InterruptionNotice() {
   sigaction(SIGTERM, &notice.previous[1], nullptr);
 }
 
-}  // namespace gradfric::ensemble
+}  // namespace gradfric::campaign

@@ -2,55 +2,24 @@
 // HDF5's error printing off, before any rank opens it in parallel: a foreign, truncated or damaged
 // file, or one of another scene, gets one line saying what is wrong with it (exit 2).
 #include "gradfric/core/input_error.hpp"
-#include "gradfric/ensemble/scene_file.hpp"
+#include "gradfric/campaign/resume_check.hpp"
+#include "gradfric/campaign/campaign_file.hpp"
 #include "gradfric/io/collective_file.hpp"
 
 #include <csignal>
-#include <set>
 #include <cstdio>
 #include <cstring>
 #include <string>
 
 #include <unistd.h>
 
-namespace gradfric::ensemble {
+namespace gradfric::campaign {
 
 namespace {
 
-// What an extension may change: the count (or the target) and the swept lists.
-bool extensionMayChange(const std::string& name) {
-  static const std::set<std::string> names = {
-      "ensemble_realisations", "ensemble_delta",       "ensemble_theta",      "ensemble_sigma",
-      "ensemble_property",     "ensemble_profile",     "ensemble_target",     "ensemble_target_type",
-      "ensemble_target_min",   "ensemble_target_max"};
-  return names.count(name) > 0;
-}
-
-// Extension: the file's points are the first points of the scene's sweep, in order, and its
-// realisations the first of each point. "" if so.
-std::string extensionMismatch(const Scene& scene, const io::ResultsFile& file) {
-  const auto& l = file.layout();
-  if (l.points > scene.points())
-    return "it has " + std::to_string(l.points) + " sweep points, the scene " + std::to_string(scene.points()) +
-           " (an extension adds points, never removes them)";
-  if (l.realisations > scene.realisations)
-    return "it has " + std::to_string(l.realisations) + " realisations per point, the scene " +
-           std::to_string(scene.realisations) + " (an extension adds realisations, never removes them)";
-  const io::SweepTable& old = file.sweep();
-  const io::SweepTable& now = scene.table;
-  for (int p = 0; p < l.points; ++p)
-    if (old.delta[p] != now.delta[p] || old.theta[p] != now.theta[p] || old.sigma[p] != now.sigma[p] ||
-        old.sigmaKinetic[p] != now.sigmaKinetic[p] || old.property[p] != now.property[p] ||
-        old.profile[p] != now.profile[p])
-      return "its point " + std::to_string(p) + " is not point " + std::to_string(p) +
-             " of the scene's sweep (the file's points must come first, in order: append values to the outermost "
-             "swept list)";
-  return "";
-}
-
 // "" if the scene and layout match; else the differences, "; "-separated. An extension may
-// change the options extensionMayChange names and grow the sweep and the count.
-std::string sceneDifferences(const ResumeTarget& scene, const io::ResultsFile& file, bool extension = false) {
+// change the options it names and grow the sweep and the count.
+std::string sceneDifferences(const ResumeTarget& scene, const io::ResultsFile& file, const Extension* extension) {
   std::string differences;
   auto add = [&](const std::string& text) { differences += (differences.empty() ? "" : "; ") + text; };
   const std::vector<io::Attribute> stored = file.sceneAttributes();
@@ -60,7 +29,7 @@ std::string sceneDifferences(const ResumeTarget& scene, const io::ResultsFile& f
     return nullptr;
   };
   for (const auto& a : scene.sceneAttributes) {
-    if (extension && extensionMayChange(a.name)) continue;
+    if (extension && extension->mayChange(a.name)) continue;
     const io::Attribute* s = findStored(a.name);
     if (!s) add("-" + a.name + " = " + a.value + " (not in the file)");
     else if (s->value != a.value) add("-" + a.name + ": file " + s->value + ", now " + a.value);
@@ -68,7 +37,7 @@ std::string sceneDifferences(const ResumeTarget& scene, const io::ResultsFile& f
   for (const auto& s : stored) {
     bool found = false;
     for (const auto& a : scene.sceneAttributes) found = found || a.name == s.name;
-    if (!found && !(extension && extensionMayChange(s.name))) add("-" + s.name + " = " + s.value + " (in the file only)");
+    if (!found && !(extension && extension->mayChange(s.name))) add("-" + s.name + " = " + s.value + " (in the file only)");
   }
   const auto& l = file.layout();
   const auto& want = scene.layout;
@@ -81,9 +50,8 @@ std::string sceneDifferences(const ResumeTarget& scene, const io::ResultsFile& f
   return differences;
 }
 
-// Rank 0: what is wrong with the file, or "".
-// `scene` (the spring-block scene) is needed for an extension only.
-std::string problemWith(const ResumeTarget& target, const Scene* scene, const std::string& path, bool extension) {
+// Rank 0: what is wrong with the file, or "". `extension`: null to resume.
+std::string problemWith(const ResumeTarget& target, const Extension* extension, const std::string& path) {
   const std::string again = " (start again with " + target.overwriteOption + ")";
   if (!io::isHdf5File(path)) return "it is not an HDF5 file" + again;
   {
@@ -108,7 +76,7 @@ std::string problemWith(const ResumeTarget& target, const Scene* scene, const st
     observableTables(file);
     file.readPeakConfirmed();
     const std::string differences = sceneDifferences(target, file, extension);
-    const std::string mismatch = extension && scene && differences.empty() ? extensionMismatch(*scene, file) : "";
+    const std::string mismatch = extension && differences.empty() ? extension->mismatch(file) : "";
     const bool complete = file.complete();
     file.close();
     if (extension && !differences.empty())
@@ -143,18 +111,18 @@ void onTimeout(int) {
   _exit(2);
 }
 
-std::string problemWithin(const ResumeTarget& target, const Scene* scene, const std::string& path,
-                          unsigned seconds, bool extension) {
+std::string problemWithin(const ResumeTarget& target, const Extension* extension, const std::string& path,
+                          unsigned seconds) {
   std::snprintf(timeoutMessage, sizeof timeoutMessage,
                 "gradfric: error: invalid option %s (continue %s): it is damaged: HDF5 did not finish "
                 "reading it within %u s (start again with %s)\n",
-                extension ? "-ensemble_extend" : target.resumeOption.c_str(), path.c_str(), seconds,
+                extension ? extension->option.c_str() : target.resumeOption.c_str(), path.c_str(), seconds,
                 target.overwriteOption.c_str());
   struct sigaction action {}, previous{};
   action.sa_handler = onTimeout;
   sigaction(SIGALRM, &action, &previous);
   alarm(seconds);
-  const std::string problem = io::withoutHdf5Printing([&] { return problemWith(target, scene, path, extension); });
+  const std::string problem = io::withoutHdf5Printing([&] { return problemWith(target, extension, path); });
   alarm(0);
   sigaction(SIGALRM, &previous, nullptr);
   return problem;
@@ -164,38 +132,29 @@ std::string problemWithin(const ResumeTarget& target, const Scene* scene, const 
 
 namespace {
 
-ResumeTarget targetOf(const Scene& scene) {
-  return ResumeTarget{scene.sceneAttributes, scene.layout, "-resume", "-output_overwrite"};
-}
-
-// Rank 0 checks, every rank throws the same InputError. `scene`: for an extension only.
-void checkFile(MPI_Comm comm, const ResumeTarget& target, const Scene* scene, const std::string& path,
-               bool extension) {
+// Rank 0 checks, every rank throws the same InputError.
+void checkFile(MPI_Comm comm, const ResumeTarget& target, const Extension* extension, const std::string& path) {
   int rank = 0;
   MPI_Comm_rank(comm, &rank);
   std::string problem;
-  if (rank == 0) problem = problemWithin(target, scene, path, 60, extension);
+  if (rank == 0) problem = problemWithin(target, extension, path, 60);
   int length = static_cast<int>(problem.size());
   MPI_Bcast(&length, 1, MPI_INT, 0, comm);
   problem.resize(length);
   if (length > 0) MPI_Bcast(problem.data(), length, MPI_CHAR, 0, comm);
   if (!problem.empty())
-    throw InputError("invalid option " + (extension ? std::string("-ensemble_extend (extend ") : target.resumeOption + " (continue ") +
+    throw InputError("invalid option " + (extension ? extension->option + " (extend " : target.resumeOption + " (continue ") +
                      path + "): " + problem);
 }
 
 }  // namespace
 
-void checkResumable(MPI_Comm comm, const Scene& scene, const std::string& path) {
-  checkFile(comm, targetOf(scene), &scene, path, false);
-}
-
 void checkResumable(MPI_Comm comm, const ResumeTarget& target, const std::string& path) {
-  checkFile(comm, target, nullptr, path, false);
+  checkFile(comm, target, nullptr, path);
 }
 
-void checkExtendable(MPI_Comm comm, const Scene& scene, const std::string& path) {
-  checkFile(comm, targetOf(scene), &scene, path, true);
+void checkExtendable(MPI_Comm comm, const ResumeTarget& target, const Extension& extension, const std::string& path) {
+  checkFile(comm, target, &extension, path);
 }
 
-}  // namespace gradfric::ensemble
+}  // namespace gradfric::campaign

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-namespace gradfric::ensemble {
+namespace gradfric::campaign {
 
 struct SweepPoint {
   double delta = 0.0;
@@ -65,4 +65,7 @@ std::vector<Task> pendingTasks(const Sweep& sweep, int realisations, const std::
 // Relative cost estimate of one task of this point (1 for the non-graded plate).
 double estimatedCost(const SweepPoint& point);
 
-}  // namespace gradfric::ensemble
+// "Delta=0.1, theta=30" for the swept quantities of point p ("single point" without any).
+std::string pointLabel(const Sweep& sweep, int p);
+
+}  // namespace gradfric::campaign

@@ -7,12 +7,12 @@
 // Decisions depend only on the values of completed realisations, taken in point order, never on
 // timing or on the number of ranks: the same scene and seed give the same plan anywhere, and a
 // resumed run replays the plan from its file.
-#include "gradfric/ensemble/statistics.hpp"
+#include "gradfric/campaign/statistics.hpp"
 
 #include <string>
 #include <vector>
 
-namespace gradfric::ensemble {
+namespace gradfric::campaign {
 
 enum class TargetKind {
   Absolute,   // half-width of the 95 % CI of mean mu_s
@@ -54,4 +54,4 @@ std::vector<PointStatistics> statisticsOfCounts(const std::vector<int>& counts, 
                                                 const std::vector<signed char>& peakConfirmed,
                                                 const std::vector<unsigned char>& done, bool paired);
 
-}  // namespace gradfric::ensemble
+}  // namespace gradfric::campaign

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-namespace gradfric::ensemble {
+namespace gradfric::campaign {
 
 struct Summary {
   int count = 0;       // finite values used (NaN entries, e.g. mu_k not requested, are skipped)
@@ -77,4 +77,4 @@ std::vector<PointStatistics> pointStatistics(int realisations, const std::vector
                                              const std::vector<signed char>& peakConfirmed,
                                              const std::vector<unsigned char>& done, bool paired = false);
 
-}  // namespace gradfric::ensemble
+}  // namespace gradfric::campaign

@@ -1,8 +1,8 @@
 #pragma once
-// PETSc log events of an ensemble run (-log_view): the tasks, their writes, the statistics.
+// PETSc log events of a campaign run (-log_view): the tasks, their writes, the statistics.
 #include "gradfric/core/log_event.hpp"
 
-namespace gradfric::ensemble {
+namespace gradfric::campaign {
 
 struct LogEvents {
   PetscLogEvent task = 0, write = 0, statistics = 0;
@@ -19,4 +19,4 @@ inline const LogEvents& logEvents() {
   return events;
 }
 
-}  // namespace gradfric::ensemble
+}  // namespace gradfric::campaign

@@ -1,9 +1,13 @@
-#include "gradfric/ensemble/sweep.hpp"
+#include "gradfric/campaign/sweep.hpp"
+
+#include "gradfric/core/format.hpp"
+
+#include <sstream>
 
 #include <algorithm>
 #include <cmath>
 
-namespace gradfric::ensemble {
+namespace gradfric::campaign {
 
 Sweep buildSweep(const SweepLists& lists, const SweepPoint& base) {
   Sweep sweep;
@@ -102,4 +106,23 @@ std::vector<Task> pendingTasks(const Sweep& sweep, int realisations, const std::
   return tasks;
 }
 
-}  // namespace gradfric::ensemble
+std::string pointLabel(const Sweep& sweep, int p) {
+  const SweepPoint& q = sweep.points[p];
+  std::ostringstream out;
+  bool first = true;
+  auto add = [&](const std::string& text) {
+    out << (first ? "" : ", ") << text;
+    first = false;
+  };
+  for (const auto& axis : sweep.axes) {
+    if (axis == "delta") add("Delta=" + formatReal(q.delta));
+    if (axis == "theta") add("theta=" + formatReal(q.theta));
+    if (axis == "sigma") add("sigma=" + formatReal(q.sigma));
+    if (axis == "property") add("property=" + q.property);
+    if (axis == "profile") add("profile=" + q.profile);
+    if (axis.rfind("field_", 0) == 0) add(axis.substr(6) + "=" + formatReal(q.fieldValue));
+  }
+  return first ? "single point" : out.str();
+}
+
+}  // namespace gradfric::campaign

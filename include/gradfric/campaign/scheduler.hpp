@@ -8,7 +8,7 @@
 // Also counts finished tasks over all ranks (for the progress line's estimate).
 #include <mpi.h>
 
-namespace gradfric::ensemble {
+namespace gradfric::campaign {
 
 enum class Schedule { Dynamic, Static };
 
@@ -40,4 +40,4 @@ private:
   long* counters_ = nullptr;
 };
 
-}  // namespace gradfric::ensemble
+}  // namespace gradfric::campaign

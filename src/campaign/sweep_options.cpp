@@ -1,5 +1,5 @@
-// Reading the swept lists of a scene (include/gradfric/ensemble/sweep_options.hpp).
-#include "gradfric/ensemble/sweep_options.hpp"
+// Reading the swept lists of a scene (include/gradfric/campaign/sweep_options.hpp).
+#include "gradfric/campaign/sweep_options.hpp"
 
 #include "gradfric/core/input_error.hpp"
 
@@ -8,7 +8,7 @@
 #include <cmath>
 #include <string>
 
-namespace gradfric::ensemble {
+namespace gradfric::campaign {
 
 SweepLists readSweepLists(OptionReader& ens) {
   SweepLists lists;
@@ -94,4 +94,4 @@ io::SweepTable sweepColumns(const Sweep& sweep) {
   return table;
 }
 
-}  // namespace gradfric::ensemble
+}  // namespace gradfric::campaign

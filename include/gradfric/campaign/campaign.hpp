@@ -1,0 +1,32 @@
+#pragma once
+// What a campaign is for any model: a sweep of points, each point's grading, and the results
+// file they land in (its layout, its /sweep table, the /scene and /run records, the output path).
+// The spring-block scene (ensemble::Scene) and the FEM sweep (fem::FemSweep) are this record
+// plus their model's parameters; what one point's run is belongs to the model.
+#include "gradfric/campaign/sweep.hpp"
+#include "gradfric/io/hdf5_attributes.hpp"
+#include "gradfric/io/results_file.hpp"
+#include "gradfric/physics/grading.hpp"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace gradfric::campaign {
+
+struct Campaign {
+  Grading baseGrading;  // the base plate's grading; its fields (-field_*) are every point's unless swept
+  std::vector<std::shared_ptr<const PlateFields>> pointFields;  // per point with -ensemble_field (else empty)
+  Sweep sweep;
+  io::EnsembleLayout layout;
+  io::SweepTable table;
+  std::vector<io::Attribute> sceneAttributes;  // stored under /scene: define the results
+  std::vector<io::Attribute> runAttributes;    // stored under /run: steer this run only
+  std::string output;                          // the results file (-output)
+
+  int points() const { return static_cast<int>(sweep.points.size()); }
+  // The grading of sweep point p: its profile, property and amplitude, and its property fields.
+  Grading pointGrading(int p) const;
+};
+
+}  // namespace gradfric::campaign
