@@ -147,9 +147,7 @@ std::string describeKineticWindow(const FrictionSummary& f, const FrictionMeasur
 void printResults(MPI_Comm comm, const FemRun& run, const FemRunResult& r, double wall) {
   const double eq2 = run.params.eq2PeakTime();
   const FrictionSummary& f = r.friction;
-  FemParameters resolved = run.params;
-  resolved.resolveDerived();
-  const DiscretisationError error = discretisationError(resolved, run.grading, r.dt / r.stableDt);
+  const DiscretisationError error = discretisationError(run.params, run.grading, r.dt / r.stableDt);
   PetscPrintf(comm,
               "Results (FEM):\n"
               "  settled normal force / (p L^2)  %.6f\n"
@@ -166,7 +164,7 @@ void printResults(MPI_Comm comm, const FemRun& run, const FemRunResult& r, doubl
               !run.params.measurement.kinetic ? "  (not asked: -friction_observables)"
               : f.kineticComplete             ? ""
                                               : "  (window incomplete)",
-              describeKineticWindow(f, resolved.measurement, eq2).c_str(), r.steps, r.dt, wall, r.wallPressure, r.wallSliding, 1e3 * wall / std::max(1L, r.steps));
+              describeKineticWindow(f, run.params.measurement, eq2).c_str(), r.steps, r.dt, wall, r.wallPressure, r.wallSliding, 1e3 * wall / std::max(1L, r.steps));
   if (r.stoppedByTS)
     PetscPrintf(comm, "  (the TS's limits -ts_max_steps / -ts_max_time ended the run %s)\n",
                 r.time.empty() ? "before the sliding step" : "before the observables were known");

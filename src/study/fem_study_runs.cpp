@@ -49,7 +49,7 @@ void selectIntegrator(const std::string& name) {
 Outcome runOne(MPI_Comm comm, const fem::FemParameters& q, const Grading& grading, const std::string& integrator) {
   Outcome out;
   out.stableDt = fem::stableTimeStep(q, grading);
-  out.dt = q.dt > 0 ? q.dt : q.dtSafety * out.stableDt;
+  out.dt = q.dt.value_or(q.dtSafety * out.stableDt);
   selectIntegrator(integrator);
   GF_CALL_MPI(MPI_Barrier(comm));
   const double w0 = MPI_Wtime(), c0 = cpuSeconds();
