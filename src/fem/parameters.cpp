@@ -237,13 +237,6 @@ FemParameters readFemParameters(MPI_Comm comm, RunParameters* record, const Plat
   if (o.wasSet("kn")) o.requirePositive("kn", q.kn, "Pa/m");
   if (o.wasSet("kt")) o.requirePositive("kt", q.kt, "Pa/m");
   if (o.wasSet("settle_damping")) o.requireNonNegative("settle_damping", q.settleDamping, "1/s");
-  if (q.contact && q.contactMethod == ContactMethod::Kinematic) {  // it predicts gfverlet's next step
-    char type[256] = "";
-    PetscBool given = PETSC_FALSE;
-    GF_CALL(PetscOptionsGetString(nullptr, nullptr, "-ts_type", type, sizeof type, &given));
-    if (given && std::string(type) != "gfverlet")
-      throw InputError("-ts_type", type, "gfverlet with -fem_contact kinematic (it predicts gfverlet's next step)");
-  }
   o.requireRange("bulk_b1", q.bulkLinear, 0.0, 1.0, "0 <= b1 <= 1");
   o.requireRange("bulk_b2", q.bulkQuadratic, 0.0, 10.0, "0 <= b2 <= 10");
   o.requireNonNegative("slide_damping", q.slideDamping, "1/s");

@@ -21,7 +21,7 @@ FemScene readFemScene(MPI_Comm comm, RunParameters* record) {
 void checkFemScene(MPI_Comm comm, const FemScene& scene, RunParameters* record,
                    const std::vector<std::string>& extraPrefixes) {
   checkMeshFields(scene.grading, scene.params);
-  readPlateTSOptions(comm);  // the -ts_ options: checked here, used by the run's TS
+  readPlateTSOptions(comm, scene.params);  // the -fem_ts_ options: checked here, used by the run's TS
   std::vector<std::string> prefixes = {"plate_", "friction_", "fem_", "grading_", "field_"};
   prefixes.insert(prefixes.end(), extraPrefixes.begin(), extraPrefixes.end());
   checkUnusedOptions(comm, prefixes);

@@ -102,6 +102,10 @@ struct FemTimeStep {
   std::optional<double> dt;  // -fem_dt; none: dtSafety x the stable step of the run's grading
   double dtSafety = 0.6;  // docs/accuracy_fem_history.md: 0.9 gave 1 % mu_s error on the paper mesh and instability with stiffer penalties
   bool dtCheck = true;  // false (testing only): a dt above the stable step is accepted, to test the monitor
+  // The integrator the caller chooses (the study's ladders: rk with scheme "4", ssp); the user's
+  // -fem_ts_type (the plate's TS has the options prefix fem_) overrides it.
+  std::string integrator = "gfverlet";
+  std::string rkScheme;  // with integrator "rk": PETSc's TSRKType ("4"); empty: PETSc's default
   // -fem_pressure_step static | dynamic: step 1 as the pressed equilibrium solved directly
   // (pressed_equilibrium.hpp; penalty contact only) or as the ramp and hold in time (the
   // default: CG's sums over ranks make the static state differ between rank counts by ~1e-14,
