@@ -17,6 +17,7 @@ std::shared_ptr<FemCheck> readFemCheck(MPI_Comm comm, const Plate& plate) {
   check->parameters.measurement.kinetic = false;
   check->parameters.measurement.firstSlipMap = false;
   fem::readPlateTSOptions(comm, check->parameters);
+  fem::readPlateMeshOptions();
   return check;
 }
 
