@@ -38,10 +38,6 @@ PlateMesh::PlateMesh(MPI_Comm comm, const MeshSize& size, const std::string& par
                                                blockOfVertex_);
 }
 
-PetscInt PlateMesh::globalVertices() const {
-  return static_cast<PetscInt>(size_.nx + 1) * (size_.ny + 1) * (size_.nz + 1);
-}
-
 void PlateMesh::build(const std::string& partitioner) {
   const PetscInt faces[3] = {size_.nx, size_.ny, size_.nz};
   const PetscReal lower[3] = {0, 0, 0};

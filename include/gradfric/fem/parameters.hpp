@@ -159,7 +159,6 @@ struct FemParameters : FemMesh, FemContact, FemDamping, FemTimeStep, FemRequest,
 
 // The derived defaults, each computed in one place (the constructor and the reader use them).
 double defaultPenaltyStiffness(const Plate& plate);  // penaltyFactor G/H
-double defaultMassDamping(const Plate& plate);       // c_s/H
 // The measurement's times from the FEM's loading time t_load (Eq. 2 with H) and its steady window.
 FrictionMeasurement defaultFemMeasurement(double loadingTime);
 // Long enough for the latest window: 1.5 t_load for the peak and its confirmation, then the window.

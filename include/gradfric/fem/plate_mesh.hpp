@@ -58,7 +58,6 @@ public:
   }
   PetscInt localCells() const { return numCells_; }
   PetscInt globalCells() const { return globalCells_; }
-  PetscInt globalVertices() const;
   PetscInt ownedBlocks() const { return ownedBlocks_; }
   PetscInt firstVertex() const { return vStart_; }
 
