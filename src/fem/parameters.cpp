@@ -58,16 +58,15 @@ std::string describeDamping(const FemParameters& q) {
     std::snprintf(buffer, sizeof buffer, "stiffness-proportional %.3g s", q.stiffnessDamping);
     add(buffer);
   }
-  const FemParameters& r = q;
-  const char* from = r.peakDampingStart == FemParameters::DampingStart::Confirmed ? "the confirmed peak"
-                     : r.peakDampingStart == FemParameters::DampingStart::Drop    ? "the first drop of mu"
+  const char* from = q.peakDampingStart == FemParameters::DampingStart::Confirmed ? "the confirmed peak"
+                     : q.peakDampingStart == FemParameters::DampingStart::Drop    ? "the first drop of mu"
                                                                                   : "the start of sliding";
-  if (r.peakDamping > 0) {
-    std::snprintf(buffer, sizeof buffer, "from %s: mass-proportional towards the slider %.3g 1/s", from, r.peakDamping);
+  if (q.peakDamping > 0) {
+    std::snprintf(buffer, sizeof buffer, "from %s: mass-proportional towards the slider %.3g 1/s", from, q.peakDamping);
     add(buffer);
   }
-  if (r.peakStiffnessDamping > 0) {
-    std::snprintf(buffer, sizeof buffer, "from %s: stiffness-proportional %.3g s", from, r.peakStiffnessDamping);
+  if (q.peakStiffnessDamping > 0) {
+    std::snprintf(buffer, sizeof buffer, "from %s: stiffness-proportional %.3g s", from, q.peakStiffnessDamping);
     add(buffer);
   }
   return text.empty() ? "none" : text;
