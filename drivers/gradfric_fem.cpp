@@ -34,7 +34,7 @@ static const char help[] =
     "gradfric-fem: explicit 3D FEM of an elastic plate sliding on a rigid plane with penalty contact and the\n"
     "velocity-weakening friction of the paper's Eq. 1; pressure step, then sliding; reports mu(t), mu_s,\n"
     "the peak time (vs Eq. 2) and mu_k. Options -fem_*, -plate_*, -friction_*, -grading_*, -field_*,\n"
-    "-output; PETSc's -ts_type (default gfverlet). -help <prefix> (-help fem) lists the options of one prefix.\n";
+    "-output; PETSc's TS options with the prefix fem_ (-fem_ts_type, default gfverlet). -help <prefix> (-help fem) lists the options of one prefix.\n";
 
 namespace {
 
@@ -80,7 +80,7 @@ std::optional<FemRun> readFemRun(MPI_Comm comm, RunParameters* record) {
   run.params.overwrite = out.flag("output_overwrite", false, "replace an existing results file");
   run.sweep = readSweepOptions(comm, record);
   if (helpRequested()) return std::nullopt;
-  // Fields against the mesh, -ts_ options, misspellings, the run length and the stable step.
+  // Fields against the mesh, -fem_ts_ options, misspellings, the run length and the stable step.
   if (run.compare)
     checkFemScene(comm, scene, record, {"sbm_", "ensemble_"});
   else
@@ -147,9 +147,7 @@ std::string describeKineticWindow(const FrictionSummary& f, const FrictionMeasur
 void printResults(MPI_Comm comm, const FemRun& run, const FemRunResult& r, double wall) {
   const double eq2 = run.params.eq2PeakTime();
   const FrictionSummary& f = r.friction;
-  FemParameters resolved = run.params;
-  resolved.resolveDerived();
-  const DiscretisationError error = discretisationError(resolved, run.grading, r.dt / r.stableDt);
+  const DiscretisationError error = discretisationError(run.params, run.grading, r.dt / r.stableDt);
   PetscPrintf(comm,
               "Results (FEM):\n"
               "  settled normal force / (p L^2)  %.6f\n"
@@ -166,9 +164,9 @@ void printResults(MPI_Comm comm, const FemRun& run, const FemRunResult& r, doubl
               !run.params.measurement.kinetic ? "  (not asked: -friction_observables)"
               : f.kineticComplete             ? ""
                                               : "  (window incomplete)",
-              describeKineticWindow(f, resolved.measurement, eq2).c_str(), r.steps, r.dt, wall, r.wallPressure, r.wallSliding, 1e3 * wall / std::max(1L, r.steps));
+              describeKineticWindow(f, run.params.measurement, eq2).c_str(), r.steps, r.dt, wall, r.wallPressure, r.wallSliding, 1e3 * wall / std::max(1L, r.steps));
   if (r.stoppedByTS)
-    PetscPrintf(comm, "  (the TS's limits -ts_max_steps / -ts_max_time ended the run %s)\n",
+    PetscPrintf(comm, "  (the TS's limits -fem_ts_max_steps / -fem_ts_max_time ended the run %s)\n",
                 r.time.empty() ? "before the sliding step" : "before the observables were known");
 }
 

@@ -65,7 +65,7 @@ int main(int argc, char** argv) {
         for (int h = 0; h < (halfDt ? 2 : 1); ++h) {
           FemParameters q = base;
           q.blockedKernel = blocked;
-          if (h == 1) q.dt = 0.5 * (q.dt > 0 ? q.dt : q.dtSafety * stableTimeStep(q, scene->grading));
+          if (h == 1) q.dt = 0.5 * q.dt.value_or(q.dtSafety * stableTimeStep(q, scene->grading));
           PlateModel model(comm, q, scene->grading);
           model.elastic().shuffleCellOrder(static_cast<unsigned>(k));
           Run r{blocked, k, h == 1, runPlateExperiment(model)};

@@ -85,12 +85,9 @@ std::optional<Calibration> readCalibration(MPI_Comm comm, RunParameters* record)
   const Plate plate = readPlate(comm, record);
   c.scene.grading.fields = readPlateFields(comm, record, plate, c.scene.grading);
   if (!helpRequested()) refuseOwnedOptions();
-  // mu_s-only runs stop at the confirmed peak: all a calibration needs (unless the user asks more).
-  PetscBool observablesSet = PETSC_FALSE;
-  GF_CALL(PetscOptionsHasName(nullptr, nullptr, "-friction_observables", &observablesSet));
-  if (!observablesSet) GF_CALL(PetscOptionsSetValue(nullptr, "-friction_observables", "mu_s"));
   c.scene.base = sbm::readParameters(comm, record, plate, c.scene.grading);
-  (void)sbm::readRequest(comm, record, c.scene.base);  // -help lists them; each evaluation re-derives them
+  // -help lists them; each evaluation re-derives them
+  (void)sbm::readRequest(comm, record, c.scene.base, calibrationMeasurement());
   if (helpRequested()) return std::nullopt;
   // -pressure_response_select grading: the g of the calibrated grading, checked before any work.
   (void)selectedFor(c.scene.base.pressureResponse, c.scene.grading, c.scene.base.plate.slidingAngle, "the calibrated scene");

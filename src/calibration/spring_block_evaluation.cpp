@@ -45,7 +45,7 @@ Evaluation evaluateSpringBlocks(MPI_Comm comm, const SpringBlockScene& scene, do
   p.sigmaStatic = p.sigmaKinetic = sigma;
   p.automaticTimeStep = p.timeStep = sbm::defaultTimeStep(p, scene.grading);  // the step follows l_z
   RunParameters scratch;  // the -friction_ windows scale with the loading time, hence with l_z
-  const sbm::Request request = sbm::readRequest(comm, &scratch, p);
+  const sbm::Request request = sbm::readRequest(comm, &scratch, p, calibrationMeasurement());
 
   // One slot per realisation: peak, slope, confirmed, wall, then the curve on the grid.
   const std::size_t G = grid.size(), width = 4 + G;

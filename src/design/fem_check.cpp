@@ -16,7 +16,8 @@ std::shared_ptr<FemCheck> readFemCheck(MPI_Comm comm, const Plate& plate) {
   // mu_s only, as the spring-block evaluations: the run stops at the confirmed peak.
   check->parameters.measurement.kinetic = false;
   check->parameters.measurement.firstSlipMap = false;
-  fem::readPlateTSOptions(comm);
+  fem::readPlateTSOptions(comm, check->parameters);
+  fem::readPlateMeshOptions();
   return check;
 }
 

@@ -66,8 +66,8 @@ void EnergyMonitor::fail(long step, double t, const std::string& quantity) {
                   dt, stable, stable);
   else if (ts != "gfverlet")
     std::snprintf(cause, sizeof cause,
-                  "the integrator -ts_type %s is unstable at dt = %.4g s (%.2f of the stable step of gfverlet's "
-                  "central difference, which the estimate is for): lower -fem_dt_safety or use -ts_type gfverlet",
+                  "the integrator -fem_ts_type %s is unstable at dt = %.4g s (%.2f of the stable step of gfverlet's "
+                  "central difference, which the estimate is for): lower -fem_dt_safety or use -fem_ts_type gfverlet",
                   ts.c_str(), dt, dt / stable);
   else
     std::snprintf(cause, sizeof cause,

@@ -71,9 +71,7 @@ std::string outsideStudiedScene(const FemParameters& q, const Grading& g) {
   if (q.frictionLaw.name != StateWeakening::name ||
       !near(q.frictionLaw.criticalVelocity, FemParameters{}.frictionLaw.criticalVelocity))
     return "friction law other than the state law with the paper's v_c (no other law converges)";
-  FemParameters derived;  // the study's pressure step: the derived ramp and hold
-  derived.plate = p;
-  derived.resolveDerived();
+  const FemParameters derived(p);  // the study's pressure step: the derived ramp and hold
   if (!near(q.rampTime, derived.rampTime) || !near(q.settleTime, derived.settleTime) ||
       !near(q.settleDamping, derived.settleDamping))
     return "pressure step other than the derived ramp, hold and damping";
@@ -203,7 +201,7 @@ ErrorTerm timeStepTerm(const FemParameters& q, double dtRatio) {
 // non-graded 100 x 100 mesh: 1.25 |penalty - kinematic| / kinematic.
 ErrorTerm contactTerm(const FemParameters& q) {
   if (q.contactMethod == ContactMethod::Kinematic) return {true, 0.0, "kinematic contact (the reference)"};
-  const double defaultStiffness = FemParameters::penaltyFactor * q.plate.shearModulus() / q.plate.thickness;
+  const double defaultStiffness = defaultPenaltyStiffness(q.plate);
   if (!near(q.kn, defaultStiffness) || !near(q.kt, defaultStiffness))
     return {false, 0, "penalty stiffness other than 250 G/H"};
   const StudyRow* penalty = find(q, "none", 0, 100, 5, 0.6, "penalty");

@@ -42,9 +42,7 @@ SiteGrid meshSiteGrid(const FemParameters& q) { return siteGrid(meshAxisX(q), me
 
 void checkMeshFields(const Grading& grading, const FemParameters& q) {
   if (!grading.fields) return;
-  FemParameters resolved = q;  // the edge band's default
-  resolved.resolveDerived();
-  checkPlateFields(grading, q.plate, meshSampler(grading, resolved), meshSiteGrid(resolved));
+  checkPlateFields(grading, q.plate, meshSampler(grading, q), meshSiteGrid(q));
 }
 
 }  // namespace gradfric::fem

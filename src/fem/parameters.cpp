@@ -18,16 +18,12 @@ const char* contactMethodName(ContactMethod method) {
 
 double FemParameters::penaltySlopeError() const {
   if (!contact || contactMethod != ContactMethod::Penalty) return 0.0;
-  FemParameters q = *this;
-  q.resolveDerived();
   const double G = shearModulus(), H = plate.thickness, L = plate.length;
-  const double compliance = G / (H * q.kt) + 12.0 * G * H / (q.kn * L * L);
+  const double compliance = G / (H * kt) + 12.0 * G * H / (kn * L * L);
   return compliance / (1.0 + compliance);
 }
 
-std::string describeContact(const FemParameters& given) {
-  FemParameters q = given;
-  q.resolveDerived();
+std::string describeContact(const FemParameters& q) {
   if (!q.contact) return "none (free bottom face)";
   if (q.contactMethod == ContactMethod::Kinematic)
     return "kinematic (exact: no penetration, exact stick within mu_s p_c A)";
@@ -62,67 +58,56 @@ std::string describeDamping(const FemParameters& q) {
     std::snprintf(buffer, sizeof buffer, "stiffness-proportional %.3g s", q.stiffnessDamping);
     add(buffer);
   }
-  FemParameters r = q;
-  r.resolveDerived();
-  const char* from = r.peakDampingStart == FemParameters::DampingStart::Confirmed ? "the confirmed peak"
-                     : r.peakDampingStart == FemParameters::DampingStart::Drop    ? "the first drop of mu"
+  const char* from = q.peakDampingStart == FemParameters::DampingStart::Confirmed ? "the confirmed peak"
+                     : q.peakDampingStart == FemParameters::DampingStart::Drop    ? "the first drop of mu"
                                                                                   : "the start of sliding";
-  if (r.peakDamping > 0) {
-    std::snprintf(buffer, sizeof buffer, "from %s: mass-proportional towards the slider %.3g 1/s", from, r.peakDamping);
+  if (q.peakDamping > 0) {
+    std::snprintf(buffer, sizeof buffer, "from %s: mass-proportional towards the slider %.3g 1/s", from, q.peakDamping);
     add(buffer);
   }
-  if (r.peakStiffnessDamping > 0) {
-    std::snprintf(buffer, sizeof buffer, "from %s: stiffness-proportional %.3g s", from, r.peakStiffnessDamping);
+  if (q.peakStiffnessDamping > 0) {
+    std::snprintf(buffer, sizeof buffer, "from %s: stiffness-proportional %.3g s", from, q.peakStiffnessDamping);
     add(buffer);
   }
   return text.empty() ? "none" : text;
 }
 
-double FemParameters::dilatationalWaveSpeed() const {
-  const double nu = plate.poissonRatio;
-  return std::sqrt(plate.youngsModulus * (1 - nu) / ((1 + nu) * (1 - 2 * nu) * plate.density));
-}
-
-double FemParameters::thicknessModeStiffnessDamping(double dampingRatio) const {
-  return 2.0 * dampingRatio * plate.thickness / (M_PI * dilatationalWaveSpeed());
-}
-
-double FemParameters::thicknessShearFrequency() const { return M_PI * shearWaveSpeed() / (2.0 * plate.thickness); }
-
 double FemParameters::shearWaveSpeed() const { return std::sqrt(shearModulus() / plate.density); }
 
-void FemParameters::resolveDerived() {
-  const double H = plate.thickness;
-  if (kn <= 0) kn = penaltyFactor * shearModulus() / H;
-  if (kt <= 0) kt = kn;
-  if (edge.band <= 0) edge.band = plate.length / kGradingBands;
-  const double cs = shearWaveSpeed();
-  if (settleDamping < 0) settleDamping = cs / H;
-  if (peakDamping < 0) peakDamping = cs / H;
-  if (rampTime < 0) rampTime = 20 * H / cs;
-  if (settleTime < 0) settleTime = 10 * H / cs;
-  const double ts = eq2PeakTime();
-  // The defaults of readFrictionMeasurement (friction_options.cpp) with the FEM's steady window,
-  // t_load = Eq. 2.
-  FrictionMeasurement& m = measurement;
-  if (m.historyInterval < 0) m.historyInterval = 1e-3 * ts;
-  if (m.kineticDelay < 0) m.kineticDelay = 0.5 * ts;
-  if (m.kineticWidth < 0) m.kineticWidth = 1.0 * ts;
-  if (m.kineticSteadyTolerance < 0) m.kineticSteadyTolerance = kMukSteadyTolerance;
-  if (m.kineticLatestDelay < 0) m.kineticLatestDelay = std::max(kMukLatestDelay * ts, m.kineticDelay);
-  if (m.peakHold < 0) m.peakHold = 0.25 * ts;
-  // Long enough for the latest window: 1.5 t_load for the peak and its confirmation, then the
-  // window (3 t_load with the fixed window or for mu_s alone, as before the steady rule).
-  const bool sliding = m.kinetic && m.kineticSteadyTolerance > 0;
-  if (slideTime < 0)
-    slideTime = 1.5 * ts + (sliding ? std::max(m.kineticLatestDelay, m.kineticDelay) : m.kineticDelay) + m.kineticWidth;
+double defaultPenaltyStiffness(const Plate& plate) {
+  return FemParameters::penaltyFactor * plate.shearModulus() / plate.thickness;
 }
 
-FrictionMeasurement derivedMeasurement() {
+FrictionMeasurement defaultFemMeasurement(double ts) {
+  // The defaults of readFrictionMeasurement (friction_options.cpp) with the FEM's steady window.
   FrictionMeasurement m;
-  m.historyInterval = m.kineticDelay = m.kineticWidth = m.peakHold = -1.0;
-  m.kineticSteadyTolerance = m.kineticLatestDelay = -1.0;
+  m.historyInterval = 1e-3 * ts;
+  m.kineticDelay = 0.5 * ts;
+  m.kineticWidth = 1.0 * ts;
+  m.kineticSteadyTolerance = kMukSteadyTolerance;
+  m.kineticLatestDelay = std::max(kMukLatestDelay * ts, m.kineticDelay);
+  m.peakHold = 0.25 * ts;
   return m;
+}
+
+double defaultSlideTime(double ts, const FrictionMeasurement& m) {
+  // 3 t_load with the fixed window or for mu_s alone, as before the steady rule.
+  const bool sliding = m.kinetic && m.kineticSteadyTolerance > 0;
+  return 1.5 * ts + (sliding ? std::max(m.kineticLatestDelay, m.kineticDelay) : m.kineticDelay) + m.kineticWidth;
+}
+
+FemParameters::FemParameters(const Plate& given) : plate(given) {
+  const double H = plate.thickness;
+  kn = defaultPenaltyStiffness(plate);
+  kt = kn;
+  edge.band = plate.length / kGradingBands;
+  const double cs = shearWaveSpeed();
+  settleDamping = cs / H;
+  peakDamping = cs / H;
+  rampTime = 20 * H / cs;
+  settleTime = 10 * H / cs;
+  measurement = defaultFemMeasurement(eq2PeakTime());
+  slideTime = defaultSlideTime(eq2PeakTime(), measurement);
 }
 
 // The edge grading's values, and nx, ny multiples of its unit (edge_grading.hpp).
@@ -139,7 +124,7 @@ static void requireEdgeGrading(const OptionReader& o, const FemParameters& q) {
                            " m: the grading bands' boundaries stay on element faces)");
   }
   if (q.edge.uniform()) return;
-  const EdgeMap map(ratio, refinedBandsOf(q.edge.band > 0 ? q.edge.band : L / kGradingBands, L));
+  const EdgeMap map(ratio, refinedBandsOf(q.edge.band, L));
   for (const char* name : {"nx", "ny"}) {
     const int n = name[1] == 'x' ? q.nx : q.ny;
     if (n % map.cellsPerUnit() != 0)
@@ -151,8 +136,7 @@ static void requireEdgeGrading(const OptionReader& o, const FemParameters& q) {
 
 FemParameters readFemParameters(MPI_Comm comm, RunParameters* record, const Plate& plate) {
   OptionReader o(comm, "fem_", "Finite-element plate model (3D, explicit)", record);
-  FemParameters q;
-  q.plate = plate;
+  FemParameters q(plate);  // the defaults, derived ones included; the options override them
   q.nx = static_cast<int>(o.integer("nx", q.nx, 1, 100000, "1", "hexahedra along x (grading axis)"));
   q.ny = static_cast<int>(o.integer("ny", q.ny, 1, 100000, "1", "hexahedra along y"));
   q.nz = static_cast<int>(o.integer("nz", q.nz, 1, 100000, "1", "hexahedra through the thickness"));
@@ -190,7 +174,7 @@ FemParameters readFemParameters(MPI_Comm comm, RunParameters* record, const Plat
   q.contact = contact != "none";
   q.contactMethod = contact == "kinematic" ? ContactMethod::Kinematic : ContactMethod::Penalty;
   if (auto kn = o.realIfSet("kn", "Pa/m", "normal penalty stiffness k_n", "250 G/H")) q.kn = *kn;
-  if (auto kt = o.realIfSet("kt", "Pa/m", "tangential penalty stiffness k_t", "k_n")) q.kt = *kt;
+  q.kt = o.realIfSet("kt", "Pa/m", "tangential penalty stiffness k_t", "k_n").value_or(q.kn);
   if (auto g = o.realIfSet("settle_damping", "1/s", "mass-proportional damping during the pressure step", "c_s/H"))
     q.settleDamping = *g;
   q.bulkLinear = o.real("bulk_b1", q.bulkLinear, "1",
@@ -219,7 +203,7 @@ FemParameters readFemParameters(MPI_Comm comm, RunParameters* record, const Plat
     q.bulkLinear = 0.06;
     q.bulkQuadratic = 1.2;
   }
-  if (auto dt = o.realIfSet("dt", "s", "time step", "dt_safety * stable step")) q.dt = *dt;
+  q.dt = o.realIfSet("dt", "s", "time step", "dt_safety * stable step");
   q.dtSafety = o.real("dt_safety", q.dtSafety, "1", "time step as a fraction of the stable step");
   q.dtCheck = o.flag("dt_check", true,
                      "refuse a -fem_dt above the stable step (false: TESTING ONLY, to exercise the blow-up monitor)");
@@ -231,7 +215,7 @@ FemParameters readFemParameters(MPI_Comm comm, RunParameters* record, const Plat
   if (auto t = o.realIfSet("settle_time", "s", "hold under pressure before sliding", "10 H/c_s")) q.settleTime = *t;
   if (auto t = o.realIfSet("slide_time", "s", "longest sliding duration", "1.5 t_load + the latest mu_k window's end (Eq. 2 t_load)")) q.slideTime = *t;
   q.stopWhenKnown = o.flag("stop_when_known", true, "stop once the -friction_observables are known");
-  q.partitioner = o.choice("partitioner", "metis", {"metis", "ptscotch", "simple"}, "mesh partitioner");
+  q.partitioner = o.choice("partitioner", q.partitioner, {"metis", "ptscotch", "simple"}, "mesh partitioner");
   q.snapshotTimes = o.realList("snapshot_times", {}, "s", "field snapshot times after the start of sliding");
   q.historyEvery = static_cast<int>(o.integer("history_every", 1, 1, 1000000000, "1", "record mu(t) every n steps"));
   q.verbose = o.flag("verbose", true, "print progress");
@@ -252,20 +236,13 @@ FemParameters readFemParameters(MPI_Comm comm, RunParameters* record, const Plat
   if (o.wasSet("kn")) o.requirePositive("kn", q.kn, "Pa/m");
   if (o.wasSet("kt")) o.requirePositive("kt", q.kt, "Pa/m");
   if (o.wasSet("settle_damping")) o.requireNonNegative("settle_damping", q.settleDamping, "1/s");
-  if (q.contact && q.contactMethod == ContactMethod::Kinematic) {  // it predicts gfverlet's next step
-    char type[256] = "";
-    PetscBool given = PETSC_FALSE;
-    GF_CALL(PetscOptionsGetString(nullptr, nullptr, "-ts_type", type, sizeof type, &given));
-    if (given && std::string(type) != "gfverlet")
-      throw InputError("-ts_type", type, "gfverlet with -fem_contact kinematic (it predicts gfverlet's next step)");
-  }
   o.requireRange("bulk_b1", q.bulkLinear, 0.0, 1.0, "0 <= b1 <= 1");
   o.requireRange("bulk_b2", q.bulkQuadratic, 0.0, 10.0, "0 <= b2 <= 10");
   o.requireNonNegative("slide_damping", q.slideDamping, "1/s");
   o.requireNonNegative("stiffness_damping", q.stiffnessDamping, "s");
   if (o.wasSet("peak_damping")) o.requireNonNegative("peak_damping", q.peakDamping, "1/s");
   o.requireNonNegative("peak_stiffness_damping", q.peakStiffnessDamping, "s");
-  if (o.wasSet("dt")) o.requirePositive("dt", q.dt, "s");
+  if (q.dt) o.requirePositive("dt", *q.dt, "s");
   o.requireRange("dt_safety", q.dtSafety, 1e-6, 1.0, "0 < dt_safety <= 1");
   for (const char* name : {"ramp_time", "settle_time"})
     if (o.wasSet(name)) o.requireNonNegative(name, name[0] == 'r' ? q.rampTime : q.settleTime, "s");
@@ -283,22 +260,22 @@ FemParameters readFemParameters(MPI_Comm comm, RunParameters* record, const Plat
   o.requireRange("monitor_factor", q.monitorFactor, 1.0, 1e300, ">= 1");
 
   // The shared friction measurement, its times derived from the FEM's loading time (Eq. 2 with H)
-  // and the FEM's steady mu_k window (docs/accuracy_fem_history.md, "The steady kinetic window").
+  // and the FEM's steady mu_k window (docs/accuracy_fem_history.md, "The steady kinetic window"),
+  // then the sliding time that fits its window.
   q.measurement = readFrictionMeasurement(comm, record, q.eq2PeakTime(),
-                                          KineticWindowDefaults{kMukSteadyTolerance, kMukLatestDelay});
-  FemParameters derived = q;
-  derived.resolveDerived();
-  if (!o.wasSet("kn")) o.recordDerived("kn", derived.kn, "Pa/m", "normal penalty stiffness k_n");
-  if (!o.wasSet("kt")) o.recordDerived("kt", derived.kt, "Pa/m", "tangential penalty stiffness k_t");
+                                          MeasurementDefaults{kMukSteadyTolerance, kMukLatestDelay});
+  if (!o.wasSet("slide_time")) q.slideTime = defaultSlideTime(q.eq2PeakTime(), q.measurement);
+  if (!o.wasSet("kn")) o.recordDerived("kn", q.kn, "Pa/m", "normal penalty stiffness k_n");
+  if (!o.wasSet("kt")) o.recordDerived("kt", q.kt, "Pa/m", "tangential penalty stiffness k_t");
   if (!o.wasSet("settle_damping"))
-    o.recordDerived("settle_damping", derived.settleDamping, "1/s", "mass-proportional damping during the pressure step");
+    o.recordDerived("settle_damping", q.settleDamping, "1/s", "mass-proportional damping during the pressure step");
   if (!o.wasSet("peak_damping"))
-    o.recordDerived("peak_damping", derived.peakDamping, "1/s", "damping towards the slider from the confirmed peak on");
-  if (!o.wasSet("ramp_time")) o.recordDerived("ramp_time", derived.rampTime, "s", "pressure ramp duration");
-  if (!o.wasSet("settle_time")) o.recordDerived("settle_time", derived.settleTime, "s", "hold under pressure");
-  if (!o.wasSet("edge_band")) o.recordDerived("edge_band", derived.edge.band, "m", "width of the refined band at each edge");
-  if (!o.wasSet("slide_time")) o.recordDerived("slide_time", derived.slideTime, "s", "longest sliding duration");
-  return derived;
+    o.recordDerived("peak_damping", q.peakDamping, "1/s", "damping towards the slider from the confirmed peak on");
+  if (!o.wasSet("ramp_time")) o.recordDerived("ramp_time", q.rampTime, "s", "pressure ramp duration");
+  if (!o.wasSet("settle_time")) o.recordDerived("settle_time", q.settleTime, "s", "hold under pressure");
+  if (!o.wasSet("edge_band")) o.recordDerived("edge_band", q.edge.band, "m", "width of the refined band at each edge");
+  if (!o.wasSet("slide_time")) o.recordDerived("slide_time", q.slideTime, "s", "longest sliding duration");
+  return q;
 }
 
 }  // namespace gradfric::fem

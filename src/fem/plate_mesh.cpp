@@ -38,10 +38,6 @@ PlateMesh::PlateMesh(MPI_Comm comm, const MeshSize& size, const std::string& par
                                                blockOfVertex_);
 }
 
-PetscInt PlateMesh::globalVertices() const {
-  return static_cast<PetscInt>(size_.nx + 1) * (size_.ny + 1) * (size_.nz + 1);
-}
-
 void PlateMesh::build(const std::string& partitioner) {
   const PetscInt faces[3] = {size_.nx, size_.ny, size_.nz};
   const PetscReal lower[3] = {0, 0, 0};
@@ -62,6 +58,23 @@ void PlateMesh::build(const std::string& partitioner) {
   GF_CALL(DMSetField(dm_, 0, nullptr, reinterpret_cast<PetscObject>(feU.fe)));
   GF_CALL(DMSetField(dm_, 1, nullptr, reinterpret_cast<PetscObject>(feV.fe)));
   GF_CALL(DMCreateDS(dm_));
+  viewAndCheck();
+}
+
+// PETSc's mesh diagnostics on the mesh as the run uses it (box, edge map, partition): the box is
+// not built through DMSetFromOptions, which would distribute it by its own partitioner and
+// renumber it, so these two options are applied here.
+void PlateMesh::viewAndCheck() const {
+  GF_CALL(DMViewFromOptions(dm_, nullptr, "-dm_view"));
+  PetscBool check = PETSC_FALSE;
+  GF_CALL(PetscOptionsGetBool(nullptr, nullptr, "-dm_plex_check_all", &check, nullptr));
+  if (check) GF_CALL(DMPlexCheck(dm_));
+}
+
+void readPlateMeshOptions() {
+  PetscBool given = PETSC_FALSE;  // read here: not reported unused before the mesh exists
+  GF_CALL(PetscOptionsHasName(nullptr, nullptr, "-dm_view", &given));
+  GF_CALL(PetscOptionsHasName(nullptr, nullptr, "-dm_plex_check_all", &given));
 }
 
 // The box's vertex at x = i L/nx (and y) moves to the map's node i: the serial mesh, before the

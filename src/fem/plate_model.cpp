@@ -9,11 +9,6 @@ namespace gradfric::fem {
 
 namespace {
 
-FemParameters resolved(FemParameters q) {
-  q.resolveDerived();
-  return q;
-}
-
 MeshSize meshSize(const FemParameters& q) { return {q.nx, q.ny, q.nz, q.plate.length, q.plate.thickness, q.edge}; }
 
 ElasticSettings elasticSettings(const FemParameters& q) {
@@ -29,7 +24,7 @@ ContactSettings contactSettings(const FemParameters& q) {
 
 // The layers, one line each, in the order their forces are added (docs/fem.md, "Adding a FEM term").
 PlateModel::PlateModel(MPI_Comm comm, const FemParameters& params, const Grading& grading)
-    : params_(resolved(params)),
+    : params_(params),
       grading_(grading),
       mesh_(comm, meshSize(params_), params_.partitioner),
       mass_(mesh_, params_.plate.density),

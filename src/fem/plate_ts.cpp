@@ -5,6 +5,7 @@
 #include "gradfric/fem/verlet_ts.hpp"
 
 #include <string>
+#include <vector>
 
 namespace gradfric::fem {
 
@@ -48,22 +49,60 @@ void solvePlateTS(TS ts) {
   throwPetscCallError(code, "TSSolve(ts, nullptr)", __FILE__, __LINE__);
 }
 
-void readPlateTSOptions(MPI_Comm comm) {
+namespace {
+
+// The TS options without the prefix (the spelling before it): refused, naming the new one.
+void refuseUnprefixedTSOptions() {
+  PetscInt count = 0;
+  char** names = nullptr;
+  char** values = nullptr;
+  GF_CALL(PetscOptionsLeftGet(nullptr, &count, &names, &values));
+  std::vector<std::string> unprefixed;
+  for (PetscInt i = 0; i < count; ++i)
+    if (std::string(names[i]).rfind("ts_", 0) == 0) unprefixed.push_back(names[i]);
+  GF_CALL(PetscOptionsLeftRestore(nullptr, &count, &names, &values));
+  for (const std::string& name : unprefixed)
+    refuseRenamedOption("-" + name, "-" + std::string(kPlateTSPrefix) + name,
+                        "the plate's TS reads its options with the prefix " + std::string(kPlateTSPrefix));
+}
+
+// The type the TS runs: the caller's integrator unless -fem_ts_type overrides it.
+void setIntegrator(TS ts, const FemParameters& params) {
+  GF_CALL(TSSetType(ts, params.integrator.c_str()));
+  if (!params.rkScheme.empty()) GF_CALL(TSRKSetType(ts, params.rkScheme.c_str()));
+}
+
+// The kinematic contact predicts the next position from gfverlet's half-step velocity.
+void requireGfverletWithKinematicContact(TS ts, const FemParameters& params) {
+  TSType type = nullptr;
+  GF_CALL(TSGetType(ts, &type));
+  if (params.contact && params.contactMethod == ContactMethod::Kinematic && std::string(type) != TSGFVERLET)
+    throw InputError("-" + std::string(kPlateTSPrefix) + "ts_type", type,
+                     "gfverlet with -fem_contact kinematic (it predicts gfverlet's next step)");
+}
+
+}  // namespace
+
+void readPlateTSOptions(MPI_Comm comm, const FemParameters& params) {
   registerVerletTS();
+  refuseUnprefixedTSOptions();
   OwnedTS ts;
   GF_CALL(TSCreate(comm, ts.out()));
-  GF_CALL(TSSetType(ts, TSGFVERLET));
+  GF_CALL(TSSetOptionsPrefix(ts, kPlateTSPrefix));
+  setIntegrator(ts, params);
+  const std::string typeOption = "-" + std::string(kPlateTSPrefix) + "ts_type";
   char type[256] = "";
   PetscBool typeGiven = PETSC_FALSE;
-  GF_CALL(PetscOptionsGetString(nullptr, nullptr, "-ts_type", type, sizeof type, &typeGiven));
+  GF_CALL(PetscOptionsGetString(nullptr, nullptr, typeOption.c_str(), type, sizeof type, &typeGiven));
   const PetscErrorCode code = TSSetFromOptions(ts);
   if (code == PETSC_ERR_ARG_UNKNOWN_TYPE && typeGiven)
-    throw InputError("-ts_type", type, "gfverlet (the default) or a PETSc TS type (rk, ssp, euler, ...)");
+    throw InputError(typeOption, type, "gfverlet (the default) or a PETSc TS type (rk, ssp, euler, ...)");
   GF_CALL(code);
+  requireGfverletWithKinematicContact(ts, params);
   // Viewers TSSolve reads at its start and end: they count as used.
-  for (const char* name : {"-ts_view", "-ts_view_pre", "-ts_view_solution"}) {
+  for (const char* name : {"ts_view", "ts_view_pre", "ts_view_solution"}) {
     PetscBool given = PETSC_FALSE;
-    GF_CALL(PetscOptionsHasName(nullptr, nullptr, name, &given));
+    GF_CALL(PetscOptionsHasName(nullptr, kPlateTSPrefix, (std::string("-") + name).c_str(), &given));
   }
 }
 
@@ -72,8 +111,9 @@ TS createPlateTS(PlateModel& model, Vec state) {
   TS ts = nullptr;
   GF_CALL(TSCreate(model.comm(), &ts));
   try {
+    GF_CALL(TSSetOptionsPrefix(ts, kPlateTSPrefix));
     GF_CALL(TSSetProblemType(ts, TS_NONLINEAR));
-    GF_CALL(TSSetType(ts, TSGFVERLET));
+    setIntegrator(ts, model.params());
     GF_CALL(TSSetRHSFunction(ts, nullptr, rhsCallback, &model));
     GF_CALL(TSSetPostStep(ts, layersPostStep));
     GF_CALL(TSSetTimeStep(ts, model.timeStep()));
@@ -86,12 +126,7 @@ TS createPlateTS(PlateModel& model, Vec state) {
     GF_CALL(TSGetAdapt(ts, &adapt));
     GF_CALL(TSAdaptSetType(adapt, TSADAPTNONE));  // fixed step: the stable step is a hard bound
     GF_CALL(TSSetTimeStep(ts, model.timeStep()));
-    TSType type = nullptr;
-    GF_CALL(TSGetType(ts, &type));
-    // The kinematic contact predicts the next position from gfverlet's half-step velocity.
-    if (model.params().contact && model.params().contactMethod == ContactMethod::Kinematic &&
-        std::string(type) != TSGFVERLET)
-      throw InputError("-ts_type", type, "gfverlet with -fem_contact kinematic (it predicts gfverlet's next step)");
+    requireGfverletWithKinematicContact(ts, model.params());
     GF_CALL(TSSetUp(ts));
   } catch (...) {
     TSDestroy(&ts);

@@ -19,9 +19,7 @@ constexpr double kBaseMemory = 47e6, kMemoryPerCell = 2.2e3;
 
 }  // namespace
 
-RunEstimate estimateRun(const FemParameters& given, const Grading& grading, int ranks) {
-  FemParameters q = given;
-  q.resolveDerived();
+RunEstimate estimateRun(const FemParameters& q, const Grading& grading, int ranks) {
   RunEstimate e;
   e.ranks = ranks;
   e.cells = static_cast<long long>(q.nx) * q.ny * q.nz;

@@ -1,6 +1,7 @@
 #include "gradfric/fem/scene_options.hpp"
 
 #include "gradfric/fem/mesh_sites.hpp"
+#include "gradfric/fem/plate_mesh.hpp"
 #include "gradfric/fem/plate_ts.hpp"
 #include "gradfric/fem/stable_step.hpp"
 #include "gradfric/physics/field_options.hpp"
@@ -21,7 +22,8 @@ FemScene readFemScene(MPI_Comm comm, RunParameters* record) {
 void checkFemScene(MPI_Comm comm, const FemScene& scene, RunParameters* record,
                    const std::vector<std::string>& extraPrefixes) {
   checkMeshFields(scene.grading, scene.params);
-  readPlateTSOptions(comm);  // the -ts_ options: checked here, used by the run's TS
+  readPlateTSOptions(comm, scene.params);
+  readPlateMeshOptions();  // -dm_view, -dm_plex_check_all: applied to the mesh once built  // the -fem_ts_ options: checked here, used by the run's TS
   std::vector<std::string> prefixes = {"plate_", "friction_", "fem_", "grading_", "field_"};
   prefixes.insert(prefixes.end(), extraPrefixes.begin(), extraPrefixes.end());
   checkUnusedOptions(comm, prefixes);

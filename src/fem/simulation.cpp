@@ -12,7 +12,7 @@
 //    many t_load while the plate shears above them: the peak is then not confirmed, see
 //    tests/fem/test_fem_hard_grading.cpp); the first slip = the first step with a node slipping;
 //  - monitors (TSMonitorSet): the blow-up / energy monitor, the snapshot output (StepObserver) and
-//    the progress lines; -ts_monitor and any other -ts_ monitor run alongside.
+//    the progress lines; -fem_ts_monitor and any other -fem_ts_ monitor run alongside.
 #include "gradfric/fem/simulation.hpp"
 
 #include "gradfric/core/petsc_call.hpp"

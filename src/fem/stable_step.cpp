@@ -52,9 +52,7 @@ double gradedElementFrequencySquared(const FemParameters& q, const Grading& grad
 }
 
 // frictionCoupling: the factor on the normal penalty spring (1: the springs alone).
-double stableStep(const FemParameters& given, const Grading& grading, double frictionCoupling) {
-  FemParameters q = given;
-  q.resolveDerived();
+double stableStep(const FemParameters& q, const Grading& grading, double frictionCoupling) {
   const BoxElement element = makeBoxElement(q.plate.length / q.nx, q.plate.length / q.ny, q.plate.thickness / q.nz,
                                             q.plate.poissonRatio, q.element);
   double factor = 1.0;
@@ -104,11 +102,11 @@ double chooseTimeStep(const FemParameters& q, const Grading& grading) {
       "-fem_dt", "the stable step with friction's coupling (mesh, wave speed, penalty springs, friction, damping)",
       largest, q.dtCheck};
   // (An absurd mu_s, say 1e300, makes the coupled limit 0: the plate's own check names it later.)
-  if (q.dt <= 0 && q.dtCheck && largest > 0 && q.dtSafety * stable > largest)
+  if (!q.dt && q.dtCheck && largest > 0 && q.dtSafety * stable > largest)
     throw InputError("-fem_dt_safety", formatReal(q.dtSafety),
                      "<= " + formatReal(largest / stable) + " here: dt_safety x the stable step " + formatReal(stable) +
                          " s must stay within the stable step with friction's coupling, " + formatReal(largest) + " s");
-  return policy.choose(q.dt > 0 ? std::optional<double>(q.dt) : std::nullopt, q.dtSafety * stable);
+  return policy.choose(q.dt, q.dtSafety * stable);
 }
 
 void requireFemRunLength(const FemParameters& q, const Grading& grading, const RunParameters* record) {

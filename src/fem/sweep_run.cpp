@@ -112,8 +112,7 @@ struct ErrorBars {
 ErrorBars errorBarsOf(const FemSweep& s) {
   ErrorBars bars;
   for (int p = 0; p < s.points(); ++p) {
-    FemParameters q = s.pointParameters(p);
-    q.resolveDerived();
+    const FemParameters q = s.pointParameters(p);
     const Grading g = s.pointGrading(p);
     const DiscretisationError e = discretisationError(q, g, chooseTimeStep(q, g) / stableTimeStep(q, g));
     bars.muStatic.push_back(e.measured ? e.relative : std::numeric_limits<double>::quiet_NaN());

@@ -25,11 +25,11 @@ void refuseOldNames() {
 }  // namespace
 
 FrictionMeasurement readFrictionMeasurement(MPI_Comm comm, RunParameters* record, double load,
-                                            const KineticWindowDefaults& window) {
+                                            const MeasurementDefaults& window) {
   refuseOldNames();
   OptionReader o(comm, "friction_", "Friction measurement (both models): mu(t) = |F|/(p L^2), mu_s, mu_k", record);
   FrictionMeasurement m;
-  const auto observables = o.choiceList("observables", {"mu_s", "mu_k", "first_slip"}, {"mu_s", "mu_k", "first_slip"},
+  const auto observables = o.choiceList("observables", window.observables, {"mu_s", "mu_k", "first_slip"},
                                         "what the run must determine; it stops once these are known");
   auto wants = [&](const char* name) { return std::find(observables.begin(), observables.end(), name) != observables.end(); };
   m.kinetic = wants("mu_k");

@@ -80,9 +80,9 @@ Parameters readParameters(MPI_Comm comm, RunParameters* record, const Plate& pla
   return p;
 }
 
-Request readRequest(MPI_Comm comm, RunParameters* record, const Parameters& p) {
+Request readRequest(MPI_Comm comm, RunParameters* record, const Parameters& p, const MeasurementDefaults& defaults) {
   Request q;
-  q.measurement = readFrictionMeasurement(comm, record, p.loadingTime());
+  q.measurement = readFrictionMeasurement(comm, record, p.loadingTime(), defaults);
   OptionReader o(comm, "sbm_", "Spring-block model", record);
   q.snapshotTimes = o.realList("snapshot_times", {}, "s", "times of the sigma_x/p snapshots (none: no stress computed)");
   for (double t : q.snapshotTimes) o.requireNonNegative("snapshot_times", t, "s");

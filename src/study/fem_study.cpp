@@ -53,9 +53,6 @@ fem::FemParameters Study::onMesh(const Mesh& m) const {
   q.nx = m[0];
   q.ny = m[1];
   q.nz = m[2];
-  if (!knSet) q.kn = 0;
-  if (!ktSet) q.kt = knSet ? q.kn : 0;
-  q.resolveDerived();
   return q;
 }
 
@@ -64,12 +61,6 @@ std::optional<Study> readStudy(MPI_Comm comm, RunParameters* record) {
   s.grading = readGrading(comm, record);
   const Plate plate = readPlate(comm, record);
   s.base = fem::readFemParameters(comm, record, plate);
-  PetscBool knSet = PETSC_FALSE, ktSet = PETSC_FALSE, dtSet = PETSC_FALSE;
-  GF_CALL(PetscOptionsHasName(nullptr, nullptr, "-fem_kn", &knSet));
-  GF_CALL(PetscOptionsHasName(nullptr, nullptr, "-fem_kt", &ktSet));
-  GF_CALL(PetscOptionsHasName(nullptr, nullptr, "-fem_dt", &dtSet));
-  s.knSet = knSet;
-  s.ktSet = ktSet;
   OptionReader o(comm, "study_", "Accuracy-cost study (finite-element plate)", record);
   s.knobs = o.choiceList("knobs", {"mesh", "dt", "kn", "kt"}, {"mesh", "dt", "kn", "kt"},
                          "ladders to run: mesh, time-step safety factor per integrator, penalty stiffnesses");
@@ -105,11 +96,10 @@ std::optional<Study> readStudy(MPI_Comm comm, RunParameters* record) {
   for (double f : s.factors) o.requireRange("penalty_factors", f, 1e-6, 1e6, "1e-6 <= factor <= 1e6");
   o.requireRange("penalty_dt_safety", s.penaltySafety, 1e-6, 1.0, "0 < safety <= 1");
   o.requireRange("mesh_dt_safety", s.meshSafety, 1e-6, 1.0, "0 < safety <= 1");
-  if (dtSet) throw InputError("-fem_dt", "(set)", "unset: the study sets the step as a fraction of the stable step");
+  if (s.base.dt) throw InputError("-fem_dt", "(set)", "unset: the study sets the step as a fraction of the stable step");
   checkUnusedOptions(comm, {"study_", "plate_", "fem_", "grading_", "output"});
   for (auto* list : {&s.safeties, &s.safetiesOther, &s.factors, &s.fineSafeties}) std::sort(list->begin(), list->end());
   s.base.verbose = false;
-  s.base.dt = 0;
   return s;
 }
 

@@ -34,23 +34,18 @@ std::string loadAverage() {
   return a + " " + b + " " + c;
 }
 
-// The integrator through PETSc's options (createPlateTS calls TSSetFromOptions).
-void selectIntegrator(const std::string& name) {
-  GF_CALL(PetscOptionsClearValue(nullptr, "-ts_type"));
-  GF_CALL(PetscOptionsClearValue(nullptr, "-ts_rk_type"));
-  if (name == "rk4") {
-    GF_CALL(PetscOptionsSetValue(nullptr, "-ts_type", "rk"));
-    GF_CALL(PetscOptionsSetValue(nullptr, "-ts_rk_type", "4"));
-  } else if (name == "ssp") {
-    GF_CALL(PetscOptionsSetValue(nullptr, "-ts_type", "ssp"));
-  }
+// The ladder's integrator as the run's parameter (createPlateTS sets it before TSSetFromOptions).
+fem::FemParameters withIntegrator(fem::FemParameters q, const std::string& name) {
+  q.integrator = name == "rk4" ? "rk" : name;
+  q.rkScheme = name == "rk4" ? "4" : "";
+  return q;
 }
 
-Outcome runOne(MPI_Comm comm, const fem::FemParameters& q, const Grading& grading, const std::string& integrator) {
+Outcome runOne(MPI_Comm comm, const fem::FemParameters& ladderRun, const Grading& grading, const std::string& integrator) {
+  const fem::FemParameters q = withIntegrator(ladderRun, integrator);
   Outcome out;
   out.stableDt = fem::stableTimeStep(q, grading);
-  out.dt = q.dt > 0 ? q.dt : q.dtSafety * out.stableDt;
-  selectIntegrator(integrator);
+  out.dt = q.dt.value_or(q.dtSafety * out.stableDt);
   GF_CALL_MPI(MPI_Barrier(comm));
   const double w0 = MPI_Wtime(), c0 = cpuSeconds();
   try {
@@ -62,16 +57,12 @@ Outcome runOne(MPI_Comm comm, const fem::FemParameters& q, const Grading& gradin
     out.dt = r.dt;
     out.stableDt = r.stableDt;
     out.windowComplete = r.friction.kineticComplete;
-  } catch (const InputError&) {
-    selectIntegrator("gfverlet");
-    throw;
   } catch (const std::exception& e) {
     // Every rank sees the same collective monitor values, so every rank lands here.
     out.failure = e.what();
   }
   out.wall = MPI_Wtime() - w0;
   out.cpu = cpuSeconds() - c0;
-  selectIntegrator("gfverlet");
   return out;
 }
 

@@ -20,7 +20,6 @@ using Mesh = std::array<int, 3>;  // nx, ny, nz
 struct Study {
   Grading grading;
   fem::FemParameters base;
-  bool knSet = false, ktSet = false;  // the scene set the penalties (else they follow the mesh)
   std::vector<std::string> knobs, integrators;
   std::vector<Mesh> meshes, estimates;
   double meshSafety = 0.3, penaltySafety = 0.5;

@@ -3,7 +3,7 @@
 # with a message naming the quantity and the likely cause, exits non-zero and leaves no results file
 # (neither the history nor the snapshots, nor their temporaries).
 #  1. dt above the stable step, accepted only through the TESTING-ONLY bypass -fem_dt_check false;
-#  2. PETSc's SSP Runge-Kutta (-ts_type ssp, default rks2) at the default step: its stability region
+#  2. PETSc's SSP Runge-Kutta (-fem_ts_type ssp, default rks2) at the default step: its stability region
 #     on the imaginary axis is smaller than the central difference's, so it blows up.
 set -u
 driver=$1; source_dir=$2; scratch=$3
@@ -26,7 +26,7 @@ check() {  # name, expected cause regex, extra options...
 check dt_above_limit "the time step dt = 3e-07 s is above the stable step" -fem_dt 3e-7 -fem_dt_check false
 # (undamped after the peak, as measured: the damping of the sliding plate slows its growth enough
 # for the run to end first)
-check ssp_integrator "the integrator -ts_type ssp is unstable" -ts_type ssp -fem_peak_damping 0
+check ssp_integrator "the integrator -fem_ts_type ssp is unstable" -fem_ts_type ssp -fem_peak_damping 0
 # Without the bypass the same dt is refused before any work (exit 2).
 mpiexec --oversubscribe -n 2 "$driver" -options_file "$scene" -fem_dt 3e-7 >refused.log 2>&1
 rc=$?

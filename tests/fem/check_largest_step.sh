@@ -11,7 +11,7 @@ driver=$1; input=$2; work=$3
 fail() { echo "FAIL: $*" >&2; exit 1; }
 mkdir -p "$work"; cd "$work"
 scene=(-options_file "$input/fem_fig2_H050_coarse.opts" -friction_law exponential)
-mpiexec --oversubscribe -n 2 "$driver" "${scene[@]}" -ts_max_steps 1 > plan.log 2>&1 || { cat plan.log; fail "the plan run failed"; }
+mpiexec --oversubscribe -n 2 "$driver" "${scene[@]}" -fem_ts_max_steps 1 > plan.log 2>&1 || { cat plan.log; fail "the plan run failed"; }
 stable=$(sed -n 's/^ *stable step *= *\([0-9.e+-]*\).*/\1/p' plan.log | head -1)
 largest=$(sed -n 's/^ *largest step *= *\([0-9.e+-]*\).*/\1/p' plan.log | head -1)
 [ -n "$stable" ] && [ -n "$largest" ] || fail "stable and largest step not printed"

@@ -52,8 +52,8 @@ inline std::ostream& operator<<(std::ostream& os, const HardCase& c) { return os
 // E0/hz: the penalty default before the penalty study.
 inline double formerDefaultPenalty(const FemParameters& q) { return q.plate.youngsModulus * q.nz / q.plate.thickness; }
 
-inline FemParameters hardBase() {
-  FemParameters q = coarse(16, 16, 2);
+inline FemParameters hardBase(const Plate& plate = Plate{}) {
+  FemParameters q = coarse(16, 16, 2, plate);
   q.monitorEvery = 5;  // dense energy samples for the balance check
   // The penalty these cases were measured with (E0/hz, the default before the penalty study):
   // they probe gradings and numerics, not the contact, and the default 250 G/H (47 x E0/hz on
@@ -118,7 +118,7 @@ inline void checkHardCase(const HardCase& c) {
   FemParameters q = hardBase();
   Grading g = noGrading();
   c.setup(q, g);
-  const double dt = q.dt > 0 ? q.dt : q.dtSafety * stableTimeStep(q, g);
+  const double dt = q.dt.value_or(q.dtSafety * stableTimeStep(q, g));
   FemParameters half = q;
   half.dt = 0.5 * dt;
   q.dt = dt;

@@ -4,9 +4,9 @@
 
 namespace gradfric::fem::test {
 
-// The paper's material on a small plate.
-inline FemParameters coarse(int nx, int ny, int nz) {
-  FemParameters q;
+// The paper's material (or the plate given: the derived defaults follow it) on a small mesh.
+inline FemParameters coarse(int nx, int ny, int nz, const Plate& plate = Plate{}) {
+  FemParameters q(plate);
   q.nx = nx;
   q.ny = ny;
   q.nz = nz;

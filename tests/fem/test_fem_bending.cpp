@@ -19,8 +19,9 @@ namespace {
 // Elastic energy of the pure-bending field u_x = -kappa x (z - H/2), u_z = kappa x^2 / 2 (nu = 0:
 // no Poisson terms) on the plate, and the exact value E kappa^2 L^2 H^3 / 24.
 void bendingEnergy(ElementType element, int nx, int nz, double* energy, double* exact) {
-  FemParameters q = test::coarse(nx, 2, nz);
-  q.plate.poissonRatio = 0.0;
+  Plate plate;
+  plate.poissonRatio = 0.0;
+  FemParameters q = test::coarse(nx, 2, nz, plate);
   q.element = element;
   PlateModel model(PETSC_COMM_WORLD, q, test::noGrading());
   OwnedVec X(model.createState());
@@ -73,6 +74,7 @@ std::vector<MomentSample> momentDuringLoading(ElementType element, double* muSta
   FemParameters q = test::coarse(16, 16, 4);
   q.element = element;
   q.measurement.kinetic = false;  // stop at the confirmed peak
+  q.slideTime = defaultSlideTime(q.eq2PeakTime(), q.measurement);  // the cap of a mu_s-only run
   // The penalty this balance was measured with (E0/hz, before the penalty study): with the stiff
   // default 250 G/H the plate's undamped rocking on the normal springs puts +-7 % of ringing on an
   // instantaneous sample of the moment (ratio 0.93-1.07 on this mesh).

@@ -14,9 +14,10 @@ using namespace gradfric;
 using namespace gradfric::fem;
 
 TEST(FemDynamics, FreePlateKeepsItsEnergyOver1000VerletSteps) {
-  FemParameters q = test::coarse(8, 8, 3);
+  Plate unloaded;
+  unloaded.pressure = 0;
+  FemParameters q = test::coarse(8, 8, 3, unloaded);
   q.contact = false;
-  q.plate.pressure = 0;
   q.settleDamping = 0;
   q.slideDamping = 0;
   PlateModel model(PETSC_COMM_WORLD, q, test::noGrading());
@@ -59,10 +60,11 @@ TEST(FemDynamics, FreePlateKeepsItsEnergyOver1000VerletSteps) {
 
 TEST(FemDynamics, CompressionalPulseTravelsAtTheWaveSpeed) {
   // nu = 0: a uniaxial pulse u_x(x - c t) stays uniaxial, c = sqrt(E / rho) exactly.
-  FemParameters q = test::coarse(240, 1, 1);
-  q.plate.poissonRatio = 0.0;
+  Plate unloaded;
+  unloaded.poissonRatio = 0.0;
+  unloaded.pressure = 0;
+  FemParameters q = test::coarse(240, 1, 1, unloaded);
   q.contact = false;
-  q.plate.pressure = 0;
   q.settleDamping = 0;
   PlateModel model(PETSC_COMM_WORLD, q, test::noGrading());
   const double c = std::sqrt(q.plate.youngsModulus / q.plate.density);

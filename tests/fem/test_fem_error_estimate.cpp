@@ -18,7 +18,6 @@ namespace {
 FemParameters paperDefaults() {
   FemParameters q;
   q.nz = 5;
-  q.resolveDerived();
   return q;
 }
 
@@ -71,7 +70,6 @@ TEST(FemErrorBar, PaperMeshAtTheDefaultsIsTheGciOfItsLadder) {
 
 TEST(FemErrorBar, ALadderRefinedInEveryDirectionBoundsTheThicknessToo) {
   FemParameters q;  // the defaults: 100x100x10, the middle of 50x50x5, 100x100x10, 200x200x20
-  q.resolveDerived();
   ASSERT_EQ(q.nz, 10);
   const DiscretisationError e = discretisationError(q, Grading{}, 0.6);
   ASSERT_TRUE(e.measured) << e.basis;
@@ -146,7 +144,6 @@ TEST(FemErrorBar, OutsideTheStudiesItIsNotMeasured) {
   notMeasured(q, Grading{}, 0.6, "penalty stiffness other than 250 G/H");
   q = paperDefaults();
   q.plate.length *= 2;
-  q.resolveDerived();
   notMeasured(q, Grading{}, 0.6, "plate other than the paper's");
   q = paperDefaults();
   q.stiffnessDamping = 3e-8;

@@ -31,7 +31,6 @@ std::vector<HardCase> numericsCases() {
   // is still rising, mu_s 0.15 and no mu_k). The whole plate sinks by p/k_n = 2.5 um (5 % of H).
   cases.push_back({"penalty_soft_x0.01", [](FemParameters& q, Grading&) {
                      q.kn = q.kt = 0.01 * formerDefaultPenalty(q);
-                     q.resolveDerived();
                      const double stretch = 1 + q.shearModulus() / (q.plate.thickness * q.kt);
                      q.slideTime *= stretch;
                      q.measurement.kineticDelay *= stretch;
@@ -48,7 +47,9 @@ std::vector<HardCase> numericsCases() {
   // 0.9 / 0.45, 1.74 % at 0.6 / 0.3 (mu_s 0.8808 / 0.8657). Tolerance 2.5 %.
   {
     HardCase c{"thick_plate_H0.1mm", [](FemParameters& q, Grading&) {
-                 q.plate.thickness = 1e-4;
+                 Plate thick = q.plate;
+                 thick.thickness = 1e-4;
+                 q = hardBase(thick);  // the derived defaults (ramp, hold, damping, times) follow H
                  q.nz = 4;
                  q.kn = q.kt = formerDefaultPenalty(q);
                }};
@@ -85,7 +86,6 @@ TEST(FemBlowUpMonitor, StiffPenaltyAtNinetyPercentIsStoppedByTheMonitor) {
   q.kn = q.kt = 10 * formerDefaultPenalty(q);
   q.peakDamping = 0;  // undamped after the peak, as measured: the damping of the sliding plate can hold it
   q.frictionLaw.name = "exponential";  // as measured: with the state law this run ends before it blows up
-  q.resolveDerived();
   q.dtSafety = 0.9;
   q.dtCheck = false;  // 0.9 of the springs-alone step is above the largest step (friction's coupling)
   PlateModel model(PETSC_COMM_WORLD, q, noGrading());

@@ -32,6 +32,7 @@ TEST(FemKineticWindow, DefaultWindowIsSteadyAtEquationOne) {
   const FemParameters q = test::coarse(10, 10, 5);
   FemParameters fixed = q;
   fixed.measurement.kineticSteadyTolerance = 0.0;
+  fixed.slideTime = defaultSlideTime(fixed.eq2PeakTime(), fixed.measurement);  // the fixed window's cap
   const FemRunResult r = run(q), f = run(fixed);
   const FrictionSummary& s = r.friction;
   const double eq1 = equationOne(q), ts = q.eq2PeakTime();
@@ -59,6 +60,7 @@ TEST(FemKineticWindow, NoSteadyWindowByTheLatestStartIsReportedNotSteady) {
   FemParameters q = test::coarse(10, 10, 5);
   const double ts = q.eq2PeakTime();
   q.measurement.kineticLatestDelay = 0.5 * ts;  // = the delay: the window cannot slide past the reload
+  q.slideTime = defaultSlideTime(ts, q.measurement);
   const FemRunResult r = run(q);
   const FrictionSummary& s = r.friction;
   PetscPrintf(PETSC_COMM_WORLD, "no room to slide: window %.3f-%.3f t_s after the peak, mu_k %.6f, spread %.3f %%\n",

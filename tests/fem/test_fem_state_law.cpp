@@ -106,8 +106,9 @@ TEST(FemStateLaw, ConstantFrictionSlidesOnAPlateauAtItsPeak) {
   // mu_s = mu_k: no weakening, so no static peak above the sliding level (the flutter threshold of
   // a solid sliding on a rigid plane is mu = 1: 0.6 is below it, 1 on it).
   for (double mu : {0.6, 1.0}) {
-    FemParameters q = test::coarse(10, 10, 5);
-    q.plate.muStatic = q.plate.muKinetic = mu;
+    Plate plate;
+    plate.muStatic = plate.muKinetic = mu;
+    FemParameters q = test::coarse(10, 10, 5, plate);
     q.stopWhenKnown = false;
     const double ts = q.eq2PeakTime();
     q.slideTime = 5.0 * ts;

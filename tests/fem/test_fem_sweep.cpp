@@ -20,7 +20,6 @@ namespace {
 
 FemParameters tinyPlate() {
   FemParameters q = test::coarse(6, 6, 2);
-  q.resolveDerived();
   return q;
 }
 

@@ -7,6 +7,7 @@
 // final scene run by gradfric with the same seed gives the same numbers.
 #include "gradfric/calibration/loading_curve.hpp"
 #include "gradfric/campaign/statistics.hpp"
+#include "gradfric/physics/friction_options.hpp"
 #include "gradfric/physics/grading.hpp"
 #include "gradfric/sbm/parameters.hpp"
 
@@ -45,6 +46,12 @@ Evaluation evaluateSpringBlocks(MPI_Comm comm, const SpringBlockScene& scene, do
 // The loading slope of the SBM's uniform start, G_mean v / (p l_z) [1/s] (every block sticks and
 // its slider spring K_s = G l^2/l_z is the only compliance), and l_z from a measured slope.
 double stickingSlope(const SpringBlockScene& scene, double layerThickness);
+// mu_s-only runs stop at the confirmed peak: all a calibration needs (-friction_observables may ask more).
+inline MeasurementDefaults calibrationMeasurement() {
+  MeasurementDefaults d;
+  d.observables = {"mu_s"};
+  return d;
+}
 double layerThicknessForSlope(const SpringBlockScene& scene, double slope);
 
 }  // namespace gradfric::calibration

@@ -33,9 +33,6 @@ public:
   OutputFiles(const OutputFiles&) = delete;
   OutputFiles& operator=(const OutputFiles&) = delete;
 
-  bool enabled() const { return !path_.empty(); }
-  const std::string& historyPath() const { return path_; }
-  const std::string& fieldsPath() const { return fieldsPath_; }
   // An observer writing a snapshot at each requested time and recording the pressure response
   // (empty without an output file). Collective.
   StepObserver snapshotObserver(PlateModel& model);

@@ -7,13 +7,12 @@
 #include "gradfric/physics/friction_laws_settings.hpp"
 #include "gradfric/physics/plate.hpp"
 
+#include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace gradfric::fem {
-
-// A FrictionMeasurement whose times are all derived (negative placeholders, see resolveDerived).
-FrictionMeasurement derivedMeasurement();
 
 // The FEM's steady mu_k window (docs/accuracy_fem_history.md, "The steady kinetic window"): the window
 // (0.5-1.5 t_load after the peak at first) slides on until its quarters' means agree within this
@@ -26,22 +25,27 @@ constexpr double kMukLatestDelay = 4.0;
 enum class ContactMethod { Penalty, Kinematic };
 const char* contactMethodName(ContactMethod method);
 
-struct FemParameters {
-  // Mesh and geometry
+// The parameters come in groups, as the spring-block model's (sbm::Parameters and sbm::Request):
+// FemParameters derives from each, so a function can take only the group it needs. Every value is
+// final: the defaults derived from the plate (penalties, damping, ramp and hold, the edge band,
+// the measurement's times, the sliding time) are computed once, by the FemParameters(plate)
+// constructor or the reader, never later by the library. kNotDerived marks the derived members
+// of a group built alone (NaN: it fails every comparison instead of passing for a value).
+constexpr double kNotDerived = std::numeric_limits<double>::quiet_NaN();
+
+// The mesh: box, edge grading, element, cell kernel, partition.
+struct FemMesh {
   int nx = 100, ny = 100, nz = 10;  // nz 10: the 3D ladder bounds mu_s there (docs/accuracy_fem.md)
   // -fem_edge_ratio, -fem_edge_band: in-plane cells shrinking toward the edges (edge_grading.hpp;
-  // ratio 1, the default: the uniform mesh). The band is resolved to L/10 when not given.
+  // ratio 1, the default: the uniform mesh). The band defaults to L/10.
   EdgeGrading edge;
   ElementType element = ElementType::Trilinear;  // -fem_element q1 | q1i (docs/fem.md)
   bool blockedKernel = true;  // -fem_kernel blocked | dense (mirror-basis kernel, docs/accuracy_fem_history.md "Cost")
-  // -fem_pressure_step static | dynamic: step 1 as the pressed equilibrium solved directly
-  // (pressed_equilibrium.hpp; penalty contact only) or as the ramp and hold in time (the
-  // default: CG's sums over ranks make the static state differ between rank counts by ~1e-14,
-  // which the post-peak history amplifies past the 1 vs 2 ranks tolerance; docs/accuracy_fem_history.md "Cost").
-  bool staticPressureStep = false;
-  // The physical plate (-plate_ options, shared with the spring-block model): size L, thickness
-  // H, material, pressure, sliding speed and angle, mean local mu_s and mu_k (graded by -grading_).
-  Plate plate;
+  std::string partitioner = "metis";
+};
+
+// The contact with the rigid plane and its friction.
+struct FemContact {
   // Friction law of the contact nodes (-friction_law, shared with the spring-block model): by
   // default the state law (physics/state_weakening_law.hpp), Eq. 1 as its steady state with the
   // weakening length D_c that makes mu_s converge under refinement (docs/accuracy_fem.md, "The
@@ -58,75 +62,107 @@ struct FemParameters {
   bool slipHealingOnly = true;  // -fem_slip_evolution healing (true) | slip
   bool contact = true;   // false: free bottom face (-fem_contact none, testing)
   ContactMethod contactMethod = ContactMethod::Penalty;
-  // Penalty stiffnesses [Pa/m]; 0 = derived penaltyFactor G/H (docs/accuracy_fem_history.md, "Contact"):
+  // Penalty stiffnesses [Pa/m], by default penaltyFactor G/H (docs/accuracy_fem_history.md, "Contact"):
   // the tangential springs add the compliance 1/(k_t L^2) to the plate's shear compliance
-  // H/(G L^2), so the loading slope carries -G/(H k_t); 250 G/H keeps it at 0.4 %.
-  double kn = 0, kt = 0;
+  // H/(G L^2), so the loading slope carries -G/(H k_t); 250 G/H keeps it at 0.4 %. k_t: k_n.
+  double kn = kNotDerived, kt = kNotDerived;
   static constexpr double penaltyFactor = 250.0;
+};
+
+// Damping: bulk viscosity, mass- and stiffness-proportional, in each phase.
+struct FemDamping {
   // Bulk viscosity (Abaqus/Explicit's form, bulk_viscosity.hpp): pressure b1 rho c_d L_e eps_v'
   // plus rho (b2 L_e eps_v')^2 in compression; b1 = b2 = 0: off.
   double bulkLinear = 0.0, bulkQuadratic = 0.0;
-  // Damping (mass-proportional, [1/s]) in the pressure phase and in the sliding phase;
-  // stiffness-proportional (Rayleigh beta, [s]) in both.
-  double settleDamping = -1;  // < 0: derived c_s/H
+  // Mass-proportional damping [1/s] in the pressure phase (default c_s/H) and in the sliding phase.
+  double settleDamping = kNotDerived;
   double slideDamping = 0;
   // Stiffness-proportional (Rayleigh beta) damping [s], off by default: it ends the ringing after
   // the first slip (a plateau with constant friction at beta = 0.2 H/(pi c_p), 0.1 of critical in
   // the fundamental thickness mode) but moves mu_s by 4 % there (docs/accuracy_fem_history.md,
-  // "Steady sliding"): thicknessModeStiffnessDamping(0.1) gives that value.
+  // "Steady sliding").
   double stiffnessDamping = 0;
-  double thicknessModeStiffnessDamping(double dampingRatio) const;  // 2 xi H / (pi c_p)
   // Damping switched on once the static peak is confirmed (sliding_damping.hpp): mass-proportional
-  // towards the slider's velocity [1/s] (< 0: derived c_s/H, the pressure step's damping: 1/pi of
+  // towards the slider's velocity [1/s] (default c_s/H, the pressure step's damping: 1/pi of
   // critical in the fundamental thickness-shear mode pi c_s/(2H), and no change of the stable step)
   // and stiffness-proportional [s]. Neither acts before the peak (mu_s is the undamped run's, bit
   // for bit) nor on a plate sliding steadily (docs/accuracy_fem_history.md, "Steady sliding").
-  double peakDamping = -1;
+  double peakDamping = kNotDerived;
   double peakStiffnessDamping = 0;
   // When it starts (-fem_peak_damping_start): confirmed (the peak is confirmed), drop (mu fell
   // -friction_peak_drop below its running maximum after the first slip, or confirmed), sliding
   // (the start of step 2: it then acts on the peak too, for the study only).
   enum class DampingStart { Confirmed, Drop, Sliding };
   DampingStart peakDampingStart = DampingStart::Confirmed;
-  double thicknessShearFrequency() const;  // pi c_s / (2H) [rad/s]
   bool energyAudit = false;  // also integrate the stiffness-proportional dissipation (one more operator pass per step)
-  // Time stepping
-  double dt = 0;            // 0: safety * stable step
+};
+
+// Time stepping and the pressure step.
+struct FemTimeStep {
+  std::optional<double> dt;  // -fem_dt; none: dtSafety x the stable step of the run's grading
   double dtSafety = 0.6;  // docs/accuracy_fem_history.md: 0.9 gave 1 % mu_s error on the paper mesh and instability with stiffer penalties
   bool dtCheck = true;  // false (testing only): a dt above the stable step is accepted, to test the monitor
+  // The integrator the caller chooses (the study's ladders: rk with scheme "4", ssp); the user's
+  // -fem_ts_type (the plate's TS has the options prefix fem_) overrides it.
+  std::string integrator = "gfverlet";
+  std::string rkScheme;  // with integrator "rk": PETSc's TSRKType ("4"); empty: PETSc's default
+  // -fem_pressure_step static | dynamic: step 1 as the pressed equilibrium solved directly
+  // (pressed_equilibrium.hpp; penalty contact only) or as the ramp and hold in time (the
+  // default: CG's sums over ranks make the static state differ between rank counts by ~1e-14,
+  // which the post-peak history amplifies past the 1 vs 2 ranks tolerance; docs/accuracy_fem_history.md "Cost").
+  bool staticPressureStep = false;
+  double rampTime = kNotDerived;    // default 20 H/c_s
+  double settleTime = kNotDerived;  // default 10 H/c_s
   // Blow-up monitor: non-finite mu(t) or normal force any step; every monitorEvery steps, a
   // non-finite state or kinetic + elastic energy above monitorFactor x (energy put in + reference).
   int monitorEvery = 25;
   double monitorFactor = 10.0;
-  double rampTime = -1;     // < 0: derived 20 H/c_s
-  double settleTime = -1;   // < 0: derived 10 H/c_s
-  double slideTime = -1;    // < 0: derived 1.5 t_load + the latest mu_k window's end (upper bound; stops earlier)
-  // How friction is measured: the shared rule of both models (-friction_ options). Negative
-  // times: derived from the Eq. 2 loading time as readFrictionMeasurement does (for code that
-  // builds parameters without options).
-  FrictionMeasurement measurement = derivedMeasurement();
+};
+
+// What a run must determine, as sbm::Request: the shared friction measurement and the run's
+// limits; it stops as soon as the observables are known.
+struct FemRequest {
+  // The shared rule of both models (-friction_ options), its times from the Eq. 2 loading time.
+  FrictionMeasurement measurement;
+  double slideTime = kNotDerived;  // longest step 2; default 1.5 t_load + the latest mu_k window's end
   bool stopWhenKnown = true;  // false: slide for slideTime whatever the observer knows
-  // Parallel
-  std::string partitioner = "metis";
-  // Output
+  std::vector<double> snapshotTimes;  // field snapshots, times after the start of sliding [s]
+};
+
+// Output of a single run.
+struct FemOutput {
   std::string output;  // "" = no output file
   bool overwrite = false;
-  std::vector<double> snapshotTimes;  // times after the start of sliding [s]
   int historyEvery = 1;
   bool verbose = true;
+};
+
+struct FemParameters : FemMesh, FemContact, FemDamping, FemTimeStep, FemRequest, FemOutput {
+  // The physical plate (-plate_ options, shared with the spring-block model): size L, thickness
+  // H, material, pressure, sliding speed and angle, mean local mu_s and mu_k (graded by -grading_).
+  Plate plate;
+
+  FemParameters() : FemParameters(Plate{}) {}
+  // Every value at its default for this plate, the derived ones derived from it. A caller that
+  // changes the plate afterwards builds its parameters from the changed plate instead.
+  explicit FemParameters(const Plate& plate);
 
   double shearModulus() const { return plate.shearModulus(); }
   double shearWaveSpeed() const;
-  double dilatationalWaveSpeed() const;  // c_p = sqrt((lambda + 2 mu) / rho) of E0
   // Paper Eq. 2: Delta t_s = mu_s p H / (G v).
   double eq2PeakTime() const { return plate.loadingTime(plate.thickness); }
   // Relative loss of loading slope (dF/dx of the top against G L^2/H) that the penalty springs'
   // compliance causes: tangential G/(H k_t) plus the rocking of the plate on the normal springs
   // under the moment H F, 12 G H/(k_n L^2) (kinematic contact or no contact: 0).
   double penaltySlopeError() const;
-  // Fill the derived defaults (negative or zero placeholders) from the others.
-  void resolveDerived();
 };
+
+// The derived defaults, each computed in one place (the constructor and the reader use them).
+double defaultPenaltyStiffness(const Plate& plate);  // penaltyFactor G/H
+// The measurement's times from the FEM's loading time t_load (Eq. 2 with H) and its steady window.
+FrictionMeasurement defaultFemMeasurement(double loadingTime);
+// Long enough for the latest window: 1.5 t_load for the peak and its confirmation, then the window.
+double defaultSlideTime(double loadingTime, const FrictionMeasurement& m);
 
 // One line each for the active effects and the results file: the contact (method, penalties and
 // the slope error they carry) and the damping of the sliding step.

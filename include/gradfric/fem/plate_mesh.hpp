@@ -58,7 +58,6 @@ public:
   }
   PetscInt localCells() const { return numCells_; }
   PetscInt globalCells() const { return globalCells_; }
-  PetscInt globalVertices() const;
   PetscInt ownedBlocks() const { return ownedBlocks_; }
   PetscInt firstVertex() const { return vStart_; }
 
@@ -81,6 +80,7 @@ public:
 private:
   void build(const std::string& partitioner);
   void mapCoordinates(DM serial) const;
+  void viewAndCheck() const;  // -dm_view, -dm_plex_check_all
   void buildCells();
   void buildShapes();
   void buildOwnedVertices();
@@ -102,5 +102,9 @@ private:
   std::vector<PetscInt> blockOfVertex_;  // per local vertex (minus vStart): its owned block or -1
   std::unique_ptr<OrderedAssembly> ordered_;
 };
+
+// Reads -dm_view and -dm_plex_check_all before any work (PlateMesh applies them once built), so
+// that checkUnusedOptions does not report them.
+void readPlateMeshOptions();
 
 }  // namespace gradfric::fem

@@ -1,6 +1,7 @@
 #pragma once
 // The TS of a plate model and the boundary between PETSc's callbacks and C++ exceptions.
-//  - createPlateTS: type gfverlet (unless -ts_type says otherwise), fixed step model.timeStep(),
+//  - createPlateTS: the parameters' integrator (gfverlet unless -fem_ts_type says otherwise: the
+//    plate's TS reads PETSc's TS options with the prefix fem_), fixed step model.timeStep(),
 //    the model's right-hand side, and a post-step that runs the layers' post-step after each
 //    accepted step (TSSetPostStep: PETSc calls it from TSSolve only, not from a bare TSStep).
 //  - guardedCallback: runs the body of a PETSc callback; an exception becomes a PETSc error code
@@ -15,9 +16,14 @@ namespace gradfric::fem {
 
 TS createPlateTS(PlateModel& model, Vec state);
 
-// Reads the -ts_ options once on a throwaway TS, before any work: an unknown -ts_type is refused
-// early and the options count as used (checkUnusedOptions runs before the model exists).
-void readPlateTSOptions(MPI_Comm comm);
+// The options prefix of the plate's TS: -fem_ts_type, -fem_ts_monitor, -fem_ts_view, ...
+constexpr const char* kPlateTSPrefix = "fem_";
+
+// Reads the -fem_ts_ options once on a throwaway TS, before any work: an unknown -fem_ts_type,
+// a type other than gfverlet with the kinematic contact, and the unprefixed spelling (-ts_type,
+// -ts_monitor, ...) are refused early, and the options count as used (checkUnusedOptions runs
+// before the model exists).
+void readPlateTSOptions(MPI_Comm comm, const FemParameters& params);
 
 // The post-step of createPlateTS (the layers' post-step: contact state, damping work): call it
 // first from a post-step that replaces it, then the observers.

@@ -22,7 +22,7 @@ struct FemRunResult {
   // mu_s, its time and confirmation, mu_k over the kinetic window, the first slip (some bottom
   // node slipping), the history sampled every -friction_history_interval with F_x, F_y.
   FrictionSummary friction;
-  bool stoppedByTS = false;  // the TS's own limits (-ts_max_steps, -ts_max_time) ended the run first
+  bool stoppedByTS = false;  // the TS's own limits (-fem_ts_max_steps, -fem_ts_max_time) ended the run first
   double slideStart = 0;     // absolute time of the start of sliding [s]
   double settledNormalForce = 0;  // total contact normal force / (p L^2) at the end of step 1
   bool staticPressureStep = false;  // step 1 was the pressed equilibrium (no time steps)
@@ -49,8 +49,8 @@ struct FemRunResult {
 // Called after each step of step 2 with the time since the start of sliding and the state.
 using StepObserver = std::function<void(double tSliding, Vec state)>;
 
-// Runs the experiment on a fresh TS (createPlateTS: -ts_ options apply, -ts_monitor, -ts_view,
-// -ts_max_steps, -ts_type ...). Throws NumericalInstability when the monitor sees the run go unstable (no
+// Runs the experiment on a fresh TS (createPlateTS: -fem_ts_ options apply, -fem_ts_monitor,
+// -fem_ts_view, -fem_ts_max_steps, -fem_ts_type ...). Throws NumericalInstability when the monitor sees the run go unstable (no
 // result is returned, nothing written).
 FemRunResult runPlateExperiment(PlateModel& model, const StepObserver& observer = {});
 
