@@ -1,5 +1,6 @@
 #include "gradfric/fem/contact_boundary.hpp"
 
+#include "gradfric/core/format.hpp"
 #include "gradfric/core/gather.hpp"
 #include "gradfric/core/petsc_call.hpp"
 #include "gradfric/core/reproducible_sum.hpp"
@@ -37,6 +38,7 @@ void ContactBoundary::addForce(const LayerContext& ctx, Vec X, Vec F, ContactSum
 void ContactBoundary::addPenaltyForce(Vec X, Vec F, double dt, ContactSums& totals) {
   const ReadState x(X);
   const WriteState f(F);
+  const NormalStressFilter& filter = settings_.normalFilter;
   visitContactLaw(law_, [&](auto& law) {
     const bool state = hasSlipState(law);
     for (std::size_t site = 0; site < nodes_.size(); ++site) {
@@ -44,10 +46,11 @@ void ContactBoundary::addPenaltyForce(Vec X, Vec F, double dt, ContactSums& tota
       const PetscScalar* u = x.displacement(n.block);
       const PetscScalar* v = x.velocity(n.block);
       const bool wasSlipping = n.state == ContactState::Slip;
-      const double slip = wasSlipping && state ? tangentialStep(n, u) : 0.0;
+      const double slip = wasSlipping && (state || filter.active()) ? tangentialStep(n, u) : 0.0;
       const ContactTraction r = penaltyContact(stiffness_, law, static_cast<int>(site), u[2], u[0], u[1], n.anchorX,
-                                               n.anchorY, v[0], v[1], wasSlipping, slip, dt);
+                                               n.anchorY, v[0], v[1], wasSlipping, slip, dt, filter, n.filtered);
       keepSlipState(law, static_cast<int>(site), r.state, r.strength);
+      n.pendingFiltered = r.frictionPressure;
       n.pendingX = r.anchorX;
       n.pendingY = r.anchorY;
       n.pendingState = r.state;
@@ -64,6 +67,7 @@ void ContactBoundary::addKinematicForce(Vec X, Vec F, const std::vector<double>&
                                         double dt, ContactSums& totals) {
   const ReadState x(X);
   const WriteState f(F);
+  const NormalStressFilter& filter = settings_.normalFilter;
   visitContactLaw(law_, [&](auto& law) {
     const bool state = hasSlipState(law);
     for (std::size_t site = 0; site < nodes_.size(); ++site) {
@@ -75,9 +79,11 @@ void ContactBoundary::addKinematicForce(Vec X, Vec F, const std::vector<double>&
       const double v[3] = {xv[0], xv[1], xv[2]};
       const double aFree[3] = {fb[0] / m + damping.acceleration(v, 0), fb[1] / m + damping.acceleration(v, 1),
                                fb[2] / m + damping.acceleration(v, 2)};
-      const double slip = state ? tangentialStep(n, u) : 0.0;
-      const KinematicContactForce r = kinematicContact(law, static_cast<int>(site), m, dt, u[2], v, aFree, slip);
+      const double slip = state || filter.active() ? tangentialStep(n, u) : 0.0;
+      const KinematicContactForce r =
+          kinematicContact(law, static_cast<int>(site), m, dt, u[2], v, aFree, slip, filter, n.filtered * n.area);
       keepSlipState(law, static_cast<int>(site), r.state, r.strength);
+      n.pendingFiltered = r.frictionForce / n.area;
       n.pendingState = r.state;
       n.pressure = r.fn / n.area;
       n.tx = r.fx / n.area;
@@ -133,8 +139,12 @@ LayerWork ContactBoundary::work() const {
 }
 
 std::string ContactBoundary::describe() const {
-  return std::string(settings_.kinematic ? "kinematic" : "penalty") + " contact with the rigid plane, friction law " +
-         settings_.law.name + ", one site per bottom node";
+  std::string text = std::string(settings_.kinematic ? "kinematic" : "penalty") +
+                     " contact with the rigid plane, friction law " + settings_.law.name + ", one site per bottom node";
+  if (settings_.normalFilter.active())
+    text += ", strength on the Prakash-Clifton filtered pressure (L " + formatReal(settings_.normalFilter.length) +
+            " m, V* " + formatReal(settings_.normalFilter.speed) + " m/s)";
+  return text;
 }
 
 void ContactBoundary::writeProperties(PropertySink& sink) const {
@@ -170,6 +180,7 @@ void ContactBoundary::commit() {
     n.anchorX = n.pendingX;
     n.anchorY = n.pendingY;
     n.state = n.pendingState;
+    n.filtered = n.pendingFiltered;
     if (n.pendingState == ContactState::Slip)
       lastStepSlip_ = std::max(lastStepSlip_, std::hypot(n.pendingU[0] - n.u[0], n.pendingU[1] - n.u[1]));
     for (int d = 0; d < 3; ++d) {
@@ -184,6 +195,10 @@ void ContactBoundary::commit() {
 void ContactBoundary::resetSlipRecord() {
   for (Node& n : nodes_) n.everSlipped = false;
   slipRecord_.clear();
+}
+
+void ContactBoundary::settleFilteredPressure() {
+  for (Node& n : nodes_) n.filtered = n.pressure;
 }
 
 void ContactBoundary::recordOnset(double t) {

@@ -25,6 +25,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <sstream>
 #include <vector>
 
@@ -39,7 +40,19 @@ struct StudyRow {
   double slipLength = 0, delta = 0, dtSafety = 0, mu = 0;
   int n = 0, nz = 0;
   double edgeRatio = 1, edgeBand = 0;  // the mesh's edge grading (edge_grading.hpp; ratio 1: uniform)
+  NormalStressFilter filter;           // the contact column's ",pc=L/V*" (off without it)
 };
+
+// "penalty" or "penalty,pc=1e-6/0.1": the contact method, then the Prakash-Clifton filter if any.
+void splitContact(StudyRow& r) {
+  const std::size_t comma = r.contact.find(",pc=");
+  if (comma == std::string::npos) return;
+  const std::string filter = r.contact.substr(comma + 4);
+  r.contact.resize(comma);
+  const std::size_t slash = filter.find('/');
+  r.filter.length = std::stod(filter.substr(0, slash));
+  r.filter.speed = slash == std::string::npos ? 0.0 : std::stod(filter.substr(slash + 1));
+}
 
 const std::vector<StudyRow>& studyRows() {
   static const std::vector<StudyRow> rows = [] {
@@ -51,8 +64,10 @@ const std::vector<StudyRow>& studyRows() {
       std::istringstream fields(line);
       StudyRow r;
       if (fields >> r.law >> r.slipLength >> r.property >> r.delta >> r.n >> r.nz >> r.edgeRatio >> r.edgeBand >>
-          r.element >> r.dtSafety >> r.contact >> r.mu)
+          r.element >> r.dtSafety >> r.contact >> r.mu) {
+        splitContact(r);
         parsed.push_back(r);
+      }
     }
     return parsed;
   }();
@@ -103,21 +118,26 @@ bool sameMesh(const StudyRow& r, const EdgeGrading& edge) {
 }
 
 // The study's mu_s for the settings given (nullptr: not run), on a mesh graded as `edge` (the
-// thickness, time-step and contact terms: the uniform mesh, EdgeGrading{}).
+// thickness, time-step and contact terms: the uniform mesh, EdgeGrading{}) with the normal-stress
+// filter `filter` (those terms: none).
 const StudyRow* find(const FemParameters& q, const std::string& property, double delta, int n, int nz,
-                     double dtSafety, const char* contact, const EdgeGrading& edge = {}) {
+                     double dtSafety, const char* contact, const EdgeGrading& edge = {},
+                     const NormalStressFilter& filter = {}) {
   for (const StudyRow& r : studyRows())
     if (r.law == q.frictionLaw.name && near(r.slipLength, q.frictionLaw.slipLength) && r.property == property &&
         std::fabs(r.delta - delta) < 1e-9 && r.n == n && r.nz == nz && sameMesh(r, edge) &&
-        r.element == elementTypeName(q.element) && std::fabs(r.dtSafety - dtSafety) < 1e-9 && r.contact == contact)
+        r.element == elementTypeName(q.element) && std::fabs(r.dtSafety - dtSafety) < 1e-9 && r.contact == contact &&
+        near(r.filter.length, filter.length) && near(r.filter.speed, filter.speed))
       return &r;
   return nullptr;
 }
 
 std::string meshName(const FemParameters& q) {
-  if (q.edge.uniform()) return "";
-  char text[120];
-  std::snprintf(text, sizeof text, " edge-graded (ratio %g, band %g m)", q.edge.ratio, q.edge.band);
+  char text[200] = "";
+  if (!q.edge.uniform()) std::snprintf(text, sizeof text, " edge-graded (ratio %g, band %g m)", q.edge.ratio, q.edge.band);
+  if (q.normalFilter.active())
+    std::snprintf(text + std::strlen(text), sizeof text - std::strlen(text), " with the Prakash-Clifton filter (L %g m, V* %g m/s)",
+                  q.normalFilter.length, q.normalFilter.speed);
   return text;
 }
 
@@ -160,7 +180,7 @@ ErrorTerm meshTerm(const FemParameters& q, const Grading& g, bool* coversThickne
       bool complete = true;
       for (int k = 0; k < 3; ++k)
         complete = complete && (m[k] = find(q, property, delta, coarsest << k, allDirections ? coarsestNz << k : q.nz,
-                                            0.6, "penalty", q.edge)) != nullptr;
+                                            0.6, "penalty", q.edge, q.normalFilter)) != nullptr;
       if (!complete) continue;
       char ladder[240];
       if (allDirections)
@@ -233,7 +253,8 @@ DiscretisationError discretisationError(const FemParameters& q, const Grading& g
     e.relative = e.mesh.relative + e.thickness.relative + e.timeStep.relative + e.contact.relative;
     e.basis = "mesh " + percent(e.mesh.relative) + ", thickness " + percent(e.thickness.relative) + ", dt " +
               percent(e.timeStep.relative) + ", contact " + percent(e.contact.relative) + "; " + e.mesh.basis +
-              (g.active() ? "; thickness, dt and contact terms of the non-graded plate" : "");
+              (g.active() || q.normalFilter.active() ? "; thickness, dt and contact terms of the non-graded plate" : "") +
+              (q.normalFilter.active() ? " without the filter" : "");
   } else {
     for (const ErrorTerm* t : terms)  // every term without a bound, each with its reason
       if (!t->measured) e.basis += (e.basis.empty() ? "" : "; ") + t->basis;

@@ -23,14 +23,24 @@ double FemParameters::penaltySlopeError() const {
   return compliance / (1.0 + compliance);
 }
 
+namespace {
+std::string describeNormalFilter(const FemParameters& q) {
+  if (!q.normalFilter.active()) return "";
+  char text[160];
+  std::snprintf(text, sizeof text, "; Prakash-Clifton filtered pressure, L %.3g m, V* %.3g m/s", q.normalFilter.length,
+                q.normalFilter.speed);
+  return text;
+}
+}  // namespace
+
 std::string describeContact(const FemParameters& q) {
   if (!q.contact) return "none (free bottom face)";
   if (q.contactMethod == ContactMethod::Kinematic)
-    return "kinematic (exact: no penetration, exact stick within mu_s p_c A)";
+    return "kinematic (exact: no penetration, exact stick within mu_s p_c A)" + describeNormalFilter(q);
   char text[200];
   std::snprintf(text, sizeof text, "penalty k_n %.3g, k_t %.3g Pa/m (loading slope %.2f %% low)", q.kn, q.kt,
                 100.0 * q.penaltySlopeError());
-  return text;
+  return text + describeNormalFilter(q);
 }
 
 std::string describeFrictionState(const FemParameters& q) {
@@ -175,6 +185,12 @@ FemParameters readFemParameters(MPI_Comm comm, RunParameters* record, const Plat
   q.contactMethod = contact == "kinematic" ? ContactMethod::Kinematic : ContactMethod::Penalty;
   if (auto kn = o.realIfSet("kn", "Pa/m", "normal penalty stiffness k_n", "250 G/H")) q.kn = *kn;
   q.kt = o.realIfSet("kt", "Pa/m", "tangential penalty stiffness k_t", "k_n").value_or(q.kn);
+  q.normalFilter.length = o.real("pc_length", q.normalFilter.length, "m",
+                                 "Prakash-Clifton filter: slip length over which the pressure the friction strength "
+                                 "multiplies follows the contact pressure (0: off, the strength follows it at once)");
+  q.normalFilter.speed = o.real("pc_speed", q.normalFilter.speed, "m/s",
+                                "Prakash-Clifton filter: reference speed V*, the filtered pressure follows at rest "
+                                "over -fem_pc_length / V*");
   if (auto g = o.realIfSet("settle_damping", "1/s", "mass-proportional damping during the pressure step", "c_s/H"))
     q.settleDamping = *g;
   q.bulkLinear = o.real("bulk_b1", q.bulkLinear, "1",
@@ -233,6 +249,10 @@ FemParameters readFemParameters(MPI_Comm comm, RunParameters* record, const Plat
   o.requireNonNegative("slip_length", q.slipLength, "m");
   if (o.wasSet("slip_length"))  // the default is not checked against H: a bad -plate_H is refused by its own name
     o.requireRange("slip_length", q.slipLength, 0.0, q.plate.thickness, "0 <= D_c <= H (the plate's thickness)");
+  o.requireRange("pc_length", q.normalFilter.length, 0.0, q.plate.thickness, "0 <= L <= H (the plate's thickness)");
+  o.requireNonNegative("pc_speed", q.normalFilter.speed, "m/s");
+  if (q.normalFilter.active() && !q.contact)
+    throw InputError(o.fullName("pc_length"), formatReal(q.normalFilter.length), "0 with -fem_contact none");
   if (o.wasSet("kn")) o.requirePositive("kn", q.kn, "Pa/m");
   if (o.wasSet("kt")) o.requirePositive("kt", q.kt, "Pa/m");
   if (o.wasSet("settle_damping")) o.requireNonNegative("settle_damping", q.settleDamping, "1/s");

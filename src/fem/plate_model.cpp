@@ -17,7 +17,7 @@ ElasticSettings elasticSettings(const FemParameters& q) {
 
 ContactSettings contactSettings(const FemParameters& q) {
   return {q.contactMethod == ContactMethod::Kinematic, PenaltyStiffness{q.kn, q.kt}, q.frictionLaw, q.slipLength,
-          q.slipHealingOnly};
+          q.slipHealingOnly, q.normalFilter};
 }
 
 }  // namespace
@@ -131,6 +131,7 @@ void PlateModel::startSliding(Vec X) {
   protocol_.setPhase(Phase::Sliding);
   top_->startSliding(X);
   contact_->resetSlipRecord();
+  contact_->settleFilteredPressure();
 }
 
 ContactTotals PlateModel::contactTotals() const {

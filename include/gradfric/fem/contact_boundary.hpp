@@ -9,6 +9,7 @@
 #include "gradfric/fem/contact_law.hpp"
 #include "gradfric/fem/contact_penalty.hpp"
 #include "gradfric/fem/layer.hpp"
+#include "gradfric/fem/normal_stress_filter.hpp"
 #include "gradfric/fem/plate_properties.hpp"
 #include "gradfric/fem/sliding_damping.hpp"
 #include "gradfric/physics/process_zone.hpp"
@@ -26,6 +27,7 @@ struct ContactSettings {
   FrictionLawSettings law;     // the friction law of every node (contact_law.hpp)
   double memoryLength = 0.0;   // with a stateless law, its friction memory's slip length [m] (0: none)
   bool healingOnly = false;    // the memory's weakening at once, only the healing over it
+  NormalStressFilter normalFilter;  // Prakash-Clifton (normal_stress_filter.hpp); off by default
 };
 
 // The contact layer: the last force of the list (the kinematic contact needs every other force).
@@ -40,6 +42,7 @@ public:
     bool everSlipped = false;
     double weakenStart = -1, weakenEnd = -1;  // times its strength fell 10 % and 90 % of the way to mu_k
     double pressure = 0, tx = 0, ty = 0;  // of the last evaluation
+    double filtered = 0, pendingFiltered = 0;  // the normal-stress filter's p* [Pa]: committed, pending
     double force[3] = {0, 0, 0}, u[3] = {0, 0, 0};  // committed contact force and displacement
     double work = 0;  // done by the contact force on the node since the start (the same on any partition)
     double pendingForce[3] = {0, 0, 0}, pendingU[3] = {0, 0, 0};
@@ -66,6 +69,9 @@ public:
                          ContactSums& totals);
   void commit();  // accept the pending contact state (after a step)
   void resetSlipRecord();  // from now on, everSlipped counts slips after this point (and the slip per step)
+  // At the start of sliding: every node's filtered pressure p* is its pressure (the plate has been
+  // pressed at rest, where p* would follow p over L / V*).
+  void settleFilteredPressure();
   // After each sliding step at time t, with a law that weakens over a slip (the state law): notes
   // the nodes whose committed strength has fallen 10 % and 90 % of the way from mu_s to mu_k (for
   // processZone()) and the step's largest slip (for largestSlipPerStep()).

@@ -3,6 +3,7 @@
 #include "gradfric/core/options.hpp"
 #include "gradfric/fem/edge_grading.hpp"
 #include "gradfric/fem/hex_element.hpp"
+#include "gradfric/fem/normal_stress_filter.hpp"
 #include "gradfric/physics/friction_history.hpp"
 #include "gradfric/physics/friction_laws_settings.hpp"
 #include "gradfric/physics/plate.hpp"
@@ -67,6 +68,9 @@ struct FemContact {
   // H/(G L^2), so the loading slope carries -G/(H k_t); 250 G/H keeps it at 0.4 %. k_t: k_n.
   double kn = kNotDerived, kt = kNotDerived;
   static constexpr double penaltyFactor = 250.0;
+  // The Prakash-Clifton filter of the pressure the strength multiplies (normal_stress_filter.hpp;
+  // -fem_pc_length, -fem_pc_speed): off by default (docs/accuracy_fem.md, "The normal-stress filter").
+  NormalStressFilter normalFilter;
 };
 
 // Damping: bulk viscosity, mass- and stiffness-proportional, in each phase.
