@@ -33,10 +33,10 @@ def load(path, edge=(1.0, 0.0)):
     return rows
 
 
-def ladder(rows, law, dc, prop, delta, nz=5):
-    sizes = sorted(k[4] for k in rows if k[:4] == (law, dc, prop, delta) and k[5] == nz and k[7] == 0.6 and k[8] == "penalty")
+def ladder(rows, law, dc, prop, delta, nz=5, contact="penalty"):
+    sizes = sorted(k[4] for k in rows if k[:4] == (law, dc, prop, delta) and k[5] == nz and k[7] == 0.6 and k[8] == contact)
     for n in sizes:
-        key = lambda m: (law, dc, prop, delta, m, nz, "q1", 0.6, "penalty")
+        key = lambda m: (law, dc, prop, delta, m, nz, "q1", 0.6, contact)
         if key(2 * n) in rows and key(4 * n) in rows:
             return n, [rows[key(n)], rows[key(2 * n)], rows[key(4 * n)]]
     return None, None
@@ -61,13 +61,16 @@ def main():
     rows = load(path)
     print("| D_c [m] | kappa | grading | mu_s at n, 2n, 4n (x 5) | differences | observed order | extrapolated | GCI of n / 2n / 4n |")
     print("|---|---|---|---|---|---|---|---|")
-    seen = sorted({(k[0], k[1], k[2], k[3]) for k in rows})
-    for law, dc, prop, delta in seen:
-        n, mu = ladder(rows, law, dc, prop, delta)
+    # The penalty contact's ladders, then those with the Prakash-Clifton filter ("penalty,pc=L/V*").
+    seen = sorted({(k[8] != "penalty", k[8], k[0], k[1], k[2], k[3]) for k in rows if k[8].startswith("penalty")})
+    for _, contact, law, dc, prop, delta in seen:
+        n, mu = ladder(rows, law, dc, prop, delta, contact=contact)
         if not mu:
             continue
         kappa = G * dc / (H * P * 0.4)
         grading = "none" if prop == "none" else "%s %+.1f" % (prop, delta)
+        if contact != "penalty":
+            grading += ", filter L/V* " + contact.split("=", 1)[1]
         d, p, ext, gci = analyse(mu)
         print("| %g | %.2f | %s | %d/%d/%d: %s | %s | %s | %s | %s |" % (
             dc, kappa, grading, n, 2 * n, 4 * n, ", ".join("%.6f" % m for m in mu), d, p, ext, gci))

@@ -24,6 +24,7 @@ struct InterfaceResolution {
   double slipLength = 0, kappa = 0;
   double elasticSlip = 0;  // mu_s,max p / k_t [m]; 0 with kinematic contact
   double largestStepSlip = 0;
+  double largestStaticCoefficient = 0;  // over the contact nodes: above 1 the sliding interface flutters
   ProcessZone zone;
   std::vector<std::string> violations;  // empty: resolved
 
