@@ -9,7 +9,7 @@
 // problem is ill-posed: every finer mesh admits faster modes). Friction grading puts the local
 // mu_s above 1 on one side of the plate. The filter bounds the growth at short wavelengths
 // (Ranjith & Rice 2001; Cochard & Rice 2000; Kammer et al. 2014; the slip-based form, preferred by
-// Scala et al. 2017, is SEM2DPACK's). docs/accuracy_fem.md, "The normal-stress filter", measures it.
+// Scala et al. 2017, is SEM2DPACK's). docs/accuracy_fem.md, "Local mu_s above 1", measures it.
 // The spring-block model needs no filter: a block's normal force does not change in time.
 // Pure arithmetic, no PETSc.
 #include <cmath>

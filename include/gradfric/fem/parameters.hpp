@@ -69,7 +69,7 @@ struct FemContact {
   double kn = kNotDerived, kt = kNotDerived;
   static constexpr double penaltyFactor = 250.0;
   // The Prakash-Clifton filter of the pressure the strength multiplies (normal_stress_filter.hpp;
-  // -fem_pc_length, -fem_pc_speed): off by default (docs/accuracy_fem.md, "The normal-stress filter").
+  // -fem_pc_length, -fem_pc_speed): off by default (docs/accuracy_fem.md, "Local mu_s above 1").
   NormalStressFilter normalFilter;
 };
 
