@@ -3,6 +3,7 @@
 
 #include "gradfric/fem/plate_model.hpp"
 #include "gradfric/fem/mesh_sites.hpp"
+#include "gradfric/fem/parameter_options.hpp"
 #include "gradfric/fem/plate_ts.hpp"
 #include "gradfric/fem/simulation.hpp"
 #include "gradfric/fem/stable_step.hpp"

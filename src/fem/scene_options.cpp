@@ -1,6 +1,7 @@
 #include "gradfric/fem/scene_options.hpp"
 
 #include "gradfric/fem/mesh_sites.hpp"
+#include "gradfric/fem/parameter_options.hpp"
 #include "gradfric/fem/plate_mesh.hpp"
 #include "gradfric/fem/plate_ts.hpp"
 #include "gradfric/fem/stable_step.hpp"

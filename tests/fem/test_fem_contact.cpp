@@ -1,8 +1,8 @@
-// The contact of the FEM plate: the exact (kinematic) contact node by node, the bulk viscosity's
-// volumetric rate, and on a reduced plate at the defaults: the loading slope against G L^2/H, the
+// The contact of the FEM plate: the bulk viscosity's volumetric rate, and on a reduced plate at the defaults: the loading slope against G L^2/H, the
 // settled normal force, penalty against kinematic contact up to the peak, steady sliding with
 // constant friction (plateau, contact kept, normal force, energy balance) and mu_s untouched by the
-// damping of the sliding plate.
+// damping of the sliding plate. The exact (kinematic) contact node by node, without PETSc:
+// tests/unit/test_fem_contact_laws.cpp.
 //
 // The reduced plate: the paper's plate (L = 5 mm, H = 0.05 mm, material, loading) on 10 x 10 x 5
 // hexahedra. Its cells are 500 x 500 x 10 um, the paper mesh's 50 x 50 x 10 um: the same hz, so the
@@ -14,7 +14,6 @@
 #include <petscsf.h>
 #include "gradfric/core/petsc_handle.hpp"
 #include "gradfric/fem/bulk_viscosity.hpp"
-#include "gradfric/fem/contact_kinematic.hpp"
 #include "gradfric/fem/hex_element.hpp"
 #include "gradfric/fem/simulation.hpp"
 #include "gradfric/fem/sliding_damping.hpp"
@@ -28,64 +27,6 @@
 
 using namespace gradfric;
 using namespace gradfric::fem;
-
-namespace {
-
-ExponentialVelocityWeakening oneSiteLaw(double muS, double muK, double vC) {
-  FrictionSites sites;
-  sites.layout = SiteLayout::PerSite;
-  sites.columns = 1;
-  sites.staticStrength = {muS};
-  sites.kineticStrength = {muK};
-  FrictionLawSettings settings;
-  settings.criticalVelocity = vC;
-  return ExponentialVelocityWeakening::make(sites, settings);
-}
-
-}  // namespace
-
-TEST(FemContact, KinematicNodePressedAndPulledSticksOrSlidesExactlyAtMuS) {
-  const double muS = 0.8, muK = 0.5, m = 3e-11, dt = 4e-8, press = 2.5e-5;
-  const ExponentialVelocityWeakening law = oneSiteLaw(muS, muK, 1e-4);
-  const double v[3] = {0, 0, 0};
-  for (double ratio : {0.0, 0.5, 1.0 - 1e-9, 1.0 + 1e-9, 1.5}) {
-    const double pull = ratio * muS * press;
-    const double aFree[3] = {pull / m, 0, -press / m};  // pressed with press, pulled with pull, at rest on the plane
-    const KinematicContactForce r = kinematicContact(law, 0, m, dt, 0.0, v, aFree);
-    EXPECT_NEAR(r.fn, press, 1e-12 * press) << "the normal force stops the node exactly";
-    if (ratio <= 1.0) {
-      EXPECT_EQ(r.state, ContactState::Stick) << "pulled with " << ratio << " mu_s p";
-      EXPECT_NEAR(r.fx, -pull, 1e-12 * press) << "sticking: the force that stops it, exactly";
-    } else {
-      EXPECT_EQ(r.state, ContactState::Slip) << "pulled with " << ratio << " mu_s p";
-      EXPECT_NEAR(r.fx, -muS * press, 1e-12 * press) << "starting to slide (v = 0): mu(0) p = mu_s p";
-    }
-    EXPECT_EQ(r.fy, 0.0);
-  }
-  // Sliding at 10 v_c and pulled on: the force is Eq. 1's mu(v) f_n against the motion, from the
-  // same law object.
-  const double vs[3] = {1e-3, 0, 0};
-  const double aPulled[3] = {2 * muS * press / m, 0, -press / m};
-  const KinematicContactForce s = kinematicContact(law, 0, m, dt, 0.0, vs, aPulled);
-  ASSERT_EQ(s.state, ContactState::Slip);
-  EXPECT_NEAR(s.fx, -law.slidingStrength(muS, muK, 1e-3) * press, 1e-12 * press);
-  EXPECT_NEAR(-s.fx / press, muK + (muS - muK) * std::exp(-10.0), 1e-12);
-  // Sliding and driven by less than mu_s f_n but more than its sliding friction: it slides on (a
-  // moving node stops only if the friction it feels can stop it within the step).
-  const double aDriven[3] = {0.7 * muS * press / m, 0, -press / m};
-  const KinematicContactForce on = kinematicContact(law, 0, m, dt, 0.0, vs, aDriven);
-  EXPECT_EQ(on.state, ContactState::Slip);
-  EXPECT_NEAR(on.fx, -law.slidingStrength(muS, muK, 1e-3) * press, 1e-12 * press);
-  // Sliding slowly with a small drive: its friction stops it, and it sticks.
-  const double slow[3] = {1e-6, 0, 0};
-  const double aSmall[3] = {0.1 * muS * press / m, 0, -press / m};
-  EXPECT_EQ(kinematicContact(law, 0, m, dt, 0.0, slow, aSmall).state, ContactState::Stick);
-  // Above the plane and not reaching it within the step: no force.
-  const double aFree[3] = {0, 0, -press / m};
-  const KinematicContactForce open = kinematicContact(law, 0, m, dt, 1e-6, v, aFree);
-  EXPECT_EQ(open.state, ContactState::Open);
-  EXPECT_EQ(open.fn, 0.0);
-}
 
 TEST(FemContact, BulkViscosityRateIsTheCellAverageVolumetricStrainRate) {
   const double hx = 5e-5, hy = 4e-5, hz = 1e-5, nu = 1.0 / 3.0, E = 1e7;

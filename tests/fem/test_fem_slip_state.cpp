@@ -1,7 +1,5 @@
 // The friction memory of Eq. 1 in the FEM contact (physics/slip_state_law.hpp,
 // -friction_law exponential -fem_slip_length; docs/accuracy_fem_history.md "Steady sliding after the peak"):
-// * node by node, without a slip length the contact forces are the plain law's bit for bit, with
-//   both contact methods;
 // * with constant friction (mu_s = mu_k) the slip state cannot change anything: the whole run is
 //   the run without it, bit for bit;
 // * at the default (healing only: Eq. 1's weakening at once) mu_s and mu(t) up to the peak are
@@ -10,8 +8,8 @@
 //   default slip length, once the plate slides steadily, the global mu is Eq. 1's local value at v
 //   (0.60002) within 1 %, with either contact; without a slip length it stays far above it
 //   (node-scale stick-slip: a stopped node is back at mu_s).
-#include "gradfric/fem/contact_kinematic.hpp"
-#include "gradfric/fem/contact_penalty.hpp"
+// Node by node (without a slip length the contact forces are the plain law's bit for bit, with
+// both contact methods), without PETSc: tests/unit/test_fem_contact_laws.cpp.
 #include "gradfric/fem/simulation.hpp"
 #include "fem_test_util.hpp"
 
@@ -19,7 +17,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <random>
 
 using namespace gradfric;
 using namespace gradfric::fem;
@@ -32,13 +29,6 @@ FemParameters memoryCoarse(int nx, int ny, int nz) {
   FemParameters q = test::coarse(nx, ny, nz);
   q.frictionLaw.name = "exponential";
   return q;
-}
-
-ExponentialVelocityWeakening equationOne() {
-  FrictionSites sites{SiteLayout::PerSite, 2, {1.0, 0.9}, {0.6, 0.55}};
-  FrictionLawSettings settings;
-  settings.criticalVelocity = 1e-4;
-  return ExponentialVelocityWeakening::make(sites, settings);
 }
 
 // Mean of mu over the recorded steps with time in [from, to].
@@ -62,34 +52,6 @@ FemRunResult run(const FemParameters& q) {
 }
 
 }  // namespace
-
-TEST(FemSlipState, WithoutSlipLengthTheContactIsThePlainLawBitForBit) {
-  const ExponentialVelocityWeakening plain = equationOne();
-  const auto wrapped = WithSlipLength<ExponentialVelocityWeakening>::make(plain, 0.0, 2);
-  const PenaltyStiffness k{1.875e13, 1.875e13};
-  std::mt19937 rng(7);
-  std::uniform_real_distribution<double> u(-1e-8, 1e-8), vel(-3e-3, 3e-3);
-  for (int i = 0; i < 2000; ++i) {
-    const int site = i % 2;
-    const double gap = u(rng), ux = u(rng), uy = u(rng), ax = u(rng), ay = u(rng), vx = vel(rng), vy = vel(rng);
-    for (bool slipping : {false, true}) {
-      const ContactTraction a = penaltyContact(k, plain, site, gap, ux, uy, ax, ay, vx, vy, slipping);
-      const ContactTraction b = penaltyContact(k, wrapped, site, gap, ux, uy, ax, ay, vx, vy, slipping, 1e-9);
-      ASSERT_EQ(a.tx, b.tx);
-      ASSERT_EQ(a.ty, b.ty);
-      ASSERT_EQ(a.pressure, b.pressure);
-      ASSERT_EQ(a.anchorX, b.anchorX);
-      ASSERT_EQ(a.state, b.state);
-    }
-    const double v[3] = {vx, vy, 0.0}, aFree[3] = {1e3 * vel(rng), 1e3 * vel(rng), 1e3 * vel(rng)};
-    const KinematicContactForce a = kinematicContact(plain, site, 1e-9, 2e-8, gap, v, aFree);
-    const KinematicContactForce b = kinematicContact(wrapped, site, 1e-9, 2e-8, gap, v, aFree, 1e-9);
-    ASSERT_EQ(a.fn, b.fn);
-    ASSERT_EQ(a.fx, b.fx);
-    ASSERT_EQ(a.fy, b.fy);
-    ASSERT_EQ(a.state, b.state);
-  }
-}
 
 TEST(FemSlipState, WithConstantFrictionTheSlipStateChangesNothing) {
   FemParameters q = memoryCoarse(10, 10, 5);

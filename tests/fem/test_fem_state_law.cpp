@@ -1,74 +1,18 @@
-// The state law (physics/state_weakening_law.hpp, the FEM's default) in the FEM contact:
-// * a contact node pulled at a constant fast speed, by penalty and by kinematic contact, feels the
-//   law's strength at the state its slip gives, step by step: it weakens over D_c of slip, in
-//   closed form;
-// * on the reduced plate (10 x 10 x 5, non-graded), once the plate slides steadily at v = 10 v_c,
-//   the global mu is Eq. 1's value at v (the law's steady state) within 1 %, with either contact.
-#include "gradfric/fem/contact_kinematic.hpp"
-#include "gradfric/fem/contact_penalty.hpp"
+// The state law (physics/state_weakening_law.hpp, the FEM's default) in the FEM plate: on the
+// reduced plate (10 x 10 x 5, non-graded), once the plate slides steadily at v = 10 v_c, the
+// global mu is Eq. 1's value at v (the law's steady state) within 1 %, with either contact; with
+// constant friction it slides on a plateau at its peak. A contact node pulled at a constant fast
+// speed (it weakens over D_c of slip, in closed form), without PETSc: tests/unit/test_fem_contact_laws.cpp.
 #include "gradfric/fem/simulation.hpp"
 #include "fem_test_util.hpp"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace gradfric;
 using namespace gradfric::fem;
-
-namespace {
-
-constexpr double kMuS = 1.0, kMuK = 0.6, kVc = 1e-4, kDc = 2.5e-8;
-
-StateWeakening oneNode() {
-  return StateWeakening::make({SiteLayout::PerSite, 1, {kMuS}, {kMuK}}, FrictionLawSettings{"state", kVc, kDc}, 1);
-}
-
-// The strength after sliding for t at constant speed v from theta = 0 (the law's closed form).
-double strengthAfter(double v, double t) {
-  const double theta = v * kDc / kVc * (1.0 - std::exp(-kVc * t / kDc));
-  return kMuK + (kMuS - kMuK) * std::exp(-theta / kDc);
-}
-
-}  // namespace
-
-TEST(FemStateLaw, APenaltyNodePulledAtConstantSpeedWeakensOverTheSlipLength) {
-  StateWeakening law = oneNode();
-  const PenaltyStiffness k{1.875e13, 1.875e13};
-  const double v = 0.1, dt = 2e-8, gap = -1e-9;  // slip per step v dt = 2e-9 m = 0.08 D_c
-  double ux = 1e-6, anchor = 0;                  // far beyond the elastic slip: slipping from the start
-  bool slipping = false;
-  for (int step = 0; step < 100; ++step) {
-    const double slip = slipping ? v * dt : 0.0;
-    const ContactTraction r = penaltyContact(k, law, 0, gap, ux, 0, anchor, 0, v, 0, slipping, slip, dt);
-    ASSERT_EQ(r.state, ContactState::Slip);
-    const double mu = std::fabs(r.tx) / r.pressure;
-    // The first evaluation: a node that never slid holds up to mu_s; then the state follows the slip.
-    const double expected = step == 0 ? kMuS : strengthAfter(v, step * dt);
-    ASSERT_NEAR(mu, expected, 1e-12) << "step " << step;
-    law.commit();
-    anchor = r.anchorX;
-    slipping = true;
-    ux += v * dt;
-  }
-  // 99 steps of 0.08 D_c: 7.9 D_c of slip, the strength within 0.1 % of Delta mu from mu_k.
-  EXPECT_LT(law.strengthAt(0, law.state[0]) - kMuK, 1e-3 * (kMuS - kMuK));
-  // At one D_c of slip (12.5 steps) it had lost 1 - 1/e of Delta mu.
-  EXPECT_NEAR((strengthAfter(v, kDc / v) - kMuK) / (kMuS - kMuK), std::exp(-1.0), 1e-3);
-}
-
-TEST(FemStateLaw, AKinematicNodeSlidingAtConstantSpeedWeakensTheSameWay) {
-  StateWeakening law = oneNode();
-  const double v = 0.1, dt = 2e-8, mass = 1e-9;
-  const double velocity[3] = {v, 0, 0}, pulled[3] = {1e6, 0, -1e3};  // driven far beyond any friction
-  for (int step = 1; step <= 50; ++step) {
-    const KinematicContactForce r = kinematicContact(law, 0, mass, dt, 0.0, velocity, pulled, v * dt);
-    ASSERT_EQ(r.state, ContactState::Slip);
-    ASSERT_NEAR(r.strength, strengthAfter(v, step * dt), 1e-12) << "step " << step;
-    ASSERT_NEAR(std::fabs(r.fx) / r.fn, r.strength, 1e-12);
-    law.commit();
-  }
-}
 
 TEST(FemStateLaw, NonGradedSteadySlidingIsEquationOneAtTheSliderSpeed) {
   for (ContactMethod method : {ContactMethod::Kinematic, ContactMethod::Penalty}) {

@@ -1,6 +1,6 @@
 #pragma once
-// Parameters of the 3D finite-element plate model (all -fem_ options) and their reader.
-#include "gradfric/core/options.hpp"
+// Parameters of the 3D finite-element plate model (all -fem_ options). PETSc-free (in the core);
+// their reader is parameter_options.hpp.
 #include "gradfric/fem/edge_grading.hpp"
 #include "gradfric/fem/hex_element.hpp"
 #include "gradfric/fem/normal_stress_filter.hpp"
@@ -173,8 +173,5 @@ double defaultSlideTime(double loadingTime, const FrictionMeasurement& m);
 std::string describeContact(const FemParameters& q);
 std::string describeDamping(const FemParameters& q);
 std::string describeFrictionState(const FemParameters& q);  // the law's state (D_c, or -fem_slip_length) in words
-
-// Reads and validates every -fem_ option (derived defaults recorded as such).
-FemParameters readFemParameters(MPI_Comm comm, RunParameters* record, const Plate& plate);
 
 }  // namespace gradfric::fem
