@@ -31,24 +31,24 @@ std::vector<std::string> splitCommas(const std::string& text) {
   return parts;
 }
 
-// The grading a gradfric-fem run measured its g under, from the run's /scene record (every
-// option with its resolved value); refused when the file has none or the plate had property fields.
-ResponseGrading gradingOfFemFile(const std::string& option, const std::string& optionValue, const std::string& path) {
-  auto refuse = [&](const std::string& what) { throw InputError(option, optionValue, path + ": " + what); };
-  const io::Hdf5PrintingOff quiet;  // our own message instead of HDF5's stack
+// One gradfric-fem file's g and what the file says beside it, read in one open.
+struct ResponseFile {
+  FieldMap map;
+  std::vector<double> nodeX, nodeY;  // the node positions of g (empty when the file has none)
+  double measuredUpTo = 0.0;         // the top of the window g was fitted on (0: not said)
+  // The run's /scene record (every option with its resolved value), read when asked for;
+  // sceneProblem says what is wrong when it could not be read.
   std::map<std::string, std::string> scene;
-  {
-    const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
-    if (file < 0) refuse("a readable HDF5 file");
-    io::H5File closeFile(file);
-    if (H5Lexists(file, "scene", H5P_DEFAULT) <= 0)
-      refuse("a gradfric-fem results file with its /scene record (the grading g was measured under; "
-             "-pressure_response_select grading needs it)");
-    const hid_t group = H5Gopen2(file, "scene", H5P_DEFAULT);
-    if (group < 0) refuse("a readable /scene group");
-    io::H5Group closeGroup(group);
-    for (const auto& [k, v] : io::readStringAttributes(group)) scene[k] = v;
-  }
+  std::string sceneProblem;
+};
+
+// The grading a gradfric-fem run measured its g under, from the file's /scene record; refused
+// when the file has none or the plate had property fields.
+ResponseGrading gradingOfFemFile(const std::string& option, const std::string& optionValue, const std::string& path,
+                                 const ResponseFile& file) {
+  auto refuse = [&](const std::string& what) { throw InputError(option, optionValue, path + ": " + what); };
+  if (!file.sceneProblem.empty()) refuse(file.sceneProblem);
+  const std::map<std::string, std::string>& scene = file.scene;
   auto value = [&](const std::string& name) {
     const auto at = scene.find(name);
     if (at == scene.end()) refuse("a /scene record with '" + name + "' (written by gradfric-fem)");
@@ -76,13 +76,6 @@ ResponseGrading gradingOfFemFile(const std::string& option, const std::string& o
   g.bands = static_cast<int>(number("grading_bands"));
   return responseGradingOf(g, number("plate_theta"));
 }
-
-// One gradfric-fem file's g and what the file says beside it, read in one open.
-struct ResponseFile {
-  FieldMap map;
-  std::vector<double> nodeX, nodeY;  // the node positions of g (empty when the file has none)
-  double measuredUpTo = 0.0;         // the top of the window g was fitted on (0: not said)
-};
 
 // The top of the loading window gradfric-fem fitted the file's g on (the attribute mu_window of
 // /pressure_response/g), or 0 when the file has none.
@@ -114,7 +107,22 @@ std::vector<double> nodePositions(hid_t file, const char* name) {
   return nodes;
 }
 
-ResponseFile readResponseFile(const std::string& option, const std::string& path) {
+// The file's /scene attributes into r (or what is wrong with them into r->sceneProblem).
+void readSceneRecord(hid_t file, ResponseFile* r) {
+  if (H5Lexists(file, "scene", H5P_DEFAULT) <= 0) {
+    r->sceneProblem = "a gradfric-fem results file with its /scene record (the grading g was measured under; "
+                      "-pressure_response_select grading needs it)";
+    return;
+  }
+  const io::H5Group group(H5Gopen2(file, "scene", H5P_DEFAULT));
+  if (!group.valid()) {
+    r->sceneProblem = "a readable /scene group";
+    return;
+  }
+  for (const auto& [k, v] : io::readStringAttributes(group)) r->scene[k] = v;
+}
+
+ResponseFile readResponseFile(const std::string& option, const std::string& path, bool withScene) {
   const io::Hdf5PrintingOff quiet;  // missing node positions or window are not errors
   const io::H5File file = openHdf5Map(option, path);
   ResponseFile r;
@@ -122,6 +130,7 @@ ResponseFile readResponseFile(const std::string& option, const std::string& path
   r.nodeX = nodePositions(file, "node_x");
   r.nodeY = nodePositions(file, "node_y");
   r.measuredUpTo = measuredUpTo(file);
+  if (withScene) readSceneRecord(file, &r);
   return r;
 }
 
@@ -221,18 +230,18 @@ PressureResponse readPressureResponse(MPI_Comm comm, RunParameters* record, cons
       if (path.empty()) throw InputError(fileOption, file, "comma-separated file names, none empty");
       MeasuredResponse m;
       m.file = path;
-      ResponseFile read = readResponseFile(fileOption, path);
+      ResponseFile read = readResponseFile(fileOption, path, r.perGrading);
       checkResponseFile(fileOption, file, path, read, plate);
-      m.measuredUpTo = read.measuredUpTo;
-      m.map = std::make_shared<const FieldMap>(std::move(read.map));
       if (r.perGrading) {
-        m.grading = gradingOfFemFile(fileOption, file, path);
+        m.grading = gradingOfFemFile(fileOption, file, path, read);
         for (const MeasuredResponse& earlier : r.measured)
           if (sameGrading(earlier.grading, m.grading))
             throw InputError(fileOption, file,
                              "one file per grading (" + earlier.file + " and " + path + " both hold " +
                                  m.grading.describe() + ")");
       }
+      m.measuredUpTo = read.measuredUpTo;
+      m.map = std::make_shared<const FieldMap>(std::move(read.map));
       r.measured.push_back(std::move(m));
     }
     if (!r.perGrading) r.map = r.measured.front().map;
