@@ -64,12 +64,12 @@ int main(int argc, char** argv) {
     printScene(comm, *scene, record);
     if (scene->dryRun) return printDryRun(comm, *scene);
     const io::OutputPlan plan = planResultsFile(comm, *scene);    // before any work
-    std::optional<InterruptionNotice> notice(std::in_place, comm, plan.workPath(), scene->resume);  // Ctrl-C, SIGTERM
+    std::optional<campaign::InterruptionNotice> notice(std::in_place, comm, plan.workPath(), scene->resume);  // Ctrl-C, SIGTERM
     io::ResultsFile file = openResultsFile(comm, *scene, plan);
     notice->watch(file, plan.workPath(), "tasks", "-resume");
     const TaskTally tally = runTasks(comm, *scene, file, plan.workPath());
-    const std::vector<PointStatistics> statistics = writeStatistics(file, *scene);
-    finishResultsFile(comm, file, plan);                          // complete: renamed into place
+    const std::vector<campaign::PointStatistics> statistics = writeStatistics(file, *scene);
+    campaign::finishResultsFile(comm, file, plan);                // complete: renamed into place
     notice.reset();
     printResults(comm, *scene, statistics, tally, plan.path());
     plotResults(comm, plot, plan.path());

@@ -2,7 +2,7 @@
 // (include/gradfric/calibration/spring_block_evaluation.hpp).
 #include "gradfric/calibration/spring_block_evaluation.hpp"
 
-#include "gradfric/core/petsc_call.hpp"
+#include "gradfric/campaign/realisation_pool.hpp"
 #include "gradfric/physics/property_sampler.hpp"
 #include "gradfric/sbm/model.hpp"
 #include "gradfric/sbm/parameter_options.hpp"
@@ -36,9 +36,6 @@ double layerThicknessForSlope(const SpringBlockScene& scene, double slope) {
 
 Evaluation evaluateSpringBlocks(MPI_Comm comm, const SpringBlockScene& scene, double layerThickness, double sigma,
                                 const std::vector<double>& grid) {
-  int rank = 0, size = 1;
-  GF_CALL_MPI(MPI_Comm_rank(comm, &rank));
-  GF_CALL_MPI(MPI_Comm_size(comm, &size));
   const double wall0 = MPI_Wtime();
   sbm::Parameters p = scene.base;
   p.layerThickness = layerThickness;
@@ -47,24 +44,25 @@ Evaluation evaluateSpringBlocks(MPI_Comm comm, const SpringBlockScene& scene, do
   RunParameters scratch;  // the -friction_ windows scale with the loading time, hence with l_z
   const sbm::Request request = sbm::readRequest(comm, &scratch, p, calibrationMeasurement());
 
-  // One slot per realisation: peak, slope, confirmed, wall, then the curve on the grid.
+  // One record per realisation: peak, slope, confirmed, wall, then the curve on the grid.
   const std::size_t G = grid.size(), width = 4 + G;
   const int R = scene.realisations;
-  std::vector<double> slots(static_cast<std::size_t>(R) * width, 0.0);
-  for (int r = rank; r < R; r += size) {
+  campaign::PoolPlan plan;
+  plan.tasks = R;
+  plan.width = static_cast<int>(width);
+  plan.schedule = campaign::Schedule::Static;
+  plan.failure = [](long r, int rank, const std::string& what) {
+    return "realisation " + std::to_string(r) + " failed on rank " + std::to_string(rank) + ": " + what;
+  };
+  const std::vector<double> slots = campaign::runRealisationPool(comm, plan, [&](long r) {
     const sbm::Result result = sbm::simulate(p, scene.grading, request, StreamKey{scene.seed, 0, std::uint32_t(r)});
     const FrictionSummary& f = result.friction;
     const LoadingFeatures features = loadingFeatures(f.time, f.mu, scene.window, f.muStatic, f.peakTime);
-    double* slot = &slots[static_cast<std::size_t>(r) * width];
-    slot[0] = f.muStatic;
-    slot[1] = features.slope;
-    slot[2] = f.peakConfirmed ? 1.0 : 0.0;
-    slot[3] = result.wallSeconds;
+    std::vector<double> slot{f.muStatic, features.slope, f.peakConfirmed ? 1.0 : 0.0, result.wallSeconds};
     const std::vector<double> curve = interpolate(f.time, f.mu, grid);
-    std::copy(curve.begin(), curve.end(), slot + 4);
-  }
-  // Every slot comes from one rank (the others add 0): exact, whatever the number of ranks.
-  GF_CALL_MPI(MPI_Allreduce(MPI_IN_PLACE, slots.data(), static_cast<int>(slots.size()), MPI_DOUBLE, MPI_SUM, comm));
+    slot.insert(slot.end(), curve.begin(), curve.end());
+    return slot;
+  });
 
   Evaluation e;
   e.layerThickness = layerThickness;

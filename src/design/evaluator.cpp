@@ -3,10 +3,8 @@
 
 #include "gradfric/physics/observables.hpp"
 
-#include "gradfric/core/collective_error.hpp"
-#include "gradfric/core/petsc_call.hpp"
 #include "gradfric/campaign/precision_target.hpp"
-#include "gradfric/campaign/scheduler.hpp"
+#include "gradfric/campaign/realisation_pool.hpp"
 #include "gradfric/sbm/model.hpp"
 
 #include <algorithm>
@@ -43,37 +41,27 @@ void Evaluator::run(const std::vector<Batch>& batches) {
   std::vector<Task> tasks;
   for (int b = 0; b < static_cast<int>(batches.size()); ++b)
     for (int r = static_cast<int>(batches[b].sink->size()); r < batches[b].count; ++r) tasks.push_back({b, r});
-  if (tasks.empty()) return;
-  int rank = 0;
-  GF_CALL_MPI(MPI_Comm_rank(comm_, &rank));
-  std::vector<double> found(tasks.size(), 0.0);  // each entry set by the one rank that ran it
-  double seconds = 0.0;
-  std::string failure;
-  {
-    campaign::TaskCounter counter(comm_, campaign::Schedule::Dynamic);
-    for (long k = counter.next(); k < static_cast<long>(tasks.size()); k = counter.next()) {
-      const Batch& b = batches[tasks[k].batch];
-      const Grading grading = b.x ? problem_.gradingAt(*b.x) : problem_.referenceGrading();
-      try {
-        const sbm::Result result = sbm::simulate(problem_.parameters, grading, problem_.request,
-                                                 StreamKey{problem_.seed, b.stream, static_cast<std::uint32_t>(tasks[k].realisation)});
-        found[k] = result.friction.muStatic;
-        seconds += result.wallSeconds;
-      } catch (const std::exception& e) {
-        failure = "realisation " + std::to_string(tasks[k].realisation) + " at " +
-                  (b.x ? problem_.describe(*b.x) : std::string("the non-graded plate")) + " failed on rank " +
-                  std::to_string(rank) + ": " + e.what();
-        break;
-      }
-      counter.finishOne();
-    }
+  campaign::PoolPlan plan;
+  plan.tasks = static_cast<long>(tasks.size());
+  plan.width = 2;  // mu_s, wall seconds
+  plan.failure = [&](long k, int rank, const std::string& what) {
+    const Batch& b = batches[tasks[k].batch];
+    return "realisation " + std::to_string(tasks[k].realisation) + " at " +
+           (b.x ? problem_.describe(*b.x) : std::string("the non-graded plate")) + " failed on rank " +
+           std::to_string(rank) + ": " + what;
+  };
+  const std::vector<double> records = campaign::runRealisationPool(comm_, plan, [&](long k) {
+    const Batch& b = batches[tasks[k].batch];
+    const Grading grading = b.x ? problem_.gradingAt(*b.x) : problem_.referenceGrading();
+    const sbm::Result result = sbm::simulate(problem_.parameters, grading, problem_.request,
+                                             StreamKey{problem_.seed, b.stream, static_cast<std::uint32_t>(tasks[k].realisation)});
+    return std::vector<double>{result.friction.muStatic, result.wallSeconds};
+  });
+  for (std::size_t k = 0; k < tasks.size(); ++k) {
+    batches[tasks[k].batch].sink->push_back(records[2 * k]);  // in order
+    taskSeconds_ += records[2 * k + 1];
   }
-  agreeOnError(comm_, failure);
-  GF_CALL_MPI(MPI_Allreduce(MPI_IN_PLACE, found.data(), static_cast<int>(found.size()), MPI_DOUBLE, MPI_SUM, comm_));
-  GF_CALL_MPI(MPI_Allreduce(MPI_IN_PLACE, &seconds, 1, MPI_DOUBLE, MPI_SUM, comm_));
-  for (std::size_t k = 0; k < tasks.size(); ++k) batches[tasks[k].batch].sink->push_back(found[k]);  // in order
   realisations_ += static_cast<long>(tasks.size());
-  taskSeconds_ += seconds;
 }
 
 Evaluation Evaluator::evaluate(const std::vector<double>& x, double halfWidth, const std::string& phase,

@@ -22,6 +22,9 @@
 
 namespace gradfric::ensemble {
 
+// The spring-block campaign is the campaign component's: its names without the prefix, in this file.
+using namespace campaign;
+
 namespace {
 
 // Options that steer one run but not its results: kept out of /scene (stored under /run), so a
@@ -253,10 +256,9 @@ std::optional<Scene> readScene(MPI_Comm comm, RunParameters* record) {
   Grading stiffest = stiffestGrading(buildSweep(lists, base), s.baseGrading, &s.stiffestFactor);
   const Plate plate = readPlate(comm, record);
   // The property fields are the same at every point (they replace the grading of their property).
-  s.fields = readPlateFields(comm, record, plate, s.baseGrading);
-  s.baseGrading.fields = stiffest.fields = s.fields;
+  s.baseGrading.fields = stiffest.fields = readPlateFields(comm, record, plate, s.baseGrading);
   SweepLists allLists = lists;
-  const std::vector<std::shared_ptr<const PlateFields>> valueFields = fieldsPerValue(&allLists, s.fields);
+  const std::vector<std::shared_ptr<const PlateFields>> valueFields = fieldsPerValue(&allLists, s.baseGrading.fields);
   // A swept E field: its stiffest value sets the time step (largest factor on a 64 x 64 probe).
   double stiffestField = 0.0;
   for (const auto& f : valueFields) {

@@ -15,6 +15,9 @@
 
 namespace gradfric::ensemble {
 
+// The spring-block campaign is the campaign component's: its names without the prefix, in this file.
+using namespace campaign;
+
 io::OutputPlan planResultsFile(MPI_Comm comm, const Scene& scene) {
   io::OutputRequest request;
   request.option = "-output";

@@ -13,6 +13,9 @@
 
 namespace gradfric::ensemble {
 
+// The spring-block campaign is the campaign component's: its names without the prefix, in this file.
+using namespace campaign;
+
 namespace {
 
 // The effects of the most strongly graded point (the sweep line lists the others).

@@ -20,6 +20,9 @@
 
 namespace gradfric::ensemble {
 
+// The spring-block campaign is the campaign component's: its names without the prefix, in this file.
+using namespace campaign;
+
 namespace {
 
 using Clock = std::chrono::steady_clock;

@@ -32,25 +32,35 @@ bool endsWith(const std::string& text, const std::string& tail) {
 
 }  // namespace
 
-FieldMap readHdf5Map(const std::string& option, const std::string& path, const std::string& dataset,
-                     const std::string& datasetOption) {
+io::H5File openHdf5Map(const std::string& option, const std::string& path) {
   const io::Hdf5PrintingOff quiet;  // our own message instead of HDF5's stack
-  auto refuse = [&](const std::string& what) { throw InputError(option, path, what); };
   {
     std::ifstream probe(path);
-    if (!probe) refuse("a readable HDF5 file (cannot open it)");
+    if (!probe) throw InputError(option, path, "a readable HDF5 file (cannot open it)");
   }
   const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
-  if (file < 0) refuse("a readable HDF5 file (not HDF5)");
-  struct Closer {
-    hid_t f, d = -1, s = -1, a = -1;
+  if (file < 0) throw InputError(option, path, "a readable HDF5 file (not HDF5)");
+  return io::H5File(file);
+}
+
+FieldMap readHdf5Map(const std::string& option, const std::string& path, const std::string& dataset,
+                     const std::string& datasetOption) {
+  const io::H5File file = openHdf5Map(option, path);
+  return readHdf5Map(option, path, file, dataset, datasetOption);
+}
+
+FieldMap readHdf5Map(const std::string& option, const std::string& path, hid_t file, const std::string& dataset,
+                     const std::string& datasetOption) {
+  const io::Hdf5PrintingOff quiet;
+  auto refuse = [&](const std::string& what) { throw InputError(option, path, what); };
+  struct Closer {  // the file is the caller's
+    hid_t d = -1, s = -1, a = -1;
     ~Closer() {
       if (a >= 0) H5Aclose(a);
       if (s >= 0) H5Sclose(s);
       if (d >= 0) H5Dclose(d);
-      H5Fclose(f);
     }
-  } c{file};
+  } c;
   c.d = H5Dopen2(file, dataset.c_str(), H5P_DEFAULT);
   if (c.d < 0)
     refuse("an HDF5 file with a dataset '" + dataset + "'" +

@@ -5,6 +5,7 @@
 #include "gradfric/core/input_error.hpp"
 #include "gradfric/io/collective_file.hpp"
 #include "gradfric/io/hdf5_attributes.hpp"
+#include "gradfric/io/hdf5_handle.hpp"
 #include "gradfric/physics/field_options.hpp"
 
 #include <hdf5.h>
@@ -30,24 +31,24 @@ std::vector<std::string> splitCommas(const std::string& text) {
   return parts;
 }
 
-// The grading a gradfric-fem run measured its g under, from the run's /scene record (every
-// option with its resolved value); refused when the file has none or the plate had property fields.
-ResponseGrading gradingOfFemFile(const std::string& option, const std::string& optionValue, const std::string& path) {
-  auto refuse = [&](const std::string& what) { throw InputError(option, optionValue, path + ": " + what); };
-  const io::Hdf5PrintingOff quiet;  // our own message instead of HDF5's stack
+// One gradfric-fem file's g and what the file says beside it, read in one open.
+struct ResponseFile {
+  FieldMap map;
+  std::vector<double> nodeX, nodeY;  // the node positions of g (empty when the file has none)
+  double measuredUpTo = 0.0;         // the top of the window g was fitted on (0: not said)
+  // The run's /scene record (every option with its resolved value), read when asked for;
+  // sceneProblem says what is wrong when it could not be read.
   std::map<std::string, std::string> scene;
-  {
-    const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
-    if (file < 0) refuse("a readable HDF5 file");
-    io::H5File closeFile(file);
-    if (H5Lexists(file, "scene", H5P_DEFAULT) <= 0)
-      refuse("a gradfric-fem results file with its /scene record (the grading g was measured under; "
-             "-pressure_response_select grading needs it)");
-    const hid_t group = H5Gopen2(file, "scene", H5P_DEFAULT);
-    if (group < 0) refuse("a readable /scene group");
-    io::H5Group closeGroup(group);
-    for (const auto& [k, v] : io::readStringAttributes(group)) scene[k] = v;
-  }
+  std::string sceneProblem;
+};
+
+// The grading a gradfric-fem run measured its g under, from the file's /scene record; refused
+// when the file has none or the plate had property fields.
+ResponseGrading gradingOfFemFile(const std::string& option, const std::string& optionValue, const std::string& path,
+                                 const ResponseFile& file) {
+  auto refuse = [&](const std::string& what) { throw InputError(option, optionValue, path + ": " + what); };
+  if (!file.sceneProblem.empty()) refuse(file.sceneProblem);
+  const std::map<std::string, std::string>& scene = file.scene;
   auto value = [&](const std::string& name) {
     const auto at = scene.find(name);
     if (at == scene.end()) refuse("a /scene record with '" + name + "' (written by gradfric-fem)");
@@ -78,56 +79,66 @@ ResponseGrading gradingOfFemFile(const std::string& option, const std::string& o
 
 // The top of the loading window gradfric-fem fitted the file's g on (the attribute mu_window of
 // /pressure_response/g), or 0 when the file has none.
-double measuredUpTo(const std::string& path) {
-  const io::Hdf5PrintingOff quiet;  // a file without the attribute is not an error
+double measuredUpTo(hid_t file) {
   double window[2] = {0.0, 0.0};
-  const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
-  if (file >= 0) {
-    const hid_t set = H5Dopen2(file, kPressureResponseDataset, H5P_DEFAULT);
-    if (set >= 0) {
-      if (H5Aexists(set, "mu_window") > 0) {
-        const hid_t a = H5Aopen(set, "mu_window", H5P_DEFAULT);
-        const hid_t space = H5Aget_space(a);
-        if (H5Sget_simple_extent_npoints(space) != 2 || H5Aread(a, H5T_NATIVE_DOUBLE, window) < 0) window[1] = 0.0;
-        H5Sclose(space);
-        H5Aclose(a);
-      }
-      H5Dclose(set);
-    }
-    H5Fclose(file);
+  const io::H5Dataset set(H5Dopen2(file, kPressureResponseDataset, H5P_DEFAULT));
+  if (set.valid() && H5Aexists(set, "mu_window") > 0) {
+    const io::H5Attribute a(H5Aopen(set, "mu_window", H5P_DEFAULT));
+    const io::H5Space space(H5Aget_space(a));
+    if (H5Sget_simple_extent_npoints(space) != 2 || H5Aread(a, H5T_NATIVE_DOUBLE, window) < 0) window[1] = 0.0;
   }
   return std::isfinite(window[1]) && window[1] > 0.0 ? window[1] : 0.0;
 }
 
 // The node positions along one axis of the file's g (/pressure_response/node_x or node_y, written
 // since results format 3), empty when the file has none.
-std::vector<double> nodePositions(const std::string& path, const char* name) {
-  const io::Hdf5PrintingOff quiet;
+std::vector<double> nodePositions(hid_t file, const char* name) {
   std::vector<double> nodes;
-  const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
-  if (file < 0) return nodes;
-  io::H5File closeFile(file);
   const std::string dataset = std::string("pressure_response/") + name;
   if (H5Lexists(file, "pressure_response", H5P_DEFAULT) <= 0 || H5Lexists(file, dataset.c_str(), H5P_DEFAULT) <= 0)
     return nodes;
-  const hid_t set = H5Dopen2(file, dataset.c_str(), H5P_DEFAULT);
-  if (set < 0) return nodes;
-  const hid_t space = H5Dget_space(set);
-  const hssize_t n = H5Sget_simple_extent_npoints(space);
-  H5Sclose(space);
+  const io::H5Dataset set(H5Dopen2(file, dataset.c_str(), H5P_DEFAULT));
+  if (!set.valid()) return nodes;
+  const hssize_t n = H5Sget_simple_extent_npoints(io::H5Space(H5Dget_space(set)));
   if (n > 0) {
     nodes.resize(static_cast<std::size_t>(n));
     if (H5Dread(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, nodes.data()) < 0) nodes.clear();
   }
-  H5Dclose(set);
   return nodes;
 }
 
+// The file's /scene attributes into r (or what is wrong with them into r->sceneProblem).
+void readSceneRecord(hid_t file, ResponseFile* r) {
+  if (H5Lexists(file, "scene", H5P_DEFAULT) <= 0) {
+    r->sceneProblem = "a gradfric-fem results file with its /scene record (the grading g was measured under; "
+                      "-pressure_response_select grading needs it)";
+    return;
+  }
+  const io::H5Group group(H5Gopen2(file, "scene", H5P_DEFAULT));
+  if (!group.valid()) {
+    r->sceneProblem = "a readable /scene group";
+    return;
+  }
+  for (const auto& [k, v] : io::readStringAttributes(group)) r->scene[k] = v;
+}
+
+ResponseFile readResponseFile(const std::string& option, const std::string& path, bool withScene) {
+  const io::Hdf5PrintingOff quiet;  // missing node positions or window are not errors
+  const io::H5File file = openHdf5Map(option, path);
+  ResponseFile r;
+  r.map = readHdf5Map(option, path, file, kPressureResponseDataset, "written by gradfric-fem -output");
+  r.nodeX = nodePositions(file, "node_x");
+  r.nodeY = nodePositions(file, "node_y");
+  r.measuredUpTo = measuredUpTo(file);
+  if (withScene) readSceneRecord(file, &r);
+  return r;
+}
+
 // One file's g, refused when it is not a finite map covering the plate (value: the option's whole text).
-FieldMap readResponseMap(const std::string& option, const std::string& value, const std::string& path,
-                         const Plate& plate) {
+void checkResponseFile(const std::string& option, const std::string& value, const std::string& path,
+                       const ResponseFile& file, const Plate& plate) {
   const std::string where = value == path ? "" : path + ": ";
-  FieldMap map = readHdf5Map(option, path, kPressureResponseDataset, "written by gradfric-fem -output");
+  const FieldMap& map = file.map;
   for (std::size_t k = 0; k < map.values.size(); ++k)
     if (!std::isfinite(map.values[k])) {
       std::ostringstream text;
@@ -144,13 +155,12 @@ FieldMap readResponseMap(const std::string& option, const std::string& value, co
   }
   // The map is sampled as equal pixels centred on the nodes: a g measured on a mesh graded toward the
   // edges (unequal node spacing) would be sampled at the wrong places.
-  for (const char* axis : {"node_x", "node_y"}) {
-    const std::vector<double> nodes = nodePositions(path, axis);
-    if (nodes.size() < 3) continue;
-    double smallest = nodes[1] - nodes[0], largest = smallest;
-    for (std::size_t i = 1; i + 1 < nodes.size(); ++i) {
-      smallest = std::min(smallest, nodes[i + 1] - nodes[i]);
-      largest = std::max(largest, nodes[i + 1] - nodes[i]);
+  for (const auto& [axis, nodes] : {std::pair{"node_x", &file.nodeX}, std::pair{"node_y", &file.nodeY}}) {
+    if (nodes->size() < 3) continue;
+    double smallest = (*nodes)[1] - (*nodes)[0], largest = smallest;
+    for (std::size_t i = 1; i + 1 < nodes->size(); ++i) {
+      smallest = std::min(smallest, (*nodes)[i + 1] - (*nodes)[i]);
+      largest = std::max(largest, (*nodes)[i + 1] - (*nodes)[i]);
     }
     if (largest - smallest > 1e-9 * largest) {
       std::ostringstream text;
@@ -159,7 +169,6 @@ FieldMap readResponseMap(const std::string& option, const std::string& value, co
       throw InputError(option, value, text.str());
     }
   }
-  return map;
 }
 
 }  // namespace
@@ -221,16 +230,18 @@ PressureResponse readPressureResponse(MPI_Comm comm, RunParameters* record, cons
       if (path.empty()) throw InputError(fileOption, file, "comma-separated file names, none empty");
       MeasuredResponse m;
       m.file = path;
-      m.measuredUpTo = measuredUpTo(path);
-      m.map = std::make_shared<const FieldMap>(readResponseMap(fileOption, file, path, plate));
+      ResponseFile read = readResponseFile(fileOption, path, r.perGrading);
+      checkResponseFile(fileOption, file, path, read, plate);
       if (r.perGrading) {
-        m.grading = gradingOfFemFile(fileOption, file, path);
+        m.grading = gradingOfFemFile(fileOption, file, path, read);
         for (const MeasuredResponse& earlier : r.measured)
           if (sameGrading(earlier.grading, m.grading))
             throw InputError(fileOption, file,
                              "one file per grading (" + earlier.file + " and " + path + " both hold " +
                                  m.grading.describe() + ")");
       }
+      m.measuredUpTo = read.measuredUpTo;
+      m.map = std::make_shared<const FieldMap>(std::move(read.map));
       r.measured.push_back(std::move(m));
     }
     if (!r.perGrading) r.map = r.measured.front().map;

@@ -4,6 +4,7 @@
 #include "gradfric/study/sbm_study.hpp"
 #include "gradfric/study/study_file.hpp"
 
+#include "gradfric/campaign/realisation_pool.hpp"
 #include "gradfric/core/input_error.hpp"
 #include "gradfric/core/run_limits.hpp"
 #include "gradfric/core/petsc_call.hpp"
@@ -151,40 +152,44 @@ std::vector<Task> buildTasks(const Study& s, const std::vector<Ladder>& ladders)
   return tasks;
 }
 
-// Round-robin over the ranks, biggest first so that the ranks finish together; every rank ends
-// with every outcome.
+// Over the ranks by the realisation pool, biggest first so that the ranks finish together; every
+// rank ends with every outcome.
 void runTasks(MPI_Comm comm, const Study& s, const std::vector<Task>& tasks, std::vector<Ladder>* ladders) {
   int rank = 0, size = 1;
   GF_CALL_MPI(MPI_Comm_rank(comm, &rank));
   GF_CALL_MPI(MPI_Comm_size(comm, &size));
-  std::vector<int> order(tasks.size());
-  std::iota(order.begin(), order.end(), 0);
+  campaign::PoolPlan plan;
+  plan.tasks = static_cast<long>(tasks.size());
+  plan.width = 4;  // mu_s, mu_k, wall seconds, steps
+  plan.schedule = campaign::Schedule::Static;
+  plan.handOutOrder.resize(tasks.size());
+  std::iota(plan.handOutOrder.begin(), plan.handOutOrder.end(), 0L);
   auto cost = [&](const Task& t) {
     const double n = double(t.parameters.blocksPerSide) * t.parameters.blocksPerSide;
     const double perStep = t.parameters.integrator == sbm::Integrator::VelocityVerlet ? 0.45 : 1.0;
     return n * perStep / t.parameters.timeStep;
   };
-  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return cost(tasks[a]) > cost(tasks[b]); });
-  std::vector<double> flat(tasks.size() * 4, 0.0);
+  std::stable_sort(plan.handOutOrder.begin(), plan.handOutOrder.end(),
+                   [&](long a, long b) { return cost(tasks[a]) > cost(tasks[b]); });
+  plan.failure = [&](long k, int onRank, const std::string& what) {
+    return "study run " + (*ladders)[tasks[k].ladder].name + " rung " + std::to_string(tasks[k].rung) +
+           " realisation " + std::to_string(tasks[k].realisation) + " failed on rank " + std::to_string(onRank) + ": " +
+           what;
+  };
   GF_CALL(PetscPrintf(comm, "Accuracy-cost study: %zu runs on %d rank(s)\n", tasks.size(), size));
-  for (std::size_t k = rank; k < order.size(); k += size) {
-    const Task& t = tasks[order[k]];
+  const std::vector<double> records = campaign::runRealisationPool(comm, plan, [&](long k) {
+    const Task& t = tasks[k];
     const sbm::Result r = sbm::simulate(t.parameters, s.grading, s.request,
                                         StreamKey{s.seed, 0, std::uint32_t(t.realisation)});
-    double* slot = &flat[4 * order[k]];
-    slot[0] = r.friction.muStatic;
-    slot[1] = r.friction.muKinetic;
-    slot[2] = r.wallSeconds;
-    slot[3] = double(r.steps);
     std::printf("  [rank %d] %-9s rung %d realisation %d: dt = %.3g s, N_b = %d: mu_s = %.6f, mu_k = %.6f, %.2f s\n", rank,
                 (*ladders)[t.ladder].name.c_str(), t.rung, t.realisation, t.parameters.timeStep,
                 t.parameters.blocksPerSide, r.friction.muStatic, r.friction.muKinetic, r.wallSeconds);
     std::fflush(stdout);
-  }
-  GF_CALL_MPI(MPI_Allreduce(MPI_IN_PLACE, flat.data(), int(flat.size()), MPI_DOUBLE, MPI_SUM, comm));
+    return std::vector<double>{r.friction.muStatic, r.friction.muKinetic, r.wallSeconds, double(r.steps)};
+  });
   for (std::size_t k = 0; k < tasks.size(); ++k)
-    (*ladders)[tasks[k].ladder].outcomes[tasks[k].rung][tasks[k].realisation] = {flat[4 * k], flat[4 * k + 1],
-                                                                                  flat[4 * k + 2], flat[4 * k + 3]};
+    (*ladders)[tasks[k].ladder].outcomes[tasks[k].rung][tasks[k].realisation] = {
+        records[4 * k], records[4 * k + 1], records[4 * k + 2], records[4 * k + 3]};
 }
 
 // The errors of one ladder against its reference: the finest dt of the first integrator (same

@@ -38,8 +38,9 @@ struct Evaluation {
   double taskSeconds = 0.0;       // summed over the realisations
 };
 
-// Collective: realisation r runs on rank r % size; the results are gathered slot by slot, so
-// every number is the same on any number of ranks.
+// Collective: realisation r runs on rank r % size (campaign/realisation_pool.hpp, static); the
+// records are gathered whole, so every number is the same on any number of ranks, and a failing
+// realisation ends every rank with the same error.
 Evaluation evaluateSpringBlocks(MPI_Comm comm, const SpringBlockScene& scene, double layerThickness, double sigma,
                                 const std::vector<double>& grid);
 

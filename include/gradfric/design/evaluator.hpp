@@ -57,7 +57,8 @@ private:
     int count;
     std::vector<double>* sink;
   };
-  // Collective: runs every batch's missing realisations over the ranks and appends their mu_s.
+  // Collective: runs every batch's missing realisations over the ranks (campaign/realisation_pool.hpp)
+  // and appends their mu_s.
   void run(const std::vector<Batch>& batches);
 
   MPI_Comm comm_;

@@ -22,16 +22,12 @@
 
 namespace gradfric::ensemble {
 
-// The spring-block model's campaign: its sweep, tasks, statistics, scheduler and runner are the
-// campaign component's (include/gradfric/campaign/), named here without the prefix.
-using namespace campaign;
-
 // The campaign's record (sweep, grading, results file) plus the spring-block model's options.
+// The -field_* property fields are baseGrading.fields (null: none), every point's unless swept.
 struct Scene : campaign::Campaign {
   // -ensemble_* and -output* options.
-  std::shared_ptr<const PlateFields> fields;  // -field_* (null: none), the same at every point (baseGrading.fields)
   int realisations = 1;          // per point; with a target, the cap (-ensemble_target_max)
-  PrecisionTarget target;        // -ensemble_target*: inactive (halfWidth 0) for a fixed count
+  campaign::PrecisionTarget target;  // -ensemble_target*: inactive (halfWidth 0) for a fixed count
   bool extend = false;           // -ensemble_extend: add realisations or points to a finished file
   std::uint64_t seed = 1;
   bool commonStreams = false;  // realisation r of every point draws from the stream (seed, 0, r)

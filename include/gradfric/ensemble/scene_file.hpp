@@ -32,7 +32,7 @@ void checkExtendable(MPI_Comm comm, const Scene& scene, const std::string& path)
 io::ResultsFile openResultsFile(MPI_Comm comm, const Scene& scene, const io::OutputPlan& plan);
 
 // Collective: the statistics of every point from the file's P x R tables, written to /statistics.
-std::vector<PointStatistics> writeStatistics(io::ResultsFile& file, const Scene& scene);
+std::vector<campaign::PointStatistics> writeStatistics(io::ResultsFile& file, const Scene& scene);
 // The shared steps (observableTables, the generic writeStatistics, finishResultsFile) are the
 // campaign's: campaign/campaign_file.hpp.
 

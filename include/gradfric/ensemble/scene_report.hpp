@@ -22,7 +22,7 @@ struct TaskTally {
 void printScene(MPI_Comm comm, const Scene& scene, const RunParameters& record);
 void printDryRun(MPI_Comm comm, const Scene& scene);
 // The statistics table (or the single result) and the cost line.
-void printResults(MPI_Comm comm, const Scene& scene, const std::vector<PointStatistics>& statistics,
+void printResults(MPI_Comm comm, const Scene& scene, const std::vector<campaign::PointStatistics>& statistics,
                   const TaskTally& tally, const std::string& resultsPath);
 
 }  // namespace gradfric::ensemble

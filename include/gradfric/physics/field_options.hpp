@@ -2,6 +2,7 @@
 // The -field_<property>_* options (E, mu, mu_s, mu_k, p): one property field each (field.hpp),
 // maps read from HDF5 or greyscale PNG. PETSc/HDF5 part of the library; docs/fields.md.
 #include "gradfric/core/options.hpp"
+#include "gradfric/io/hdf5_handle.hpp"
 #include "gradfric/physics/field.hpp"
 #include "gradfric/physics/grading.hpp"
 #include "gradfric/physics/plate.hpp"
@@ -15,6 +16,11 @@ namespace gradfric {
 // y1 [m]. Refuses (InputError naming `option` and `path`) what cannot be read; datasetOption names
 // where the dataset's name comes from (default: the option's "_dataset" companion).
 FieldMap readHdf5Map(const std::string& option, const std::string& path, const std::string& dataset,
+                     const std::string& datasetOption = "");
+// The same in two steps, for a reader that takes more than the map from the file in one open:
+// the file opened read-only (refused as above when missing or not HDF5), then the map from it.
+io::H5File openHdf5Map(const std::string& option, const std::string& path);
+FieldMap readHdf5Map(const std::string& option, const std::string& path, hid_t file, const std::string& dataset,
                      const std::string& datasetOption = "");
 
 // Reads every field's options (all listed by -help) and its map; refuses bad options, unreadable

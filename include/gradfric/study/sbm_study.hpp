@@ -9,8 +9,9 @@
 
 namespace gradfric::study {
 
-// Reads -study_*, -sbm_*, -grading_*, -output*; tasks are spread round-robin over the ranks of comm
-// (each measures its own wall time); rank 0 writes the file.
+// Reads -study_*, -sbm_*, -grading_*, -output*; tasks are spread over the ranks of comm by the
+// realisation pool (campaign/realisation_pool.hpp; each measures its own wall time); rank 0 writes
+// the file.
 void runSpringBlockStudy(MPI_Comm comm, RunParameters* record);
 
 }  // namespace gradfric::study
