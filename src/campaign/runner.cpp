@@ -95,8 +95,10 @@ RunnerCount runPending(MPI_Comm comm, io::ResultsFile& file, const std::vector<T
       const long finishedAll = groups.leader() ? counter->finishOne() : -1;
       if (model.finished) model.finished(task, output, count.ran, finishedAll, groups.leader());
     }
+    // The tail: a group out of tasks sleeps until the last one finishes. Before the counter's
+    // window is freed: that free is collective, and MPI waits in it at full speed.
+    waitForRanks(comm);
   }
-  waitForRanks(comm);  // the tail: a group out of tasks sleeps until the last one finishes
   file.flush();
   try {
     agreeOnError(comm, failure);
