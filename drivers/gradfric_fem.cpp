@@ -227,7 +227,7 @@ int main(int argc, char** argv) {
     record.add({"interface resolution", result.resolution.describe(), "",
                 "D_c, kappa = G D_c/(H p (mu_s - mu_k)), and whether D_c was resolved (docs/accuracy_fem.md)",
                 OptionOrigin::Derived});
-    output.writeHistory(model, result, record);
+    output.writeResults(model, result, record);
     output.finish();                                              // complete: renamed into place
     printResults(comm, *run, result, wall);
     compareWithSpringBlocks(comm, *run, result, wall);

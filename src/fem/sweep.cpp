@@ -81,6 +81,22 @@ io::SweepTable tableOf(const FemSweep& s) {
   return table;
 }
 
+// The point the sweep lists vary: the base run's grading and angle.
+campaign::SweepPoint basePoint(const FemParameters& params, const Grading& grading) {
+  campaign::SweepPoint base;
+  base.delta = grading.delta;
+  base.property = toString(grading.property);
+  base.profile = toString(grading.profile);
+  base.theta = params.plate.slidingAngle;
+  return base;
+}
+
+// The options into /scene (they define the results) and /run (they steer this run only).
+void splitRecord(const RunParameters& record, FemSweep* s) {
+  for (const io::Attribute& a : io::optionAttributes(record))
+    (kRunControl.count("-" + a.name) ? s->runAttributes : s->sceneAttributes).push_back(a);
+}
+
 }  // namespace
 
 SweepOptions readSweepOptions(MPI_Comm comm, RunParameters* record) {
@@ -146,12 +162,7 @@ FemSweep buildFemSweep(MPI_Comm comm, const FemParameters& params, const Grading
     checkMeshFields(g, params);
   }
 
-  campaign::SweepPoint base;
-  base.delta = grading.delta;
-  base.property = toString(grading.property);
-  base.profile = toString(grading.profile);
-  base.theta = params.plate.slidingAngle;
-  s.sweep = campaign::buildSweep(lists, base);
+  s.sweep = campaign::buildSweep(lists, basePoint(params, grading));
   for (const auto& q : s.sweep.points)  // each point's fields, in the ensemble's order
     if (q.fieldSwept) {
       const auto at = std::find(lists.fieldValues.begin(), lists.fieldValues.end(), q.fieldValue);
@@ -162,8 +173,20 @@ FemSweep buildFemSweep(MPI_Comm comm, const FemParameters& params, const Grading
     requireFemRunLength(s.pointParameters(p), s.pointGrading(p), &record);
   s.layout = layoutOf(s);
   s.table = tableOf(s);
-  for (const io::Attribute& a : io::optionAttributes(record))
-    (kRunControl.count("-" + a.name) ? s.runAttributes : s.sceneAttributes).push_back(a);
+  splitRecord(record, &s);
+  return s;
+}
+
+FemSweep oneRunCampaign(const FemParameters& params, const Grading& grading, const RunParameters& record) {
+  FemSweep s;
+  s.params = params;
+  s.baseGrading = grading;
+  s.sweep = campaign::buildSweep(campaign::SweepLists{}, basePoint(params, grading));  // no lists: one point
+  s.output = params.output;
+  s.layout = layoutOf(s);
+  s.layout.format = io::kFemRunFormatName;
+  s.table = tableOf(s);
+  splitRecord(record, &s);
   return s;
 }
 

@@ -76,14 +76,29 @@ ResponseGrading gradingOfFemFile(const std::string& option, const std::string& o
   return responseGradingOf(g, number("plate_theta"));
 }
 
+}  // namespace
+
+std::string pressureResponseGroup(const std::string& path) {
+  const io::Hdf5PrintingOff quiet;  // a file without the group is refused by the reader, naming the dataset
+  bool current = false;
+  const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  if (file >= 0) {  // one level at a time: HDF5 1.10 fails on a path through a missing group
+    io::H5File closeFile(file);
+    current = H5Lexists(file, "fem", H5P_DEFAULT) > 0 && H5Lexists(file, "fem/pressure_response", H5P_DEFAULT) > 0;
+  }
+  return current ? kPressureResponseGroup : kOldPressureResponseGroup;
+}
+
+namespace {
+
 // The top of the loading window gradfric-fem fitted the file's g on (the attribute mu_window of
-// /pressure_response/g), or 0 when the file has none.
+// <group>/g), or 0 when the file has none.
 double measuredUpTo(const std::string& path) {
   const io::Hdf5PrintingOff quiet;  // a file without the attribute is not an error
   double window[2] = {0.0, 0.0};
   const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   if (file >= 0) {
-    const hid_t set = H5Dopen2(file, kPressureResponseDataset, H5P_DEFAULT);
+    const hid_t set = H5Dopen2(file, (pressureResponseGroup(path) + "/g").c_str(), H5P_DEFAULT);
     if (set >= 0) {
       if (H5Aexists(set, "mu_window") > 0) {
         const hid_t a = H5Aopen(set, "mu_window", H5P_DEFAULT);
@@ -99,16 +114,16 @@ double measuredUpTo(const std::string& path) {
   return std::isfinite(window[1]) && window[1] > 0.0 ? window[1] : 0.0;
 }
 
-// The node positions along one axis of the file's g (/pressure_response/node_x or node_y, written
-// since results format 3), empty when the file has none.
+// The node positions along one axis of the file's g (<group>/node_x or node_y, written since
+// gradfric-fem-history format 3), empty when the file has none.
 std::vector<double> nodePositions(const std::string& path, const char* name) {
   const io::Hdf5PrintingOff quiet;
   std::vector<double> nodes;
   const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   if (file < 0) return nodes;
   io::H5File closeFile(file);
-  const std::string dataset = std::string("pressure_response/") + name;
-  if (H5Lexists(file, "pressure_response", H5P_DEFAULT) <= 0 || H5Lexists(file, dataset.c_str(), H5P_DEFAULT) <= 0)
+  const std::string group = pressureResponseGroup(path), dataset = group + "/" + name;
+  if (H5Lexists(file, group.c_str(), H5P_DEFAULT) <= 0 || H5Lexists(file, dataset.c_str(), H5P_DEFAULT) <= 0)
     return nodes;
   const hid_t set = H5Dopen2(file, dataset.c_str(), H5P_DEFAULT);
   if (set < 0) return nodes;
@@ -127,7 +142,7 @@ std::vector<double> nodePositions(const std::string& path, const char* name) {
 FieldMap readResponseMap(const std::string& option, const std::string& value, const std::string& path,
                          const Plate& plate) {
   const std::string where = value == path ? "" : path + ": ";
-  FieldMap map = readHdf5Map(option, path, kPressureResponseDataset, "written by gradfric-fem -output");
+  FieldMap map = readHdf5Map(option, path, pressureResponseGroup(path) + "/g", "written by gradfric-fem -output");
   for (std::size_t k = 0; k < map.values.size(); ++k)
     if (!std::isfinite(map.values[k])) {
       std::ostringstream text;
@@ -178,7 +193,7 @@ PressureResponse readPressureResponse(MPI_Comm comm, RunParameters* record, cons
                                            formatReal(kDefaultEdgeOverThickness) + " H");
   const std::string file =
       o.path("response_file", "",
-             "fem: gradfric-fem results file(s) whose /pressure_response/g is the shape g (comma-separated with "
+             "fem: gradfric-fem results file(s) whose /fem/pressure_response/g is the shape g (comma-separated with "
              "-pressure_response_select grading; in an options file: from its folder)", true);
   const std::string select =
       o.choice("response_select", "same", {"same", "grading"},

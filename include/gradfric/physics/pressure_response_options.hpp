@@ -13,8 +13,12 @@
 
 namespace gradfric {
 
-// The dataset gradfric-fem writes and the SBM reads.
-inline constexpr const char* kPressureResponseDataset = "/pressure_response/g";
+// The group of g gradfric-fem writes and the SBM reads: /fem/pressure_response in a results file
+// of format gradfric-fem-run, /pressure_response in the older gradfric-fem-history files.
+inline constexpr const char* kPressureResponseGroup = "/fem/pressure_response";
+inline constexpr const char* kOldPressureResponseGroup = "/pressure_response";
+// The group of g in the file at path: the current one, else the older one (read as it was).
+std::string pressureResponseGroup(const std::string& path);
 
 // The default decay length of the moment-balance shape, in units of the plate thickness H
 // (the FEM-measured g of the paper mesh on 120 x 120 blocks is fitted best by 0.48 H; docs/fields.md).
