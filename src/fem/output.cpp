@@ -23,6 +23,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <limits>
+#include <set>
 #include <stdexcept>
 
 namespace gradfric::fem {
@@ -204,7 +205,8 @@ void OutputFiles::writeFields(PlateModel& model, Vec state, double t) {
 
 // The file a one-point, one-realisation FEM sweep of this run would write (the same schema, steps
 // and statistics: sweep_run.cpp), named gradfric-fem-run, plus the run's FEM extras under /fem.
-void OutputFiles::writeResults(const PlateModel& model, const FemRunResult& r, const RunParameters& record) {
+void OutputFiles::writeResults(const PlateModel& model, const FemRunResult& r, const RunParameters& scene,
+                               const RunParameters& record) {
   if (path_.empty()) return;
   // The pressure response's regression, gathered on rank 0 (collective; the same decision on every rank).
   std::optional<PressureResponseMap> response;
@@ -216,7 +218,7 @@ void OutputFiles::writeResults(const PlateModel& model, const FemRunResult& r, c
     }
   }
   const std::vector<PropertyProfile> properties = gatherPropertyProfiles(model);  // collective
-  const FemSweep campaign = oneRunCampaign(params_, model.grading(), record);
+  const FemSweep campaign = oneRunCampaign(params_, model.grading(), scene);
   io::ResultsFile file = io::ResultsFile::create(comm_, resultsPlan_->workPath(), campaign.layout, campaign.table,
                                                  campaign.sceneAttributes);
   file.setRun(campaign.runAttributes, provenance_);
@@ -244,7 +246,12 @@ void OutputFiles::writeResults(const PlateModel& model, const FemRunResult& r, c
                         {"mu_k_discretisation_error", {notMeasured}}},
                        {});
   const std::string xdmf = snapshots_ > 0 ? xmfPath_.substr(xmfPath_.rfind('/') + 1) : "";
-  const RunExtras extras{model, r, response, properties, xdmf};
+  std::vector<io::Attribute> derived;  // the record's entries the scene does not have
+  std::set<std::string> known;
+  for (const io::Attribute& a : io::optionAttributes(scene)) known.insert(a.name);
+  for (const io::Attribute& a : io::optionAttributes(record))
+    if (!known.count(a.name)) derived.push_back(a);
+  const RunExtras extras{model, r, response, properties, xdmf, derived};
   file.addGroups(runExtrasBytes(extras), [&](hid_t h5) { writeRunExtras(h5, extras); });
   file.markCompleteAndClose();  // complete; renamed into place with the fields files in finish()
   resultsWritten_ = true;

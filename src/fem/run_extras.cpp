@@ -129,6 +129,7 @@ std::uint64_t runExtrasBytes(const RunExtras& c) {
   bytes += 8 * 8 * static_cast<std::uint64_t>(q.nx + 1) * (q.ny + 1);  // properties, fields
   for (const PropertyProfile& p : c.properties) bytes += 8 * p.values.size() + p.description.size() + 256;
   if (c.response) bytes += 8 * (c.response->g.size() + c.response->nodeX.size() + c.response->nodeY.size());
+  for (const auto& a : c.derived) bytes += 3 * (a.name.size() + 128) + a.value.size() + a.unit.size() + a.origin.size();
   return bytes + 64 * 1024 + c.fieldsXdmf.size();
 }
 
@@ -140,6 +141,7 @@ void writeRunExtras(hid_t file, const RunExtras& c) {
   writeStringAttribute(fem, "description", "what a single gradfric-fem run stores beside the campaign layout (docs/fem.md)");
   if (!c.fieldsXdmf.empty()) writeStringAttribute(fem, "fields_xdmf", c.fieldsXdmf);
   writeResults(fem, model, c.result);
+  writeOptionRecord(fem, "derived", c.derived);
   writeNormalForce(file, fem, c.result);
   {  // The property fields as given (-field_*), sampled at the bottom cells' centres: the input maps.
     const FemParameters& q = model.params();

@@ -40,8 +40,10 @@ public:
   // (empty without an output file). Collective.
   StepObserver snapshotObserver(PlateModel& model);
   void writeSnapshot(PlateModel& model, Vec state, double tSliding);
-  // Collective: the results file, complete, under its temporary name (renamed in finish()).
-  void writeResults(const PlateModel& model, const FemRunResult& result, const RunParameters& record);
+  // Collective: the results file, complete, under its temporary name (renamed in finish()). scene:
+  // the options as read (a sweep's /scene), record: with what the run derived since (/fem/derived).
+  void writeResults(const PlateModel& model, const FemRunResult& result, const RunParameters& scene,
+                    const RunParameters& record);
   // Collective: closes the fields file, writes the .xmf, renames temporaries into place.
   void finish();
 

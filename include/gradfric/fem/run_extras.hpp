@@ -2,12 +2,14 @@
 // The FEM extras of a single run's results file (docs/fem.md, "Output"): what one gradfric-fem run
 // stores beside the campaign layout it shares with a FEM sweep (io/results_file.hpp), all under
 // /fem: the run's own scalars (/fem/results), the normal force at the stored history's samples
-// (/fem/history), the property values the physics used (/fem/properties), the property-field maps
+// (/fem/history), what the run derived once built (/fem/derived, an option record like /scene:
+// its time step, the stable step, the interface resolution), the property values the physics used (/fem/properties), the property-field maps
 // (/fem/fields) and the pressure response (/fem/pressure_response). Serial: rank 0 writes them
 // into the closed results file (io::ResultsFile::addGroups).
 #include "gradfric/fem/pressure_response_recorder.hpp"
 #include "gradfric/fem/property_profiles.hpp"
 #include "gradfric/fem/simulation.hpp"
+#include "gradfric/io/hdf5_attributes.hpp"
 
 #include <hdf5.h>
 
@@ -27,6 +29,7 @@ struct RunExtras {
   const std::optional<PressureResponseMap>& response;
   const std::vector<PropertyProfile>& properties;  // the physics' values (gatherPropertyProfiles)
   std::string fieldsXdmf;                          // the snapshots' .xmf beside the file, or empty
+  std::vector<io::Attribute> derived;  // what the run derived once built (its dt, the interface resolution)
 };
 
 // Adds /fem to an open results file that has the campaign layout (its root scales point,
