@@ -39,7 +39,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 # The readers beside this script (they put python/, the gradfric package of this version, first on
 # the path: in the source tree and in the install tree, share/gradfric).
 sys.path.insert(0, os.path.dirname(os.path.realpath(__file__)))
-from gradfric_plot_data import FEM_HISTORY_OBSERVABLES, Ensemble, FemHistory, load, pair_points, print_pairs, refuse  # noqa: E402,E501
+from gradfric_plot_data import Ensemble, FemHistory, load, pair_points, print_pairs, refuse  # noqa: E402
 
 
 def plot_histories(ensemble, fems, png, sweeps=()):
@@ -74,7 +74,7 @@ def series_key(ensemble, p):
 def plot_variation(ensemble, fems, png, sweeps=()):
     """One panel per observable with statistics, as the first file lists them."""
     first = ensemble if ensemble is not None else (sweeps[0] if sweeps else None)
-    names = first.observables if first is not None else FEM_HISTORY_OBSERVABLES
+    names = first.observables if first is not None else fems[0].observables
     fig, axes = plt.subplots(1, len(names), figsize=(6 * len(names), 4.8), squeeze=False)
     for ax, name in zip(axes[0], names):
         for source in ([ensemble] if ensemble is not None else []) + list(sweeps):

@@ -2,7 +2,7 @@
 // The -pressure_response options of the spring-block model (physics/pressure_response.hpp):
 //   -pressure_response none|moment|fem     the shape g of p_i(t) = p_i^0 (1 + mu(t) g_i)
 //   -pressure_response_edge <m>            moment: decay length of the edge concentration
-//   -pressure_response_file <run.h5>       fem: a gradfric-fem results file (/pressure_response/g),
+//   -pressure_response_file <run.h5>       fem: a gradfric-fem results file (/fem/pressure_response/g),
 //                                          or several, comma-separated, with
 //   -pressure_response_select same|grading fem: one g for every sweep point, or per point the file
 //                                          whose FEM run had the point's grading (its /scene record)
