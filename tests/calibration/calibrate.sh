@@ -66,7 +66,7 @@ bad() {  # name, ranks, regex, options...
   grep -Eq "$regex" "$name.err" || fail "$name: message does not match $regex: $(cat "$name.err")"
   ! ls "$name".opts* >/dev/null 2>&1 || fail "$name: a file was written"
 }
-bad no_reference 1 "invalid option -calibrate_reference = \(not set\): allowed a gradfric-fem history" "${fit[@]}"
+bad no_reference 1 "invalid option -calibrate_reference = \(not set\): allowed a gradfric-fem results file" "${fit[@]}"
 bad missing 2 "invalid option -calibrate_reference = nothing.h5: allowed a readable HDF5 file" -calibrate_reference nothing.h5
 bad bad_csv 1 "invalid option -calibrate_reference = bad.csv: allowed a CSV file with columns t, mu \(line 3" -calibrate_reference bad.csv
 bad no_dataset 1 "invalid option -calibrate_reference = plain.h5: allowed a file with the dataset history/time" -calibrate_reference plain.h5
