@@ -112,23 +112,21 @@ def extras(f):
     /fem/results attribute as a 0-d variable; /fem/derived as attributes."""
     fem = f["fem"]
     coords, data = {}, {}
-    axes = {"x": "cell_x", "y": "cell_y", "node_x": "node_x", "node_y": "node_y"}
-
     def axis(d, name):
-        coords[axes[name]] = _h5.variable(d, (axes[name],))
+        coords[name] = _h5.variable(d, (name,))
 
     if "properties" in fem:
         group = fem["properties"]
-        axis(group["x"], "x")
+        axis(group["cell_x"], "cell_x")
         axis(group["node_x"], "node_x")
         for name, d in group.items():
-            if name not in ("x", "node_x"):
-                data[f"fem_properties_{name}"] = _h5.variable(d, (axes[_h5.scale_dims(d)[0]],))
+            if name not in ("cell_x", "node_x"):
+                data[f"fem_properties_{name}"] = _h5.variable(d, tuple(_h5.scale_dims(d)))
     if "fields" in fem:
         group = fem["fields"]
-        axis(group["y"], "y")
+        axis(group["cell_y"], "cell_y")
         for name, d in group.items():
-            if name not in ("x", "y"):
+            if name not in ("cell_x", "cell_y"):
                 data[f"fem_fields_{name}"] = _h5.variable(d, ("cell_y", "cell_x"))
     if "pressure_response" in fem:
         group = fem["pressure_response"]

@@ -162,8 +162,8 @@ void writeRunExtras(hid_t file, const RunExtras& c) {
       std::vector<double> cx, cy;  // the bottom cells' centres: the maps' axes
       for (int i = 0; i < q.nx; ++i) cx.push_back(columns.unitCentre(i) * q.plate.length);
       for (int j = 0; j < q.ny; ++j) cy.push_back(rows.unitCentre(j) * q.plate.length);
-      const H5Dataset y = createCoordinateScale(fieldGroup, "y", cy, "m", "centre of each bottom cell row along y");
-      const H5Dataset x = createCoordinateScale(fieldGroup, "x", cx, "m", "centre of each bottom cell column along x");
+      const H5Dataset y = createCoordinateScale(fieldGroup, "cell_y", cy, "m", "centre of each bottom cell row along y");
+      const H5Dataset x = createCoordinateScale(fieldGroup, "cell_x", cx, "m", "centre of each bottom cell column along x");
       const char* names[4] = {"E_map", "mu_s_map", "mu_k_map", "p_map"};
       const char* units[4] = {"Pa", "1", "1", "Pa"};
       const hsize_t dims[2] = {hsize_t(q.ny), hsize_t(q.nx)};
@@ -177,13 +177,14 @@ void writeRunExtras(hid_t file, const RunExtras& c) {
       }
     }
     // /fem/properties: the values the physics used, from the layers (property_profiles.hpp): per
-    // cell on the column centres x, per node on the node positions node_x (the contact uses each
+    // cell on the column centres cell_x, per node on the node positions node_x (the contact uses each
     // node's area-weighted mean). /properties holds the fields at the column centres, as a sweep's.
     H5Group properties = createGroup(fem, "properties");
     std::vector<double> x, nodeX = model.mesh().axisX().nodes;
     for (int i = 0; i < q.nx; ++i) x.push_back(columns.unitCentre(i) * q.plate.length);
-    H5Dataset column = vector(properties, "x", x, "m", "centre of each cell column along the grading axis x");
-    makeDimensionScale(column, "x");
+    // cell_x, cell_y: not x, y, which a campaign file's readers give the block centres
+    H5Dataset column = vector(properties, "cell_x", x, "m", "centre of each cell column along the grading axis x");
+    makeDimensionScale(column, "cell_x");
     H5Dataset node = vector(properties, "node_x", nodeX, "m", "position of each node column along x");
     makeDimensionScale(node, "node_x");
     for (const PropertyProfile& p : c.properties) {

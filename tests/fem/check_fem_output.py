@@ -66,7 +66,7 @@ with h5py.File(out, "r") as f:
     # Axes as dimension scales.
     assert [d.keys()[0] for d in f["history/mu"].dims] == ["point", "realisation", "sample"]
     assert [d.keys()[0] for d in f["fem/history/normal_force"].dims] == ["point", "realisation", "sample"]
-    assert f["fem/properties/E"].dims[0].keys() == ["x"]
+    assert f["fem/properties/E"].dims[0].keys() == ["cell_x"]
     # The contact's own coefficients, per bottom node.
     assert f["fem/properties/mu_s"].dims[0].keys() == ["node_x"]
     # The force components give mu: |(Fx, Fy)| / (p L^2); the normal force at the same samples.
