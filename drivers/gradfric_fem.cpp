@@ -220,6 +220,7 @@ int main(int argc, char** argv) {
     if (run->dryRun) return;                                      // -fem_dry_run: nothing built
     OutputFiles output(comm, run->params);                        // planned before any work
     PlateModel model(comm, run->params, run->grading);
+    const RunParameters scene = record;                           // the options as a sweep stores them
     printPlan(comm, *run, model, &record);
     const double wall0 = MPI_Wtime();
     const FemRunResult result = runPlateExperiment(model, output.snapshotObserver(model));
@@ -227,7 +228,7 @@ int main(int argc, char** argv) {
     record.add({"interface resolution", result.resolution.describe(), "",
                 "D_c, kappa = G D_c/(H p (mu_s - mu_k)), and whether D_c was resolved (docs/accuracy_fem.md)",
                 OptionOrigin::Derived});
-    output.writeHistory(model, result, record);
+    output.writeResults(model, result, scene, record);
     output.finish();                                              // complete: renamed into place
     printResults(comm, *run, result, wall);
     compareWithSpringBlocks(comm, *run, result, wall);

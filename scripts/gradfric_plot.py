@@ -17,8 +17,9 @@ RESULTS.h5 is a spring-block ensemble file (gradfric) or a finite-element histor
   <name>_sigma_x.png        sigma_x/p snapshots (Figures 5 and 12)
   <name>_detachment.gif     animation of the sigma_x/p snapshots (the Supporting Information videos)
 
-FEM history files given with --fem are added to the mu(t) and variation plots (their Delta is
-read from their /scene). A FEM sweep file (gradfric-fem with the -ensemble_ sweep lists, format
+Single FEM runs (gradfric-fem-run, the campaign layout of one point; or older gradfric-fem-history
+files) given with --fem are added to the mu(t) and variation plots (their Delta is read from
+their /scene). A FEM sweep file (gradfric-fem with the -ensemble_ sweep lists, format
 gradfric-fem-sweep, the ensemble's layout) may be plotted alone or given with --fem next to a
 spring-block ensemble: each FEM point is then paired with the spring-block point of the same
 grading (property, profile, Delta) and angle, the pairs are printed, and a sweep with a point
@@ -39,7 +40,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 # The readers beside this script (they put python/, the gradfric package of this version, first on
 # the path: in the source tree and in the install tree, share/gradfric).
 sys.path.insert(0, os.path.dirname(os.path.realpath(__file__)))
-from gradfric_plot_data import FEM_HISTORY_OBSERVABLES, Ensemble, FemHistory, load, pair_points, print_pairs, refuse  # noqa: E402,E501
+from gradfric_plot_data import Ensemble, FemHistory, load, pair_points, print_pairs, refuse  # noqa: E402
 
 
 def plot_histories(ensemble, fems, png, sweeps=()):
@@ -74,7 +75,7 @@ def series_key(ensemble, p):
 def plot_variation(ensemble, fems, png, sweeps=()):
     """One panel per observable with statistics, as the first file lists them."""
     first = ensemble if ensemble is not None else (sweeps[0] if sweeps else None)
-    names = first.observables if first is not None else FEM_HISTORY_OBSERVABLES
+    names = first.observables if first is not None else fems[0].observables
     fig, axes = plt.subplots(1, len(names), figsize=(6 * len(names), 4.8), squeeze=False)
     for ax, name in zip(axes[0], names):
         for source in ([ensemble] if ensemble is not None else []) + list(sweeps):
@@ -273,8 +274,8 @@ def animate_sigma(ensemble, gif, point):
 
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("results", help="an ensemble file (gradfric) or a FEM history (gradfric-fem)")
-    parser.add_argument("--fem", nargs="*", default=[], help="FEM history files to add")
+    parser.add_argument("results", help="an ensemble file (gradfric), a FEM sweep or a single FEM run (gradfric-fem)")
+    parser.add_argument("--fem", nargs="*", default=[], help="FEM runs or FEM sweeps to add")
     parser.add_argument("--out", help="folder for the figures (default: beside the results file)")
     parser.add_argument("--prefix", help="file name prefix (default: the results file's name)")
     parser.add_argument("--point", type=int, help="sweep point of the stress snapshots (default: the largest |Delta|)")
@@ -290,7 +291,7 @@ def main(argv=None):
     try:
         first = load(args.results)
     except (ValueError, KeyError, OSError) as error:
-        sys.exit(f"gradfric_plot: {args.results} is neither a gradfric ensemble nor a FEM history ({error})")
+        sys.exit(f"gradfric_plot: {args.results} is neither a gradfric ensemble nor a FEM run ({error})")
     if isinstance(first, Ensemble):
         ensemble = first
     else:
@@ -299,7 +300,7 @@ def main(argv=None):
         try:
             item = load(path)
         except (ValueError, KeyError, OSError) as error:
-            sys.exit(f"gradfric_plot: --fem {path} is not a gradfric-fem history or sweep ({error})")
+            sys.exit(f"gradfric_plot: --fem {path} is not a gradfric-fem run or sweep ({error})")
         if isinstance(item, FemHistory):
             fems.append(item)
         elif item.model != "FEM":

@@ -1,6 +1,7 @@
 """The results files gradfric_plot.py draws, read through gradfric.open (python/gradfric): the
-ensemble layout (a spring-block ensemble or a FEM sweep), a FEM history, and the pairing of FEM
-points with spring-block points of the same grading and angle."""
+ensemble layout (a spring-block ensemble, a FEM sweep, or a single FEM run: one point, one
+realisation), a single FEM run as one curve (FemHistory), and the pairing of FEM points with
+spring-block points of the same grading and angle."""
 import os
 import sys
 
@@ -11,8 +12,10 @@ import numpy as np
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.realpath(__file__)), "..", "python"))
 import gradfric  # noqa: E402
 
-ENSEMBLE_FORMATS = {"gradfric-sbm-ensemble": "SBM", "gradfric-fem-sweep": "FEM"}
-# A FEM history file (gradfric-fem, one run) does not list its observables yet: these of its /results.
+ENSEMBLE_FORMATS = {"gradfric-sbm-ensemble": "SBM", "gradfric-fem-sweep": "FEM", "gradfric-fem-run": "FEM"}
+# A single FEM run (gradfric-fem-run, or the older gradfric-fem-history) drawn as one curve.
+FEM_RUN_FORMATS = ("gradfric-fem-run", "gradfric-fem-history")
+# An older FEM history file does not list its observables: these of its /results.
 FEM_HISTORY_OBSERVABLES = ("mu_s", "mu_k")
 
 
@@ -82,18 +85,33 @@ class Ensemble:
 
 
 class FemHistory:
-    """A finite-element history file (layout: docs/fem.md)."""
+    """A single FEM run (docs/fem.md, "Output"): its mu(t) and its observables. A gradfric-fem-run
+    file is read as the ensemble layout (its one point and realisation, as a FEM sweep's point);
+    an older gradfric-fem-history file as it was."""
 
     def __init__(self, path, ds=None):
         self.path = path
         ds = gradfric.open(path) if ds is None else ds
-        if ds.attrs.get("format") != "gradfric-fem-history":
-            raise ValueError(f"{path} is not a gradfric-fem history file")
-        self.time = ds["time"].values
-        self.mu = ds["mu"].values
+        if ds.attrs.get("format") not in FEM_RUN_FORMATS:
+            raise ValueError(f"{path} is not a gradfric-fem run")
+        if ds.attrs["format"] == "gradfric-fem-run":
+            run = Ensemble(path, ds)
+            self.time, self.mu = run.histories(0)[0] if run.histories(0) else (np.array([]), np.array([]))
+            self.observables = run.observables
+            self.results = {n: float(run.statistic(f"{n}_mean")[0]) for n in run.observables}
+            for n in run.observables:
+                if run.has(f"{n}_discretisation_error"):
+                    self.results[f"{n}_discretisation_error"] = float(run.statistic(f"{n}_discretisation_error")[0])
+            where = "/fem/results@"
+        else:
+            self.time = ds["time"].values
+            self.mu = ds["mu"].values
+            self.observables = list(FEM_HISTORY_OBSERVABLES)
+            self.results = {}
+            where = "/results@"
         # the numbers only: /results also holds text (the error bars' basis, the window's description)
-        self.results = {k: float(v) for k, v in ds.data_vars.items()
-                        if v.attrs["hdf5_path"].startswith("/results@") and v.dtype.kind in "iuf"}
+        self.results.update({k: float(v) for k, v in ds.data_vars.items()
+                             if v.attrs["hdf5_path"].startswith(where) and v.dtype.kind in "iuf"})
         self.parameters = {k: ds.attrs[k] for k in ds.attrs["scene_options"]}
         self.delta = float(self.parameters.get("grading_delta", self.parameters.get("-grading_delta", 0.0)))
         self.profile = self.parameters.get("grading_profile", self.parameters.get("-grading_profile", "none"))
@@ -103,9 +121,9 @@ class FemHistory:
 
 
 def load(path):
-    """An Ensemble (ensemble or FEM sweep) or a FemHistory; ValueError for any other file."""
+    """A FemHistory (a single FEM run), an Ensemble (ensemble or FEM sweep); ValueError for any other file."""
     ds = gradfric.open(path)
-    return Ensemble(path, ds) if ds.attrs.get("format") in ENSEMBLE_FORMATS else FemHistory(path, ds)
+    return FemHistory(path, ds) if ds.attrs.get("format") in FEM_RUN_FORMATS else Ensemble(path, ds)
 
 
 def pair_key(ensemble, p, digits=9):

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The FEM-measured pressure response g against the moment-balance shape on the block lattice.
 
-Reads /pressure_response/g of a gradfric-fem results file, samples it bilinearly at the centres of
+Reads /fem/pressure_response/g of a gradfric-fem results file, samples it bilinearly at the centres of
 an N x N block lattice (as -pressure_response fem does), removes its mean, and finds the edge decay
 length lambda of the moment-balance shape (-pressure_response moment) closest to it in the least
 squares over the lattice. Prints the column profiles and the fit (docs/fields.md).
@@ -40,7 +40,7 @@ def main():
     length = float(sys.argv[3]) if len(sys.argv) > 3 else 5e-3
     thickness = float(sys.argv[4]) if len(sys.argv) > 4 else 5e-5
     with h5py.File(path, "r") as f:
-        d = f["/pressure_response/g"]
+        d = f["/fem/pressure_response/g" if "fem" in f else "/pressure_response/g"]  # older files: /pressure_response
         g, extent = d[...], d.attrs["extent"]
         print(f"FEM map {g.shape}, moment_over_H {float(d.attrs['moment_over_H']):.4f}, "
               f"mean {float(d.attrs['mean']):.2e}, window {d.attrs['mu_window']}, samples {int(d.attrs['samples'])}")

@@ -2,7 +2,7 @@
 """A figure of the FEM-measured pressure response g (docs/fields.md): maps and profiles along x.
 
 Each argument is label=file, a gradfric-fem results file (or a shipped input/fields/
-pressure_response_*.h5) with /pressure_response/g. The first one is the reference whose map is
+pressure_response_*.h5) with /fem/pressure_response/g (shipped: /pressure_response/g). The first one is the reference whose map is
 drawn with each other's difference from it. Top row: the maps (the first g, then g - g_first for
 up to three others); bottom row: g along x through the plate's centre line over the whole plate,
 then near the trailing (x = 0) and the leading (x = L) edge, the FEM's nodes as lines and the
@@ -29,7 +29,7 @@ from pressure_response_fit import sample  # noqa: E402
 
 def read(path):
     with h5py.File(path, "r") as f:
-        d = f["pressure_response/g"]
+        d = f["fem/pressure_response/g" if "fem" in f else "pressure_response/g"]  # shipped files: /pressure_response
         return d[...], [float(v) for v in d.attrs["extent"]], float(d.attrs["moment_over_H"])
 
 

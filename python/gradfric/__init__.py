@@ -11,10 +11,14 @@ What open() returns, by the file's `format` (attribute Dataset.attrs["format"]):
       (history sample times) along (point, realisation, sample), x and y the block centres [m].
       /realisations, /statistics, /history and /maps keep their names (mu_s, mu_s_mean, mu,
       first_slip_time, ...); /properties and /run are prefixed (properties_mu_s, run_wall_seconds).
-  gradfric-fem-history (docs/fem.md): dim time (mu, force_x, ...), x (properties_E), node_x
-      (properties_mu_s, ...: the values the physics used, format 4), with
-      property fields y (fields_mu_s_map, ...), node_x/node_y (pressure_response_g); each
-      /results attribute as a 0-d variable (mu_s, peak_time, ...).
+  gradfric-fem-run (docs/fem.md): one gradfric-fem run, read as the layout above (one point, one
+      realisation) plus its /fem extras: dims cell_x (fem_properties_E), node_x (fem_properties_mu_s,
+      ...: the values the physics used), cell_y (fem_fields_mu_s_map, ...), node_y
+      (pressure_response_g); normal_force along (point, realisation, sample); each /fem/results
+      attribute as a 0-d variable (first_slip_time, dt, ...); /fem/derived as attributes.
+  gradfric-fem-history (a single run before the campaign layout, format versions 1 to 4): dim
+      time (mu, force_x, ...), x (properties_E), node_x, y (fields_mu_s_map, ...), node_y
+      (pressure_response_g); each /results attribute as a 0-d variable (mu_s, peak_time, ...).
   gradfric-accuracy-study (docs/accuracy.md): dims ladder, rung; setting, mu_s_error, ...
       (NaN past a ladder's last rung); knob, setting_unit, error_meaning per ladder.
   gradfric-design (docs/design.md): dim evaluation (x_<parameter>, value, ci95_low, ...; phase);

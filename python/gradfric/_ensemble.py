@@ -1,11 +1,12 @@
-"""The ensemble layout (docs/ensemble.md, section 5): a spring-block ensemble (gradfric) or a FEM
-sweep (gradfric-fem with sweep lists), one row of /sweep per point."""
+"""The ensemble layout (docs/ensemble.md, section 5): a spring-block ensemble (gradfric), a FEM
+sweep (gradfric-fem with sweep lists) or a single FEM run (one point, one realisation, with its
+FEM extras under /fem: _fem.extras), one row of /sweep per point."""
 import numpy as np
 import xarray as xr
 
-from . import _h5
+from . import _fem, _h5
 
-FORMATS = ("gradfric-sbm-ensemble", "gradfric-fem-sweep")
+FORMATS = ("gradfric-sbm-ensemble", "gradfric-fem-sweep", "gradfric-fem-run")
 # Groups whose datasets keep their own names; /properties and /run are prefixed (their names
 # repeat /realisations').
 _PLAIN = {"sweep", "realisations", "statistics", "history", "maps"}
@@ -14,7 +15,7 @@ _RUN_DIMS = {"run/wall_seconds": ["point", "realisation"], "run/rank": ["point",
 
 
 def read(f):
-    coords, data = _h5.collect(f, _PLAIN, _RUN_DIMS)
+    coords, data = _h5.collect(f, _PLAIN, _RUN_DIMS, skip=("fem",))
     # The sweep table and the sample times describe the points and samples: coordinates.
     for name in [k for k in data if data[k].attrs["hdf5_path"].startswith("/sweep/")]:
         coords[name] = data.pop(name)
@@ -35,6 +36,11 @@ def read(f):
     attrs["scene_options"] = list(scene)
     attrs["observables"] = observables(f)
     attrs.update(_h5.provenance(f["run"]))
+    if "fem" in f:  # a single FEM run's extras
+        fem_coords, fem_data, fem_attrs = _fem.extras(f)
+        coords.update(fem_coords)
+        data.update(fem_data)
+        attrs.update(fem_attrs)
     return xr.Dataset(data, coords, attrs), scene
 
 

@@ -1,4 +1,6 @@
-"""The FEM history file of one gradfric-fem run (docs/fem.md, "Output")."""
+"""One gradfric-fem run (docs/fem.md, "Output"): the FEM extras (/fem) of a gradfric-fem-run file,
+which is otherwise read as the campaign layout (_ensemble.py); and the older gradfric-fem-history
+files (format versions 1 to 4), read as they were."""
 import numpy as np
 import xarray as xr
 
@@ -96,3 +98,48 @@ def read(f):
     if "provenance" in f:
         attrs.update(_h5.provenance(f["provenance"]))
     return xr.Dataset(data, coords, attrs), scene
+
+
+# /fem/results of a gradfric-fem-run file: the run's scalars the campaign layout has no place for.
+_EXTRA_RESULTS = {k: v for k, v in _RESULTS.items() if k not in
+                  ("mu_s", "mu_k", "mu_s_discretisation_error", "mu_k_discretisation_error", "peak_time",
+                   "peak_confirmed", "steps", "wall_seconds")}
+
+
+def extras(f):
+    """(coords, data, attrs) of /fem: dims cell_x, node_x (/fem/properties), cell_y (/fem/fields),
+    node_y (/fem/pressure_response); the normal force along (point, realisation, sample); each
+    /fem/results attribute as a 0-d variable; /fem/derived as attributes."""
+    fem = f["fem"]
+    coords, data = {}, {}
+    def axis(d, name):
+        coords[name] = _h5.variable(d, (name,))
+
+    if "properties" in fem:
+        group = fem["properties"]
+        axis(group["cell_x"], "cell_x")
+        axis(group["node_x"], "node_x")
+        for name, d in group.items():
+            if name not in ("cell_x", "node_x"):
+                data[f"fem_properties_{name}"] = _h5.variable(d, tuple(_h5.scale_dims(d)))
+    if "fields" in fem:
+        group = fem["fields"]
+        axis(group["cell_y"], "cell_y")
+        for name, d in group.items():
+            if name not in ("cell_x", "cell_y"):
+                data[f"fem_fields_{name}"] = _h5.variable(d, ("cell_y", "cell_x"))
+    if "pressure_response" in fem:
+        group = fem["pressure_response"]
+        axis(group["node_y"], "node_y")
+        data["pressure_response_g"] = _h5.variable(group["g"], ("node_y", "node_x"))
+    if "history" in fem:
+        data["normal_force"] = _h5.variable(fem["history/normal_force"], ("point", "realisation", "sample"))
+    units = _h5.attributes(fem["results/units"])
+    for name, value in _h5.attributes(fem["results"]).items():
+        attrs = {"units": units.get(name, ""), "description": _EXTRA_RESULTS.get(name, name),
+                 "hdf5_path": f"/fem/results@{name}"}
+        data[name] = xr.Variable((), np.asarray(value, dtype=object if isinstance(value, str) else None), attrs)
+    attrs = {f"fem_{k}": v for k, v in _h5.attributes(fem).items()}
+    if "derived" in fem:
+        attrs.update({k: v[0] for k, v in _h5.option_record(fem["derived"]).items()})
+    return coords, data, attrs

@@ -61,7 +61,7 @@ std::optional<Calibration> readCalibration(MPI_Comm comm, RunParameters* record)
   CalibrationSettings& s = c.settings;
   OptionReader o(comm, "calibrate_", "Calibration of the spring-block l_z and sigma (docs/calibration.md)", record);
   s.source.path = o.path("reference", "",
-                         "the reference mu(t): a gradfric-fem history (.h5), any HDF5 file with the datasets below, or a "
+                         "the reference mu(t): a gradfric-fem results file (.h5), any HDF5 file with the datasets below, or a "
                          "CSV file (.csv) with columns t [s], mu");
   s.source.timeDataset = o.text("reference_time", s.source.timeDataset, "HDF5 reference: dataset of the times [s]");
   s.source.muDataset = o.text("reference_mu", s.source.muDataset, "HDF5 reference: dataset of mu");
@@ -94,7 +94,7 @@ std::optional<Calibration> readCalibration(MPI_Comm comm, RunParameters* record)
 
   if (s.source.path.empty())
     throw InputError(o.fullName("reference"), "(not set)",
-                     "a gradfric-fem history (.h5), an HDF5 file with -calibrate_reference_time/_mu, or a CSV file t, mu");
+                     "a gradfric-fem results file (.h5), an HDF5 file with -calibrate_reference_time/_mu, or a CSV file t, mu");
   if (window.size() != 2 || !(window[0] > 0 && window[0] < window[1] && window[1] < 1))
     throw InputError(o.fullName("window"), "(" + std::to_string(window.size()) + " values)", "lo,hi with 0 < lo < hi < 1");
   c.scene.window = LoadingWindow{window[0], window[1]};

@@ -4,8 +4,10 @@
 #include "gradfric/core/input_error.hpp"
 #include "gradfric/core/petsc_call.hpp"
 #include "gradfric/io/hdf5_attributes.hpp"
+#include "gradfric/io/hdf5_datasets.hpp"
 #include "gradfric/io/hdf5_handle.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -47,6 +49,33 @@ double realAttribute(hid_t object, const char* name) {
   return v;
 }
 
+std::string formatOf(hid_t file) {
+  if (H5Aexists(file, "format") <= 0) return "";
+  io::H5Attribute a(GF_H5(H5Aopen(file, "format", H5P_DEFAULT)));
+  return io::readStringAttribute(a);
+}
+
+// The first `count` values of a task's row [0, 0, :] of a results-file dataset.
+std::vector<double> readTaskRow(hid_t file, const std::string& name, hsize_t count) {
+  io::H5Dataset d(GF_H5(H5Dopen2(file, name.c_str(), H5P_DEFAULT)));
+  std::vector<double> all = io::readAll<double>(d, H5T_NATIVE_DOUBLE);
+  all.resize(std::min<std::size_t>(all.size(), count));
+  return all;
+}
+
+// A single FEM run's results file (gradfric-fem-run, the campaign layout): the stored mu(t) of its
+// one task, its mu_s and peak time, its /scene.
+void readFemRun(hid_t file, ReferenceCurve* c) {
+  io::H5Dataset length(GF_H5(H5Dopen2(file, "history/length", H5P_DEFAULT)));
+  const std::vector<int> n = io::readAll<int>(length, H5T_NATIVE_INT);
+  const hsize_t samples = n.empty() ? 0 : static_cast<hsize_t>(std::max(0, n[0]));
+  c->time = readTaskRow(file, "history/time", samples);
+  c->mu = readTaskRow(file, "history/mu", samples);
+  c->peak = readTaskRow(file, "realisations/mu_s", 1).at(0);
+  c->peakTime = readTaskRow(file, "realisations/peak_time", 1).at(0);
+  c->kind = "gradfric-fem run";
+}
+
 ReferenceCurve readHdf5(const ReferenceSource& s) {
   ReferenceCurve c;
   htri_t isHdf5 = 0;
@@ -54,23 +83,26 @@ ReferenceCurve readHdf5(const ReferenceSource& s) {
   H5E_END_TRY;
   if (isHdf5 <= 0) throw Unreadable("a readable HDF5 file (missing or not HDF5)");
   io::H5File file(GF_H5(H5Fopen(s.path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT)));
-  c.time = readVector(file, s.timeDataset);
-  c.mu = readVector(file, s.muDataset);
-  c.kind = "HDF5 datasets " + s.timeDataset + ", " + s.muDataset;
-  if (H5Aexists(file, "format") > 0) {
-    io::H5Attribute a(GF_H5(H5Aopen(file, "format", H5P_DEFAULT)));
-    if (io::readStringAttribute(a) == "gradfric-fem-history") {
-      c.kind = "gradfric-fem history";
-      if (H5Lexists(file, "results", H5P_DEFAULT) > 0) {
-        io::H5Group results(GF_H5(H5Gopen2(file, "results", H5P_DEFAULT)));
-        c.peak = realAttribute(results, "mu_s");
-        c.peakTime = realAttribute(results, "peak_time");
-      }
-      if (H5Lexists(file, "scene", H5P_DEFAULT) > 0) {
-        io::H5Group scene(GF_H5(H5Gopen2(file, "scene", H5P_DEFAULT)));
-        for (const auto& [k, v] : io::readStringAttributes(scene)) c.scene[k] = v;
-      }
+  const std::string format = formatOf(file);
+  const ReferenceSource defaults;
+  if (format == "gradfric-fem-run" && s.timeDataset == defaults.timeDataset && s.muDataset == defaults.muDataset) {
+    readFemRun(file, &c);
+  } else {
+    c.time = readVector(file, s.timeDataset);
+    c.mu = readVector(file, s.muDataset);
+    c.kind = "HDF5 datasets " + s.timeDataset + ", " + s.muDataset;
+  }
+  if (format == "gradfric-fem-history") {  // a single run's file before the campaign layout
+    c.kind = "gradfric-fem history";
+    if (H5Lexists(file, "results", H5P_DEFAULT) > 0) {
+      io::H5Group results(GF_H5(H5Gopen2(file, "results", H5P_DEFAULT)));
+      c.peak = realAttribute(results, "mu_s");
+      c.peakTime = realAttribute(results, "peak_time");
     }
+  }
+  if ((format == "gradfric-fem-run" || format == "gradfric-fem-history") && H5Lexists(file, "scene", H5P_DEFAULT) > 0) {
+    io::H5Group scene(GF_H5(H5Gopen2(file, "scene", H5P_DEFAULT)));
+    for (const auto& [k, v] : io::readStringAttributes(scene)) c.scene[k] = v;
   }
   return c;
 }

@@ -3,8 +3,11 @@
 #include "gradfric/core/collective_error.hpp"
 #include "gradfric/core/input_error.hpp"
 #include "gradfric/core/petsc_call.hpp"
-#include "gradfric/fem/history_file.hpp"
+#include "gradfric/campaign/campaign_file.hpp"
+#include "gradfric/fem/error_estimate.hpp"
 #include "gradfric/fem/log_events.hpp"
+#include "gradfric/fem/run_extras.hpp"
+#include "gradfric/fem/sweep.hpp"
 #include "gradfric/fem/xdmf.hpp"
 #include "gradfric/io/collective_file.hpp"
 #include "gradfric/io/file_room.hpp"
@@ -20,6 +23,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <limits>
+#include <set>
 #include <stdexcept>
 
 namespace gradfric::fem {
@@ -60,7 +64,7 @@ OutputFiles::OutputFiles(MPI_Comm comm, const FemParameters& params) : comm_(com
     request.overwriteOption = "-output_overwrite";
     return io::OutputPlan::decide(comm, request);
   };
-  historyPlan_ = plan(path_);
+  resultsPlan_ = plan(path_);
   if (!fieldsPath_.empty()) {
     fieldsPlan_ = plan(fieldsPath_);
     xmfPlan_ = plan(xmfPath_);
@@ -72,7 +76,7 @@ OutputFiles::~OutputFiles() {
   if (contactDM_) DMDestroy(&contactDM_);
   if (stressDM_) DMDestroy(&stressDM_);
   if (!finished_) {  // failed run: leave nothing half-written, and any earlier result whole
-    for (const auto* plan : {&historyPlan_, &fieldsPlan_, &xmfPlan_})
+    for (const auto* plan : {&resultsPlan_, &fieldsPlan_, &xmfPlan_})
       if (*plan) (*plan)->discard(comm_);
   }
 }
@@ -199,7 +203,10 @@ void OutputFiles::writeFields(PlateModel& model, Vec state, double t) {
   ++snapshots_;
 }
 
-void OutputFiles::writeHistory(const PlateModel& model, const FemRunResult& r, const RunParameters& record) {
+// The file a one-point, one-realisation FEM sweep of this run would write (the same schema, steps
+// and statistics: sweep_run.cpp), named gradfric-fem-run, plus the run's FEM extras under /fem.
+void OutputFiles::writeResults(const PlateModel& model, const FemRunResult& r, const RunParameters& scene,
+                               const RunParameters& record) {
   if (path_.empty()) return;
   // The pressure response's regression, gathered on rank 0 (collective; the same decision on every rank).
   std::optional<PressureResponseMap> response;
@@ -207,15 +214,47 @@ void OutputFiles::writeHistory(const PlateModel& model, const FemRunResult& r, c
     try {
       response = pressureResponse_->finish(model, r.friction.muStatic);
     } catch (const std::runtime_error& e) {
-      PetscPrintf(model.comm(), "gradfric-fem: no /pressure_response in the results file: %s\n", e.what());
+      PetscPrintf(model.comm(), "gradfric-fem: no /fem/pressure_response in the results file: %s\n", e.what());
     }
   }
   const std::vector<PropertyProfile> properties = gatherPropertyProfiles(model);  // collective
-  const HistoryContent content{model, r, record, params_.historyEvery, provenance_, response, properties};
-  historyPlan_->writeOnRank0(model.comm(), [&](const std::string& tmp) {
-    io::createHdf5File(tmp, historyFileBytes(content), [&](hid_t file) { writeHistoryFile(file, content); });
-  });
-  historyWritten_ = true;
+  const FemSweep campaign = oneRunCampaign(params_, model.grading(), scene);
+  io::ResultsFile file = io::ResultsFile::create(comm_, resultsPlan_->workPath(), campaign.layout, campaign.table,
+                                                 campaign.sceneAttributes);
+  file.setRun(campaign.runAttributes, provenance_);
+  io::TaskOutput task;  // as a sweep's point: its observer's summary and sampled history
+  task.friction = r.friction;
+  task.endTime = r.time.empty() ? 0.0 : r.time.back();
+  task.steps = r.steps;
+  task.wallSeconds = r.wallPressure + r.wallSliding;
+  int rank = 0;
+  MPI_Comm_rank(comm_, &rank);
+  std::string error;
+  if (rank == 0) {  // the group leader's write, as in the sweep's runner
+    try {
+      file.writeTask(task);
+    } catch (const std::exception& e) {
+      error = e.what();
+    }
+  }
+  agreeOnError(comm_, error);
+  file.flush();
+  campaign::writeStatistics(file, 1, campaign.sweep.reference, false);
+  const DiscretisationError bar = discretisationError(model.params(), model.grading(), r.dt / r.stableDt);
+  const double notMeasured = std::numeric_limits<double>::quiet_NaN();  // no study bounds mu_k (bar.kineticBasis)
+  file.writeStatistics({{"mu_s_discretisation_error", {bar.measured ? bar.relative : notMeasured}},
+                        {"mu_k_discretisation_error", {notMeasured}}},
+                       {});
+  const std::string xdmf = snapshots_ > 0 ? xmfPath_.substr(xmfPath_.rfind('/') + 1) : "";
+  std::vector<io::Attribute> derived;  // the record's entries the scene does not have
+  std::set<std::string> known;
+  for (const io::Attribute& a : io::optionAttributes(scene)) known.insert(a.name);
+  for (const io::Attribute& a : io::optionAttributes(record))
+    if (!known.count(a.name)) derived.push_back(a);
+  const RunExtras extras{model, r, response, properties, xdmf, derived};
+  file.addGroups(runExtrasBytes(extras), [&](hid_t h5) { writeRunExtras(h5, extras); });
+  file.markCompleteAndClose();  // complete; renamed into place with the fields files in finish()
+  resultsWritten_ = true;
 }
 
 // Rank 0 adds the fields' descriptions to their file and writes the .xmf, both to their
@@ -249,7 +288,7 @@ void OutputFiles::finish() {
   if (fieldsPlan_ && snapshots_ > 0) describeFields();
   finished_ = true;  // complete: a failed rename below keeps the new files under their temporary names
   // Renamed into place only now, every file complete: an earlier result stays whole until here.
-  if (historyPlan_ && historyWritten_) historyPlan_->commit(comm_);
+  if (resultsPlan_ && resultsWritten_) resultsPlan_->commit(comm_);
   if (fieldsPlan_ && snapshots_ > 0) {
     fieldsPlan_->commit(comm_);
     xmfPlan_->commit(comm_);

@@ -34,6 +34,10 @@ static void requireEdgeGrading(const OptionReader& o, const FemParameters& q) {
 }
 
 FemParameters readFemParameters(MPI_Comm comm, RunParameters* record, const Plate& plate) {
+  // One sampling rule for the stored mu(t), a single run's and a sweep's: the friction observer's.
+  refuseRetiredOption("-fem_history_every",
+                      "removed: the stored mu(t) is the friction observer's history, as in a FEM sweep; its sampling "
+                      "is -friction_history_interval <seconds> (default t_load / 1000)");
   OptionReader o(comm, "fem_", "Finite-element plate model (3D, explicit)", record);
   FemParameters q(plate);  // the defaults, derived ones included; the options override them
   q.nx = static_cast<int>(o.integer("nx", q.nx, 1, 100000, "1", "hexahedra along x (grading axis)"));
@@ -122,7 +126,6 @@ FemParameters readFemParameters(MPI_Comm comm, RunParameters* record, const Plat
   q.stopWhenKnown = o.flag("stop_when_known", true, "stop once the -friction_observables are known");
   q.partitioner = o.choice("partitioner", q.partitioner, {"metis", "ptscotch", "simple"}, "mesh partitioner");
   q.snapshotTimes = o.realList("snapshot_times", {}, "s", "field snapshot times after the start of sliding");
-  q.historyEvery = static_cast<int>(o.integer("history_every", 1, 1, 1000000000, "1", "record mu(t) every n steps"));
   q.verbose = o.flag("verbose", true, "print progress");
 
   o.requireAtLeast("nx", q.nx, 1);
@@ -164,7 +167,6 @@ FemParameters readFemParameters(MPI_Comm comm, RunParameters* record, const Plat
     throw InputError(o.fullName(largest), std::to_string(value),
                      "a mesh of at most 2e7 hexahedra (nx ny nz = " + formatReal(cells) + ")");
   }
-  o.requireAtLeast("history_every", q.historyEvery, 1);
   o.requireAtLeast("monitor_every", q.monitorEvery, 1);
   o.requireRange("monitor_factor", q.monitorFactor, 1.0, 1e300, ">= 1");
 

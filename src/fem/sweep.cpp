@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <set>
 
 namespace gradfric::fem {
@@ -26,10 +27,14 @@ const std::set<std::string> kRunControl = {"-output",             "-output_overw
                                            "-fem_sweep_abort_after", "-fem_sweep_ranks_per_run", "-fem_verbose"};
 
 // mu(t) samples one run records at most: one at the start of sliding, then one per history
-// interval (at most one per step) up to the longest sliding time; a margin for the last step.
-int historyCapacity(const FemParameters& q) {
-  const double samples = std::floor(q.slideTime / q.measurement.historyInterval) + 4.0;
-  if (samples > 5e7)
+// interval, at most one per step (an interval below the step samples every step), up to the
+// longest sliding time; a margin for the last step.
+int historyCapacity(const FemSweep& s) {
+  const FemParameters& q = s.params;
+  double finest = std::numeric_limits<double>::infinity();  // the smallest step of any point
+  for (int p = 0; p < s.points(); ++p) finest = std::min(finest, chooseTimeStep(s.pointParameters(p), s.pointGrading(p)));
+  const double samples = std::floor(q.slideTime / std::max(q.measurement.historyInterval, finest)) + 4.0;
+  if (!(samples <= 5e7))
     throw InputError("-friction_history_interval", formatReal(q.measurement.historyInterval),
                      "an interval giving at most 5e7 mu(t) samples per run up to -fem_slide_time");
   return static_cast<int>(samples);
@@ -40,7 +45,7 @@ io::EnsembleLayout layoutOf(const FemSweep& s) {
   layout.format = io::kFemSweepFormatName;
   layout.points = s.points();
   layout.realisations = 1;  // the FEM has no random draw: one run per point
-  layout.historyCapacity = historyCapacity(s.params);
+  layout.historyCapacity = historyCapacity(s);
   layout.mapSide = s.params.nx;  // /properties: one column per hexahedron column along x
   // The columns ensemble::writeStatistics writes (the same as the spring-block ensemble's file),
   // and the FEM's own: each point's discretisation error bar (error_estimate.hpp), relative, NaN
@@ -79,6 +84,22 @@ io::SweepTable tableOf(const FemSweep& s) {
       }
   }
   return table;
+}
+
+// The point the sweep lists vary: the base run's grading and angle.
+campaign::SweepPoint basePoint(const FemParameters& params, const Grading& grading) {
+  campaign::SweepPoint base;
+  base.delta = grading.delta;
+  base.property = toString(grading.property);
+  base.profile = toString(grading.profile);
+  base.theta = params.plate.slidingAngle;
+  return base;
+}
+
+// The options into /scene (they define the results) and /run (they steer this run only).
+void splitRecord(const RunParameters& record, FemSweep* s) {
+  for (const io::Attribute& a : io::optionAttributes(record))
+    (kRunControl.count("-" + a.name) ? s->runAttributes : s->sceneAttributes).push_back(a);
 }
 
 }  // namespace
@@ -146,12 +167,7 @@ FemSweep buildFemSweep(MPI_Comm comm, const FemParameters& params, const Grading
     checkMeshFields(g, params);
   }
 
-  campaign::SweepPoint base;
-  base.delta = grading.delta;
-  base.property = toString(grading.property);
-  base.profile = toString(grading.profile);
-  base.theta = params.plate.slidingAngle;
-  s.sweep = campaign::buildSweep(lists, base);
+  s.sweep = campaign::buildSweep(lists, basePoint(params, grading));
   for (const auto& q : s.sweep.points)  // each point's fields, in the ensemble's order
     if (q.fieldSwept) {
       const auto at = std::find(lists.fieldValues.begin(), lists.fieldValues.end(), q.fieldValue);
@@ -162,8 +178,20 @@ FemSweep buildFemSweep(MPI_Comm comm, const FemParameters& params, const Grading
     requireFemRunLength(s.pointParameters(p), s.pointGrading(p), &record);
   s.layout = layoutOf(s);
   s.table = tableOf(s);
-  for (const io::Attribute& a : io::optionAttributes(record))
-    (kRunControl.count("-" + a.name) ? s.runAttributes : s.sceneAttributes).push_back(a);
+  splitRecord(record, &s);
+  return s;
+}
+
+FemSweep oneRunCampaign(const FemParameters& params, const Grading& grading, const RunParameters& record) {
+  FemSweep s;
+  s.params = params;
+  s.baseGrading = grading;
+  s.sweep = campaign::buildSweep(campaign::SweepLists{}, basePoint(params, grading));  // no lists: one point
+  s.output = params.output;
+  s.layout = layoutOf(s);
+  s.layout.format = io::kFemRunFormatName;
+  s.table = tableOf(s);
+  splitRecord(record, &s);
   return s;
 }
 

@@ -300,6 +300,10 @@ void ResultsFile::setRun(const std::vector<Attribute>& attributes, const Provena
   });
 }
 
+void ResultsFile::addGroups(std::uint64_t bytes, const std::function<void(hid_t)>& write) {
+  changeOnRank0(withMetadataRoom(bytes), write);
+}
+
 void ResultsFile::markComplete() {
   changeOnRank0(0, [](hid_t file) { writeIntAttribute(file, "complete", 1); });  // in place: no room needed
 }

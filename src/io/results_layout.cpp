@@ -194,9 +194,9 @@ void writeLayout(hid_t root, const EnsembleLayout& layout, const SweepTable& swe
 void readLayout(hid_t root, EnsembleLayout* layout, SweepTable* sweep) {
   H5Attribute format(GF_H5(H5Aopen(root, "format", H5P_DEFAULT)));
   layout->format = readStringAttribute(format);
-  if (layout->format != kFormatName && layout->format != kFemSweepFormatName)
+  if (layout->format != kFormatName && layout->format != kFemSweepFormatName && layout->format != kFemRunFormatName)
     throw Hdf5Error("not a gradfric ensemble results file (attribute format is not " + std::string(kFormatName) +
-                    " or " + kFemSweepFormatName + ")");
+                    ", " + kFemSweepFormatName + " or " + kFemRunFormatName + ")");
   const int version = readScalarAttribute<int>(root, "format_version", H5T_NATIVE_INT, 0);
   if (version != kFormatVersion)
     throw Hdf5Error("results file format version " + std::to_string(version) + ", this build writes " +

@@ -77,11 +77,19 @@ ResponseGrading gradingOfFemFile(const std::string& option, const std::string& o
   return responseGradingOf(g, number("plate_theta"));
 }
 
+// The group of g in an open file: /fem/pressure_response (format gradfric-fem-run), else the older
+// /pressure_response (gradfric-fem-history files, read as they were). One level at a time: HDF5
+// 1.10 fails on a path through a missing group.
+std::string responseGroup(hid_t file) {
+  const bool current = H5Lexists(file, "fem", H5P_DEFAULT) > 0 && H5Lexists(file, "fem/pressure_response", H5P_DEFAULT) > 0;
+  return current ? kPressureResponseGroup : kOldPressureResponseGroup;
+}
+
 // The top of the loading window gradfric-fem fitted the file's g on (the attribute mu_window of
-// /pressure_response/g), or 0 when the file has none.
-double measuredUpTo(hid_t file) {
+// <group>/g), or 0 when the file has none.
+double measuredUpTo(hid_t file, const std::string& group) {
   double window[2] = {0.0, 0.0};
-  const io::H5Dataset set(H5Dopen2(file, kPressureResponseDataset, H5P_DEFAULT));
+  const io::H5Dataset set(H5Dopen2(file, (group + "/g").c_str(), H5P_DEFAULT));
   if (set.valid() && H5Aexists(set, "mu_window") > 0) {
     const io::H5Attribute a(H5Aopen(set, "mu_window", H5P_DEFAULT));
     const io::H5Space space(H5Aget_space(a));
@@ -90,13 +98,12 @@ double measuredUpTo(hid_t file) {
   return std::isfinite(window[1]) && window[1] > 0.0 ? window[1] : 0.0;
 }
 
-// The node positions along one axis of the file's g (/pressure_response/node_x or node_y, written
-// since results format 3), empty when the file has none.
-std::vector<double> nodePositions(hid_t file, const char* name) {
+// The node positions along one axis of the file's g (<group>/node_x or node_y, written since
+// gradfric-fem-history format 3), empty when the file has none.
+std::vector<double> nodePositions(hid_t file, const std::string& group, const char* name) {
   std::vector<double> nodes;
-  const std::string dataset = std::string("pressure_response/") + name;
-  if (H5Lexists(file, "pressure_response", H5P_DEFAULT) <= 0 || H5Lexists(file, dataset.c_str(), H5P_DEFAULT) <= 0)
-    return nodes;
+  const std::string dataset = group + "/" + name;
+  if (H5Lexists(file, dataset.c_str(), H5P_DEFAULT) <= 0) return nodes;
   const io::H5Dataset set(H5Dopen2(file, dataset.c_str(), H5P_DEFAULT));
   if (!set.valid()) return nodes;
   const hssize_t n = H5Sget_simple_extent_npoints(io::H5Space(H5Dget_space(set)));
@@ -126,10 +133,11 @@ ResponseFile readResponseFile(const std::string& option, const std::string& path
   const io::Hdf5PrintingOff quiet;  // missing node positions or window are not errors
   const io::H5File file = openHdf5Map(option, path);
   ResponseFile r;
-  r.map = readHdf5Map(option, path, file, kPressureResponseDataset, "written by gradfric-fem -output");
-  r.nodeX = nodePositions(file, "node_x");
-  r.nodeY = nodePositions(file, "node_y");
-  r.measuredUpTo = measuredUpTo(file);
+  const std::string group = responseGroup(file);
+  r.map = readHdf5Map(option, path, file, group + "/g", "written by gradfric-fem -output");
+  r.nodeX = nodePositions(file, group, "node_x");
+  r.nodeY = nodePositions(file, group, "node_y");
+  r.measuredUpTo = measuredUpTo(file, group);
   if (withScene) readSceneRecord(file, &r);
   return r;
 }
@@ -187,7 +195,7 @@ PressureResponse readPressureResponse(MPI_Comm comm, RunParameters* record, cons
                                            formatReal(kDefaultEdgeOverThickness) + " H");
   const std::string file =
       o.path("response_file", "",
-             "fem: gradfric-fem results file(s) whose /pressure_response/g is the shape g (comma-separated with "
+             "fem: gradfric-fem results file(s) whose /fem/pressure_response/g is the shape g (comma-separated with "
              "-pressure_response_select grading; in an options file: from its folder)", true);
   const std::string select =
       o.choice("response_select", "same", {"same", "grading"},

@@ -40,7 +40,8 @@ $python "$source_dir/tests/calibration/check_calibration.py" fem.h5 verify.h5 fi
 $python - <<'PY' || fail "could not write the CSV and HDF5 references"
 import h5py, numpy as np
 with h5py.File("fem.h5", "r") as f:
-    t, mu = f["history/time"][:], f["history/mu"][:]
+    n = int(f["history/length"][0, 0])  # the one run of a gradfric-fem results file
+    t, mu = f["history/time"][0, 0, :n], f["history/mu"][0, 0, :n]
 np.savetxt("fem.csv", np.column_stack([t, mu]), delimiter=",", header="t,mu", comments="")
 with h5py.File("plain.h5", "w") as g:
     g["t"], g["curves/mu"] = t, mu
@@ -65,7 +66,7 @@ bad() {  # name, ranks, regex, options...
   grep -Eq "$regex" "$name.err" || fail "$name: message does not match $regex: $(cat "$name.err")"
   ! ls "$name".opts* >/dev/null 2>&1 || fail "$name: a file was written"
 }
-bad no_reference 1 "invalid option -calibrate_reference = \(not set\): allowed a gradfric-fem history" "${fit[@]}"
+bad no_reference 1 "invalid option -calibrate_reference = \(not set\): allowed a gradfric-fem results file" "${fit[@]}"
 bad missing 2 "invalid option -calibrate_reference = nothing.h5: allowed a readable HDF5 file" -calibrate_reference nothing.h5
 bad bad_csv 1 "invalid option -calibrate_reference = bad.csv: allowed a CSV file with columns t, mu \(line 3" -calibrate_reference bad.csv
 bad no_dataset 1 "invalid option -calibrate_reference = plain.h5: allowed a file with the dataset history/time" -calibrate_reference plain.h5

@@ -24,8 +24,9 @@ def main(fem_path, sbm_path, scene_path):
     problems = []
     options = dict(line.split()[:2] for line in open(scene_path) if line.startswith("-"))
     with h5py.File(fem_path, "r") as f:
-        t, mu = f["history/time"][:], f["history/mu"][:]
-        peak, peak_time = f["results"].attrs["mu_s"], f["results"].attrs["peak_time"]
+        n = int(f["history/length"][0, 0])  # the one run of a gradfric-fem results file
+        t, mu = f["history/time"][0, 0, :n], f["history/mu"][0, 0, :n]
+        peak, peak_time = f["realisations/mu_s"][0, 0], f["realisations/peak_time"][0, 0]
         scene = {k: float(v) for k, v in f["scene"].attrs.items() if k in ("plate_E", "plate_nu", "plate_v", "plate_p")}
     reference = slope(t, mu, peak, peak_time)
     with h5py.File(sbm_path, "r") as s:

@@ -83,18 +83,19 @@ if abs(float(line.group(2)) - 100 * bar) > 0.006:
 if not re.search(r"mu_k \(kinetic window\) +\S+ \(discretisation error not measured: ", out):
     fail("studied mesh: mu_k without its 'not measured'", out)
 with h5py.File(path, "r") as f:
-    results = f["results"].attrs
-    if abs(results["mu_s"] - float(line.group(1))) > 1e-6:
-        fail("stored mu_s %r differs from the printed %s" % (results["mu_s"], line.group(1)))
-    if abs(results["mu_s_discretisation_error"] - bar) > 1e-9:
-        fail("stored mu_s_discretisation_error %r, expected %r" % (results["mu_s_discretisation_error"], bar))
+    results = f["fem/results"].attrs  # the basis; the bars are /statistics columns, as in a sweep
+    stored_mu_s, stored_bar = f["realisations/mu_s"][0, 0], f["statistics/mu_s_discretisation_error"][0]
+    if abs(stored_mu_s - float(line.group(1))) > 1e-6:
+        fail("stored mu_s %r differs from the printed %s" % (stored_mu_s, line.group(1)))
+    if abs(stored_bar - bar) > 1e-9:
+        fail("stored mu_s_discretisation_error %r, expected %r" % (stored_bar, bar))
     basis = results["mu_s_error_basis"]
     basis = basis.decode() if isinstance(basis, bytes) else str(basis)
     if not basis.startswith("mesh ") or "50x50x5/100x100x10/200x200x20, all directions" not in basis:
         fail("stored mu_s_error_basis %r" % basis)
-    if not math.isnan(results["mu_k_discretisation_error"]):
+    if not math.isnan(f["statistics/mu_k_discretisation_error"][0]):
         fail("stored mu_k_discretisation_error is not NaN")
-    if f["results/units"].attrs["mu_s_discretisation_error"] not in (b"1", "1"):
+    if f["statistics/mu_s_discretisation_error"].attrs["units"] not in (b"1", "1"):
         fail("mu_s_discretisation_error without its unit")
 
 # The same mesh graded (friction -0.2): its ladder refined in every direction does not converge
@@ -105,7 +106,7 @@ if not re.search(r"mu_s \(global\) +[0-9.]+ \(discretisation error not measured:
                  r"50x50x5/100x100x10/200x200x20, all directions \(run 50x50x5\) give 0\.809636, 0\.806982, 0\.799410", out):
     fail("graded studied mesh: no 'not measured' naming the ladder that does not converge next to mu_s", out)
 with h5py.File(path, "r") as f:
-    if not math.isnan(f["results"].attrs["mu_s_discretisation_error"]):
+    if not math.isnan(f["statistics/mu_s_discretisation_error"][0]):
         fail("graded studied mesh: stored error is not NaN")
 
 out, path = run((6, 6, 2), [], "unstudied")
@@ -114,8 +115,8 @@ if not re.search(r"mu_s \(global\) +[0-9.]+ \(discretisation error not measured:
                  out):
     fail("unstudied mesh: no 'not measured' next to mu_s", out)
 with h5py.File(path, "r") as f:
-    results = f["results"].attrs
-    if not math.isnan(results["mu_s_discretisation_error"]):
+    results = f["fem/results"].attrs
+    if not math.isnan(f["statistics/mu_s_discretisation_error"][0]):
         fail("unstudied mesh: stored error is not NaN")
     basis = results["mu_s_error_basis"]
     basis = basis.decode() if isinstance(basis, bytes) else str(basis)

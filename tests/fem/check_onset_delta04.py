@@ -26,15 +26,15 @@ def run(law):
     path = os.path.join(folder, law + ".h5")
     command = ["mpiexec", "--oversubscribe", "-n", "2", driver, "-plate_L", "2.5e-3", "-fem_nx", "50", "-fem_ny", "50",
                "-fem_nz", "5", "-grading_profile", "linear", "-grading_property", "friction", "-grading_delta", "0.4",
-               "-friction_law", law, "-fem_verbose", "false", "-output", path]
+               "-friction_law", law, "-fem_verbose", "false", "-output", path,
+               "-friction_history_interval", "1e-12"]  # below the step: every step's mu(t) stored
     r = subprocess.run(command, env=env, capture_output=True, text=True)
     if r.returncode != 0:
         sys.exit("run failed (%d): %s\n%s" % (r.returncode, " ".join(command), r.stdout + r.stderr))
     with h5py.File(path, "r") as f:
-        results = f["results"].attrs
-        assert results["peak_confirmed"] == 1 and results["kinetic_window_complete"] == 1, law
-        mu = f["history/mu"][:]
-        return float(results["mu_s"]), float(results["mu_k"]), float(mu.max())
+        assert f["realisations/peak_confirmed"][0, 0] == 1 and f["fem/results"].attrs["kinetic_window_complete"] == 1, law
+        mu = f["history/mu"][0, 0, :int(f["history/length"][0, 0])]
+        return float(f["realisations/mu_s"][0, 0]), float(f["realisations/mu_k"][0, 0]), float(mu.max())
 
 
 mu_s, mu_k, largest = run("state")

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# gradfric-fem when the disk fills, on 2 ranks: the history file, the snapshots and the FEM
+# gradfric-fem when the disk fills, on 2 ranks: the results file, the snapshots and the FEM
 # sweep's file each end the run with exit 1 and one message naming the file and the system's
 # reason, on every rank (no crash, no MPI_ABORT, no hang), leave no file under the final name and
 # no temporary, and leave an earlier result (-output_overwrite) byte for byte as it was.
@@ -14,7 +14,7 @@ cleanup() { [ -n "$mounted" ] && umount "$mounted" 2>/dev/null; }
 trap cleanup EXIT
 rm -rf "$scratch"; mkdir -p "$scratch/disk"; cd "$scratch"
 fail() { echo "FAILED: $*" >&2; exit 1; }
-scene=(-options_file "$source_dir/input/fem_fig2_H050_coarse.opts" -fem_history_every 50)
+scene=(-options_file "$source_dir/input/fem_fig2_H050_coarse.opts")
 limit=""  # KiB of RLIMIT_FSIZE when no tmpfs can be mounted
 # disk <KiB>: an empty disk of that size at ./disk.
 disk() {

@@ -159,20 +159,25 @@ fem_out = "-output"
 run(fem, "-field_mu_profile", "step", "-field_mu_position", "3e-3", "-field_mu_delta", "0.2", "-fem_nx", "8",
     "-fem_ny", "6", "-fem_nz", "1", "-friction_observables", "mu_s", fem_out, path("fem.h5"))
 with gradfric.open(path("fem.h5")) as ds, h5py.File(path("fem.h5"), "r") as f:
-    expect_dims(ds, {"time": len(f["history/time"]), "x": 8, "y": 6, "node_x": 9, "node_y": 7})
-    assert ds.attrs["format"] == "gradfric-fem-history" and ds["mu"].dims == ("time",) and ds["time"].attrs["units"] == "s"
-    # /properties holds the physics' values (format 4): mu per bottom node, on node_x.
-    assert same(ds["time"], f["history/time"][:]) and ds["properties_mu_s"].dims == ("node_x",)
-    assert ds["properties_E"].dims == ("x",)
-    assert ds["fields_mu_s_map"].dims == ("y", "x") and ds["pressure_response_g"].dims == ("node_y", "node_x")
-    assert np.allclose(ds["node_x"], np.linspace(0, 0.005, 9)) and np.allclose(ds["y"], (np.arange(6) + 0.5) * 0.005 / 6)
-    mu_map = ds["fields_mu_s_map"]  # the step at x = 3 mm: 1 - D before, 1 + D beyond, every row alike
-    assert np.allclose(mu_map.where(mu_map["x"] < 3e-3, drop=True), 0.8) and np.allclose(mu_map.where(mu_map["x"] > 3e-3, drop=True), 1.2)
-    assert ds["mu_s"].dims == () and float(ds["mu_s"]) == f["results"].attrs["mu_s"] and ds["peak_time"].attrs["units"] == "s"
-    assert isinstance(ds["mu_s_error_basis"].item(), str) and ds["steps"].attrs["units"] == "1"
+    # The campaign layout of one point, one realisation (as a FEM sweep's), plus the /fem extras.
+    expect_dims(ds, {"point": 1, "realisation": 1, "sample": f.attrs["history_capacity"], "block_row": 8,
+                     "block_column": 8, "cell_x": 8, "cell_y": 6, "node_x": 9, "node_y": 7})
+    assert ds.attrs["format"] == "gradfric-fem-run" and ds["mu"].dims == ("point", "realisation", "sample")
+    assert ds["time"].attrs["units"] == "s" and ds.attrs["fem_format_version"] == 5
+    # /fem/properties holds the physics' values: mu per bottom node, on node_x.
+    assert ds["fem_properties_mu_s"].dims == ("node_x",) and ds["fem_properties_E"].dims == ("cell_x",)
+    assert ds["fem_fields_mu_s_map"].dims == ("cell_y", "cell_x") and ds["pressure_response_g"].dims == ("node_y", "node_x")
+    assert ds["normal_force"].dims == ("point", "realisation", "sample")
+    assert np.allclose(ds["node_x"], np.linspace(0, 0.005, 9)) and np.allclose(ds["cell_y"], (np.arange(6) + 0.5) * 0.005 / 6)
+    mu_map = ds["fem_fields_mu_s_map"]  # the step at x = 3 mm: 1 - D before, 1 + D beyond, every row alike
+    assert np.allclose(mu_map.where(mu_map["cell_x"] < 3e-3, drop=True), 0.8)
+    assert np.allclose(mu_map.where(mu_map["cell_x"] > 3e-3, drop=True), 1.2)
+    assert ds["mu_s"].dims == ("point", "realisation") and float(ds["mu_s"][0, 0]) == f["realisations/mu_s"][0, 0]
+    assert ds["first_slip_time"].attrs["units"] == "s" and ds["mu_s_discretisation_error"].dims == ("point",)
+    assert isinstance(ds["mu_s_error_basis"].item(), str) and ds["dt"].attrs["units"] == "s"
     assert ds.attrs["field_mu_profile"] == "step" and ds.attrs["plate_L"] == "0.005"
     check_provenance(ds, 2)
-    assert check_against_file(ds, path("fem.h5")) >= 30
+    assert check_against_file(ds, path("fem.h5")) >= 40
 
 # 3. A FEM sweep: the ensemble's layout, one run per point.
 run(fem, "-grading_profile", "linear", "-grading_property", "friction", "-ensemble_delta", "0,0.2", "-fem_nx", "6",
@@ -243,7 +248,7 @@ with gradfric.open(path("fit.csv")) as ds:
     assert same(ds["time"], table["t"]) and same(ds["mu_sbm_mean"], table["mu_sbm_mean"]) and ds["time"].attrs["units"] == "s"
     assert np.isclose(float(ds["lz"]), float(options["-sbm_lz"]), rtol=1e-6) and ds["lz"].attrs["units"] == "m"
     assert np.isclose(float(ds["sigma"]), float(options["-sbm_sigma_s"]), rtol=1e-5) and ds.attrs["status"] == "converged"
-    assert ds.attrs["sbm_N"] == "20" and ds.attrs["reference_kind"] == "gradfric-fem history"
+    assert ds.attrs["sbm_N"] == "20" and ds.attrs["reference_kind"] == "gradfric-fem run"
 with gradfric.open(path("fit.opts")) as ds:
     assert ds.attrs["format"] == "gradfric-calibration-scene" and float(ds["reference_peak"]) > 0.5
     assert ds.attrs["ensemble_realisations"] == "16" and ds["lz_ci95_half_width"].attrs["units"] == "m"

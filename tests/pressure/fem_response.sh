@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The FEM-written pressure response on a reduced mesh (10 x 10 x 2, 2 ranks): /pressure_response/g
+# The FEM-written pressure response on a reduced mesh (10 x 10 x 2, 2 ranks): /fem/pressure_response/g
 # is a map on the node grid with the extent of a property-field map, its area-weighted mean is
 # zero (the total normal force holds) and its first moment along the sliding direction is H (the
 # moment balance), recomputed here from the map itself; the leading edge gains, the trailing edge
@@ -21,13 +21,13 @@ fi
 import sys
 import h5py, numpy as np
 with h5py.File(sys.argv[1], "r") as f:
-    d = f["/pressure_response/g"]
+    d = f["/fem/pressure_response/g"]
     g = d[...]
     x0, x1, y0, y1 = d.attrs["extent"]
     mean_attr, moment_attr = float(d.attrs["mean"]), float(d.attrs["moment_over_H"])
     window = d.attrs["mu_window"]
     samples = int(d.attrs["samples"])
-    mu_s = float(f["/results"].attrs["mu_s"])
+    mu_s = float(f["/realisations/mu_s"][0, 0])
 L, H = 5e-3, 5e-5
 ok = True
 def check(cond, what):
@@ -59,6 +59,6 @@ if ! timeout 300 "$sbm" -sbm_N 16 -ensemble_realisations 1 -pressure_response fe
     -output "$scratch/sbm.h5" -output_overwrite > "$log" 2>&1; then
   echo "FAIL: gradfric -pressure_response fem exited with $?"; cat "$log"; exit 1
 fi
-grep -q "g measured by gradfric-fem ($run:/pressure_response/g)" "$log" || { echo "FAIL: effect not printed"; cat "$log"; exit 1; }
+grep -q "g measured by gradfric-fem ($run:/fem/pressure_response/g)" "$log" || { echo "FAIL: effect not printed"; cat "$log"; exit 1; }
 grep -q "ended at or before the first slip under the rising load" "$log" || { echo "FAIL: quiet-phase effect not printed"; exit 1; }
 echo "pressure response written by the FEM and read by the SBM"

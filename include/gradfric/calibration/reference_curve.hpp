@@ -1,6 +1,7 @@
 #pragma once
-// The curve a calibration fits: mu(t) from the start of sliding, read from a gradfric-fem history
-// file (its /history/time and /history/mu, its own mu_s and peak time, its /scene), any HDF5 file
+// The curve a calibration fits: mu(t) from the start of sliding, read from a gradfric-fem results
+// file (the stored history of its one run, its own mu_s and peak time, its /scene; also the older
+// gradfric-fem-history files), any HDF5 file
 // with two 1D datasets (time [s], mu), or a CSV file with columns t, mu. Rank 0 reads; every rank
 // gets the same curve or the same InputError (exit 2) naming the option and what is wrong.
 #include "gradfric/calibration/loading_curve.hpp"
@@ -21,9 +22,9 @@ struct ReferenceSource {
 };
 
 struct ReferenceCurve {
-  std::string kind;  // "gradfric-fem history", "HDF5 datasets", "CSV"
+  std::string kind;  // "gradfric-fem run", "gradfric-fem history", "HDF5 datasets", "CSV"
   std::vector<double> time, mu;
-  double peak = LoadingFeatures::kNaN;      // the FEM's own mu_s (/results), else NaN
+  double peak = LoadingFeatures::kNaN;      // the FEM's own mu_s (/realisations/mu_s), else NaN
   double peakTime = LoadingFeatures::kNaN;  // its peak time
   std::map<std::string, std::string> scene;  // a gradfric-fem file's /scene attributes (else empty)
 };

@@ -1,9 +1,12 @@
 #pragma once
-// Output of the FEM driver.
-//  <output>              HDF5, rank 0: /history/{time,mu,normal_force} of step 2 and the run's scalars
-//                        (mu_s, mu_k, peak_time, eq2_peak_time, ...) and parameters as attributes;
-//                        /pressure_response/g, the change of the bottom contact pressure per unit of
-//                        mu over the loading phase, a map the SBM reads (pressure_response_recorder.hpp).
+// Output of the FEM driver (docs/fem.md, "Output").
+//  <output>              parallel HDF5: the campaign layout of a one-point, one-realisation FEM
+//                        sweep (io/results_file.hpp, format gradfric-fem-run): /realisations
+//                        (mu_s, mu_k, peak_time, ...), /history (the friction observer's mu(t),
+//                        sampled every -friction_history_interval), /statistics, /sweep,
+//                        /properties, /scene, /run; plus the run's FEM extras under /fem
+//                        (run_extras.hpp): its scalars, the normal force, the physics' property
+//                        values, the field maps and /fem/pressure_response/g, the map the SBM reads.
 //  <stem>_fields.h5/.xmf field snapshots in PETSc's HDF5 VIZ layout (ParaView opens the .xmf):
 //                        /vertex_fields/state_displacement, state_velocity, bottom_contact (contact
 //                        pressure, t_x, t_y, state 0 open 1 stick 2 slip), /cell_fields/cell_stress
@@ -37,7 +40,10 @@ public:
   // (empty without an output file). Collective.
   StepObserver snapshotObserver(PlateModel& model);
   void writeSnapshot(PlateModel& model, Vec state, double tSliding);
-  void writeHistory(const PlateModel& model, const FemRunResult& result, const RunParameters& record);
+  // Collective: the results file, complete, under its temporary name (renamed in finish()). scene:
+  // the options as read (a sweep's /scene), record: with what the run derived since (/fem/derived).
+  void writeResults(const PlateModel& model, const FemRunResult& result, const RunParameters& scene,
+                    const RunParameters& record);
   // Collective: closes the fields file, writes the .xmf, renames temporaries into place.
   void finish();
 
@@ -54,9 +60,9 @@ private:
   int snapshots_ = 0;
   PetscViewer viewer_ = nullptr;
   DM contactDM_ = nullptr, stressDM_ = nullptr;
-  bool historyWritten_ = false, finished_ = false;
+  bool resultsWritten_ = false, finished_ = false;
   std::unique_ptr<PressureResponseRecorder> pressureResponse_;  // with an output file
-  std::optional<io::OutputPlan> historyPlan_, fieldsPlan_, xmfPlan_;  // where each file goes
+  std::optional<io::OutputPlan> resultsPlan_, fieldsPlan_, xmfPlan_;  // where each file goes
 };
 
 }  // namespace gradfric::fem

@@ -137,7 +137,6 @@ struct FemRequest {
 struct FemOutput {
   std::string output;  // "" = no output file
   bool overwrite = false;
-  int historyEvery = 1;
   bool verbose = true;
 };
 

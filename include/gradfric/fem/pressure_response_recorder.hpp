@@ -5,7 +5,7 @@
 // loading phase. Only the loading branch is sampled (steps where mu(t) reaches a new maximum: no
 // sample after the peak); the samples are kept in bins of mu (width kBinWidth) so that the window
 // 0.2 mu_s ... 0.8 mu_s (bins whose centre lies inside it) can be chosen once mu_s is known.
-// Written by OutputFiles into the results file as /pressure_response/g, [ny+1][nx+1] on the node
+// Written by OutputFiles into the results file as /fem/pressure_response/g, [ny+1][nx+1] on the node
 // grid, with the `extent` of a property-field map (pixel centres on the nodes): the SBM reads it
 // with -pressure_response fem -pressure_response_file run.h5.
 #include "gradfric/fem/plate_model.hpp"

@@ -50,6 +50,11 @@ struct FemSweep : campaign::Campaign {
 FemSweep buildFemSweep(MPI_Comm comm, const FemParameters& params, const Grading& grading,
                        const SweepOptions& options, bool compareSbm, const RunParameters& record);
 
+// The campaign record of one run (gradfric-fem without a sweep): the sweep's one point, its
+// layout named io::kFemRunFormatName, /scene and /run split as a sweep splits them. The results
+// file of a single run is this campaign's file plus the run's FEM extras (output.hpp).
+FemSweep oneRunCampaign(const FemParameters& params, const Grading& grading, const RunParameters& record);
+
 // Collective over comm: plans the file, runs every pending point on the groups, writes the
 // statistics, renames the file into place and prints the table.
 void runFemSweep(MPI_Comm comm, const FemSweep& sweep, const RunParameters& record);

@@ -32,6 +32,10 @@ inline constexpr int kFormatVersion = 3;
 inline constexpr const char* kFormatName = "gradfric-sbm-ensemble";
 // The same layout filled by a sweep of finite-element runs (gradfric-fem, one run per point).
 inline constexpr const char* kFemSweepFormatName = "gradfric-fem-sweep";
+// The same layout filled by one finite-element run (gradfric-fem without a sweep): one point, one
+// realisation, with the run's FEM extras under /fem (docs/fem.md). Its own name: a single run is
+// not resumed or extended as a sweep.
+inline constexpr const char* kFemRunFormatName = "gradfric-fem-run";
 
 // A per-point column of /statistics: real (float64, NaN until written) or integer (int32), with
 // its units, description and further text attributes (`interval`, `basis`).
@@ -140,6 +144,9 @@ public:
   void setProvenance(const Provenance& provenance);
   // Collective: both of the above with one close and reopen of the file.
   void setRun(const std::vector<Attribute>& attributes, const Provenance& provenance);
+  // Collective: rank 0 adds a model's own groups to the closed file (write gets the file), in
+  // `bytes` of room reserved first; a failure is the same CollectiveError on every rank.
+  void addGroups(std::uint64_t bytes, const std::function<void(hid_t file)>& write);
   // Collective: sets the root attribute complete = 1.
   void markComplete();
   // Collective: the same, leaving the file closed (the end of a run: no reopening to close again).

@@ -10,7 +10,7 @@
 //    plate's centre) with an exponential edge concentration of decay length lambda at the
 //    leading and trailing edges; or
 //  - an FEM run's measurement: the change of the bottom nodal pressure per unit of mu, read as a
-//    map (the gradfric-fem results file, /pressure_response/g) and sampled bilinearly at the
+//    map (the gradfric-fem results file, /fem/pressure_response/g) and sampled bilinearly at the
 //    block centres, then its weighted mean removed (its moment is what the FEM measured).
 // Pure arithmetic, no PETSc (the options: pressure_response_options.hpp).
 #include "gradfric/physics/field.hpp"

@@ -2,7 +2,7 @@
 // The -pressure_response options of the spring-block model (physics/pressure_response.hpp):
 //   -pressure_response none|moment|fem     the shape g of p_i(t) = p_i^0 (1 + mu(t) g_i)
 //   -pressure_response_edge <m>            moment: decay length of the edge concentration
-//   -pressure_response_file <run.h5>       fem: a gradfric-fem results file (/pressure_response/g),
+//   -pressure_response_file <run.h5>       fem: a gradfric-fem results file (/fem/pressure_response/g),
 //                                          or several, comma-separated, with
 //   -pressure_response_select same|grading fem: one g for every sweep point, or per point the file
 //                                          whose FEM run had the point's grading (its /scene record)
@@ -13,8 +13,10 @@
 
 namespace gradfric {
 
-// The dataset gradfric-fem writes and the SBM reads.
-inline constexpr const char* kPressureResponseDataset = "/pressure_response/g";
+// The group of g gradfric-fem writes and the SBM reads: /fem/pressure_response in a results file
+// of format gradfric-fem-run, /pressure_response in the older gradfric-fem-history files.
+inline constexpr const char* kPressureResponseGroup = "/fem/pressure_response";
+inline constexpr const char* kOldPressureResponseGroup = "/pressure_response";
 
 // The default decay length of the moment-balance shape, in units of the plate thickness H
 // (the FEM-measured g of the paper mesh on 120 x 120 blocks is fitted best by 0.48 H; docs/fields.md).
