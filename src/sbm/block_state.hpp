@@ -2,7 +2,7 @@
 // Private to the fast spring-block kernel: the per-block state of a law that keeps one (the state
 // law; reference_lattice.hpp states the rule). Each block's theta is advanced once per step, at
 // its start t_n, from its displacement increment over the step that ended, with the law's own
-// functions in the reference kernel's order (the slip as std::hypot of the increment,
+// functions in the reference kernel's order (the slip of the increment, slipOf, then
 // evolveBySlip, strengthBetween) and committed at once (a block's update reads only its own
 // state). The strength at the new state is the block's static threshold and sliding force.
 //
@@ -25,7 +25,7 @@ namespace gradfric::sbm {
 template <class Law>
 GF_ALWAYS_INLINE double advanceBlockState(const Law& law, double dt, double decay, double s, double k, double ux,
                                           double uy, double& startX, double& startY, double& theta) {
-  const double slip = std::hypot(ux - startX, uy - startY);
+  const double slip = slipOf(ux - startX, uy - startY);
   startX = ux;
   startY = uy;
   theta = law.evolveBySlip(theta, slip, dt, decay);

@@ -43,10 +43,10 @@ private:
 std::vector<double> asVector(const double* data, std::size_t n) { return std::vector<double>(data, data + n); }
 std::vector<double> asVector(std::vector<double> data, std::size_t) { return data; }
 
-// What the state law costs on the reference kernel, as measured (bench_sbm_kernel, docs/model.md).
+// What the state law costs on the fast kernel, as measured (bench_sbm_kernel 60, docs/model.md).
 const char* const kStateLawCost =
-    "per block-step about 4x the exponential law on the fast kernel (1.6x on the reference kernel); "
-    "a 60 x 60 realisation about 5x";
+    "per block-step about 1.6x the exponential law (2.2x faster than on the reference kernel); "
+    "a 60 x 60 realisation about 1.9x";
 
 std::string likelyCause(const Parameters& p, double stable) {
   std::ostringstream m;

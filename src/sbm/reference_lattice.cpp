@@ -38,7 +38,7 @@ template <class Law>
 void ReferenceLattice<Law>::advanceStates() {
   if constexpr (hasBlockState<Law>) {
     for (std::size_t i = 0; i < blocks_.size(); ++i) {
-      const double slip = std::hypot(blocks_[i].ux - startX_[i], blocks_[i].uy - startY_[i]);
+      const double slip = slipOf(blocks_[i].ux - startX_[i], blocks_[i].uy - startY_[i]);
       strength_[i] = law_.advance(int(i), slip, motion_.timeStep);
       startX_[i] = blocks_[i].ux;
       startY_[i] = blocks_[i].uy;

@@ -10,10 +10,11 @@
 //    re-slips): the stateless standard over the whole history;
 //  - graded and dispersed plates: the stateless standard from t = 0 through kOnsetSteps steps past
 //    the first slip; after it mu_s and mu_k to kChaoticSpread, the spread the amplified round-off
-//    leaves (measured at most 1.0e-3 on these plates);
+//    leaves (measured at most 1.0e-3 on these plates); the same under the load-dependent pressure;
 //  - the state itself: every block's theta is, bit for bit at every step, the reference kernel's
 //    update (StateWeakening::advance, then commit) applied to the fast kernel's own slips, through
 //    the quiet-phase jump, the active set and its held tiles.
+#include "gradfric/physics/pressure_response.hpp"
 #include "gradfric/sbm/integrator.hpp"
 #include "gradfric/sbm/lattice.hpp"
 #include "gradfric/sbm/reference_lattice.hpp"
@@ -155,7 +156,7 @@ TEST(StateKernels, EveryStateIsTheReferenceUpdateOfTheBlocksOwnSlipBitForBit) {
     for (std::int64_t n = 0; n < steps; ++n) {
       for (std::size_t i = 0; i < blocks; ++i) {  // the slip of the step that ended at t_n
         const double x = fast.displacementX()[i], y = fast.displacementY()[i];
-        shadow.advance(int(i), std::hypot(x - previousX[i], y - previousY[i]), p.timeStep);
+        shadow.advance(int(i), slipOf(x - previousX[i], y - previousY[i]), p.timeStep);
         healed += x == previousX[i] && y == previousY[i] && shadow.state[i] > 0;
         previousX[i] = x;
         previousY[i] = y;
@@ -171,4 +172,27 @@ TEST(StateKernels, EveryStateIsTheReferenceUpdateOfTheBlocksOwnSlipBitForBit) {
       EXPECT_GT(fast.heldTileSteps(), 0);
     }
   }
+}
+
+TEST(StateKernels, UnderTheLoadDependentPressure) {
+  // The moment-balance pressure rescales the strengths every step (no quiet-phase jump, no held
+  // tiles): both kernels keep its balances, and agree as above.
+  const Grading g = graded(GradedProperty::Friction, 0.3);
+  Parameters p = stateLawPlate(12, 0.028, g, Integrator::VelocityVerlet, 2.5e-8);
+  p.pressureResponse.source = PressureResponseSource::MomentBalance;
+  p.pressureResponse.edgeLength = p.plate.thickness;
+  const Request q = sbm::testing::defaultRequest(p);
+  const Result fast = simulate(p, g, q, {11, 0, 3}, Kernel::Fast);
+  const Result plain = simulate(p, g, q, {11, 0, 3}, Kernel::Reference);
+  for (const Result* r : {&fast, &plain}) {
+    const PressureCouplingRecord& c = r->pressureCoupling;
+    ASSERT_TRUE(c.active);
+    EXPECT_GT(c.updates, r->steps / 2);
+    EXPECT_LT(c.largestForceError, 1e-13);
+    EXPECT_LT(c.largestMomentError, 1e-12);
+  }
+  EXPECT_EQ(fast.friction.firstSlipTime, plain.friction.firstSlipTime);
+  expectSameHistory(fast, plain, plain.friction.firstSlipTime + kOnsetSteps * p.timeStep, "pressure");
+  EXPECT_NEAR(fast.friction.muStatic, plain.friction.muStatic, kChaoticSpread);
+  EXPECT_NEAR(fast.friction.muKinetic, plain.friction.muKinetic, kChaoticSpread);
 }

@@ -71,6 +71,11 @@ GF_STATE_FRICTION_LAWS(GF_SBM_BLOCK_STATE)
 template <class Law>
 constexpr bool hasBlockState = HasBlockState<Law>::value;
 
+// A block's slip over a step from its displacement increment (dx, dy), as both kernels advance a
+// per-block state from it (no std::hypot: its care for overflow costs a tenth of the fast
+// kernel's state-law step, and increments of at most microns cannot overflow).
+inline double slipOf(double dx, double dy) { return std::sqrt(dx * dx + dy * dy); }
+
 // The static test of a block at rest against its threshold: the law's own, or with a per-block
 // state the shared rule applied to the block's current strength.
 template <class Law>
