@@ -59,7 +59,8 @@ FastLattice<Law>::FastLattice(const LatticeStiffness& stiffness, Law law, const 
     for (std::size_t i = 0; i < n; ++i) strength_.push_back(law_.strengthAt(int(i), law_.state[i]));
     // The quiet phase ends when the first block no longer holds at its strength at theta = 0; not
     // with strengths a caller changes between steps (as the reference kernel).
-    if (motion_.skipIdle && motion_.fixedStrengths) quietUntil_ = firstSlipStepAtRestPerBlock(stiffness_, strength_, motion_, kNever);
+    if (motion_.skipIdle && motion_.fixedStrengths)
+      quietUntil_ = firstSlipStepAtRestPerBlock(stiffness_, strength_, motion_, kNever);
   } else if (motion_.skipIdle) {
     quietUntil_ = firstSlipStepAtRest(stiffness_, law_, motion_, kNever);
   }

@@ -57,9 +57,8 @@ struct VerletRow {
 // friction, with a per-block state its advance (block_state.hpp: the threshold and the sliding
 // force are then the block's strength), the stick/slip decision at t_n (as blends: a stuck block
 // that the threshold does not hold starts to slip, a reversed one that it holds re-sticks at zero
-// velocity), this step's
-// friction vector, the open kick and the drift (v_{n+1/2} = v_n + h/2 a_n, u_{n+1} = u_n + h
-// v_{n+1/2}), for the columns c0 <= c < c1. Returns whether one of those blocks started to slip
+// velocity), this step's friction vector, the open kick and the drift (v_{n+1/2} = v_n + h/2
+// a_n, u_{n+1} = u_n + h v_{n+1/2}), for the columns c0 <= c < c1. Returns whether one of those blocks started to slip
 // (the caller looks for first slips).
 template <class Law, SiteLayout L, bool Graded, bool Above>
 GF_ALWAYS_INLINE bool fusedVerletRow(const Law& law, int c0, int c1, double drivenX, double drivenY, double half,
@@ -207,22 +206,22 @@ GF_ALWAYS_INLINE VerletRow FastLattice<Law>::verletRow(int r, const RowPieces& p
   const int base = r * nb_;
   const int sites = L == SiteLayout::PerSite ? base : 0;
   VerletRow row{stiffness_.row(r).slider,
-                   carryX_.data(),
-                   carryY_.data(),
-                   pieces,
-                   nextX_.data(),
-                   nextY_.data(),
-                   sliderRowX_.data(),
-                   sliderRowY_.data(),
-                   law_.sites.staticStrength.data() + sites,
-                   law_.sites.kineticStrength.data() + sites,
-                   mobile_.data() + base,
-                   vx_.data() + base,
-                   vy_.data() + base,
-                   ux_.data() + base,
-                   uy_.data() + base,
-                   frictionX_.data() + base,
-                   frictionY_.data() + base};
+                carryX_.data(),
+                carryY_.data(),
+                pieces,
+                nextX_.data(),
+                nextY_.data(),
+                sliderRowX_.data(),
+                sliderRowY_.data(),
+                law_.sites.staticStrength.data() + sites,
+                law_.sites.kineticStrength.data() + sites,
+                mobile_.data() + base,
+                vx_.data() + base,
+                vy_.data() + base,
+                ux_.data() + base,
+                uy_.data() + base,
+                frictionX_.data() + base,
+                frictionY_.data() + base};
   if constexpr (hasBlockState<Law>) {
     row.theta = law_.state.data() + base;
     row.startX = startX_.data() + base;
