@@ -79,8 +79,14 @@ void BM_FastLatticeVerletSmallStrain(benchmark::State& state) {
 void BM_FastLatticeExponential(benchmark::State& state) {
   benchmarkStep<FastLattice, Integrator::RK4, ExponentialVelocityWeakening>(state);
 }
-// The state law's cost (reference_lattice.hpp): on the reference kernel, against the exponential
-// law on the same kernel and on the fast one (full sweep and active set), Verlet, the default.
+// The state law's cost (block_state.hpp): on both kernels, against the exponential law on each
+// (the fast kernel's full sweep and active set), Verlet, the default.
+void BM_FastLatticeVerletState(benchmark::State& state) {
+  benchmarkStep<FastLattice, Integrator::VelocityVerlet, StateWeakening>(state);
+}
+void BM_FastLatticeVerletStateSkipIdle(benchmark::State& state) {
+  benchmarkStep<FastLattice, Integrator::VelocityVerlet, StateWeakening, true>(state);
+}
 void BM_ReferenceLatticeVerletState(benchmark::State& state) {
   benchmarkStep<ReferenceLattice, Integrator::VelocityVerlet, StateWeakening>(state);
 }
@@ -118,12 +124,16 @@ BENCHMARK(BM_ReferenceLatticeVerletState)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ReferenceLatticeVerletExponential)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FastLatticeVerletExponential)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FastLatticeVerletExponentialSkipIdle)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_FastLatticeVerletState)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_FastLatticeVerletStateSkipIdle)->Unit(benchmark::kMillisecond);
 
 // Whole realisations of the default scene's graded plate (friction, linear, Delta = 0.2, the
 // driver's derived defaults), stepped from t = 0 (the old path) and with idle work skipped (the
 // new one): mu_s only (stops at the confirmed peak), and full (through the mu_k window).
+// The laws' realisations: the same plate under the exponential and the state law (Verlet, idle
+// work skipped, through the mu_k window), on the kernel asked for.
 template <bool Kinetic, bool SkipIdle>
-void benchmarkRealisation(benchmark::State& state) {
+void benchmarkRealisation(benchmark::State& state, const char* law = "coulomb", Kernel kernel = Kernel::Fast) {
   Grading grading;
   grading.profile = GradingProfile::Linear;
   grading.property = GradedProperty::Friction;
@@ -134,6 +144,7 @@ void benchmarkRealisation(benchmark::State& state) {
   p.damping = 0.1 * std::sqrt(p.axialStiffness(p.plate.youngsModulus) / p.blockMass());
   p.timeStep = defaultTimeStep(p, grading);
   p.skipIdle = SkipIdle;
+  p.frictionLaw.name = law;
   Request q;
   const double load = p.loadingTime();
   q.measurement.kinetic = Kinetic;
@@ -145,7 +156,7 @@ void benchmarkRealisation(benchmark::State& state) {
   std::uint32_t realisation = 0;
   double steps = 0, quiet = 0, muStatic = 0;
   for (auto _ : state) {
-    const Result r = simulate(p, grading, q, StreamKey{1, 1, realisation++});
+    const Result r = simulate(p, grading, q, StreamKey{1, 1, realisation++}, kernel);
     steps += double(r.steps);
     quiet += r.friction.firstSlipTime / p.timeStep;
     muStatic += r.friction.muStatic;
@@ -162,6 +173,14 @@ BENCHMARK(BM_RealisationMuStaticStepped)->Unit(benchmark::kSecond)->Iterations(2
 BENCHMARK(BM_RealisationMuStaticSkipIdle)->Unit(benchmark::kSecond)->Iterations(2);
 BENCHMARK(BM_RealisationFullStepped)->Unit(benchmark::kSecond)->Iterations(2);
 BENCHMARK(BM_RealisationFullSkipIdle)->Unit(benchmark::kSecond)->Iterations(2);
+void BM_RealisationExponential(benchmark::State& s) { benchmarkRealisation<true, true>(s, "exponential"); }
+void BM_RealisationState(benchmark::State& s) { benchmarkRealisation<true, true>(s, "state"); }
+void BM_RealisationStateReference(benchmark::State& s) {
+  benchmarkRealisation<true, true>(s, "state", Kernel::Reference);
+}
+BENCHMARK(BM_RealisationExponential)->Unit(benchmark::kSecond)->Iterations(2);
+BENCHMARK(BM_RealisationState)->Unit(benchmark::kSecond)->Iterations(2);
+BENCHMARK(BM_RealisationStateReference)->Unit(benchmark::kSecond)->Iterations(2);
 
 // Keeps each benchmark's ns per block-step to print the ratio at the end.
 class RatioReporter : public benchmark::ConsoleReporter {
@@ -216,12 +235,28 @@ int main(int argc, char** argv) {
   const double plainExponential = reporter.nsPerBlockStep["BM_ReferenceLatticeVerletExponential"];
   const double fastExponential = reporter.nsPerBlockStep["BM_FastLatticeVerletExponential"];
   const double activeExponential = reporter.nsPerBlockStep["BM_FastLatticeVerletExponentialSkipIdle"];
-  if (state > 0 && plainExponential > 0 && fastExponential > 0)
-    std::printf("N_b = %d: velocity Verlet, state law on the reference kernel %.1f ns per block per step; exponential "
-                "law on the reference kernel %.1f ns (%.2fx), on the fast kernel %.1f ns full sweep (%.1fx), %.1f ns "
-                "active set (%.1fx)\n",
-                blocksPerSide, state, plainExponential, state / plainExponential, fastExponential,
-                state / fastExponential, activeExponential, activeExponential > 0 ? state / activeExponential : 0.0);
+  const double fastState = reporter.nsPerBlockStep["BM_FastLatticeVerletState"];
+  const double activeState = reporter.nsPerBlockStep["BM_FastLatticeVerletStateSkipIdle"];
+  if (state > 0 && plainExponential > 0)
+    std::printf("N_b = %d: velocity Verlet, reference kernel: state law %.1f ns per block per step, exponential law "
+                "%.1f ns (%.2fx)\n",
+                blocksPerSide, state, plainExponential, state / plainExponential);
+  if (fastState > 0 && fastExponential > 0)
+    std::printf("N_b = %d: velocity Verlet, fast kernel: state law %.1f ns full sweep, %.1f ns active set; exponential "
+                "law %.1f ns, %.1f ns: state/exponential %.2fx (full sweep), %.2fx (active set)\n",
+                blocksPerSide, fastState, activeState, fastExponential, activeExponential, fastState / fastExponential,
+                activeExponential > 0 ? activeState / activeExponential : 0.0);
+  if (fastState > 0 && state > 0)
+    std::printf("N_b = %d: state law, reference kernel / fast kernel: %.2fx (full sweep), %.2fx (active set)\n",
+                blocksPerSide, state / fastState, activeState > 0 ? state / activeState : 0.0);
+  const char* const exponentialRun = "BM_RealisationExponential/iterations:2";
+  const char* const stateRun = "BM_RealisationState/iterations:2";
+  const char* const stateReferenceRun = "BM_RealisationStateReference/iterations:2";
+  if (t.count(exponentialRun) && t.count(stateRun) && t.count(stateReferenceRun))
+    std::printf("full realisation, N_b = %d: exponential law %.2f s, state law %.2f s (%.2fx), state law on the "
+                "reference kernel %.2f s (%.2fx the fast kernel's) (CPU)\n",
+                blocksPerSide, t.at(exponentialRun), t.at(stateRun), t.at(stateRun) / t.at(exponentialRun),
+                t.at(stateReferenceRun), t.at(stateReferenceRun) / t.at(stateRun));
   std::printf("kernel version in use: %s\n", kernelIsaName(kernelIsaInUse()));
   const double avx2 = reporter.nsPerBlockStep["BM_FastLatticeVerletAvx2"];
   const double baseline = reporter.nsPerBlockStep["BM_FastLatticeVerletBaseline"];

@@ -78,8 +78,12 @@ GF_ALWAYS_INLINE void FastLattice<Law>::verletStepActive(double t, double& sumX,
     for (int tile = 0; tile < tiles;) {
       int end = tile + 1;
       while (end < tiles && held[end] == held[tile]) ++end;
-      if (!held[tile]) started |= this->template verletColumns<Graded, L>(r, row, tile * kTile, std::min(end * kTile, nb), t);
-      else heldTileSteps_ += end - tile;
+      if (!held[tile]) {
+        started |= this->template verletColumns<Graded, L>(r, row, tile * kTile, std::min(end * kTile, nb), t);
+      } else {
+        heldTileSteps_ += end - tile;
+        healHeldStates(r, tile * kTile, std::min(end * kTile, nb));  // state laws: they heal (block_state.hpp)
+      }
       tile = end;
     }
     const double* mobile = mobile_.data() + r * nb;
@@ -123,7 +127,10 @@ GF_ALWAYS_INLINE void FastLattice<Law>::holdTiles(int r, const VerletRow& row) {
     std::int64_t until = kNever;
     for (int c = c0; c < c1 && until > n + 1; ++c) {
       const double k = Graded ? row.slider[c] : row.slider[0];
-      const double threshold = L == SiteLayout::Uniform ? row.staticStrength[0] : row.staticStrength[c];
+      // With a per-block state, the strength of this step: it only rises while the block rests.
+      const double threshold = hasBlockState<Law>       ? row.strength[c]
+                               : L == SiteLayout::Uniform ? row.staticStrength[0]
+                                                          : row.staticStrength[c];
       double cx = row.carryX[c] + p.hx[c] - p.hx[c - 1], cy = row.carryY[c] + p.hy[c] - p.hy[c - 1];
       double scale = std::abs(row.carryX[c]) + std::abs(p.hx[c]) + std::abs(p.hx[c - 1]) + std::abs(row.carryY[c]) +
                      std::abs(p.hy[c]) + std::abs(p.hy[c - 1]);

@@ -52,8 +52,19 @@ FastLattice<Law>::FastLattice(const LatticeStiffness& stiffness, Law law, const 
     rowPieces_.assign(8 * std::size_t(nb_ + 1), 0.0);
     padRowPieces(rowPieces(), nb_);
   }
+  constexpr std::int64_t kNever = std::int64_t(1) << 52;
+  if constexpr (hasBlockState<Law>) {  // every block at rest at theta = 0 (block_state.hpp)
+    startX_.assign(n, 0.0);
+    startY_.assign(n, 0.0);
+    for (std::size_t i = 0; i < n; ++i) strength_.push_back(law_.strengthAt(int(i), law_.state[i]));
+    // The quiet phase ends when the first block no longer holds at its strength at theta = 0; not
+    // with strengths a caller changes between steps (as the reference kernel).
+    if (motion_.skipIdle && motion_.fixedStrengths)
+      quietUntil_ = firstSlipStepAtRestPerBlock(stiffness_, strength_, motion_, kNever);
+  } else if (motion_.skipIdle) {
+    quietUntil_ = firstSlipStepAtRest(stiffness_, law_, motion_, kNever);
+  }
   if (motion_.skipIdle) {
-    quietUntil_ = firstSlipStepAtRest(stiffness_, law_, motion_, std::int64_t(1) << 52);
     if (motion_.integrator == Integrator::VelocityVerlet) {
       tiles_ = (nb_ + kTile - 1) / kTile;
       for (auto* v : {&pieceHx_, &pieceHy_, &pieceVx_, &pieceVy_, &pieceDx_, &pieceDy_, &pieceAx_, &pieceAy_})
@@ -161,6 +172,7 @@ StepObservation FastLattice<Law>::step() {
 
 #define GF_INSTANTIATE_FAST_LATTICE(Law) template class FastLattice<Law>;
 GF_FRICTION_LAWS(GF_INSTANTIATE_FAST_LATTICE)
+GF_STATE_FRICTION_LAWS(GF_INSTANTIATE_FAST_LATTICE)
 #undef GF_INSTANTIATE_FAST_LATTICE
 
 }  // namespace gradfric::sbm

@@ -1,11 +1,13 @@
-// The fast kernel's AVX-512 entries at uniform stiffness, for every law and friction layout
-// (kernel_entries.hpp): a translation unit of their own, compiled in parallel with the others.
+// The fast kernel's AVX-512 entries at uniform stiffness, for every law (with a per-block state
+// too) and friction layout (kernel_entries.hpp): a translation unit of their own, compiled in
+// parallel with the others.
 #include "kernel_step.hpp"
 
 namespace gradfric::sbm {
 
 #define GF_ENTRIES(Law) GF_KERNEL_ENTRY_LAYOUTS(stepAvx512, Law, false)
 GF_FRICTION_LAWS(GF_ENTRIES)
+GF_STATE_FRICTION_LAWS(GF_ENTRIES)
 #undef GF_ENTRIES
 
 }  // namespace gradfric::sbm

@@ -1,5 +1,5 @@
 // The fast spring-block kernel's entry: the choice at run time among its compiled steps, one per
-// law, stiffness (uniform or graded) and friction layout, each for AVX-512, AVX2 and baseline
+// law (those with a per-block state included), stiffness (uniform or graded) and friction layout, each for AVX-512, AVX2 and baseline
 // x86-64 (kernel_isa.hpp). The steps are declared in kernel_entries.hpp and compiled in the
 // kernel_<isa>_<stiffness>.cpp files; this file sees none of their code.
 #include "kernel_entries.hpp"
@@ -89,6 +89,7 @@ const char* kernelIsaName(KernelIsa isa) {
 
 #define GF_INSTANTIATE_DISPATCH(Law) template void FastLattice<Law>::dispatch(double&, double&);
 GF_FRICTION_LAWS(GF_INSTANTIATE_DISPATCH)
+GF_STATE_FRICTION_LAWS(GF_INSTANTIATE_DISPATCH)
 #undef GF_INSTANTIATE_DISPATCH
 
 }  // namespace gradfric::sbm

@@ -1,7 +1,7 @@
 // The plain reference: an array of blocks, each summing the forces of its 8 neighbours (every
 // spring evaluated twice), and textbook RK4 or velocity Verlet on the whole state vector. Same
 // physics, the same friction law and the same stick/slip rule as FastLattice; the tests compare
-// the two. With a law with a per-block state it is the model's kernel (reference_lattice.hpp).
+// the two, for every law (reference_lattice.hpp).
 #include "gradfric/sbm/reference_lattice.hpp"
 
 #include "gradfric/sbm/quiet_phase.hpp"
@@ -27,14 +27,8 @@ ReferenceLattice<Law>::ReferenceLattice(const LatticeStiffness& stiffness, Law l
     for (std::size_t i = 0; i < blocks_.size(); ++i) strength_.push_back(law_.strengthAt(int(i), law_.state[i]));
     // The quiet phase: every block at rest at theta = 0 until the first one no longer holds at its
     // strength there (not with strengths a caller changes between steps).
-    if (motion_.skipIdle && motion_.fixedStrengths) {
-      quietUntil_ = std::int64_t(1) << 52;
-      for (int r = 0; r < nb_; ++r)
-        for (int c = 0; c < nb_; ++c)
-          quietUntil_ = std::min(quietUntil_, firstSlipStepAtRest<StaticThreshold>(stiffness_.sliderAt(r, c),
-                                                                                strength_[r * nb_ + c], motion_,
-                                                                                quietUntil_));
-    }
+    if (motion_.skipIdle && motion_.fixedStrengths)
+      quietUntil_ = firstSlipStepAtRestPerBlock(stiffness_, strength_, motion_, std::int64_t(1) << 52);
   }
 }
 
@@ -44,7 +38,7 @@ template <class Law>
 void ReferenceLattice<Law>::advanceStates() {
   if constexpr (hasBlockState<Law>) {
     for (std::size_t i = 0; i < blocks_.size(); ++i) {
-      const double slip = std::hypot(blocks_[i].ux - startX_[i], blocks_[i].uy - startY_[i]);
+      const double slip = slipOf(blocks_[i].ux - startX_[i], blocks_[i].uy - startY_[i]);
       strength_[i] = law_.advance(int(i), slip, motion_.timeStep);
       startX_[i] = blocks_[i].ux;
       startY_[i] = blocks_[i].uy;
@@ -182,10 +176,7 @@ StepObservation ReferenceLattice<Law>::step() {
       observation.sliderForceX += stiffness_.sliderAt(r, c) * (motion_.sliderVelocityX * t - blocks_[i].ux);
       observation.sliderForceY += stiffness_.sliderAt(r, c) * (motion_.sliderVelocityY * t - blocks_[i].uy);
       const double force2 = fx[i] * fx[i] + fy[i] * fy[i], threshold = staticThreshold(r, c, i);
-      bool holds;
-      if constexpr (hasBlockState<Law>) holds = StaticThreshold::holds(force2, threshold);
-      else holds = Law::holds(force2, threshold);
-      switch (stickSlipChange(state_[i], holds)) {
+      switch (stickSlipChange(state_[i], holdsAtRest<Law>(force2, threshold))) {
         case StickSlipChange::StartsToSlip:
           state_[i] = Slipping;
           if (!everSlipped_[i]) {
@@ -213,8 +204,7 @@ StepObservation ReferenceLattice<Law>::step() {
       const double mobile = state_[i] == Stuck ? 0.0 : 1.0, force2 = fx[i] * fx[i] + fy[i] * fy[i];
       double perDirection;
       if constexpr (hasBlockState<Law>) {  // the strength at the block's state, along v (or F_mot from rest)
-        const double norm2 = speed2 > 0.0 ? speed2 : force2;
-        perDirection = norm2 > 0.0 ? mobile * strength_[i] / std::sqrt(norm2) : 0.0;
+        perDirection = frictionPerDirectionAt(strength_[i], mobile, speed2, force2);
       } else {
         perDirection = frictionPerDirection(law_, law_.sites.staticAt(slot), law_.sites.kineticAt(slot), mobile,
                                             speed2, force2);

@@ -100,6 +100,7 @@ GF_ALWAYS_INLINE void FastLattice<Law>::transitionsWith(int r, double t, PerBloc
   const double* fx = fx_.data();
   const double* fy = fy_.data();
   const double* staticStrength = law_.sites.staticStrength.data() + (L == SiteLayout::PerSite ? base : 0);
+  const double* strength = hasBlockState<Law> ? strength_.data() + base : nullptr;  // advanceStates
   std::uint8_t* state = state_.data() + base;
   double* mobile = mobile_.data() + base;
   double* vx = vx_.data() + base;
@@ -107,8 +108,10 @@ GF_ALWAYS_INLINE void FastLattice<Law>::transitionsWith(int r, double t, PerBloc
   for (int c = 0; c < nb; ++c) {
     each(c);
     if (state[c] == Slipping) continue;
-    const double threshold = L == SiteLayout::Uniform ? staticStrength[0] : staticStrength[c];
-    switch (stickSlipChange(state[c], Law::holds(fx[c] * fx[c] + fy[c] * fy[c], threshold))) {
+    const double threshold = hasBlockState<Law>       ? strength[c]
+                             : L == SiteLayout::Uniform ? staticStrength[0]
+                                                        : staticStrength[c];
+    switch (stickSlipChange(state[c], holdsAtRest<Law>(fx[c] * fx[c] + fy[c] * fy[c], threshold))) {
       case StickSlipChange::StartsToSlip:
         state[c] = Slipping;
         mobile[c] = 1.0;
@@ -155,6 +158,7 @@ GF_ALWAYS_INLINE void FastLattice<Law>::frictionVectorRange(int r, int c0, int c
   const double* __restrict vy = vy_.data() + base;
   double* __restrict kfx = frictionX_.data() + base;
   double* __restrict kfy = frictionY_.data() + base;
+  const double* __restrict blockStrength = hasBlockState<Law> ? strength_.data() + base : nullptr;
   for (int c = 0; c < c1 - c0; ++c) {
     const double strength = L == SiteLayout::Uniform ? staticStrength[0] : staticStrength[c];
     const double kinetic = L == SiteLayout::Uniform ? kineticStrength[0] : kineticStrength[c];
@@ -163,7 +167,9 @@ GF_ALWAYS_INLINE void FastLattice<Law>::frictionVectorRange(int r, int c0, int c
     const bool moving = speed2 > 0.0;
     const double dirX = moving ? vx[c] : fx[c];
     const double dirY = moving ? vy[c] : fy[c];
-    const double frictionPerNorm = frictionPerDirection(law_, strength, kinetic, mobile[c], speed2, force2);
+    double frictionPerNorm;
+    if constexpr (hasBlockState<Law>) frictionPerNorm = frictionPerDirectionAt(blockStrength[c], mobile[c], speed2, force2);
+    else frictionPerNorm = frictionPerDirection(law_, strength, kinetic, mobile[c], speed2, force2);
     kfx[c] = frictionPerNorm * dirX;
     kfy[c] = frictionPerNorm * dirY;
   }
@@ -204,6 +210,7 @@ GF_ALWAYS_INLINE void FastLattice<Law>::rk4Stage(double t, double& sumX, double&
   this->template sweepRows<Graded, Stage == 1>(px, py, t, sumX, sumY, [&](int r) {
     const int base = r * nb;
     if (Stage == 1) {
+      advanceStates(r);  // state laws only
       this->template transitions<L>(r, t);
       this->template frictionVector<L>(r);
     }

@@ -3,6 +3,7 @@
 // full sweep (full_sweep.hpp) and the active set (active_set.hpp): the row's driving forces
 // assembled from its springs' values (RowPieces, row_springs.hpp), then the whole update, in one
 // pass; and the one builder of the row's arrays (FastLattice::verletRow).
+#include "block_state.hpp"
 #include "gradfric/sbm/integrator.hpp"
 #include "row_springs.hpp"
 #include "slider_sum.hpp"
@@ -41,16 +42,23 @@ struct VerletRow {
   double* __restrict uy;
   double* __restrict kfx;  // friction of the last step on entry, of this step on exit
   double* __restrict kfy;
+  // Laws with a per-block state only (null otherwise; block_state.hpp): theta, the position at the
+  // start of the last step, the strength at the state of this step.
+  double* __restrict theta = nullptr;
+  double* __restrict startX = nullptr;
+  double* __restrict startY = nullptr;
+  double* __restrict strength = nullptr;
 };
 
 // Velocity Verlet's whole step of one row in one pass, branch-free so that it vectorises: the
 // driving force F_mot at t_n (slider, carried reactions, the row's springs, in the order
 // slider + carry + h[c] - h[c-1] + v[c] + d[c] + a[c-1], and the reactions on the row above
 // -v[c] - d[c-1] - a[c]), then close the last step's kick, the reversal test against that step's
-// friction, the stick/slip decision at t_n (as blends: a stuck block that the threshold does not
-// hold starts to slip, a reversed one that it holds re-sticks at zero velocity), this step's
-// friction vector, the open kick and the drift (v_{n+1/2} = v_n + h/2 a_n, u_{n+1} = u_n + h
-// v_{n+1/2}), for the columns c0 <= c < c1. Returns whether one of those blocks started to slip
+// friction, with a per-block state its advance (block_state.hpp: the threshold and the sliding
+// force are then the block's strength), the stick/slip decision at t_n (as blends: a stuck block
+// that the threshold does not hold starts to slip, a reversed one that it holds re-sticks at zero
+// velocity), this step's friction vector, the open kick and the drift (v_{n+1/2} = v_n + h/2
+// a_n, u_{n+1} = u_n + h v_{n+1/2}), for the columns c0 <= c < c1. Returns whether one of those blocks started to slip
 // (the caller looks for first slips).
 template <class Law, SiteLayout L, bool Graded, bool Above>
 GF_ALWAYS_INLINE bool fusedVerletRow(const Law& law, int c0, int c1, double drivenX, double drivenY, double half,
@@ -79,6 +87,12 @@ GF_ALWAYS_INLINE bool fusedVerletRow(const Law& law, int c0, int c1, double driv
   double* __restrict uy = a.uy;
   double* __restrict kfx = a.kfx;
   double* __restrict kfy = a.kfy;
+  double* __restrict theta = a.theta;
+  double* __restrict startX = a.startX;
+  double* __restrict startY = a.startY;
+  double* __restrict strength = a.strength;
+  double decay = 0.0;
+  if constexpr (hasBlockState<Law>) decay = law.decayOver(h);
   const double slider0 = slider[0];
   std::int64_t started = 0;
   for (int c = c0; c < c1; ++c) {
@@ -110,10 +124,14 @@ GF_ALWAYS_INLINE bool fusedVerletRow(const Law& law, int c0, int c1, double driv
     double wx = vx[c] + half * m * ((fxc - oldKx) * invMass - gamma * vx[c]);
     double wy = vy[c] + half * m * ((fyc - oldKy) * invMass - gamma * vy[c]);
     const bool reversed = wx * oldKx + wy * oldKy < 0.0;
-    const double threshold = L == SiteLayout::Uniform ? staticStrength[0] : staticStrength[c];
+    double threshold = L == SiteLayout::Uniform ? staticStrength[0] : staticStrength[c];
     const double kinetic = L == SiteLayout::Uniform ? kineticStrength[0] : kineticStrength[c];
+    if constexpr (hasBlockState<Law>) {
+      threshold = advanceBlockState(law, h, decay, threshold, kinetic, ux[c], uy[c], startX[c], startY[c], theta[c]);
+      strength[c] = threshold;
+    }
     const double force2 = fxc * fxc + fyc * fyc;
-    const bool holds = Law::holds(force2, threshold);
+    const bool holds = holdsAtRest<Law>(force2, threshold);
     const bool starts = (m == 0.0) & !holds;
     const bool resticks = reversed & holds;
     const double newM = starts ? 1.0 : resticks ? 0.0 : m;
@@ -129,8 +147,9 @@ GF_ALWAYS_INLINE bool fusedVerletRow(const Law& law, int c0, int c1, double driv
     const double norm2 = moving ? speed2 : force2;
     const bool directed = norm2 > 0.0;
     const double norm = std::sqrt(directed ? norm2 : 1.0);
-    const double speed = Law::weakensWithSpeed && moving ? norm : 0.0;
-    const double sliding = law.slidingStrength(threshold, kinetic, speed);
+    double sliding;
+    if constexpr (hasBlockState<Law>) sliding = threshold;  // the block's strength
+    else sliding = law.slidingStrength(threshold, kinetic, Law::weakensWithSpeed && moving ? norm : 0.0);
     const double perNorm = (directed ? newM * sliding : 0.0) / norm;
     const double kx = perNorm * dirX, ky = perNorm * dirY;
     // Open this step's kick and drift.
@@ -186,23 +205,30 @@ template <SiteLayout L>
 GF_ALWAYS_INLINE VerletRow FastLattice<Law>::verletRow(int r, const RowPieces& pieces) {
   const int base = r * nb_;
   const int sites = L == SiteLayout::PerSite ? base : 0;
-  return VerletRow{stiffness_.row(r).slider,
-                   carryX_.data(),
-                   carryY_.data(),
-                   pieces,
-                   nextX_.data(),
-                   nextY_.data(),
-                   sliderRowX_.data(),
-                   sliderRowY_.data(),
-                   law_.sites.staticStrength.data() + sites,
-                   law_.sites.kineticStrength.data() + sites,
-                   mobile_.data() + base,
-                   vx_.data() + base,
-                   vy_.data() + base,
-                   ux_.data() + base,
-                   uy_.data() + base,
-                   frictionX_.data() + base,
-                   frictionY_.data() + base};
+  VerletRow row{stiffness_.row(r).slider,
+                carryX_.data(),
+                carryY_.data(),
+                pieces,
+                nextX_.data(),
+                nextY_.data(),
+                sliderRowX_.data(),
+                sliderRowY_.data(),
+                law_.sites.staticStrength.data() + sites,
+                law_.sites.kineticStrength.data() + sites,
+                mobile_.data() + base,
+                vx_.data() + base,
+                vy_.data() + base,
+                ux_.data() + base,
+                uy_.data() + base,
+                frictionX_.data() + base,
+                frictionY_.data() + base};
+  if constexpr (hasBlockState<Law>) {
+    row.theta = law_.state.data() + base;
+    row.startX = startX_.data() + base;
+    row.startY = startY_.data() + base;
+    row.strength = strength_.data() + base;
+  }
+  return row;
 }
 
 // Row r's whole Verlet step on its springs' pieces (the full sweep): the fused step, then

@@ -18,7 +18,7 @@ for ranks in 1 2; do
   rm -f "$scratch/ranks$ranks.h5"
   log=$("$mpiexec" -n $ranks "$driver" "${scene[@]}" -output "$scratch/ranks$ranks.h5" 2>&1) || fail "$ranks rank(s): exit $?: $log"
 done
-grep -q "Reference kernel" <<<"$log" || fail "the active effects do not name the reference kernel"
+grep -q "Fast kernel, per-block state" <<<"$log" || fail "the active effects do not name the fast kernel"
 grep -q "regime number kappa = .* = 0.822 < 1" <<<"$log" || fail "no regime number 0.822 (G D_c / (l_z p (mu_s - mu_k)) at D_c = 5e-8 m): $(grep -i regime <<<"$log")"
 h5dump -a /scene/friction_law "$scratch/ranks1.h5" | grep -q '"state"' || fail "/scene/friction_law is not state"
 h5dump -a /scene/friction_d_c "$scratch/ranks1.h5" | grep -q '5e-08' || fail "/scene/friction_d_c is not 5e-08"

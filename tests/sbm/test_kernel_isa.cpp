@@ -63,6 +63,9 @@ TEST(KernelIsa, EveryVersionGivesTheSameNumbersBitForBit) {
        "coulomb", true, true, 60.0},
       {"rk4, exponential law", linear(GradedProperty::Both, 0.2), 0.03, Integrator::RK4, "exponential", false, true,
        0.0},
+      {"verlet, state law, active set", linear(GradedProperty::Both, 0.2), 0.03, Integrator::VelocityVerlet, "state",
+       false, true, 0.0},
+      {"rk4, state law", linear(GradedProperty::YoungsModulus, 0.3), 0.03, Integrator::RK4, "state", false, true, 45.0},
   };
   std::vector<KernelIsa> versions;
   for (KernelIsa isa : {KernelIsa::Baseline, KernelIsa::Avx2, KernelIsa::Avx512})

@@ -98,7 +98,8 @@ TEST(Kernels, TheExponentialLawOnAPlate) {
 
 TEST(Kernels, StatesAgreeThroughStickAndSlip) {
   // Graded stiffness and friction, through loading, the peak and sliding: the
-  // displacements of both kernels stay equal to round-off, for both integrators and laws.
+  // displacements of both kernels stay equal to round-off, for both integrators and laws (the
+  // state law: test_state_kernels.cpp).
   const Grading g = both(0.5);
   for (Integrator integrator : {Integrator::RK4, Integrator::VelocityVerlet}) {
     Parameters p = sbm::testing::paperParameters(9, 0.0, g);

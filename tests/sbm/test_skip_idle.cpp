@@ -71,7 +71,7 @@ const char* name(Integrator integrator) { return integrator == Integrator::RK4 ?
 
 TEST(SkipIdle, BitForBitTheSteppedRunOnEveryCodePath) {
   // Uniform and graded E x uniform, per-column and per-block friction x both integrators x both
-  // laws (and the state law, on the reference kernel), with and without snapshots and first-slip
+  // laws (and the state law), with and without snapshots and first-slip
   // maps, at several angles.
   struct Case {
     Grading grading;
@@ -182,7 +182,11 @@ template <class Law>
 void expectActiveSetIsFullSweep(const Parameters& p, const Grading& g, std::int64_t steps, const std::string& where,
                                 std::int64_t& activeSteps, std::int64_t& heldTileSteps, std::int64_t& quietSteps) {
   const auto stiffness = buildStiffness(p, g);
-  const auto law = Law::make(buildFriction(p, g, {4, 4, 4}), p.frictionLaw);
+  const auto law = [&] {
+    const FrictionField friction = buildFriction(p, g, {4, 4, 4});
+    if constexpr (hasBlockState<Law>) return Law::make(friction, p.frictionLaw, std::size_t(p.blocksPerSide) * p.blocksPerSide);
+    else return Law::make(friction, p.frictionLaw);
+  }();
   FastLattice<Law> skipping(stiffness, law, motionOf(p, p.timeStep, p.damping));
   Motion full = motionOf(p, p.timeStep, p.damping);
   full.skipIdle = false;
@@ -203,6 +207,9 @@ void expectActiveSetIsFullSweep(const Parameters& p, const Grading& g, std::int6
   EXPECT_TRUE(same(skipping.velocityX(), stepped.velocityX())) << where;
   EXPECT_TRUE(same(skipping.velocityY(), stepped.velocityY())) << where;
   EXPECT_EQ(skipping.blockStates(), stepped.blockStates()) << where;
+  if constexpr (hasBlockState<Law>) {  // the held blocks healed as the stepped ones
+    EXPECT_TRUE(same(skipping.law().state.data(), stepped.law().state.data())) << where;
+  }
   EXPECT_EQ(stepped.activeSetSteps(), 0) << where;
   EXPECT_EQ(stepped.heldTileSteps(), 0) << where;
   activeSteps = skipping.activeSetSteps();
@@ -216,27 +223,31 @@ TEST(SkipIdle, TheActiveSetIsTheFullSweepBitForBit) {
   // Velocity Verlet on graded, dispersed plates wider than a few tiles: the active set runs while
   // the detachment front crosses (held tiles left out of the update), the full sweep once most
   // tiles move, and the states and slider forces stay those of the full sweep at every step, bit
-  // for bit; for both laws, graded friction, E or both, sliding along x or at an angle.
+  // for bit; for every law (the state law's held blocks heal while held), graded friction, E or
+  // both, sliding along x or at an angle.
   struct Case {
     GradedProperty property;
     double delta, theta;
-    bool exponential;
+    const char* law;
   };
-  const Case cases[] = {{GradedProperty::Friction, 0.4, 0.0, false},
-                        {GradedProperty::YoungsModulus, 0.4, 0.0, false},
-                        {GradedProperty::Both, -0.3, 30.0, true},
-                        {GradedProperty::Friction, 0.9, 135.0, false}};
+  const Case cases[] = {{GradedProperty::Friction, 0.4, 0.0, "coulomb"},
+                        {GradedProperty::YoungsModulus, 0.4, 0.0, "coulomb"},
+                        {GradedProperty::Both, -0.3, 30.0, "exponential"},
+                        {GradedProperty::Friction, 0.9, 135.0, "coulomb"},
+                        {GradedProperty::Both, 0.3, 0.0, "state"},
+                        {GradedProperty::YoungsModulus, -0.4, 60.0, "state"}};
   for (const Case& c : cases) {
     const Grading g = graded(GradingProfile::Linear, c.property, c.delta);
     Parameters p = sbm::testing::paperParameters(30, 0.028, g);
     p.plate.slidingAngle = c.theta;
-    if (c.exponential) p.frictionLaw.name = "exponential";
+    p.frictionLaw.name = c.law;
     const std::int64_t steps = std::int64_t(1.5 * p.loadingTime() / p.timeStep);
-    const std::string where = "delta " + std::to_string(c.delta) + " theta " + std::to_string(c.theta) +
-                              (c.exponential ? " exponential" : " coulomb");
+    const std::string where = "delta " + std::to_string(c.delta) + " theta " + std::to_string(c.theta) + " " + c.law;
     std::int64_t active = 0, held = 0, quiet = 0;
-    if (c.exponential)
+    if (p.frictionLaw.name == "exponential")
       expectActiveSetIsFullSweep<ExponentialVelocityWeakening>(p, g, steps, where, active, held, quiet);
+    else if (p.frictionLaw.name == "state")
+      expectActiveSetIsFullSweep<StateWeakening>(p, g, steps, where, active, held, quiet);
     else
       expectActiveSetIsFullSweep<CoulombStickSlip>(p, g, steps, where, active, held, quiet);
     // Both sweeps were used: the active set after the first slip, the full sweep once most move;

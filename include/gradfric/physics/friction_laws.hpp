@@ -3,9 +3,8 @@
 // GF_FRICTION_LAWS: the option's list of choices, the dispatch to the templated kernels and
 // their explicit instantiations all follow from this list. Laws with a per-site state variable
 // (state_weakening_law.hpp) are listed in GF_STATE_FRICTION_LAWS: the FEM contact takes both
-// lists (fem/contact_law.hpp); the spring-block model takes both, the first on its fast kernel,
-// the second on its reference kernel (sbm/reference_lattice.hpp: the fast kernel keeps no
-// per-block friction state, and its files are not compiled for these laws).
+// lists (fem/contact_law.hpp), and so do both spring-block kernels (the fast one keeps the
+// per-block state in src/sbm/block_state.hpp).
 #include "gradfric/physics/coulomb_law.hpp"
 #include "gradfric/physics/exponential_law.hpp"
 #include "gradfric/physics/friction_laws_settings.hpp"

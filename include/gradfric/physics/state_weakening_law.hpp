@@ -53,16 +53,25 @@ struct StateWeakening {
     return text.str();
   }
 
-  // The state after a step dt [s] at mean slip rate speed [m/s] from theta (exact for constant speed).
-  double evolve(double theta, double speed, double dt) const {
-    const double decay = std::exp(-criticalVelocity * dt / slipLength);
+  // The healing factor of a step dt [s] at rest, e^(-v_c dt / D_c) (a kernel computes it once).
+  double decayOver(double dt) const { return std::exp(-criticalVelocity * dt / slipLength); }
+  // The state after a step whose healing factor is decay, at mean slip rate speed [m/s], from theta.
+  double evolveWith(double theta, double speed, double decay) const {
     return theta * decay + speed * (slipLength / criticalVelocity) * (1.0 - decay);
   }
+  // The state after a step dt [s] at mean slip rate speed [m/s] from theta (exact for constant speed).
+  double evolve(double theta, double speed, double dt) const { return evolveWith(theta, speed, decayOver(dt)); }
+  // The state after a step dt [s] (healing factor decay) over which the site slid `slip` [m].
+  double evolveBySlip(double theta, double slip, double dt, double decay) const {
+    const double speed = dt > 0 ? slip / dt : 0.0;
+    return evolveWith(theta, speed, decay);
+  }
+  // The strength at state theta of a site with static and kinetic strengths s and k.
+  double strengthBetween(double s, double k, double theta) const { return k + (s - k) * std::exp(-theta / slipLength); }
   // The coefficient (or force, in the sites' units) of site at state theta.
   double strengthAt(int site, double theta) const {
     const int slot = sites.slotOfSite(site);
-    const double s = sites.staticAt(slot), k = sites.kineticAt(slot);
-    return k + (s - k) * std::exp(-theta / slipLength);
+    return strengthBetween(sites.staticAt(slot), sites.kineticAt(slot), theta);
   }
   // Eq. 1: the steady strength at slip rate v (what a site sliding steadily at v feels).
   double steadyStrength(int site, double speed) const {
@@ -71,8 +80,7 @@ struct StateWeakening {
   // One evaluation of site: it slid `slip` [m] over dt [s] since the last commit (0 if it stuck);
   // its new state is pending, its strength at that state returned.
   double advance(int site, double slip, double dt) {
-    const double speed = dt > 0 ? slip / dt : 0.0;
-    pending[site] = evolve(state[site], speed, dt);
+    pending[site] = evolveBySlip(state[site], slip, dt, decayOver(dt));
     return strengthAt(site, pending[site]);
   }
   void commit() { state = pending; }

@@ -5,8 +5,8 @@
 //   FastLattice      structure of arrays, each spring evaluated once, the four RK stages fused
 //                    with the force sweep row by row (the production kernel);
 //   ReferenceLattice a plain array of blocks, each block summing its 8 neighbours (every spring
-//                    evaluated twice): the tests' reference (reference_lattice.hpp), and the
-//                    kernel of the laws with a per-block state (GF_STATE_FRICTION_LAWS).
+//                    evaluated twice): the tests' reference (reference_lattice.hpp).
+// Both run every law, those with a per-block state (GF_STATE_FRICTION_LAWS) included.
 //
 // Stick/slip and the RK stages (documented in README, "Spring-block model"):
 //  - the stick state is frozen during a step: a stuck block has zero velocity and acceleration
@@ -20,7 +20,8 @@
 //    last step (it points against that step's friction force) re-sticks (velocity set to zero)
 //    if |F_mot| <= mu_s,i F_n, and slides on otherwise (the law's static threshold).
 //  - a law with a per-block state (the state law, reference_lattice.hpp) puts the block's
-//    strength at its current state in place of both mu_s,i F_n and the sliding force.
+//    strength at its current state in place of both mu_s,i F_n and the sliding force; the state
+//    is advanced once per step, at its start, from the block's slip over the step that ended.
 // Velocity Verlet (Parameters::integrator) needs one force evaluation per step instead of four,
 // with the same stick/slip rule; between steps the velocities are the half-step ones.
 #include "gradfric/physics/friction_laws.hpp"
@@ -28,6 +29,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <type_traits>
 #include <vector>
 
 namespace gradfric::sbm {
@@ -58,6 +60,30 @@ Motion motionOf(const Parameters& parameters, double timeStep, double damping);
 
 enum BlockState : std::uint8_t { Stuck = 0, Slipping = 1, Reversed = 2 };
 
+// Does the law keep a per-block state (GF_STATE_FRICTION_LAWS)?
+template <class Law>
+struct HasBlockState : std::false_type {};
+#define GF_SBM_BLOCK_STATE(Law) \
+  template <>                   \
+  struct HasBlockState<Law> : std::true_type {};
+GF_STATE_FRICTION_LAWS(GF_SBM_BLOCK_STATE)
+#undef GF_SBM_BLOCK_STATE
+template <class Law>
+constexpr bool hasBlockState = HasBlockState<Law>::value;
+
+// A block's slip over a step from its displacement increment (dx, dy), as both kernels advance a
+// per-block state from it (no std::hypot: its care for overflow costs a tenth of the fast
+// kernel's state-law step, and increments of at most microns cannot overflow).
+inline double slipOf(double dx, double dy) { return std::sqrt(dx * dx + dy * dy); }
+
+// The static test of a block at rest against its threshold: the law's own, or with a per-block
+// state the shared rule applied to the block's current strength.
+template <class Law>
+inline bool holdsAtRest(double drivingForceSquared, double threshold) {
+  if constexpr (hasBlockState<Law>) return StaticThreshold::holds(drivingForceSquared, threshold);
+  else return Law::holds(drivingForceSquared, threshold);
+}
+
 // The stick/slip rule at the start of a step (see above), for both kernels: what happens to a
 // block in `state` whose driving force the law's static threshold holds (or not).
 enum class StickSlipChange { None, StartsToSlip, Resticks, SlidesOn };
@@ -69,15 +95,18 @@ inline StickSlipChange stickSlipChange(std::uint8_t state, bool holds) {
 
 // The friction force of the step per unit of the direction vector (velocity at t_n when moving,
 // F_mot when starting from rest): the law's sliding strength at the block's speed, frozen for
-// the step; zero for a stuck block (mobile = 0) or without a direction.
+// the step; zero for a stuck block (mobile = 0) or without a direction. frictionPerDirectionAt
+// takes the sliding force itself (a law with a per-block state: the block's strength).
+inline double frictionPerDirectionAt(double sliding, double mobile, double speed2, double force2) {
+  const double norm2 = speed2 > 0.0 ? speed2 : force2;
+  return norm2 > 0.0 ? mobile * sliding / std::sqrt(norm2) : 0.0;
+}
 template <class Law>
 inline double frictionPerDirection(const Law& law, double staticStrength, double kineticStrength, double mobile,
                                    double speed2, double force2) {
-  const bool moving = speed2 > 0.0;
-  const double norm2 = moving ? speed2 : force2;
-  const double speed = Law::weakensWithSpeed && moving ? std::sqrt(speed2) : 0.0;
+  const double speed = Law::weakensWithSpeed && speed2 > 0.0 ? std::sqrt(speed2) : 0.0;
   const double sliding = law.slidingStrength(staticStrength, kineticStrength, speed);
-  return norm2 > 0.0 ? mobile * sliding / std::sqrt(norm2) : 0.0;
+  return frictionPerDirectionAt(sliding, mobile, speed2, force2);
 }
 
 struct VerletRow;  // the arrays of one row for Verlet's fused step (src/sbm/verlet_row.hpp)
@@ -139,6 +168,8 @@ private:
   void markReversals(int r);
   void markReversalsRange(int r, int c0, int c1);
   void firstSlips(int r, double t);
+  void advanceStates(int r);                  // state laws, RK4: row r's states at t_n (block_state.hpp)
+  void healHeldStates(int r, int c0, int c1);  // state laws: held blocks' states, no slip (block_state.hpp)
   void lastMovedAround(int r);  // movedAround_ for the tiles of row r
   template <SiteLayout L>
   VerletRow verletRow(int r, const RowPieces& pieces);  // the one builder of row r's VerletRow
@@ -192,6 +223,10 @@ private:
   std::vector<double> accUx_, accUy_, accVx_, accVy_;
   std::vector<double> mobile_;
   std::vector<double> frictionX_, frictionY_;  // friction force of the step [N]
+  // State laws only (their states theta_i are law_.state): each block's strength at its state of
+  // the last step it was stepped [N], and its displacement at the start of the step that ended
+  // (the slip of that step is the increment since).
+  std::vector<double> strength_, startX_, startY_;
   std::vector<std::uint8_t> state_;  // RK4's stick states (Verlet's are mobile_)
   std::vector<std::uint8_t> everSlipped_;
   // Row work space: forces on the current row, carried forces for the next row, spring forces,

@@ -7,12 +7,14 @@
 //   - the first step at which some block's driving force exceeds its static threshold (the
 //     law's own test, Law::holds, with the law's per-site strengths);
 //   - the slider-force sums of the history, summed in the kernels' order (src/sbm/slider_sum.hpp).
-// FastLattice jumps over these steps (Motion::skipIdle) and integrates from the first slip on.
+// FastLattice jumps over these steps (Motion::skipIdle) and integrates from the first slip on. A law
+// with a per-block state keeps theta = 0 (no block slid): the thresholds are its strengths there.
 #include "gradfric/sbm/integrator.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <vector>
 
 namespace gradfric::sbm {
 
@@ -54,6 +56,18 @@ std::int64_t firstSlipStepAtRest(const LatticeStiffness& stiffness, const Law& l
     }
     if (sites.layout != SiteLayout::PerSite && !stiffness.perBlock) break;  // every row is the same
   }
+  return first;
+}
+
+// The same with one static threshold per block (row-major, N_b^2): a law with a per-block state,
+// every block at its initial strength (the shared static rule, StaticThreshold).
+inline std::int64_t firstSlipStepAtRestPerBlock(const LatticeStiffness& stiffness, const std::vector<double>& thresholds,
+                                                const Motion& m, std::int64_t limit) {
+  const int nb = stiffness.blocksPerSide;
+  std::int64_t first = limit;
+  for (int r = 0; r < nb; ++r)
+    for (int c = 0; c < nb; ++c)
+      first = std::min(first, firstSlipStepAtRest<StaticThreshold>(stiffness.sliderAt(r, c), thresholds[r * nb + c], m, first));
   return first;
 }
 

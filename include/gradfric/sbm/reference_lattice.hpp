@@ -1,7 +1,7 @@
 #pragma once
 // The plain spring-block kernel (integrator.hpp has the stick/slip rule it shares with
-// FastLattice): the tests' reference for the stateless laws, and the kernel of the laws with a
-// per-block state (GF_STATE_FRICTION_LAWS, the state law of state_weakening_law.hpp).
+// FastLattice): the tests' reference for every law, those with a per-block state
+// (GF_STATE_FRICTION_LAWS, the state law of state_weakening_law.hpp) included.
 //
 // With a state law, the state theta_i of block i is advanced once per step, at the start of step
 // n (time t_n), over the step that just ended: its slip is the block's displacement increment
@@ -12,25 +12,14 @@
 // weaker, a healed one holds up to mu_s,i F_n) and is the sliding force of the step. This is the
 // FEM contact's choice (fem/contact_penalty.hpp: a sticking node is capped by the strength at its
 // healed state, not by mu_s). Until the first slip nothing moves and theta stays 0: with
-// Motion::skipIdle the state-law kernel jumps over that quiet phase, bit for bit the stepped run.
+// Motion::skipIdle both kernels jump over that quiet phase, bit for bit the stepped run.
+// FastLattice does the same per block, in the same order of operations (src/sbm/block_state.hpp).
 #include "gradfric/sbm/integrator.hpp"
 
 #include <cstdint>
-#include <type_traits>
 #include <vector>
 
 namespace gradfric::sbm {
-
-// Does the law keep a per-block state (GF_STATE_FRICTION_LAWS)?
-template <class Law>
-struct HasBlockState : std::false_type {};
-#define GF_SBM_BLOCK_STATE(Law) \
-  template <>                   \
-  struct HasBlockState<Law> : std::true_type {};
-GF_STATE_FRICTION_LAWS(GF_SBM_BLOCK_STATE)
-#undef GF_SBM_BLOCK_STATE
-template <class Law>
-constexpr bool hasBlockState = HasBlockState<Law>::value;
 
 template <class Law>
 class ReferenceLattice {
