@@ -2,6 +2,7 @@
 #include "gradfric/campaign/realisation_pool.hpp"
 
 #include "gradfric/core/collective_error.hpp"
+#include "gradfric/core/gather.hpp"
 #include "gradfric/core/petsc_call.hpp"
 #include "gradfric/core/quiet_wait.hpp"
 
@@ -72,26 +73,13 @@ LocalRuns runLocally(MPI_Comm comm, int rank, const PoolPlan& plan, const PoolTa
   return local;
 }
 
-// Collective: every rank's `local` concatenated in rank order, on every rank.
-template <class T>
-std::vector<T> gatherOnAll(MPI_Comm comm, const std::vector<T>& local, MPI_Datatype type, int size) {
-  const int count = static_cast<int>(local.size());
-  std::vector<int> counts(size), offsets(size, 0);
-  GF_CALL_MPI(MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, comm));
-  for (int r = 1; r < size; ++r) offsets[r] = offsets[r - 1] + counts[r - 1];
-  std::vector<T> all(static_cast<std::size_t>(offsets[size - 1]) + counts[size - 1]);
-  GF_CALL_MPI(MPI_Allgatherv(local.data(), count, type, all.data(), counts.data(), offsets.data(), type, comm));
-  return all;
-}
-
 }  // namespace
 
 std::vector<double> runRealisationPool(MPI_Comm comm, const PoolPlan& plan, const PoolTask& task) {
   checkPlan(plan);
   if (plan.tasks == 0) return {};
-  int rank = 0, size = 1;
+  int rank = 0;
   GF_CALL_MPI(MPI_Comm_rank(comm, &rank));
-  GF_CALL_MPI(MPI_Comm_size(comm, &size));
   const LocalRuns local = runLocally(comm, rank, plan, task);
 
   long firstFailure = local.failedAt;
@@ -99,8 +87,8 @@ std::vector<double> runRealisationPool(MPI_Comm comm, const PoolPlan& plan, cons
   if (firstFailure < plan.tasks) agreeOnError(comm, local.failedAt == firstFailure ? local.failure : std::string());
 
   // Each record is copied, never summed: the bits cannot depend on who ran it.
-  const std::vector<long> ran = gatherOnAll(comm, local.tasks, MPI_LONG, size);
-  const std::vector<double> records = gatherOnAll(comm, local.records, MPI_DOUBLE, size);
+  const std::vector<long> ran = gatherOnAll(comm, local.tasks);
+  const std::vector<double> records = gatherOnAll(comm, local.records);
   const std::size_t width = static_cast<std::size_t>(plan.width);
   std::vector<double> byTask(static_cast<std::size_t>(plan.tasks) * width);
   std::vector<char> filled(static_cast<std::size_t>(plan.tasks), 0);

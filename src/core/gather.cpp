@@ -21,4 +21,27 @@ std::vector<double> gatherOnRoot(MPI_Comm comm, const std::vector<double>& local
   return all;
 }
 
+namespace {
+
+template <class T>
+std::vector<T> allGathered(MPI_Comm comm, const std::vector<T>& local, MPI_Datatype type) {
+  int size = 1;
+  GF_CALL_MPI(MPI_Comm_size(comm, &size));
+  const int count = static_cast<int>(local.size());
+  std::vector<int> counts(size), offsets(size, 0);
+  GF_CALL_MPI(MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, comm));
+  for (int r = 1; r < size; ++r) offsets[r] = offsets[r - 1] + counts[r - 1];
+  std::vector<T> all(std::size_t(offsets[size - 1]) + counts[size - 1]);
+  GF_CALL_MPI(MPI_Allgatherv(local.data(), count, type, all.data(), counts.data(), offsets.data(), type, comm));
+  return all;
+}
+
+}  // namespace
+
+std::vector<double> gatherOnAll(MPI_Comm comm, const std::vector<double>& local) {
+  return allGathered(comm, local, MPI_DOUBLE);
+}
+
+std::vector<long> gatherOnAll(MPI_Comm comm, const std::vector<long>& local) { return allGathered(comm, local, MPI_LONG); }
+
 }  // namespace gradfric

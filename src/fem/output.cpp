@@ -4,7 +4,6 @@
 #include "gradfric/core/input_error.hpp"
 #include "gradfric/core/petsc_call.hpp"
 #include "gradfric/campaign/campaign_file.hpp"
-#include "gradfric/fem/error_estimate.hpp"
 #include "gradfric/fem/log_events.hpp"
 #include "gradfric/fem/run_extras.hpp"
 #include "gradfric/fem/sweep.hpp"
@@ -22,7 +21,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
-#include <limits>
 #include <set>
 #include <stdexcept>
 
@@ -240,11 +238,7 @@ void OutputFiles::writeResults(const PlateModel& model, const FemRunResult& r, c
   agreeOnError(comm_, error);
   file.flush();
   campaign::writeStatistics(file, 1, campaign.sweep.reference, false);
-  const DiscretisationError bar = discretisationError(model.params(), model.grading(), r.dt / r.stableDt);
-  const double notMeasured = std::numeric_limits<double>::quiet_NaN();  // no study bounds mu_k (bar.kineticBasis)
-  file.writeStatistics({{"mu_s_discretisation_error", {bar.measured ? bar.relative : notMeasured}},
-                        {"mu_k_discretisation_error", {notMeasured}}},
-                       {});
+  writeErrorBars(file, campaign);  // the sweep's rule for its one point
   const std::string xdmf = snapshots_ > 0 ? xmfPath_.substr(xmfPath_.rfind('/') + 1) : "";
   std::vector<io::Attribute> derived;  // the record's entries the scene does not have
   std::set<std::string> known;

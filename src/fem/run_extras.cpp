@@ -45,17 +45,6 @@ void writePressureResponse(hid_t fem, const PressureResponseMap& m) {
   writeRealAttribute(map, "moment_over_H", m.momentOverThickness);
 }
 
-io::H5Dataset vector(hid_t group, const char* name, const std::vector<double>& data, const char* units,
-                     const char* description) {
-  using namespace io;
-  const hsize_t n = data.size();
-  H5Space space(GF_H5(H5Screate_simple(1, &n, nullptr)));
-  H5Dataset set(GF_H5(H5Dcreate2(group, name, H5T_IEEE_F64LE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT)));
-  if (n) GF_H5(H5Dwrite(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()));
-  describe(set, units, description);
-  return set;
-}
-
 // /fem/results: the run's scalars the campaign layout has no place for, with their units.
 void writeResults(hid_t fem, const PlateModel& model, const FemRunResult& r) {
   using namespace io;
@@ -183,14 +172,11 @@ void writeRunExtras(hid_t file, const RunExtras& c) {
     std::vector<double> x, nodeX = model.mesh().axisX().nodes;
     for (int i = 0; i < q.nx; ++i) x.push_back(columns.unitCentre(i) * q.plate.length);
     // cell_x, cell_y: not x, y, which a campaign file's readers give the block centres
-    H5Dataset column = vector(properties, "cell_x", x, "m", "centre of each cell column along the grading axis x");
-    makeDimensionScale(column, "cell_x");
-    H5Dataset node = vector(properties, "node_x", nodeX, "m", "position of each node column along x");
-    makeDimensionScale(node, "node_x");
-    for (const PropertyProfile& p : c.properties) {
-      const H5Dataset d = vector(properties, p.name.c_str(), p.values, p.unit.c_str(), p.description.c_str());
-      attachScale(d, p.perNode ? node : column, 0);
-    }
+    const H5Dataset column =
+        createCoordinateScale(properties, "cell_x", x, "m", "centre of each cell column along the grading axis x");
+    const H5Dataset node = createCoordinateScale(properties, "node_x", nodeX, "m", "position of each node column along x");
+    for (const PropertyProfile& p : c.properties)
+      writeDescribedColumn(properties, p.name, p.values, p.unit, p.description, p.perNode ? node : column);
   }
   if (c.response) writePressureResponse(fem, *c.response);
 }

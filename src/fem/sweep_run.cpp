@@ -103,24 +103,6 @@ void printPlan(MPI_Comm comm, const FemSweep& s, long pending) {
                       s.options.ranksPerRun, s.params.nx, s.params.ny, s.params.nz));
 }
 
-// Each point's discretisation error bar (relative; NaN: not measured), the same rule as a single
-// run's (error_estimate.hpp): it depends on the point's settings only, not on its run.
-struct ErrorBars {
-  std::vector<double> muStatic, muKinetic;
-};
-
-ErrorBars errorBarsOf(const FemSweep& s) {
-  ErrorBars bars;
-  for (int p = 0; p < s.points(); ++p) {
-    const FemParameters q = s.pointParameters(p);
-    const Grading g = s.pointGrading(p);
-    const DiscretisationError e = discretisationError(q, g, chooseTimeStep(q, g) / stableTimeStep(q, g));
-    bars.muStatic.push_back(e.measured ? e.relative : std::numeric_limits<double>::quiet_NaN());
-    bars.muKinetic.push_back(std::numeric_limits<double>::quiet_NaN());  // no study bounds mu_k (e.kineticBasis)
-  }
-  return bars;
-}
-
 void printTable(MPI_Comm comm, const FemSweep& s, const std::vector<campaign::PointStatistics>& stats,
                 const ErrorBars& bars) {
   // Per observable (physics/observables.hpp): its value and relative variation; mu_s with its bar.
@@ -208,13 +190,25 @@ void runFemSweep(MPI_Comm comm, const FemSweep& s, const RunParameters& record) 
     campaign::runPending(comm, file, pending, model, plan.workPath());
   }
   const auto stats = campaign::writeStatistics(file, 1, s.sweep.reference, false);
-  const ErrorBars bars = errorBarsOf(s);
-  file.writeStatistics({{"mu_s_discretisation_error", bars.muStatic}, {"mu_k_discretisation_error", bars.muKinetic}},
-                       {});
+  const ErrorBars bars = writeErrorBars(file, s);
   campaign::finishResultsFile(comm, file, plan);  // complete: renamed into place
   printTable(comm, s, stats, bars);
   GF_CALL(PetscPrintf(comm, "FEM sweep: %zu run(s) in %.2f s wall; results in %s\n", pending.size(),
                       MPI_Wtime() - wall0, plan.path().c_str()));
+}
+
+ErrorBars writeErrorBars(io::ResultsFile& file, const FemSweep& s) {
+  ErrorBars bars;
+  for (int p = 0; p < s.points(); ++p) {
+    const FemParameters q = s.pointParameters(p);
+    const Grading g = s.pointGrading(p);
+    const DiscretisationError e = discretisationError(q, g, chooseTimeStep(q, g) / stableTimeStep(q, g));
+    bars.muStatic.push_back(e.measured ? e.relative : std::numeric_limits<double>::quiet_NaN());
+    bars.muKinetic.push_back(std::numeric_limits<double>::quiet_NaN());  // no study bounds mu_k (e.kineticBasis)
+  }
+  file.writeStatistics({{"mu_s_discretisation_error", bars.muStatic}, {"mu_k_discretisation_error", bars.muKinetic}},
+                       {});
+  return bars;
 }
 
 }  // namespace gradfric::fem

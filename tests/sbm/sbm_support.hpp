@@ -3,6 +3,8 @@
 #include "gradfric/sbm/model.hpp"
 #include "gradfric/sbm/parameters.hpp"
 
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <vector>
 
@@ -19,6 +21,26 @@ inline Parameters paperParameters(int blocksPerSide, double sigma, const Grading
   p.damping = dampingFactor * naturalFrequency(p);
   p.timeStep = dtSafety > 0 ? dtSafety * stableTimeStep(p, grading) : defaultTimeStep(p, grading);
   return p;
+}
+
+// A triangular grading of property in 4 bands: the kernels' equivalence tests' plate.
+inline Grading triangular(GradedProperty property, double delta) {
+  Grading g;
+  g.profile = GradingProfile::Triangular;
+  g.property = property;
+  g.delta = delta;
+  g.bands = 4;
+  return g;
+}
+
+// The moment-balance pressure kept its balances through a run: the normal force p L^2 and the
+// moment H F at every step.
+inline void expectPressureBalances(const Result& r) {
+  const PressureCouplingRecord& c = r.pressureCoupling;
+  ASSERT_TRUE(c.active);
+  EXPECT_GT(c.updates, r.steps / 2);
+  EXPECT_LT(c.largestForceError, 1e-13);
+  EXPECT_LT(c.largestMomentError, 1e-12);
 }
 
 inline Request defaultRequest(const Parameters& p) {

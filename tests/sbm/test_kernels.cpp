@@ -15,14 +15,7 @@ using namespace gradfric::sbm;
 
 namespace {
 
-Grading graded(GradedProperty property, double delta) {
-  Grading g;
-  g.profile = GradingProfile::Triangular;
-  g.property = property;
-  g.delta = delta;
-  g.bands = 4;
-  return g;
-}
+Grading graded(GradedProperty property, double delta) { return sbm::testing::triangular(property, delta); }
 Grading both(double delta) { return graded(GradedProperty::Both, delta); }
 
 const char* name(Integrator integrator) { return integrator == Integrator::RK4 ? "rk4" : "verlet"; }

@@ -55,6 +55,15 @@ FemSweep buildFemSweep(MPI_Comm comm, const FemParameters& params, const Grading
 // file of a single run is this campaign's file plus the run's FEM extras (output.hpp).
 FemSweep oneRunCampaign(const FemParameters& params, const Grading& grading, const RunParameters& record);
 
+// Each point's discretisation error bar (relative; NaN: not measured), the same rule as a single
+// run's (error_estimate.hpp): it depends on the point's settings only, not on its run.
+struct ErrorBars {
+  std::vector<double> muStatic, muKinetic;
+};
+// Computes the bars and writes them as the statistics' mu_s and mu_k discretisation_error
+// columns: a sweep's file and a single run's (one point) alike.
+ErrorBars writeErrorBars(io::ResultsFile& file, const FemSweep& s);
+
 // Collective over comm: plans the file, runs every pending point on the groups, writes the
 // statistics, renames the file into place and prints the table.
 void runFemSweep(MPI_Comm comm, const FemSweep& sweep, const RunParameters& record);
