@@ -4,7 +4,7 @@
 // variation against the non-graded plate, within a tolerance.
 //
 //   mpiexec -n 2 gradfric-design -options_file input/design_friction_delta.opts -output design.h5
-//   mpiexec -n 2 gradfric-design -options_file input/design_stripes_tao.opts -tao_type pounders
+//   mpiexec -n 2 gradfric-design -options_file input/design_stripes_tao.opts -design_tao_type pounders
 //   python3 scripts/plot_design.py design.h5
 //
 // One free parameter: a stochastic root finder; several: PETSc TAO. Then a fresh verification
@@ -26,7 +26,7 @@
 
 static const char help[] =
     "gradfric-design: the parameters of a graded plate that give a target global static friction\n"
-    "(spring-block ensembles; one parameter: root finder, several: PETSc TAO, -tao_type nm|pounders).\n"
+    "(spring-block ensembles; one parameter: root finder, several: PETSc TAO, -design_tao_type nm|pounders).\n"
     "-help lists all options.\n\n";
 
 int main(int argc, char** argv) {

@@ -326,32 +326,6 @@ void OptionReader::requireAtLeast(const std::string& name, PetscInt value, Petsc
   if (value < minimum) throw InputError(fullName(name), std::to_string(value), ">= " + std::to_string(minimum));
 }
 
-void refuseRenamedOption(const std::string& old, const std::string& now, const std::string& why) {
-  char value[256] = "";
-  PetscBool set = PETSC_FALSE;
-  GF_CALL(PetscOptionsGetString(nullptr, nullptr, old.c_str(), value, sizeof value, &set));
-  if (!set) return;
-  const std::string shown = value[0] ? std::string(" = ") + value : "";  // a flag has no value
-  throw InputError("invalid option " + old + shown + ": " + why + "; use " + now + shown);
-}
-
-void refuseRetiredOption(const std::string& old, const std::string& why) {
-  char value[256] = "";
-  PetscBool set = PETSC_FALSE;
-  GF_CALL(PetscOptionsGetString(nullptr, nullptr, old.c_str(), value, sizeof value, &set));
-  if (!set) return;
-  throw InputError("invalid option " + old + (value[0] ? std::string(" = ") + value : "") + ": " + why);
-}
-
-void refuseRenamedRunControl() {
-  const std::pair<const char*, const char*> renamed[] = {
-      {"-fem_output", "-output"},          {"-fem_output_overwrite", "-output_overwrite"},
-      {"-fem_sweep_resume", "-resume"},    {"-ensemble_resume", "-resume"},
-      {"-calibrate_output", "-output"},    {"-calibrate_output_overwrite", "-output_overwrite"}};
-  for (const auto& [old, now] : renamed)
-    refuseRenamedOption(old, now, "renamed: every driver says -output, -output_overwrite and -resume");
-}
-
 void checkUnusedOptions(MPI_Comm comm, const std::vector<std::string>& strictPrefixes) {
   PetscInt count = 0;
   char** names = nullptr;

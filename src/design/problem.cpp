@@ -3,6 +3,7 @@
 
 #include "gradfric/core/input_error.hpp"
 #include "gradfric/core/petsc_call.hpp"
+#include "gradfric/design/tao_search.hpp"
 #include "gradfric/physics/field_options.hpp"
 #include "gradfric/physics/grading_options.hpp"
 #include "gradfric/physics/plate_options.hpp"
@@ -149,7 +150,7 @@ std::optional<Problem> readProblem(MPI_Comm comm, RunParameters* record) {
   const PetscInt scan = o.integer("scan_points", 3, 0, 1000, "1",
                                   "interior points tried when the bounds do not bracket the target (one parameter)");
   const std::string method = o.choice("method", "auto", {"auto", "root", "tao"},
-                                      "search: the stochastic root finder (one parameter) or PETSc TAO (-tao_type nm, pounders); "
+                                      "search: the stochastic root finder (one parameter) or PETSc TAO (-design_tao_type nm, pounders); "
                                       "auto: root for one parameter, tao for several");
   const PetscInt seed = o.integer("seed", 1, 0, PETSC_MAX_INT, "1",
                                   "seed: realisation r of every evaluation draws from stream (seed, 0, r), the "
@@ -202,8 +203,7 @@ std::optional<Problem> readProblem(MPI_Comm comm, RunParameters* record) {
     for (const auto& c : corners(s.free)) all.push_back(s.gradingAt(c));
     checkFemCheck(*s.fem, all);
   }
-  PetscBool taoType = PETSC_FALSE;  // read by TaoSetFromOptions later: not an unused option
-  GF_CALL(PetscOptionsHasName(nullptr, nullptr, "-tao_type", &taoType));
+  readDesignTaoOptions();  // -design_tao_*: read by TaoSetFromOptions later, checked now
   if (s.fem)
     checkUnusedOptions(comm, {"design_", "plate_", "friction_", "sbm_", "grading_", "field_", "output", "fem_"});
   else

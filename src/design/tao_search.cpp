@@ -1,6 +1,8 @@
 // The several-parameter design search with PETSc TAO (include/gradfric/design/tao_search.hpp).
 #include "gradfric/design/tao_search.hpp"
 
+#include "gradfric/core/input_error.hpp"
+#include "gradfric/core/options.hpp"
 #include "gradfric/core/petsc_call.hpp"
 #include "gradfric/core/petsc_handle.hpp"
 
@@ -10,6 +12,7 @@
 #include <cmath>
 #include <exception>
 #include <optional>
+#include <string>
 
 namespace gradfric::design {
 
@@ -99,6 +102,22 @@ OwnedVec sequentialVector(int d, double value) {
 
 }  // namespace
 
+void readDesignTaoOptions() {
+  refuseUnprefixedOptions("tao_", kDesignTaoPrefix, "the design's TAO reads its options with the prefix design_");
+  const std::string typeOption = std::string("-") + kDesignTaoPrefix + "tao_type";
+  char type[256] = "";
+  PetscBool typeGiven = PETSC_FALSE;
+  GF_CALL(PetscOptionsGetString(nullptr, nullptr, typeOption.c_str(), type, sizeof type, &typeGiven));
+  OwnedTao tao;
+  GF_CALL(TaoCreate(PETSC_COMM_SELF, tao.out()));
+  GF_CALL(TaoSetOptionsPrefix(tao, kDesignTaoPrefix));
+  GF_CALL(TaoSetType(tao, TAONM));
+  const PetscErrorCode code = TaoSetFromOptions(tao);
+  if (code == PETSC_ERR_ARG_UNKNOWN_TYPE && typeGiven)
+    throw InputError(typeOption, type, "nm (the default), pounders or another PETSc TAO type");
+  GF_CALL(code);
+}
+
 SearchResult searchWithTao(MPI_Comm comm, Evaluator& evaluator, const Problem& problem, SearchLog& log) {
   const int d = problem.dimension();
   Context c{comm, &evaluator, &problem, &log, std::nullopt, 0, nullptr};
@@ -118,7 +137,8 @@ SearchResult searchWithTao(MPI_Comm comm, Evaluator& evaluator, const Problem& p
   GF_CALL(TaoSetMaximumFunctionEvaluations(tao, problem.maxEvaluations));
   GF_CALL(TaoSetMaximumIterations(tao, problem.maxEvaluations));
   GF_CALL(TaoSetConvergenceTest(tao, convergence, &c));
-  GF_CALL(TaoSetFromOptions(tao));  // -tao_type pounders, -tao_monitor, ...
+  GF_CALL(TaoSetOptionsPrefix(tao, kDesignTaoPrefix));
+  GF_CALL(TaoSetFromOptions(tao));  // -design_tao_type pounders, -design_tao_monitor, ...
   TaoType type = nullptr;
   GF_CALL(TaoGetType(tao, &type));
   const std::string method = std::string("tao ") + type;

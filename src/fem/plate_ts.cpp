@@ -1,11 +1,11 @@
 #include "gradfric/fem/plate_ts.hpp"
 
 #include "gradfric/core/input_error.hpp"
+#include "gradfric/core/options.hpp"
 #include "gradfric/core/petsc_call.hpp"
 #include "gradfric/fem/verlet_ts.hpp"
 
 #include <string>
-#include <vector>
 
 namespace gradfric::fem {
 
@@ -51,21 +51,6 @@ void solvePlateTS(TS ts) {
 
 namespace {
 
-// The TS options without the prefix (the spelling before it): refused, naming the new one.
-void refuseUnprefixedTSOptions() {
-  PetscInt count = 0;
-  char** names = nullptr;
-  char** values = nullptr;
-  GF_CALL(PetscOptionsLeftGet(nullptr, &count, &names, &values));
-  std::vector<std::string> unprefixed;
-  for (PetscInt i = 0; i < count; ++i)
-    if (std::string(names[i]).rfind("ts_", 0) == 0) unprefixed.push_back(names[i]);
-  GF_CALL(PetscOptionsLeftRestore(nullptr, &count, &names, &values));
-  for (const std::string& name : unprefixed)
-    refuseRenamedOption("-" + name, "-" + std::string(kPlateTSPrefix) + name,
-                        "the plate's TS reads its options with the prefix " + std::string(kPlateTSPrefix));
-}
-
 // The type the TS runs: the caller's integrator unless -fem_ts_type overrides it.
 void setIntegrator(TS ts, const FemParameters& params) {
   GF_CALL(TSSetType(ts, params.integrator.c_str()));
@@ -85,7 +70,8 @@ void requireGfverletWithKinematicContact(TS ts, const FemParameters& params) {
 
 void readPlateTSOptions(MPI_Comm comm, const FemParameters& params) {
   registerVerletTS();
-  refuseUnprefixedTSOptions();
+  refuseUnprefixedOptions("ts_", kPlateTSPrefix,
+                          "the plate's TS reads its options with the prefix " + std::string(kPlateTSPrefix));
   OwnedTS ts;
   GF_CALL(TSCreate(comm, ts.out()));
   GF_CALL(TSSetOptionsPrefix(ts, kPlateTSPrefix));

@@ -80,12 +80,12 @@ ranks)
   ;;
 tao)
   # Two free parameters (E and mu amplitudes) with TAO's pounders on a reduced plate.
-  run 0 2 "$work/t.log" -options_file "$src/input/design_E_mu_tao.opts" -sbm_N 20 -tao_type pounders -output "$work/t.h5"
+  run 0 2 "$work/t.log" -options_file "$src/input/design_E_mu_tao.opts" -sbm_N 20 -design_tao_type pounders -output "$work/t.h5"
   grep -q "Design (tao pounders, found)" "$work/t.log" || { cat "$work/t.log" >&2; fail "no TAO design"; }
   "$python" "$checker" status "$work/t.h5" found || fail "status"
   "$python" "$checker" meets "$work/t.h5" 0.85 0.003 || fail "the TAO design does not meet the target"
   # TAO takes the same steps on 1 rank: the same file.
-  run 0 1 "$work/t1.log" -options_file "$src/input/design_E_mu_tao.opts" -sbm_N 20 -tao_type pounders -output "$work/t1.h5"
+  run 0 1 "$work/t1.log" -options_file "$src/input/design_E_mu_tao.opts" -sbm_N 20 -design_tao_type pounders -output "$work/t1.h5"
   "$python" "$checker" same "$work/t1.h5" "$work/t.h5" || fail "TAO: 1 and 2 ranks differ"
   "$python" "$src/scripts/plot_design.py" "$work/t.h5" --out "$work/plots" >/dev/null || fail "plot of a TAO search"
   [ -s "$work/plots/t_search.png" ] || fail "no search plot"
@@ -133,6 +133,9 @@ refuse)
   refused 1 -design_parameters -grading_profile none
   refused 1 -design_method -options_file "$src/input/design_E_mu_tao.opts" -design_method root
   refused 1 -design_upper -options_file "$src/input/design_E_mu_tao.opts" -design_upper 0.5,1.5
+  # TAO reads its options with the prefix design_: a bad type, and the unprefixed spelling.
+  refused 1 -design_tao_type -options_file "$src/input/design_E_mu_tao.opts" -design_tao_type simplex
+  refused 2 -tao_type -options_file "$src/input/design_E_mu_tao.opts" -tao_type pounders
   # A g per grading cannot follow a grading that moves with every evaluation.
   refused 2 -pressure_response_select -pressure_response fem -pressure_response_select grading \
     -pressure_response_file "$src/input/fields/pressure_response_fem100.h5"

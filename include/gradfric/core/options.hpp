@@ -117,6 +117,9 @@ void refuseRenamedOption(const std::string& old, const std::string& now, const s
 // An option that no longer exists: if `old` is set, throws InputError "invalid option <old> =
 // <value>: <why>".
 void refuseRetiredOption(const std::string& old, const std::string& why);
+// Options of a PETSc object's family (`family` "ts_", "tao_") set without the prefix its
+// component reads them with: each refused as renamed to -<prefix><name> (`why` says whose prefix).
+void refuseUnprefixedOptions(const std::string& family, const std::string& prefix, const std::string& why);
 
 // The options every driver names one way for its results file: -output, -output_overwrite,
 // -resume. The spellings of before (-fem_output, -ensemble_resume, ...) are refused with the new one.

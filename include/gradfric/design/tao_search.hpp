@@ -1,6 +1,6 @@
 #pragma once
-// A design with several free parameters: PETSc TAO with a derivative-free method (-tao_type nm,
-// the default, or pounders), each objective evaluation an ensemble (Evaluator).
+// A design with several free parameters: PETSc TAO with a derivative-free method (-design_tao_type
+// nm, the default, or pounders; TAO reads its options with the prefix design_), each objective evaluation an ensemble (Evaluator).
 //   - TAO runs redundantly on every rank (PETSC_COMM_SELF: a handful of parameters; pounders is
 //     serial); it sees the same objective values everywhere, so it takes the same steps, and each
 //     objective evaluation is an ensemble collective over the communicator.
@@ -18,6 +18,13 @@
 #include <mpi.h>
 
 namespace gradfric::design {
+
+inline constexpr const char* kDesignTaoPrefix = "design_";
+
+// Reads and checks TAO's options (-design_tao_type, -design_tao_monitor, ...) before any work, so
+// that they count as used and a bad type is refused with exit 2; an unprefixed -tao_* is refused,
+// naming its new spelling.
+void readDesignTaoOptions();
 
 // Collective over comm.
 SearchResult searchWithTao(MPI_Comm comm, Evaluator& evaluator, const Problem& problem, SearchLog& log);
