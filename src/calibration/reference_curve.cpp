@@ -1,6 +1,7 @@
 // Reading the reference mu(t) of a calibration (include/gradfric/calibration/reference_curve.hpp).
 #include "gradfric/calibration/reference_curve.hpp"
 
+#include "gradfric/core/broadcast.hpp"
 #include "gradfric/core/input_error.hpp"
 #include "gradfric/core/petsc_call.hpp"
 #include "gradfric/io/hdf5_attributes.hpp"
@@ -148,20 +149,6 @@ void check(const ReferenceCurve& c) {
   }
 }
 
-void broadcast(MPI_Comm comm, std::vector<double>* v) {
-  unsigned long n = v->size();
-  GF_CALL_MPI(MPI_Bcast(&n, 1, MPI_UNSIGNED_LONG, 0, comm));
-  v->resize(n);
-  if (n > 0) GF_CALL_MPI(MPI_Bcast(v->data(), static_cast<int>(n), MPI_DOUBLE, 0, comm));
-}
-
-void broadcast(MPI_Comm comm, std::string* s) {
-  unsigned long n = s->size();
-  GF_CALL_MPI(MPI_Bcast(&n, 1, MPI_UNSIGNED_LONG, 0, comm));
-  s->resize(n);
-  if (n > 0) GF_CALL_MPI(MPI_Bcast(s->data(), static_cast<int>(n), MPI_CHAR, 0, comm));
-}
-
 }  // namespace
 
 ReferenceCurve readReferenceCurve(MPI_Comm comm, const ReferenceSource& source) {
@@ -179,13 +166,13 @@ ReferenceCurve readReferenceCurve(MPI_Comm comm, const ReferenceSource& source) 
       problem = std::string("a readable reference (") + e.what() + ")";
     }
   }
-  broadcast(comm, &problem);
+  broadcast(comm, problem);
   if (!problem.empty()) throw InputError(source.option, source.path, problem);
-  broadcast(comm, &c.kind);
-  broadcast(comm, &c.time);
-  broadcast(comm, &c.mu);
+  broadcast(comm, c.kind);
+  broadcast(comm, c.time);
+  broadcast(comm, c.mu);
   std::vector<double> peak{c.peak, c.peakTime};
-  broadcast(comm, &peak);
+  broadcast(comm, peak);
   c.peak = peak[0];
   c.peakTime = peak[1];
   unsigned long entries = c.scene.size();
@@ -199,8 +186,8 @@ ReferenceCurve readReferenceCurve(MPI_Comm comm, const ReferenceSource& source) 
       v = it->second;
       ++it;
     }
-    broadcast(comm, &k);
-    broadcast(comm, &v);
+    broadcast(comm, k);
+    broadcast(comm, v);
     scene[k] = v;
   }
   c.scene = std::move(scene);

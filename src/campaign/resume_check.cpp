@@ -1,9 +1,11 @@
 // Is the file given to -resume a results file of this scene? Checked on rank 0 with
 // HDF5's error printing off, before any rank opens it in parallel: a foreign, truncated or damaged
 // file, or one of another scene, gets one line saying what is wrong with it (exit 2).
-#include "gradfric/core/input_error.hpp"
 #include "gradfric/campaign/resume_check.hpp"
+
 #include "gradfric/campaign/campaign_file.hpp"
+#include "gradfric/core/broadcast.hpp"
+#include "gradfric/core/input_error.hpp"
 #include "gradfric/io/collective_file.hpp"
 
 #include <csignal>
@@ -138,10 +140,7 @@ void checkFile(MPI_Comm comm, const ResumeTarget& target, const Extension* exten
   MPI_Comm_rank(comm, &rank);
   std::string problem;
   if (rank == 0) problem = problemWithin(target, extension, path, 60);
-  int length = static_cast<int>(problem.size());
-  MPI_Bcast(&length, 1, MPI_INT, 0, comm);
-  problem.resize(length);
-  if (length > 0) MPI_Bcast(problem.data(), length, MPI_CHAR, 0, comm);
+  broadcast(comm, problem);
   if (!problem.empty())
     throw InputError("invalid option " + (extension ? extension->option + " (extend " : target.resumeOption + " (continue ") +
                      path + "): " + problem);

@@ -1,5 +1,7 @@
 #include "gradfric/core/collective_error.hpp"
 
+#include "gradfric/core/broadcast.hpp"
+
 #include <cstdio>
 #include <cstdlib>
 
@@ -14,10 +16,7 @@ void agreeOnError(MPI_Comm comm, const std::string& localError) {
   MPI_Allreduce(&mine, &first, 1, MPI_INT, MPI_MIN, comm);
   if (first == size) return;
   std::string message = localError;
-  int length = static_cast<int>(message.size());
-  MPI_Bcast(&length, 1, MPI_INT, first, comm);
-  message.resize(length);
-  if (length > 0) MPI_Bcast(message.data(), length, MPI_CHAR, first, comm);
+  broadcast(comm, message, first);
   throw CollectiveError(message);
 }
 

@@ -1,7 +1,9 @@
 #include "gradfric/io/output_plan.hpp"
 
+#include "gradfric/core/broadcast.hpp"
 #include "gradfric/core/collective_error.hpp"
 #include "gradfric/core/input_error.hpp"
+#include "gradfric/core/petsc_call.hpp"
 #include "gradfric/io/collective_file.hpp"
 
 #include <fcntl.h>
@@ -103,14 +105,13 @@ OutputPlan OutputPlan::decide(MPI_Comm comm, const OutputRequest& request) {
   MPI_Comm_rank(comm, &rank);
   Decision d;
   if (rank == 0) d = decideHere(request);
-  int header[2] = {static_cast<int>(d.refusal.size()), static_cast<int>(d.start)};
-  MPI_Bcast(header, 2, MPI_INT, 0, comm);
-  d.refusal.resize(header[0]);
-  if (header[0] > 0) MPI_Bcast(d.refusal.data(), header[0], MPI_CHAR, 0, comm);
+  broadcast(comm, d.refusal);
   if (!d.refusal.empty()) throw InputError(d.refusal);
+  int start = static_cast<int>(d.start);
+  GF_CALL_MPI(MPI_Bcast(&start, 1, MPI_INT, 0, comm));
   OutputPlan plan;
   plan.path_ = request.path;
-  plan.start_ = static_cast<OutputStart>(header[1]);
+  plan.start_ = static_cast<OutputStart>(start);
   plan.workPath_ = plan.start_ == OutputStart::ContinueFinished ? request.path : request.path + request.temporarySuffix;
   return plan;
 }

@@ -1,5 +1,6 @@
 #include "gradfric/io/provenance.hpp"
 
+#include "gradfric/core/broadcast.hpp"
 #include "gradfric/core/command_line.hpp"
 #include "gradfric/core/petsc_call.hpp"
 #include "gradfric/io/hdf5_attributes.hpp"
@@ -72,10 +73,7 @@ Provenance collectProvenance(MPI_Comm comm) {
     put(packed, std::to_string(count));
     packed += files;
   }
-  int length = static_cast<int>(packed.size());
-  GF_CALL_MPI(MPI_Bcast(&length, 1, MPI_INT, 0, comm));
-  packed.resize(static_cast<size_t>(length));
-  GF_CALL_MPI(MPI_Bcast(packed.data(), length, MPI_CHAR, 0, comm));
+  broadcast(comm, packed);
   size_t at = 0;
   p.version = kVersion;
   p.commit = kCommit;
