@@ -62,6 +62,9 @@ public:
   // Adds the term's force at the global state X and ctx.t to the force slots of the global
   // right-hand side F (state layout, state_view.hpp) and its share of the step's totals.
   virtual void addForce(const LayerContext& ctx, Vec X, Vec F, ContactSums& sums) = 0;
+  // The force of a load that does not depend on the state, at its full value, added to the force
+  // slots of F: the load the static pressure step (pressed_equilibrium.hpp) balances.
+  virtual void addDeadLoad(Vec /*F*/) const {}
   // Once F holds accelerations (M^-1 f + mass damping): constraints on them (the slider's).
   virtual void constrain(const LayerContext& /*ctx*/, Vec /*X*/, Vec /*F*/, ContactSums& /*sums*/) {}
   // After each accepted step (the TS post-step), before the observers: pending state committed,
