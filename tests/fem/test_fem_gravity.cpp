@@ -5,6 +5,7 @@
 //  - the energy balance stays closed with the weight's work in it (dynamic and static step 1), and
 //    that work is far above what the balance leaves open: without it the balance would fail;
 //  - a constant friction 1 slides with the weight in its normal force;
+//  - a weight six times the pressure slides to its peak without a false alarm of the blow-up monitor;
 //  - g = 0 builds no layer (the driver's run is compared with main's bit for bit by gravity_off.sh).
 #include <petscsection.h>
 #include <petscsf.h>
@@ -163,4 +164,27 @@ TEST(FemGravity, StaticStepBalancesTheWeightsEnergy) {
               kGravity, r.settledNormalForce, relative, absolute, run.weightWork);
   EXPECT_LT(relative, 1e-4);  // measured 9.9e-7
   EXPECT_GT(run.weightWork, 20 * absolute);
+}
+
+// A plate whose weight is most of its load (p = 100 Pa, rho g H = 600 Pa): the blow-up monitor
+// scales with the load, so the run reaches its peak, mu_s (F over p L^2) the weight's share above
+// the friction coefficient of the whole load.
+TEST(FemGravity, WeightAboveThePressureSlidesWithoutAlarm) {
+  Plate plate;
+  plate.pressure = 100;
+  plate.velocity = 1e-5;  // the peak ~30 steps after the start of sliding
+  FemParameters q = test::coarse(8, 8, 2, plate);
+  q.gravity = kGravity;
+  q.measurement.kinetic = false;  // stop at the confirmed peak
+  const double load = 1 + weightShare(q);
+  q.slideTime = 4 * load * q.eq2PeakTime();  // Eq. 2 with the load
+  PlateModel model(PETSC_COMM_WORLD, q, test::noGrading());
+  FemRunResult r;
+  EXPECT_NO_THROW(r = runPlateExperiment(model));
+  PetscPrintf(PETSC_COMM_WORLD, "p = 100 Pa, rho g H = %.0f Pa: settled %.6f p L^2, mu_s %.5f = %.5f x the load\n",
+              weightShare(q) * q.plate.pressure, r.settledNormalForce, r.friction.muStatic, r.friction.muStatic / load);
+  EXPECT_NEAR(r.settledNormalForce, load, 1e-3 * load);
+  EXPECT_TRUE(r.friction.peakConfirmed);
+  EXPECT_GT(r.friction.muStatic / load, 0.8);
+  EXPECT_LT(r.friction.muStatic / load, 1.02);
 }
