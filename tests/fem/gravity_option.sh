@@ -3,7 +3,7 @@
 #  1. off (0, the default) is the run without the option bit for bit (every dataset but the run's
 #     provenance), and the results file records it (default, or set when given);
 #  2. on, the run prints and records it as set, describes the layer among the active effects,
-#     settles on p L^2 plus the weight, and its history differs;
+#     settles on p L^2 plus the weight, its history differs, and is the same bits on 2 ranks;
 #  3. -help lists it with its unit and default.
 set -u
 driver=$1; scratch=$2
@@ -31,6 +31,8 @@ grep -q 'step 1 done: .*normal force 1.05[0-9]* p L^2' on.log || { echo "on: ste
 h5dump -a /scene/fem_gravity on.h5 | grep -q '"10000"' || { echo "on: /scene/fem_gravity is not 10000"; fail=1; }
 h5dump -a /scene/origin/fem_gravity on.h5 | grep -q '"set"' || { echo "on: not recorded as set"; fail=1; }
 if h5diff -q absent.h5 on.h5 /history >/dev/null 2>&1; then echo "on: the history did not change"; fail=1; fi
+mpiexec --oversubscribe -n 2 "$driver" $small -fem_gravity 1e4 -output on2.h5 >on2.log 2>&1 || { echo "on, 2 ranks: exit status $?"; fail=1; }
+h5diff -r on.h5 on2.h5 /history >diff.log 2>&1 || { echo "on: 2 ranks differ from 1"; fail=1; }
 
 "$driver" -help fem_gravity >help.log 2>&1
 grep -q -- '-fem_gravity <0> \[m/s^2\]: the plate.s own weight' help.log || { echo "help: no -fem_gravity line"; fail=1; }

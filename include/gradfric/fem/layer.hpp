@@ -1,12 +1,12 @@
 #pragma once
 // The contract of a FEM physics term ("layer", as PyLith's physics objects): the elastic
-// operator, the top loading, the bulk viscosity, the contact (penalty or kinematic), the mass
-// damping. PlateModel holds the active ones in a list, in the order their forces are added (the
-// sums at a node must keep that order to stay bit for bit), and its right-hand side and post-step
-// are loops over it; an effect that is off is not in the list. A new term is one class deriving
-// from Layer plus one line in PlateModel's constructor; its option, read and checked in its own
-// file, adds a member to parameters.hpp and a call in the reader (docs/fem.md, "Adding a FEM
-// term", with the weight, gravity.hpp, as the worked example).
+// operator, the top loading, the bulk viscosity, the weight, the contact (penalty or kinematic),
+// the mass damping. PlateModel holds the active ones in a list, in the order their forces are
+// added (the sums at a node must keep that order to stay bit for bit), and its right-hand side and
+// post-step are loops over it; an effect that is off is not in the list. A new term is one class
+// deriving from Layer plus one line in PlateModel's constructor; its option, read and checked in
+// its own file, adds a member to parameters.hpp and a call in the reader (docs/fem.md, "Adding a
+// FEM term", with the weight, gravity.hpp, as the worked example).
 #include "gradfric/core/exact_sum.hpp"
 #include "gradfric/fem/sliding_damping.hpp"
 
