@@ -8,7 +8,8 @@ namespace gradfric::fem {
 
 void Gravity::readOptions(OptionReader& o, FemParameters& q) {
   q.gravity = o.real("gravity", q.gravity, "m/s^2",
-                     "the plate's own weight: body force -m g on every node, m its lumped mass (9.81 on Earth; 0: off)");
+                     "the plate's own weight: body force -m g on every node, m its lumped mass (9.81 on Earth; "
+                     "0: off)");
   o.requireNonNegative("gravity", q.gravity, "m/s^2");
 }
 
