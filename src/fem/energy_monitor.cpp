@@ -8,11 +8,16 @@ namespace gradfric::fem {
 EnergyMonitor::EnergyMonitor(PlateModel& model, TS ts, EnergyRecord* record)
     : model_(model), ts_(ts), record_(record) {
   const FemParameters& q = model.params();
-  // The elastic energy of the plate compressed by p: the scale before any work is done.
-  const double reference = q.plate.pressure * q.plate.pressure * q.plate.length * q.plate.length *
+  // The load on the plane: p, plus the weight rho g H with -fem_gravity. A plate under a small p
+  // would otherwise be stopped for the energy its weight gave it (not in the energy put in) or for
+  // its friction, which mu(t) = |F|/(p L^2) counts over p L^2 alone.
+  const double load = q.plate.pressure + q.plate.density * q.gravity * q.plate.thickness;
+  // The elastic energy of the plate compressed by the load: the scale before any work is done.
+  const double reference = load * load * q.plate.length * q.plate.length *
                            q.plate.thickness / (2 * q.plate.youngsModulus);
   bound_ = EnergyBound{q.monitorFactor, reference};
-  muCeiling_ = 2.0 * model.contact().largestStaticCoefficient();
+  muCeiling_ = 2.0 * model.contact().largestStaticCoefficient() * (load / q.plate.pressure);
+  if (q.gravity > 0) muCeilingText_ = " (twice the largest local mu_s times (p + rho g H)/p, the weight's share)";
 }
 
 void EnergyMonitor::startSliding(Vec state, double kineticBefore) {
@@ -23,7 +28,7 @@ void EnergyMonitor::afterStep(long step, double t, Vec state, const ContactTotal
   const FemParameters& q = model_.params();
   // mu(t) cannot exceed the largest local mu_s but by a dynamic overshoot: twice that is a blow-up.
   const std::string muProblem = frictionViolation(mu, muCeiling_);
-  if (!muProblem.empty()) fail(step, t, muProblem + " (twice the largest local mu_s)");
+  if (!muProblem.empty()) fail(step, t, muProblem + muCeilingText_);
   if (!std::isfinite(totals.fn)) fail(step, t, "the contact normal force is not finite");
   if (!std::isfinite(totals.topZ)) fail(step, t, "the top surface's vertical displacement is not finite");
   const double p = model_.pressureAt(t);

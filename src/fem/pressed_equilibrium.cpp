@@ -168,11 +168,11 @@ PressedEquilibrium solvePressedEquilibrium(PlateModel& model, Vec X, double rela
   useExactReductions(load);
   PetscInt n = 0;
   GF_CALL(VecGetLocalSize(u, &n));
-  {  // the load: the top pressure at its full value, from the top loading itself
+  {  // the load: the layers' dead loads at their full value (the top pressure, the weight)
     OwnedVec stateForce;
     GF_CALL(VecDuplicate(X, stateForce.out()));
     GF_CALL(VecZeroEntries(stateForce));
-    model.top().addPressure(q.plate.pressure, stateForce);
+    for (const Layer* layer : model.layers()) layer->addDeadLoad(stateForce);
     const ReadState f(stateForce);
     PetscScalar* b = nullptr;
     GF_CALL(VecGetArray(load, &b));

@@ -28,6 +28,8 @@ void TopLoading::addPressure(double p, Vec F) const {
   for (const TopNode& n : properties_.topNodes()) f.force(n.block)[2] -= p * n.load;
 }
 
+void TopLoading::addDeadLoad(Vec F) const { addPressure(properties_.plate().pressure, F); }
+
 void TopLoading::constrain(const LayerContext& ctx, Vec, Vec F, ContactSums& sums) {
   if (!ctx.sliding) return;
   const std::vector<double>& mass = ctx.mass->perBlock();

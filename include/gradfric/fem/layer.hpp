@@ -1,10 +1,12 @@
 #pragma once
 // The contract of a FEM physics term ("layer", as PyLith's physics objects): the elastic
-// operator, the top loading, the bulk viscosity, the contact (penalty or kinematic), the mass
-// damping. PlateModel holds the active ones in a list, in the order their forces are added (the
-// sums at a node must keep that order to stay bit for bit), and its right-hand side and post-step
-// are loops over it; an effect that is off is not in the list. A new term is one class deriving
-// from Layer plus one line in PlateModel's constructor (docs/fem.md, "Adding a FEM term").
+// operator, the top loading, the bulk viscosity, the weight, the contact (penalty or kinematic),
+// the mass damping. PlateModel holds the active ones in a list, in the order their forces are
+// added (the sums at a node must keep that order to stay bit for bit), and its right-hand side and
+// post-step are loops over it; an effect that is off is not in the list. A new term is one class
+// deriving from Layer plus one line in PlateModel's constructor; its option, read and checked in
+// its own file, adds a member to parameters.hpp and a call in the reader (docs/fem.md, "Adding a
+// FEM term", with the weight, gravity.hpp, as the worked example).
 #include "gradfric/core/exact_sum.hpp"
 #include "gradfric/fem/sliding_damping.hpp"
 
@@ -62,6 +64,9 @@ public:
   // Adds the term's force at the global state X and ctx.t to the force slots of the global
   // right-hand side F (state layout, state_view.hpp) and its share of the step's totals.
   virtual void addForce(const LayerContext& ctx, Vec X, Vec F, ContactSums& sums) = 0;
+  // The force of a load that does not depend on the state, at its full value, added to the force
+  // slots of F: the load the static pressure step (pressed_equilibrium.hpp) balances.
+  virtual void addDeadLoad(Vec /*F*/) const {}
   // Once F holds accelerations (M^-1 f + mass damping): constraints on them (the slider's).
   virtual void constrain(const LayerContext& /*ctx*/, Vec /*X*/, Vec /*F*/, ContactSums& /*sums*/) {}
   // After each accepted step (the TS post-step), before the observers: pending state committed,

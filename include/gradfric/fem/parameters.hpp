@@ -144,6 +144,7 @@ struct FemParameters : FemMesh, FemContact, FemDamping, FemTimeStep, FemRequest,
   // The physical plate (-plate_ options, shared with the spring-block model): size L, thickness
   // H, material, pressure, sliding speed and angle, mean local mu_s and mu_k (graded by -grading_).
   Plate plate;
+  double gravity = 0;  // -fem_gravity [m/s^2]: the plate's own weight (gravity.hpp); 0: off
 
   FemParameters() : FemParameters(Plate{}) {}
   // Every value at its default for this plate, the derived ones derived from it. A caller that

@@ -7,9 +7,9 @@
 //   RHS = [v ; M^-1 (sum of the layers' forces) - gamma v], then the layers' constraints (the top's
 //   tangential acceleration held at zero while it slides).
 // The layers, in the order their forces are added: the elastic operator (always; it sets the
-// force slots), the top loading (always), the bulk viscosity (optional), the contact boundary
-// (penalty or kinematic: the kinematic contact comes last, it needs every other force), the mass
-// damping (it acts on the accelerations, in the M^-1 pass).
+// force slots), the top loading (always), the bulk viscosity (optional), the weight (optional,
+// gravity.hpp), the contact boundary (penalty or kinematic: the kinematic contact comes last, it
+// needs every other force), the mass damping (it acts on the accelerations, in the M^-1 pass).
 #include "gradfric/fem/bulk_viscosity.hpp"
 #include "gradfric/fem/contact_boundary.hpp"
 #include "gradfric/fem/elastic_operator.hpp"

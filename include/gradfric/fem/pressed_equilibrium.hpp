@@ -3,12 +3,13 @@
 // 20 H/c_s and letting the plate settle for 10 H/c_s (step 1 of the paper's experiment), solve the
 // pressed equilibrium directly: the elastic operator plus the penalty contact springs of every
 // bottom node (normal k_n, tangential k_t anchored where the node stands at rest), loaded by the
-// top pressure p, (K + P) u = f_p, matrix-free (MatShell on the specialised kernel, KSPCG with a
-// Jacobi preconditioner). That system is linear as long as every bottom node stays in contact
-// and sticks (|k_t u_t| <= mu_s k_n |u_z|): the solution is then checked with the contact law
-// itself (one right-hand side evaluation) and committed as the contact state, the plate at rest.
-// Otherwise (a node lifts off or would slip) the solution does not hold and the caller runs the
-// dynamic step instead.
+// layers' dead loads (the top pressure p, the weight with -fem_gravity), (K + P) u = f,
+// matrix-free (MatShell on the specialised kernel, KSPCG with a Jacobi preconditioner). That
+// system is linear as long as every bottom node stays in contact and sticks
+// (|k_t u_t| <= mu_s k_n |u_z|): the solution is then checked with the contact law itself (one
+// right-hand side evaluation) and committed as the contact state, the plate at rest. Otherwise (a
+// node lifts off or would slip) the solution does not hold and the caller runs the dynamic step
+// instead.
 #include "gradfric/fem/plate_model.hpp"
 
 #include <string>

@@ -21,6 +21,7 @@ public:
   // -m a (sums.driveX, driveY).
   const char* name() const override { return "top loading"; }
   void addForce(const LayerContext& ctx, Vec X, Vec F, ContactSums& sums) override;
+  void addDeadLoad(Vec F) const override;  // the pressure p of the plate
   void constrain(const LayerContext& ctx, Vec X, Vec F, ContactSums& sums) override;
   std::string describe() const override;
   void writeProperties(PropertySink& sink) const override;
