@@ -212,7 +212,7 @@ help)
   grep -q -- "-ensemble_delta" "$work/h.log" || fail "-help does not list -ensemble_delta"
   grep -q -- "-sbm_N" "$work/h.log" || fail "-help does not list -sbm_N"
   # The observables measured with mu_s, named from the table (physics/observables.hpp).
-  grep -q -- "-friction_observables .*peak_time, detachment_time come with mu_s" "$work/h.log" ||
+  grep -q -- "-friction_observables .*peak_time, detachment_time.* come with mu_s" "$work/h.log" ||
     fail "-help does not name the observables that come with mu_s"
   [ ! -e "$work/h.h5" ] && [ ! -e "$work/h.h5.partial" ] || fail "-help ran the scene"
   # -help <prefix>: that prefix's options alone; none listed twice.
