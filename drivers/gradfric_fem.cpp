@@ -17,6 +17,7 @@
 #include "gradfric/fem/sweep.hpp"
 #include "gradfric/physics/field_options.hpp"
 #include "gradfric/physics/grading_options.hpp"
+#include "gradfric/physics/observables.hpp"
 #include "gradfric/physics/plate_options.hpp"
 #include "gradfric/sbm/model.hpp"
 #include "gradfric/sbm/parameter_options.hpp"
@@ -144,6 +145,19 @@ std::string describeKineticWindow(const FrictionSummary& f, const FrictionMeasur
   return std::string(text, std::min<std::size_t>(n, sizeof text - 1)) + verdict;
 }
 
+// The observables of the table (physics/observables.hpp) the lines above do not show with their
+// error bar or Eq. 2, one line each: a new row appears here without a change to this driver.
+std::string otherObservables(const FrictionSummary& f) {
+  std::string lines;
+  for (const Observable& o : observables()) {
+    if (o.name == "mu_s" || o.name == "mu_k" || o.name == "peak_time") continue;
+    char line[160];
+    std::snprintf(line, sizeof line, "  %-31s %s\n", o.name.c_str(), formatObservable(o, o.take(f)).c_str());
+    lines += line;
+  }
+  return lines;
+}
+
 void printResults(MPI_Comm comm, const FemRun& run, const FemRunResult& r, double wall) {
   const double eq2 = run.params.eq2PeakTime();
   const FrictionSummary& f = r.friction;
@@ -155,12 +169,13 @@ void printResults(MPI_Comm comm, const FemRun& run, const FemRunResult& r, doubl
               "  interface resolution            %s\n"
               "  peak time after sliding start   %.6e s   (Eq. 2: %.6e s, ratio %.4f)\n"
               "  first slip after sliding start  %.6e s\n"
+              "%s"
               "  mu_k (kinetic window)           %s%s\n"
               "%s"
               "  steps %ld, dt %.4e s, wall %.2f s (pressure %.2f s, sliding %.2f s), %.3f ms/step\n",
               r.settledNormalForce, withErrorBar(f.muStatic, error).c_str(),
               f.peakConfirmed ? "" : "  (peak not confirmed)", r.resolution.describe().c_str(), f.peakTime, eq2, f.peakTime / eq2, f.firstSlipTime,
-              withKineticErrorBar(f.muKinetic, error).c_str(),
+              otherObservables(f).c_str(), withKineticErrorBar(f.muKinetic, error).c_str(),
               !run.params.measurement.kinetic ? "  (not asked: -friction_observables)"
               : f.kineticComplete             ? ""
                                               : "  (window incomplete)",

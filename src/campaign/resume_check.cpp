@@ -4,9 +4,12 @@
 #include "gradfric/campaign/resume_check.hpp"
 
 #include "gradfric/campaign/campaign_file.hpp"
+#include "gradfric/campaign/statistics_columns.hpp"
 #include "gradfric/core/broadcast.hpp"
 #include "gradfric/core/input_error.hpp"
 #include "gradfric/io/collective_file.hpp"
+#include "gradfric/io/hdf5_datasets.hpp"
+#include "gradfric/physics/observables.hpp"
 
 #include <csignal>
 #include <cstdio>
@@ -52,6 +55,23 @@ std::string sceneDifferences(const ResumeTarget& scene, const io::ResultsFile& f
   return differences;
 }
 
+// The first dataset of an observable (physics/observables.hpp: /realisations/<name> and its
+// /statistics columns) this build writes and the file lacks, "" if none: a file of an earlier
+// build, before that observable was added, cannot take this build's tasks. An extension writes a
+// new file and copies the tasks alone (statistics: false). Both lists are the same for any scene.
+std::string missingObservable(hid_t file, bool statistics) {
+  std::vector<std::string> paths;
+  for (const Observable& o : observables()) paths.push_back("realisations/" + o.name);
+  if (statistics)
+    for (const io::StatisticColumn& c : statisticsColumns()) paths.push_back("statistics/" + c.name);
+  for (const std::string& path : paths) {
+    const std::string group = path.substr(0, path.find('/'));  // HDF5 1.10 fails on a path through a missing group
+    if (H5Lexists(file, group.c_str(), H5P_DEFAULT) <= 0 || H5Lexists(file, path.c_str(), H5P_DEFAULT) <= 0)
+      return "/" + path;
+  }
+  return "";
+}
+
 // Rank 0: what is wrong with the file, or "". `extension`: null to resume.
 std::string problemWith(const ResumeTarget& target, const Extension* extension, const std::string& path) {
   const std::string again = " (start again with " + target.overwriteOption + ")";
@@ -72,6 +92,15 @@ std::string problemWith(const ResumeTarget& target, const Extension* extension, 
              ": a file of another program, or a damaged one)" + again;
   }
   try {
+    {  // A file of another format version gets its own sentence from ResultsFile (it reads the version).
+      io::H5File raw(GF_H5(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT)));
+      const bool sameVersion =
+          io::readScalarAttribute<int>(raw, "format_version", H5T_NATIVE_INT, 0) == io::kFormatVersion;
+      const std::string missing = sameVersion ? missingObservable(raw, extension == nullptr) : "";
+      if (!missing.empty())
+        return "it has no " + missing + ": it was written by an earlier gradfric, before that observable existed" +
+               again;
+    }
     io::ResultsFile file = io::ResultsFile::openReadOnly(MPI_COMM_SELF, path);
     // Everything a resumed run reads: a damaged part shows here, not in the middle of the run.
     file.finishedTasks();

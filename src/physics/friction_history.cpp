@@ -15,6 +15,7 @@ double FrictionHistory::observe(double t, double fx, double fy, bool anySlipped,
   lastTime_ = t;
   observed_ = true;
   if (anySlipped && std::isnan(firstSlip_)) firstSlip_ = t;
+  if (allSlipped && std::isnan(detachment_)) detachment_ = t;
   if (!confirmed_) {
     if (mu > maximum_) {
       maximum_ = mu;
@@ -98,6 +99,7 @@ FrictionSummary FrictionHistory::summary() const {
   s.peakTime = peakTime_;
   s.peakConfirmed = confirmed_;
   s.firstSlipTime = firstSlip_;
+  s.detachmentTime = detachment_;
   if (rule_.kinetic && confirmed_) {
     const bool steadyRule = rule_.kineticSteadyTolerance > 0;
     const double from = steadyRule ? windowFrom_ : peakTime_ + rule_.kineticDelay, to = from + rule_.kineticWidth;

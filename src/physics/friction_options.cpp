@@ -2,6 +2,7 @@
 
 #include "gradfric/core/format.hpp"
 #include "gradfric/core/input_error.hpp"
+#include "gradfric/physics/observables.hpp"
 
 #include <petscsys.h>
 
@@ -29,8 +30,15 @@ FrictionMeasurement readFrictionMeasurement(MPI_Comm comm, RunParameters* record
   refuseOldNames();
   OptionReader o(comm, "friction_", "Friction measurement (both models): mu(t) = |F|/(p L^2), mu_s, mu_k", record);
   FrictionMeasurement m;
-  const auto observables = o.choiceList("observables", window.observables, {"mu_s", "mu_k", "first_slip"},
-                                        "what the run must determine; it stops once these are known");
+  const std::vector<std::string> choices = {"mu_s", "mu_k", "first_slip"};
+  // The table's other rows come with mu_s (physics/observables.hpp): -help names them from it.
+  std::string alongside;
+  for (const Observable& row : gradfric::observables())
+    if (std::find(choices.begin(), choices.end(), row.name) == choices.end())
+      alongside += (alongside.empty() ? "" : ", ") + row.name;
+  const auto observables = o.choiceList("observables", window.observables, choices,
+                                        "what the run must determine; it stops once these are known (" + alongside +
+                                            " come with mu_s)");
   auto wants = [&](const char* name) { return std::find(observables.begin(), observables.end(), name) != observables.end(); };
   m.kinetic = wants("mu_k");
   m.firstSlipMap = wants("first_slip");

@@ -14,6 +14,10 @@ const std::vector<Observable>& observables() {
        [](const FrictionSummary& f) { return f.muKinetic; }, true, "Global kinetic friction", true},
       {"peak_time", "s", "time of the peak of mu(t)", [](const FrictionSummary& f) { return f.peakTime; }, false,
        "Time of the static peak", false},
+      {"detachment_time", "s",
+       "time at which every site (SBM block; FEM bottom node: slipped or lost contact) had slipped at least once: "
+       "the detachment front crossed the plate; NaN: never",
+       [](const FrictionSummary& f) { return f.detachmentTime; }, true, "Detachment time", false},
   };
   return table;
 }

@@ -68,12 +68,18 @@ with h5py.File(out, "r") as f:
     assert dims("realisations/mu_s") == ["point", "realisation"], dims("realisations/mu_s")
     assert dims("history/mu") == ["point", "realisation", "sample"], dims("history/mu")
     assert dims("maps/first_slip_time") == ["point", "realisation", "block_row", "block_column"]
+    # The detachment time of each task is the latest first slip of its map, the same double (both
+    # are the time of the step after which the last block had slipped); NaN would be a block that never did.
+    first = f["maps/first_slip_time"][:]
+    latest = first.reshape(first.shape[0], first.shape[1], -1).max(axis=2)
+    assert np.isfinite(latest).all() and np.array_equal(latest, f["realisations/detachment_time"][:]), latest
     assert dims("properties/E") == ["point", "block_column"] and dims("statistics/mu_s_mean") == ["point"]
     assert f.attrs["format_version"] == 3 and isinstance(f.attrs["format"], str)
     # One interval convention, named on every interval (docs/ensemble.md, section 3), and the
     # discretisation bar with its basis per point (this scene's N_b is outside the study: NaN).
     st = f["statistics"]
-    for name in ("mu_s_ci95_low", "mu_s_ci95_high", "mu_k_ci95_low", "mu_s_relative_ci95", "mu_k_relative_ci95"):
+    for name in ("mu_s_ci95_low", "mu_s_ci95_high", "mu_k_ci95_low", "mu_s_relative_ci95", "mu_k_relative_ci95",
+                 "detachment_time_ci95_low", "detachment_time_relative_ci95"):
         assert st[name].attrs["interval"].startswith("95 % Student t"), (name, st[name].attrs.get("interval"))
     assert "mu_s_relative_error" not in st
     counts = st["mu_s_count"][:]

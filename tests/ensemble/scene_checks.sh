@@ -167,6 +167,14 @@ resume_mismatch)
     fail "resumed with a different lattice"
   fi
   grep -q "sbm_N: file 16, now 18" "$work/m.log" || fail "the differing option is not named"
+  # A file of a build before an observable was added (its dataset removed here) is refused with
+  # the dataset named (exit 2), not read as damaged.
+  /usr/bin/python3 -c 'import h5py, sys; del h5py.File(sys.argv[1], "r+")["realisations/detachment_time"]' "$work/m.h5.partial"
+  status=0
+  run 1 "${scene[@]}" -ensemble_realisations 1 -resume -output "$work/m.h5" >"$work/old.log" 2>&1 || status=$?
+  [ "$status" = 2 ] || fail "a file without /realisations/detachment_time: exit $status, not 2"
+  grep -q "it has no /realisations/detachment_time: it was written by an earlier gradfric" "$work/old.log" ||
+    fail "the missing observable is not named: $(tail -3 "$work/old.log")"
   ;;
 single)
   run 1 -sbm_N 16 -output "$work/s.h5" >"$work/s.log"
@@ -203,6 +211,9 @@ help)
   run 1 -help -output "$work/h.h5" >"$work/h.log" 2>&1
   grep -q -- "-ensemble_delta" "$work/h.log" || fail "-help does not list -ensemble_delta"
   grep -q -- "-sbm_N" "$work/h.log" || fail "-help does not list -sbm_N"
+  # The observables measured with mu_s, named from the table (physics/observables.hpp).
+  grep -q -- "-friction_observables .*peak_time, detachment_time.* come with mu_s" "$work/h.log" ||
+    fail "-help does not name the observables that come with mu_s"
   [ ! -e "$work/h.h5" ] && [ ! -e "$work/h.h5.partial" ] || fail "-help ran the scene"
   # -help <prefix>: that prefix's options alone; none listed twice.
   run 1 -help ensemble >"$work/he.log" 2>&1

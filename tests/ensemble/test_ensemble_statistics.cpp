@@ -2,6 +2,7 @@
 // tables, the relative variation and its propagated error.
 #include "gradfric/campaign/statistics.hpp"
 #include "gradfric/campaign/statistics_columns.hpp"
+#include "gradfric/physics/observables.hpp"
 
 #include <gtest/gtest.h>
 
@@ -155,15 +156,19 @@ TEST(EnsembleStatistics, PointTableUsesPairsWhenAsked) {
 }
 
 TEST(EnsembleStatistics, ColumnsComeFromTheObservableTable) {
-  // finished, then each observable with statistics (mu_s, mu_k: physics/observables.hpp) with its
-  // seven real columns and its count, then peaks_unconfirmed: the file's names of format 3.
+  // finished, then each observable with statistics (physics/observables.hpp: mu_s and mu_k first,
+  // then the rows added since) with its seven real columns and its count, then peaks_unconfirmed.
   std::vector<std::string> names;
   for (const auto& c : statisticsColumns()) names.push_back(c.name + (c.integer ? ":int" : ""));
+  const std::vector<gradfric::Observable> rows = gradfric::statisticsObservables();
+  ASSERT_GE(rows.size(), 2u);
+  EXPECT_EQ(rows[0].name, "mu_s");
+  EXPECT_EQ(rows[1].name, "mu_k");
   std::vector<std::string> expected = {"finished:int"};
-  for (const char* mu : {"mu_s", "mu_k"}) {
+  for (const auto& row : rows) {
     for (const char* s : {"_mean", "_std", "_stderr", "_ci95_low", "_ci95_high", "_relative", "_relative_ci95"})
-      expected.push_back(mu + std::string(s));
-    expected.push_back(mu + std::string("_count:int"));
+      expected.push_back(row.name + s);
+    expected.push_back(row.name + "_count:int");
   }
   expected.push_back("peaks_unconfirmed:int");
   EXPECT_EQ(names, expected);
@@ -171,8 +176,12 @@ TEST(EnsembleStatistics, ColumnsComeFromTheObservableTable) {
   EXPECT_EQ(columns[14].description, "(mu_k - mu_k_0) / mu_k_0 against /sweep/reference_point");
   ASSERT_EQ(columns[4].attributes.size(), 1u);  // mu_s_ci95_low: an interval
   EXPECT_EQ(columns[4].attributes[0].second, "95 % Student t, n - 1 degrees of freedom");
-  // The values line up with the names.
-  const auto stats = pointStatistics(2, {0}, {{1.0, 0.9}, {0.6, kNaN}}, {1, 1}, {1, 1});
+  // The values line up with the names: one table per observable with statistics, mu_s and mu_k
+  // given, the others NaN.
+  std::vector<std::vector<double>> tables(rows.size(), {kNaN, kNaN});
+  tables[0] = {1.0, 0.9};
+  tables[1] = {0.6, kNaN};
+  const auto stats = pointStatistics(2, {0}, tables, {1, 1}, {1, 1});
   const StatisticsValues values = statisticsValues(stats);
   auto real = [&](const std::string& name) {
     for (const auto& [n, v] : values.real)

@@ -9,6 +9,7 @@ Usage: check_open.py <gradfric> <gradfric-fem> <gradfric-study> <gradfric-design
                      <source dir> <version>
 """
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -31,6 +32,7 @@ def run(driver, *args, ranks=2):
     command = ["mpiexec", "--oversubscribe", "-n", str(ranks), driver, *args]
     r = subprocess.run(command, env=env, capture_output=True, text=True, cwd=work)
     assert r.returncode == 0, " ".join(command) + "\n" + r.stdout[-2000:] + r.stderr[-2000:]
+    return r.stdout
 
 
 def path(name):
@@ -103,7 +105,7 @@ def expect_dims(ds, sizes):
 
 # 1. The spring-block ensemble: 3 points, 2 realisations, histories, maps, snapshots.
 scene_file = os.path.join(src, "input", "sbm_fig4_reduced.opts")
-run(sbm, "-options_file", scene_file, "-sbm_N", "16", "-ensemble_delta", "-0.3,0,0.3", "-ensemble_realisations", "2",
+printed = run(sbm, "-options_file", scene_file, "-sbm_N", "16", "-ensemble_delta", "-0.3,0,0.3", "-ensemble_realisations", "2",
     "-ensemble_friction_fields", "true", "-sbm_snapshot_times", "1.0e-4,1.2e-4", "-output", path("ens.h5"))
 with gradfric.open(path("ens.h5")) as ds, h5py.File(path("ens.h5"), "r") as f:
     C = f.attrs["history_capacity"]
@@ -114,7 +116,10 @@ with gradfric.open(path("ens.h5")) as ds, h5py.File(path("ens.h5"), "r") as f:
     assert ds["time"].dims == ("point", "realisation", "sample") and ds["time"].attrs["units"] == "s"
     assert ds["mu"].dims == ("point", "realisation", "sample") and ds["force_x"].attrs["units"] == "N"
     assert ds["mu_s"].dims == ("point", "realisation") and ds["mu_s_mean"].dims == ("point",)
-    assert ds.attrs["observables"] == ["mu_s", "mu_k"], ds.attrs["observables"]  # found in the file, in its order
+    # Found in the file, in the order of the C++ table, which the printed tables follow
+    # ("Global static friction mu_s over 2 realisation(s) per point ...").
+    tables = re.findall(r"^\S.* (\w+) over \d+ realisation\(s\) per point", printed, re.M)
+    assert tables[:2] == ["mu_s", "mu_k"] and ds.attrs["observables"] == tables, (ds.attrs["observables"], tables)
     assert ds["first_slip_time"].dims == ("point", "realisation", "block_row", "block_column")
     assert ds["sigma_x_over_p"].dims == ("point", "realisation", "snapshot", "block_row", "block_column")
     assert same(ds["snapshot_times"], [1.0e-4, 1.2e-4]) and ds["snapshot_times"].dims == ("snapshot",)

@@ -1,4 +1,5 @@
-// The shared friction-history observer: peak rule, kinetic window, first slip, sampling, known().
+// The shared friction-history observer: peak rule, kinetic window, first slip, detachment time,
+// sampling, known().
 #include "gradfric/physics/friction_history.hpp"
 
 #include <gtest/gtest.h>
@@ -43,6 +44,43 @@ TEST(FrictionHistory, PeakConfirmedByTheDropOnceEverySiteSlipped) {
   // Window [2.5, 3.5]: mu = 0.5 throughout.
   EXPECT_TRUE(r.kineticComplete);
   EXPECT_NEAR(r.muKinetic, 0.5, 1e-12);
+}
+
+TEST(FrictionHistory, DetachmentTimeIsTheFirstObservationWithEverySiteSlipped) {
+  const double dt = 0.01;
+  FrictionHistory h(rule(), 1.0, dt);
+  // Reported true once at step 90, then false until step 137: the first true observation counts,
+  // and what follows does not move it (the models' counts never fall, the observer need not rely on it).
+  for (int s = 0; s <= 400; ++s) {
+    const bool all = s >= 137 || s == 90;
+    h.observe(s * dt, triangle(s * dt), 0.0, s >= 20, all);
+  }
+  const FrictionSummary r = h.summary();
+  EXPECT_EQ(r.detachmentTime, 90 * dt);  // the observed time itself, not a rounded one
+  EXPECT_EQ(r.firstSlipTime, 20 * dt);
+}
+
+TEST(FrictionHistory, DetachmentTimeIsNaNWhenSomeSiteNeverSlipped) {
+  const double dt = 0.01;
+  FrictionHistory h(rule(), 1.0, dt);
+  for (int s = 0; s <= 400; ++s) h.observe(s * dt, triangle(s * dt), 0.0, s >= 20, false);
+  const FrictionSummary r = h.summary();
+  EXPECT_TRUE(std::isnan(r.detachmentTime));
+  EXPECT_FALSE(r.peakConfirmed);  // the peak needs the whole plate to have slipped
+  EXPECT_TRUE(std::isnan(FrictionHistory(rule(), 1.0, dt).summary().detachmentTime));  // nothing observed
+}
+
+TEST(FrictionHistory, ConfirmedPeakComesAtOrAfterTheDetachment) {
+  // Every site has slipped only at t = 2.7, after the drop: the peak is confirmed at that very
+  // observation, the detachment time.
+  const double dt = 0.01;
+  FrictionHistory h(rule(), 1.0, dt);
+  int s = 0;
+  for (; s <= 400 && !h.peakConfirmed(); ++s) h.observe(s * dt, triangle(s * dt), 0.0, true, s >= 270);
+  const FrictionSummary r = h.summary();
+  EXPECT_TRUE(r.peakConfirmed);
+  EXPECT_EQ(r.detachmentTime, 270 * dt);
+  EXPECT_EQ(s - 1, 270);
 }
 
 TEST(FrictionHistory, MuIsTheForceModulusOverTheNormalForce) {

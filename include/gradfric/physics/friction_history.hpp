@@ -38,6 +38,9 @@ struct FrictionSummary {
   bool kineticSteadyTested = false;  // the steady rule was on (tolerance > 0)
   bool kineticSteady = false;        // ... and the window met it (false at the cap: not steady)
   double firstSlipTime = kNaN;   // first observation at which some site had slipped [s]
+  // First observation at which every site had slipped (the detachment front crossed the plate) [s];
+  // the peak is confirmed only after it, so a confirmed peak has one.
+  double detachmentTime = kNaN;
   // The sampled history: time [s], mu, and the tangential force components [N].
   std::vector<double> time, mu, forceX, forceY;
 };
@@ -74,6 +77,7 @@ private:
   FrictionMeasurement rule_;
   double normalForce_, timeStep_;
   double maximum_ = -1.0, peakTime_ = 0.0, lastTime_ = 0.0, firstSlip_ = FrictionSummary::kNaN;
+  double detachment_ = FrictionSummary::kNaN;
   bool confirmed_ = false, observed_ = false;
   bool windowDecided_ = false, windowSteady_ = false;  // steady rule: the window is chosen
   double windowFrom_ = 0.0;
