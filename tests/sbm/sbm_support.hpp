@@ -23,14 +23,19 @@ inline Parameters paperParameters(int blocksPerSide, double sigma, const Grading
   return p;
 }
 
-// A triangular grading of property in 4 bands: the kernels' equivalence tests' plate.
-inline Grading triangular(GradedProperty property, double delta) {
+// A grading of one property by a profile in `bands` bands (the tests' plates).
+inline Grading grading(GradingProfile profile, GradedProperty property, double delta, int bands = 10) {
   Grading g;
-  g.profile = GradingProfile::Triangular;
+  g.profile = profile;
   g.property = property;
   g.delta = delta;
-  g.bands = 4;
+  g.bands = bands;
   return g;
+}
+
+// A triangular grading of property in 4 bands: the kernels' equivalence tests' plate.
+inline Grading triangular(GradedProperty property, double delta) {
+  return grading(GradingProfile::Triangular, property, delta, 4);
 }
 
 // The moment-balance pressure kept its balances through a run: the normal force p L^2 and the
@@ -52,6 +57,20 @@ inline Request defaultRequest(const Parameters& p) {
   q.measurement.peakHold = 0.25 * load;
   q.maxTime = 20 * load;
   return q;
+}
+
+// One realisation (stream {11, 0, 3}) on both kernels under the moment-balance pressure (edge
+// length H), each checked to keep its balances.
+struct KernelPair {
+  Result fast, reference;
+};
+inline KernelPair bothKernelsUnderMomentBalance(Parameters p, const Grading& g) {
+  p.pressureResponse.source = PressureResponseSource::MomentBalance;
+  p.pressureResponse.edgeLength = p.plate.thickness;
+  const Request q = defaultRequest(p);
+  KernelPair r{simulate(p, g, q, {11, 0, 3}, Kernel::Fast), simulate(p, g, q, {11, 0, 3}, Kernel::Reference)};
+  for (const Result* each : {&r.fast, &r.reference}) expectPressureBalances(*each);
+  return r;
 }
 
 struct Sample {

@@ -19,11 +19,7 @@ using gradfric::sbm::testing::triangular;
 namespace {
 
 Grading linearFriction(double delta) {
-  Grading g;
-  g.profile = GradingProfile::Linear;
-  g.property = GradedProperty::Friction;
-  g.delta = delta;
-  return g;
+  return sbm::testing::grading(GradingProfile::Linear, GradedProperty::Friction, delta);
 }
 
 // The latest first slip of the map; NaN if some block never slipped.

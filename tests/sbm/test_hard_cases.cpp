@@ -28,14 +28,6 @@ struct HardCase {
   bool peakOnly = false;
 };
 
-Grading graded(GradingProfile profile, GradedProperty property, double delta, int bands = 10) {
-  Grading g;
-  g.profile = profile;
-  g.property = property;
-  g.delta = delta;
-  g.bands = bands;
-  return g;
-}
 
 Result run(const HardCase& c, double dtScale, double endTime = 0.0) {
   Parameters p = sbm::testing::paperParameters(c.blocks, c.sigma, c.grading, 0.25, c.dampingFactor);
@@ -100,7 +92,7 @@ TEST(HardCases, LargeGradingAmplitudeBothModelsOfGrading) {
     for (auto profile : {GradingProfile::Linear, GradingProfile::Triangular})
       for (double delta : {0.9, -0.9}) {
         HardCase c{std::string(toString(property)) + " " + toString(profile) + " Delta=" + std::to_string(delta),
-                   graded(profile, property, delta)};
+                   sbm::testing::grading(profile, property, delta)};
         checkHardCase(c, 0.01, 0.02);
       }
 }
@@ -108,11 +100,11 @@ TEST(HardCases, LargeGradingAmplitudeBothModelsOfGrading) {
 TEST(HardCases, LargeDispersion) { checkHardCase({"sigma = 30 %", {}, 20, 0.3}, 0.01, 0.02); }
 
 TEST(HardCases, OneBandPerBlockColumn) {
-  checkHardCase({"N = N_b", graded(GradingProfile::Linear, GradedProperty::Both, 0.5, 20)}, 0.01, 0.02);
+  checkHardCase({"N = N_b", sbm::testing::grading(GradingProfile::Linear, GradedProperty::Both, 0.5, 20)}, 0.01, 0.02);
 }
 
 TEST(HardCases, SlidingAtNinetyDegrees) {
-  HardCase c{"theta = 90", graded(GradingProfile::Linear, GradedProperty::Friction, 0.4)};
+  HardCase c{"theta = 90", sbm::testing::grading(GradingProfile::Linear, GradedProperty::Friction, 0.4)};
   c.theta = 90.0;
   checkHardCase(c, 0.01, 0.02);
 }
@@ -122,7 +114,7 @@ TEST(HardCases, TimeStepAtNineTenthsOfTheStabilityLimit) {
   // (On coarse lattices the limit exceeds the slip time: stable, but too coarse to be accurate,
   // which is why the default step is also capped by the slip time.)
   for (auto integrator : {Integrator::RK4, Integrator::VelocityVerlet}) {
-    HardCase c{"dt = 0.9 limit", graded(GradingProfile::Linear, GradedProperty::YoungsModulus, 0.5)};
+    HardCase c{"dt = 0.9 limit", sbm::testing::grading(GradingProfile::Linear, GradedProperty::YoungsModulus, 0.5)};
     c.blocks = 120;
     c.dtSafety = 0.9;
     c.integrator = integrator;
@@ -135,13 +127,13 @@ TEST(HardCases, TimeStepAtNineTenthsOfTheStabilityLimit) {
 }
 
 TEST(HardCases, NoDampingAtAll) {
-  HardCase c{"gamma = 0", graded(GradingProfile::Triangular, GradedProperty::Friction, 0.3)};
+  HardCase c{"gamma = 0", sbm::testing::grading(GradingProfile::Triangular, GradedProperty::Friction, 0.3)};
   c.dampingFactor = 0.0;
   checkHardCase(c, 0.01, 0.03);
 }
 
 TEST(HardCases, PaperSizeLatticeTwiceOver) {
-  HardCase c{"240 x 240", graded(GradingProfile::Linear, GradedProperty::Friction, 0.3)};
+  HardCase c{"240 x 240", sbm::testing::grading(GradingProfile::Linear, GradedProperty::Friction, 0.3)};
   c.blocks = 240;
   c.integrator = Integrator::VelocityVerlet;
   c.peakOnly = true;

@@ -19,12 +19,7 @@ using namespace gradfric::sbm;
 namespace {
 
 Grading linear(GradedProperty property, double delta) {
-  Grading g;
-  g.profile = GradingProfile::Linear;
-  g.property = property;
-  g.delta = delta;
-  g.bands = 5;
-  return g;
+  return sbm::testing::grading(GradingProfile::Linear, property, delta, 5);
 }
 
 // The bound on the relative change of mu_s and mu_k from the small-strain springs, paired

@@ -313,12 +313,6 @@ TEST(PerBlockStiffness, ThePressureCouplingKeepsItsBalances) {
   // The moment-balance pressure on a plate with a 45-degree E: the normal force stays p L^2 and
   // the moment H F at every step, on both kernels, and they agree.
   const Grading g = withE(linearE(0.3, 45));
-  Parameters p = sbm::testing::paperParameters(12, 0.028, g);
-  p.pressureResponse.source = PressureResponseSource::MomentBalance;
-  p.pressureResponse.edgeLength = p.plate.thickness;
-  const Request q = sbm::testing::defaultRequest(p);
-  const Result fast = simulate(p, g, q, {11, 0, 3}, Kernel::Fast);
-  const Result plain = simulate(p, g, q, {11, 0, 3}, Kernel::Reference);
-  for (const Result* r : {&fast, &plain}) sbm::testing::expectPressureBalances(*r);
+  const auto [fast, plain] = sbm::testing::bothKernelsUnderMomentBalance(sbm::testing::paperParameters(12, 0.028, g), g);
   EXPECT_NEAR(fast.friction.muStatic, plain.friction.muStatic, 1e-10);
 }

@@ -15,11 +15,7 @@ using gradfric::sbm::testing::paperParameters;
 namespace {
 
 Grading linear(GradedProperty property, double delta) {
-  Grading g;
-  g.profile = GradingProfile::Linear;
-  g.property = property;
-  g.delta = delta;
-  return g;
+  return sbm::testing::grading(GradingProfile::Linear, property, delta);
 }
 
 // Mean first-slip time of the blocks in columns [from, to).

@@ -17,12 +17,7 @@ using namespace gradfric::sbm;
 namespace {
 
 Grading graded(GradingProfile profile, GradedProperty property, double delta) {
-  Grading g;
-  g.profile = profile;
-  g.property = property;
-  g.delta = delta;
-  g.bands = 4;
-  return g;
+  return sbm::testing::grading(profile, property, delta, 4);
 }
 
 // Equal as bits (NaN equals NaN; +0 and -0 differ).

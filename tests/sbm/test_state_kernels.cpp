@@ -171,13 +171,8 @@ TEST(StateKernels, UnderTheLoadDependentPressure) {
   // The moment-balance pressure rescales the strengths every step (no quiet-phase jump, no held
   // tiles): both kernels keep its balances, and agree as above.
   const Grading g = graded(GradedProperty::Friction, 0.3);
-  Parameters p = stateLawPlate(12, 0.028, g, Integrator::VelocityVerlet, 2.5e-8);
-  p.pressureResponse.source = PressureResponseSource::MomentBalance;
-  p.pressureResponse.edgeLength = p.plate.thickness;
-  const Request q = sbm::testing::defaultRequest(p);
-  const Result fast = simulate(p, g, q, {11, 0, 3}, Kernel::Fast);
-  const Result plain = simulate(p, g, q, {11, 0, 3}, Kernel::Reference);
-  for (const Result* r : {&fast, &plain}) sbm::testing::expectPressureBalances(*r);
+  const Parameters p = stateLawPlate(12, 0.028, g, Integrator::VelocityVerlet, 2.5e-8);
+  const auto [fast, plain] = sbm::testing::bothKernelsUnderMomentBalance(p, g);
   EXPECT_EQ(fast.friction.firstSlipTime, plain.friction.firstSlipTime);
   expectSameHistory(fast, plain, plain.friction.firstSlipTime + kOnsetSteps * p.timeStep, "pressure");
   EXPECT_NEAR(fast.friction.muStatic, plain.friction.muStatic, kChaoticSpread);
