@@ -1,5 +1,7 @@
 #include "gradfric/fem/energy_monitor.hpp"
 
+#include "gradfric/fem/gravity.hpp"
+
 #include <cmath>
 #include <cstdio>
 
@@ -11,7 +13,7 @@ EnergyMonitor::EnergyMonitor(PlateModel& model, TS ts, EnergyRecord* record)
   // The load on the plane: p, plus the weight rho g H with -fem_gravity. A plate under a small p
   // would otherwise be stopped for the energy its weight gave it (not in the energy put in) or for
   // its friction, which mu(t) = |F|/(p L^2) counts over p L^2 alone.
-  const double load = q.plate.pressure + q.plate.density * q.gravity * q.plate.thickness;
+  const double load = q.plate.pressure + Gravity::weightPressure(q);
   // The elastic energy of the plate compressed by the load: the scale before any work is done.
   const double reference = load * load * q.plate.length * q.plate.length *
                            q.plate.thickness / (2 * q.plate.youngsModulus);

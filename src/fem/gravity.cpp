@@ -13,7 +13,8 @@ void Gravity::readOptions(OptionReader& o, FemParameters& q) {
   o.requireNonNegative("gravity", q.gravity, "m/s^2");
 }
 
-Gravity::Gravity(const LumpedMass& mass, const Plate& plate, double gravity) : plate_(plate), g_(gravity) {
+Gravity::Gravity(const LumpedMass& mass, const FemParameters& q)
+    : g_(q.gravity), weightPressure_(weightPressure(q)), pressure_(q.plate.pressure) {
   for (double m : mass.perBlock()) weight_.push_back(m * g_);
 }
 
@@ -54,12 +55,11 @@ LayerWork Gravity::work() const {
 }
 
 std::string Gravity::describe() const {
-  const double weight = plate_.density * g_ * plate_.thickness;
   char text[200];
   std::snprintf(text, sizeof text,
                 "own weight, g %.4g m/s^2: rho g H = %.4g Pa (%.3g of p) on the plane, -m g on each node (no "
                 "stiffness: the stable step unchanged)",
-                g_, weight, weight / plate_.pressure);
+                g_, weightPressure_, weightPressure_ / pressure_);
   return text;
 }
 

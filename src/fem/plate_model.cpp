@@ -35,7 +35,7 @@ PlateModel::PlateModel(MPI_Comm comm, const FemParameters& params, const Grading
   elastic_ = add<ElasticOperator>(true, mesh_, properties_, elasticSettings(q));
   top_ = add<TopLoading>(true, mesh_, properties_);
   if (q.bulkLinear > 0 || q.bulkQuadratic > 0) add<BulkViscosity>(true, mesh_, properties_, q.bulkLinear, q.bulkQuadratic);
-  if (Gravity::wanted(q)) add<Gravity>(true, mass_, q.plate, q.gravity);
+  if (Gravity::wanted(q)) add<Gravity>(true, mass_, q);
   contact_ = add<ContactBoundary>(q.contact, properties_, comm, contactSettings(q));
   if (MassDamping::wanted(q)) damping_ = add<MassDamping>(true, q, mesh_.ownedBlocks());
 

@@ -21,8 +21,10 @@ public:
   // the reader), naming the option, before any work.
   static void readOptions(OptionReader& o, FemParameters& q);
   static bool wanted(const FemParameters& q) { return q.gravity > 0; }
+  // The weight's pressure on the plane, rho g H [Pa] (0 without -fem_gravity).
+  static double weightPressure(const FemParameters& q) { return q.plate.density * q.gravity * q.plate.thickness; }
 
-  Gravity(const LumpedMass& mass, const Plate& plate, double gravity);
+  Gravity(const LumpedMass& mass, const FemParameters& q);
 
   const char* name() const override { return "gravity"; }
   void addForce(const LayerContext& ctx, Vec X, Vec F, ContactSums& sums) override;
@@ -37,8 +39,7 @@ private:
   void addWeight(Vec F) const;
 
   std::vector<double> weight_;  // m_b g per owned block [N]
-  Plate plate_;
-  double g_;
+  double g_, weightPressure_, pressure_;  // g [m/s^2], rho g H and p [Pa] (the description)
   // This rank's sum of m g u_z at the state of the last right-hand side (pending) and of the last
   // accepted step; -m g u_z / 2 at the first accepted step.
   ExactSum pending_, pendingHalf_, committed_, firstHalf_;
