@@ -92,7 +92,9 @@ kill_resume)
   # A real kill: SIGKILL to every rank in the middle of the run. A larger lattice makes the tasks
   # slow enough (about 0.3 s each, 15 on 2 ranks) that the run is still going when the poll below
   # sees its first finished task; at 40 x 40 the whole run could end between two polls under load.
-  big=("${scene[@]}" -sbm_N 96)
+  # Twice the realisations (30 tasks): at load 6 one run of 15 ended before the kill landed.
+  big=("${scene[@]}" -sbm_N 96 -ensemble_realisations 6)
+  big_tasks=30
   run 2 "${big[@]}" -output "$work/bigfull.h5" >/dev/null
   mpiexec --oversubscribe -n 2 "$driver" "${big[@]}" -output "$work/killed.h5" >"$work/killed.log" 2>&1 &
   launcher=$!
@@ -112,9 +114,9 @@ kill_resume)
   [ -f "$work/killed.h5.partial" ] || fail "no .partial file after SIGKILL"
   kept=$(h5dump -A 0 -y -d /realisations/done "$work/killed.h5.partial" | sed -n '/DATA {/,/}/p' | grep -o '[01]' | grep -c 1 || true)
   [ "$kept" -ge "$finished" ] || fail "SIGKILL lost finished tasks ($kept < $finished)"
-  [ "$kept" -lt 15 ] || fail "the kill came too late to test anything"
+  [ "$kept" -lt "$big_tasks" ] || fail "the kill came too late to test anything"
   run 2 "${big[@]}" -resume -output "$work/killed.h5" >"$work/killed_resume.log"
-  grep -q "$kept of 15 tasks already finished" "$work/killed_resume.log" || fail "resume after SIGKILL did not skip $kept tasks"
+  grep -q "$kept of $big_tasks tasks already finished" "$work/killed_resume.log" || fail "resume after SIGKILL did not skip $kept tasks"
   same "$work/bigfull.h5" "$work/killed.h5"
   # Resuming a finished file runs nothing and keeps it equal.
   run 1 "${scene[@]}" -resume -output "$work/cut.h5" >"$work/again.log"
