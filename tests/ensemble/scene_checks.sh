@@ -96,21 +96,34 @@ kill_resume)
   big=("${scene[@]}" -sbm_N 96 -ensemble_realisations 6)
   big_tasks=30
   run 2 "${big[@]}" -output "$work/bigfull.h5" >/dev/null
-  mpiexec --oversubscribe -n 2 "$driver" "${big[@]}" -output "$work/killed.h5" >"$work/killed.log" 2>&1 &
-  launcher=$!
-  finished=0
-  for _ in $(seq 1 300); do  # wait until at least one task is in the file
-    sleep 0.05
-    if [ -f "$work/killed.h5.partial" ]; then
-      finished=$(h5dump -A 0 -y -d /realisations/done "$work/killed.h5.partial" 2>/dev/null |
-        sed -n '/DATA {/,/}/p' | grep -o '[01]' | grep -c 1 || true)
-      [ "$finished" -ge 1 ] && break
+  # On a heavily loaded machine the run can still end before the poll sees a finished task (the
+  # poll's h5dump competes for the cores): then it is started again, up to three times.
+  killed_run=false
+  for attempt in 1 2 3; do
+    rm -f "$work/killed.h5.partial"
+    mpiexec --oversubscribe -n 2 "$driver" "${big[@]}" -output "$work/killed.h5" >"$work/killed.log" 2>&1 &
+    launcher=$!
+    finished=0
+    for _ in $(seq 1 300); do  # wait until at least one task is in the file
+      sleep 0.05
+      if [ -f "$work/killed.h5.partial" ]; then
+        finished=$(h5dump -A 0 -y -d /realisations/done "$work/killed.h5.partial" 2>/dev/null |
+          sed -n '/DATA {/,/}/p' | grep -o '[01]' | grep -c 1 || true)
+        [ "$finished" -ge 1 ] && break
+      fi
+    done
+    ranks=$(pgrep -P "$launcher" || true)
+    if [ -n "$ranks" ]; then
+      kill -KILL $ranks
+      wait "$launcher" && fail "the killed run reported success" || true
+      killed_run=true
+      break
     fi
+    wait "$launcher" || true
+    echo "attempt $attempt: the run ended before the kill; starting it again" >&2
+    rm -f "$work/killed.h5"
   done
-  ranks=$(pgrep -P "$launcher" || true)
-  [ -n "$ranks" ] || fail "the run to kill had already ended"
-  kill -KILL $ranks
-  wait "$launcher" && fail "the killed run reported success" || true
+  $killed_run || fail "the run to kill had already ended, three times"
   [ -f "$work/killed.h5.partial" ] || fail "no .partial file after SIGKILL"
   kept=$(h5dump -A 0 -y -d /realisations/done "$work/killed.h5.partial" | sed -n '/DATA {/,/}/p' | grep -o '[01]' | grep -c 1 || true)
   [ "$kept" -ge "$finished" ] || fail "SIGKILL lost finished tasks ($kept < $finished)"
