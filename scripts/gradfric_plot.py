@@ -24,6 +24,9 @@ gradfric-fem-sweep, the ensemble's layout) may be plotted alone or given with --
 spring-block ensemble: each FEM point is then paired with the spring-block point of the same
 grading (property, profile, Delta) and angle, the pairs are printed, and a sweep with a point
 that has no partner, or made for another plate (-plate_*, -grading_bands), is refused (exit 2).
+A FEM sweep without a non-graded point (-ensemble_delta -0.3,-0.1,0.1,0.3, say) has no relative
+variation of its own: its points are drawn as single runs, against the non-graded single run given
+with them; the single runs form one curve per sliding angle.
 The files are read with gradfric.open (python/gradfric). Needs Debian's python3-h5py,
 python3-xarray, python3-matplotlib (and python3-pil for the animation), installed by scripts/setup.sh.
 """
@@ -40,7 +43,8 @@ import matplotlib.pyplot as plt  # noqa: E402
 # The readers beside this script (they put python/, the gradfric package of this version, first on
 # the path: in the source tree and in the install tree, share/gradfric).
 sys.path.insert(0, os.path.dirname(os.path.realpath(__file__)))
-from gradfric_plot_data import Ensemble, FemHistory, load, pair_points, print_pairs, refuse  # noqa: E402
+from gradfric_plot_data import (Ensemble, FemHistory, SweepPoint, load, pair_points, print_pairs,  # noqa: E402
+                                refuse, sweep_without_reference)
 
 
 def plot_histories(ensemble, fems, png, sweeps=()):
@@ -104,20 +108,23 @@ def plot_variation(ensemble, fems, png, sweeps=()):
                 # 95 % band of the relative variation (the stored Student t half-width)
                 if source.model == "SBM":
                     ax.fill_between(d, y - e, y + e, alpha=0.2)
-        if fems:
-            reference = [f for f in fems if f.delta == 0.0]
-            if reference:
-                base = reference[0].results.get(name, np.nan)
+        reference = [f for f in fems if f.delta == 0.0]
+        if reference:
+            base = reference[0].results.get(name, np.nan)
+            # one curve per sliding angle; the non-graded run (the same plate at any angle) in each
+            angles = sorted({f.theta for f in fems if f.delta != 0.0}) or [0.0]
+            for theta, colour in zip(angles, ("tab:red", "tab:purple", "tab:brown", "tab:olive")):
+                members = [f for f in fems if f.delta == 0.0 or f.theta == theta]
                 pts = sorted((f.delta, 100 * (f.results.get(name, np.nan) / base - 1),
-                              f.results.get(f"{name}_discretisation_error", np.nan)) for f in fems)
+                              f.results.get(f"{name}_discretisation_error", np.nan)) for f in members)
                 x, y, bar = (np.array(v, dtype=float) for v in zip(*pts))
-                ax.plot(x, y, "s--", color="tab:red", label="FEM")
+                ax.plot(x, y, "s--", color=colour, label="FEM" + (f", theta={theta:g}" if len(angles) > 1 else ""))
                 # each run's own discretisation bar (relative bound of its mu, as for a FEM sweep;
-                # NaN where not measured, e.g. mu_k: no bar drawn there)
+                # NaN where not measured, e.g. mu_k or a graded point: no bar drawn there)
                 known = np.isfinite(bar) & np.isfinite(y)
                 if known.any():
                     ax.errorbar(x[known], y[known], yerr=(100 + y[known]) * bar[known], fmt="none", capsize=3,
-                                color="tab:red")
+                                color=colour)
         ax.axhline(0, color="grey", lw=0.8)
         ax.set_xlabel("Delta")
         ax.set_ylabel(f"({name} - {name},0) / {name},0  [%]")
@@ -305,6 +312,8 @@ def main(argv=None):
             fems.append(item)
         elif item.model != "FEM":
             refuse(f"--fem {path} is a spring-block ensemble, not a FEM sweep or history")
+        elif sweep_without_reference(item):
+            fems.extend(SweepPoint(item, p) for p in range(item.points) if item.done[p].any())
         else:
             sweeps.append(item)
     if sweeps and (ensemble is None or ensemble.model != "SBM"):

@@ -118,6 +118,32 @@ class FemHistory:
         if self.profile == "none":
             self.delta = 0.0
         self.thickness = self.parameters.get("plate_H", self.parameters.get("-plate_H", self.parameters.get("fem_H", "")))
+        self.theta = float(self.parameters.get("plate_theta", self.parameters.get("-plate_theta", 0.0)))
+
+
+class SweepPoint:
+    """One point of a FEM sweep drawn as a single run (FemHistory's fields): a sweep without its own
+    non-graded point has no relative variation, so its points join the single runs and are
+    measured against the non-graded single run given beside them."""
+
+    def __init__(self, sweep, p):
+        self.path = f"{sweep.path}[{p}]"
+        runs = sweep.histories(p)
+        self.time, self.mu = runs[0] if runs else (np.array([]), np.array([]))
+        self.observables = sweep.observables
+        self.results = {n: float(sweep.statistic(f"{n}_mean")[p]) for n in sweep.observables}
+        for n in sweep.observables:
+            if sweep.has(f"{n}_discretisation_error"):
+                self.results[f"{n}_discretisation_error"] = float(sweep.statistic(f"{n}_discretisation_error")[p])
+        self.parameters = sweep.scene
+        self.delta = float(sweep.delta[p]) if sweep.profile[p] != "none" else 0.0
+        self.theta = float(sweep.theta[p])
+        self.thickness = ""
+
+
+def sweep_without_reference(sweep):
+    """True for a FEM sweep none of whose points has a relative variation (no non-graded point)."""
+    return sweep.model == "FEM" and not np.isfinite(sweep.statistic(f"{sweep.observables[0]}_relative")).any()
 
 
 def load(path):
