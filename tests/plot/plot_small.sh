@@ -28,3 +28,26 @@ if /usr/bin/python3 "$source_dir/scripts/gradfric_plot.py" "$scratch/bogus.h5" 2
   echo "a bogus file was accepted"; exit 1
 fi
 grep -q "bogus.h5" "$scratch/err.txt"
+# A FEM sweep without a non-graded point is drawn as single runs against the non-graded run given
+# with it: its points must join the FEM curve with their own values (a tiny plate: seconds).
+fem_driver=${4:-}
+if [ -n "$fem_driver" ]; then
+  fem=(-fem_nx 6 -fem_ny 6 -fem_nz 2 -friction_observables mu_s -grading_property friction)
+  mpiexec --oversubscribe -n 1 "$fem_driver" "${fem[@]}" -grading_profile none -output "$scratch/fem0.h5" >"$scratch/fem0.log"
+  mpiexec --oversubscribe -n 2 "$fem_driver" "${fem[@]}" -grading_profile linear -ensemble_delta 0.3 -output "$scratch/fem_sweep.h5" >"$scratch/fem_sweep.log"
+  /usr/bin/python3 "$source_dir/scripts/gradfric_plot.py" "$scratch/small.h5" --fem "$scratch/fem0.h5" "$scratch/fem_sweep.h5" \
+    --out "$scratch/figures" --prefix mixed >"$scratch/mixed.log"
+  grep -q "mixed_variation.png" "$scratch/mixed.log" || { echo "no variation figure with the FEM sweep"; exit 1; }
+  /usr/bin/python3 - "$source_dir" "$scratch" <<'PY'
+import sys, h5py, numpy as np
+sys.path.insert(0, f"{sys.argv[1]}/scripts")
+from gradfric_plot_data import SweepPoint, load, sweep_without_reference
+scratch = sys.argv[2]
+sweep = load(f"{scratch}/fem_sweep.h5")
+assert sweep_without_reference(sweep), "a sweep without a non-graded point has no relative variation"
+point = SweepPoint(sweep, 0)
+stored = h5py.File(f"{scratch}/fem_sweep.h5", "r")["realisations/mu_s"][0, 0]
+assert point.delta == 0.3 and point.results["mu_s"] == stored, (point.delta, point.results["mu_s"], stored)
+print("FEM sweep points checked")
+PY
+fi
