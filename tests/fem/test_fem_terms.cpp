@@ -80,7 +80,9 @@ TEST(FemTerms, GravityIsBuiltExactlyWhenItsOptionIsPositive) {
     const int at = layerIndex(model, "gravity");
     EXPECT_EQ(gravity.wanted(q), g > 0) << "g " << g;
     EXPECT_EQ(at >= 0, g > 0) << "g " << g;
-    if (at >= 0) EXPECT_LT(at, layerIndex(model, "contact")) << "the kinematic contact needs every other force";
+    if (at >= 0) {
+      EXPECT_LT(at, layerIndex(model, "contact")) << "the kinematic contact needs every other force";
+    }
     const DeadLoads dead = deadLoadsOf(q);
     EXPECT_EQ(dead.pressure, q.plate.density * g * q.plate.thickness) << "g " << g;
     EXPECT_EQ(dead.symbols, g > 0 ? " + rho g H" : "");
