@@ -1,6 +1,6 @@
 #include "gradfric/fem/energy_monitor.hpp"
 
-#include "gradfric/fem/gravity.hpp"
+#include "gradfric/fem/term_registry.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -10,16 +10,19 @@ namespace gradfric::fem {
 EnergyMonitor::EnergyMonitor(PlateModel& model, TS ts, EnergyRecord* record)
     : model_(model), ts_(ts), record_(record) {
   const FemParameters& q = model.params();
-  // The load on the plane: p, plus the weight rho g H with -fem_gravity. A plate under a small p
-  // would otherwise be stopped for the energy its weight gave it (not in the energy put in) or for
-  // its friction, which mu(t) = |F|/(p L^2) counts over p L^2 alone.
-  const double load = q.plate.pressure + Gravity::weightPressure(q);
+  // The load on the plane: p, plus the optional terms' dead loads (the weight rho g H with
+  // -fem_gravity). A plate under a small p would otherwise be stopped for the energy its weight
+  // gave it (not in the energy put in) or for its friction, which mu(t) = |F|/(p L^2) counts over
+  // p L^2 alone.
+  const DeadLoads dead = deadLoadsOf(q);
+  const double load = q.plate.pressure + dead.pressure;
   // The elastic energy of the plate compressed by the load: the scale before any work is done.
   const double reference = load * load * q.plate.length * q.plate.length *
                            q.plate.thickness / (2 * q.plate.youngsModulus);
   bound_ = EnergyBound{q.monitorFactor, reference};
   muCeiling_ = 2.0 * model.contact().largestStaticCoefficient() * (load / q.plate.pressure);
-  if (q.gravity > 0) muCeilingText_ = " (twice the largest local mu_s times (p + rho g H)/p, the weight's share)";
+  if (!dead.symbols.empty())
+    muCeilingText_ = " (twice the largest local mu_s times (p" + dead.symbols + ")/p, " + dead.shares + ")";
 }
 
 void EnergyMonitor::startSliding(Vec state, double kineticBefore) {

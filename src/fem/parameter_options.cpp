@@ -1,7 +1,7 @@
 #include "gradfric/fem/parameter_options.hpp"
 
 #include "gradfric/core/input_error.hpp"
-#include "gradfric/fem/gravity.hpp"
+#include "gradfric/fem/term_registry.hpp"
 #include "gradfric/physics/friction_law_options.hpp"
 #include "gradfric/physics/friction_laws.hpp"
 #include "gradfric/physics/friction_options.hpp"
@@ -85,7 +85,7 @@ FemParameters readFemParameters(MPI_Comm comm, RunParameters* record, const Plat
   q.normalFilter.speed = o.real("pc_speed", q.normalFilter.speed, "m/s",
                                 "Prakash-Clifton filter: reference speed V*, the filtered pressure follows at rest "
                                 "over -fem_pc_length / V*");
-  Gravity::readOptions(o, q);  // the layer's own options (its file)
+  readFemTermOptions(o, q);  // the optional terms' own options (src/fem/terms/)
   if (auto g = o.realIfSet("settle_damping", "1/s", "mass-proportional damping during the pressure step", "c_s/H"))
     q.settleDamping = *g;
   q.bulkLinear = o.real("bulk_b1", q.bulkLinear, "1",

@@ -2,9 +2,9 @@
 
 #include "gradfric/core/petsc_call.hpp"
 #include "gradfric/core/reproducible_sum.hpp"
-#include "gradfric/fem/gravity.hpp"
 #include "gradfric/fem/log_events.hpp"
 #include "gradfric/fem/state_view.hpp"
+#include "gradfric/fem/term_registry.hpp"
 
 namespace gradfric::fem {
 
@@ -23,7 +23,7 @@ ContactSettings contactSettings(const FemParameters& q) {
 
 }  // namespace
 
-// The layers, one line each, in the order their forces are added (docs/fem.md, "Adding a FEM term").
+// The layers, in the order their forces are added (docs/fem.md, "Adding a FEM term").
 PlateModel::PlateModel(MPI_Comm comm, const FemParameters& params, const Grading& grading)
     : params_(params),
       grading_(grading),
@@ -35,7 +35,8 @@ PlateModel::PlateModel(MPI_Comm comm, const FemParameters& params, const Grading
   elastic_ = add<ElasticOperator>(true, mesh_, properties_, elasticSettings(q));
   top_ = add<TopLoading>(true, mesh_, properties_);
   if (q.bulkLinear > 0 || q.bulkQuadratic > 0) add<BulkViscosity>(true, mesh_, properties_, q.bulkLinear, q.bulkQuadratic);
-  if (Gravity::wanted(q)) add<Gravity>(true, mass_, q);
+  for (const FemTerm& term : femTerms())  // the optional terms (term_registry.hpp), off ones not built
+    if (term.wanted(q)) addBuilt(term.build({mesh_, mass_, properties_, q}));
   contact_ = add<ContactBoundary>(q.contact, properties_, comm, contactSettings(q));
   if (MassDamping::wanted(q)) damping_ = add<MassDamping>(true, q, mesh_.ownedBlocks());
 

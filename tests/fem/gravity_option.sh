@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# -fem_gravity (gravity.hpp) in the driver, on a small plate:
+# -fem_gravity (src/fem/terms/gravity.cpp) in the driver, on a small plate:
 #  1. off (0, the default) is the run without the option bit for bit (every dataset but the run's
 #     provenance), and the results file records it (default, or set when given);
 #  2. on, the run prints and records it as set, describes the layer among the active effects,

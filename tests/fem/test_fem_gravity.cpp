@@ -1,4 +1,4 @@
-// The plate's own weight (-fem_gravity, gravity.hpp), at g = 1e4 m/s^2 so that rho g H = 600 Pa
+// The plate's own weight (-fem_gravity, src/fem/terms/gravity.cpp), at g = 1e4 m/s^2 so that rho g H = 600 Pa
 // is 6 % of p (the paper's plate otherwise):
 //  - the pressed equilibrium carries p L^2 + rho g H L^2 on the plane: the static step to CG's
 //    tolerance; the dynamic step (ramp and hold) adds the weight to what it settles to without it;
@@ -6,7 +6,8 @@
 //    that work is far above what the balance leaves open: without it the balance would fail;
 //  - a constant friction 1 slides with the weight in its normal force;
 //  - a weight six times the pressure slides to its peak without a false alarm of the blow-up monitor;
-//  - g = 0 builds no layer (the driver's run is compared with main's bit for bit by gravity_off.sh).
+//  - g = 0 builds no layer (the driver's runs with -fem_gravity 0 and without it are compared bit for
+//    bit by gravity_option.sh).
 #include <petscsection.h>
 #include <petscsf.h>
 #include "gradfric/core/petsc_handle.hpp"
@@ -28,9 +29,12 @@ namespace {
 
 constexpr double kGravity = 1e4;  // [m/s^2]
 
+// The term's setting, as the reader stores it (term_settings.hpp).
+double gravityOf(const FemParameters& q) { return q.terms.get("gravity", 0.0); }
+
 // rho g H / p: the weight against the pressure's load.
 double weightShare(const FemParameters& q) {
-  return q.plate.density * q.gravity * q.plate.thickness / q.plate.pressure;
+  return q.plate.density * gravityOf(q) * q.plate.thickness / q.plate.pressure;
 }
 
 const Layer* findLayer(const PlateModel& model, const char* name) {
@@ -47,7 +51,7 @@ struct GravityRun {
 // Constant friction 1 on the reduced plate (test_fem_contact.cpp), sliding 2.5 t_s.
 GravityRun slide(double gravity, bool staticStep) {
   FemParameters q = test::coarse(10, 10, 5);
-  q.gravity = gravity;
+  q.terms.set("gravity", gravity);
   q.staticPressureStep = staticStep;
   q.plate.muStatic = q.plate.muKinetic = 1.0;
   q.stopWhenKnown = false;
@@ -79,12 +83,12 @@ void balance(const FemRunResult& r, double* relative, double* absolute) {
 
 TEST(FemGravity, OffBuildsNoLayerOnItsWeight) {
   FemParameters q = test::coarse(4, 4, 2);
-  EXPECT_EQ(q.gravity, 0.0) << "off by default";
+  EXPECT_EQ(gravityOf(q), 0.0) << "off by default";
   {
     PlateModel model(PETSC_COMM_WORLD, q, test::noGrading());
     EXPECT_EQ(findLayer(model, "gravity"), nullptr);
   }
-  q.gravity = 9.81;
+  q.terms.set("gravity", 9.81);
   PlateModel model(PETSC_COMM_WORLD, q, test::noGrading());
   const Layer* weight = findLayer(model, "gravity");
   ASSERT_NE(weight, nullptr);
@@ -97,17 +101,17 @@ TEST(FemGravity, OffBuildsNoLayerOnItsWeight) {
 
 TEST(FemGravity, StaticPressedEquilibriumCarriesPressureAndWeight) {
   FemParameters q = test::coarse(12, 12, 3);
-  q.gravity = kGravity;
+  q.terms.set("gravity", kGravity);
   PlateModel model(PETSC_COMM_WORLD, q, test::noGrading());
   // The lumped masses hold the plate's mass: the weight the layer applies is rho g H L^2.
-  const double weight = model.mass().total() * q.gravity, pressure = q.plate.normalForce();
+  const double weight = model.mass().total() * gravityOf(q), pressure = q.plate.normalForce();
   EXPECT_NEAR(weight / (weightShare(q) * pressure), 1.0, 1e-12);
   OwnedVec X(model.createState());
   const PressedEquilibrium e = solvePressedEquilibrium(model, X);
   PetscPrintf(PETSC_COMM_WORLD,
               "static, g = %.0f m/s^2: %d CG iterations, residual %.2e, normal force %.12f (p L^2 + rho g H L^2), "
               "%.6f p L^2\n",
-              q.gravity, e.iterations, e.residual, e.normalForce / (pressure + weight), e.normalForce / pressure);
+              gravityOf(q), e.iterations, e.residual, e.normalForce / (pressure + weight), e.normalForce / pressure);
   ASSERT_TRUE(e.holds) << e.why;
   EXPECT_EQ(e.open, 0);
   EXPECT_EQ(e.slipping, 0);
@@ -121,7 +125,7 @@ TEST(FemGravity, StaticPressedEquilibriumCarriesPressureAndWeight) {
 TEST(FemGravity, DynamicRunCarriesTheWeightAndBalancesItsEnergy) {
   const GravityRun with = slide(kGravity, false), without = slide(0.0, false);
   FemParameters q = test::coarse(10, 10, 5);
-  q.gravity = kGravity;
+  q.terms.set("gravity", kGravity);
   const double share = weightShare(q);
   const FemRunResult& r = with.result;
   double relative = 0, absolute = 0;
@@ -137,7 +141,7 @@ TEST(FemGravity, DynamicRunCarriesTheWeightAndBalancesItsEnergy) {
               "dynamic, g = %.0f m/s^2: settled normal force %.9f p L^2 (without the weight %.9f, difference - rho g "
               "H/p = %.2e); energy balance worst %.3e of the energy put in (%.3e J), the weight's work %.3e J; "
               "constant friction 1: plateau %.5f p L^2 (1 + rho g H/p = %.5f)\n",
-              q.gravity, r.settledNormalForce, without.result.settledNormalForce,
+              gravityOf(q), r.settledNormalForce, without.result.settledNormalForce,
               r.settledNormalForce - without.result.settledNormalForce - share, relative, absolute, with.weightWork,
               plateau, 1 + share);
   EXPECT_NEAR(r.settledNormalForce - without.result.settledNormalForce, share, 1e-6);
@@ -174,7 +178,7 @@ TEST(FemGravity, WeightAboveThePressureSlidesWithoutAlarm) {
   plate.pressure = 100;
   plate.velocity = 1e-5;  // the peak ~30 steps after the start of sliding
   FemParameters q = test::coarse(8, 8, 2, plate);
-  q.gravity = kGravity;
+  q.terms.set("gravity", kGravity);
   q.measurement.kinetic = false;  // stop at the confirmed peak
   const double load = 1 + weightShare(q);
   q.slideTime = 4 * load * q.eq2PeakTime();  // Eq. 2 with the load

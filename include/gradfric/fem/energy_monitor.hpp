@@ -1,12 +1,13 @@
 #pragma once
 // The FEM's blow-up monitor and energy balance (FemRunResult::energy*), on the shared stability
 // layer (physics/stability.hpp): every step mu(t) finite and below twice the largest local mu_s
-// (frictionViolation, as the SBM; times (p + rho g H)/p with -fem_gravity), the normal force and
-// the top displacement finite; every -fem_monitor_every steps, kinetic + elastic energy bounded by
-// -fem_monitor_factor x (the energy put in + p^2 L^2 H / 2E, p plus the weight rho g H with
-// -fem_gravity) (EnergyBound); the energy put in is the pressure work, the slider work and the
-// kinetic energy given to the top at the start of sliding. A violation throws
-// NumericalInstability naming the quantity, the time, the step and the likely cause.
+// (frictionViolation, as the SBM; times (p + dead loads)/p, the optional terms' dead loads, as the
+// weight rho g H with -fem_gravity: term_registry.hpp), the normal force and the top displacement
+// finite; every -fem_monitor_every steps, kinetic + elastic energy bounded by -fem_monitor_factor x
+// (the energy put in + p^2 L^2 H / 2E, p plus the dead loads) (EnergyBound); the energy put in is
+// the pressure work, the slider work and the kinetic energy given to the top at the start of
+// sliding. A violation throws NumericalInstability naming the quantity, the time, the step and the
+// likely cause.
 #include "gradfric/fem/plate_model.hpp"
 #include "gradfric/physics/stability.hpp"
 

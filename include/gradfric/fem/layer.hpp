@@ -3,10 +3,10 @@
 // operator, the top loading, the bulk viscosity, the weight, the contact (penalty or kinematic),
 // the mass damping. PlateModel holds the active ones in a list, in the order their forces are
 // added (the sums at a node must keep that order to stay bit for bit), and its right-hand side and
-// post-step are loops over it; an effect that is off is not in the list. A new term is one class
-// deriving from Layer plus one line in PlateModel's constructor; its option, read and checked in
-// its own file, adds a member to parameters.hpp and a call in the reader (docs/fem.md, "Adding a
-// FEM term", with the weight, gravity.hpp, as the worked example).
+// post-step are loops over it; an effect that is off is not in the list. A new optional term is
+// one file, src/fem/terms/<name>.cpp (its Layer subclass, its options, when it is built), plus one
+// line in the registry src/fem/terms/terms.def (term_registry.hpp; docs/fem.md, "Adding a FEM
+// term", with the weight, src/fem/terms/gravity.cpp, as the worked example).
 #include "gradfric/core/exact_sum.hpp"
 #include "gradfric/fem/sliding_damping.hpp"
 

@@ -4,6 +4,7 @@
 #include "gradfric/fem/edge_grading.hpp"
 #include "gradfric/fem/hex_element.hpp"
 #include "gradfric/fem/normal_stress_filter.hpp"
+#include "gradfric/fem/term_settings.hpp"
 #include "gradfric/physics/friction_history.hpp"
 #include "gradfric/physics/friction_laws_settings.hpp"
 #include "gradfric/physics/plate.hpp"
@@ -144,7 +145,8 @@ struct FemParameters : FemMesh, FemContact, FemDamping, FemTimeStep, FemRequest,
   // The physical plate (-plate_ options, shared with the spring-block model): size L, thickness
   // H, material, pressure, sliding speed and angle, mean local mu_s and mu_k (graded by -grading_).
   Plate plate;
-  double gravity = 0;  // -fem_gravity [m/s^2]: the plate's own weight (gravity.hpp); 0: off
+  // The optional terms' settings (src/fem/terms/: -fem_gravity, ...), each read by its term.
+  TermSettings terms;
 
   FemParameters() : FemParameters(Plate{}) {}
   // Every value at its default for this plate, the derived ones derived from it. A caller that

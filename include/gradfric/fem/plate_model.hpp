@@ -7,9 +7,10 @@
 //   RHS = [v ; M^-1 (sum of the layers' forces) - gamma v], then the layers' constraints (the top's
 //   tangential acceleration held at zero while it slides).
 // The layers, in the order their forces are added: the elastic operator (always; it sets the
-// force slots), the top loading (always), the bulk viscosity (optional), the weight (optional,
-// gravity.hpp), the contact boundary (penalty or kinematic: the kinematic contact comes last, it
-// needs every other force), the mass damping (it acts on the accelerations, in the M^-1 pass).
+// force slots), the top loading (always), the bulk viscosity (optional), the registry's optional
+// terms (term_registry.hpp: the weight, ...), the contact boundary (penalty or kinematic: the
+// kinematic contact comes last, it needs every other force), the mass damping (it acts on the
+// accelerations, in the M^-1 pass).
 #include "gradfric/fem/bulk_viscosity.hpp"
 #include "gradfric/fem/contact_boundary.hpp"
 #include "gradfric/fem/elastic_operator.hpp"
@@ -88,6 +89,11 @@ private:
     owned_.push_back(std::make_unique<L>(std::forward<Args>(args)...));
     if (active) layers_.push_back(owned_.back().get());
     return static_cast<L*>(owned_.back().get());
+  }
+  // An optional term's layer, built by its registry entry: always active.
+  void addBuilt(std::unique_ptr<Layer> layer) {
+    layers_.push_back(layer.get());
+    owned_.push_back(std::move(layer));
   }
   // F = [v ; M^-1 f + the mass damping's acceleration]; the damping's energy per block to its layer.
   void accelerate(const LayerContext& ctx, Vec X, Vec F);
