@@ -4,13 +4,16 @@
 (friction and E grading, linear, 10 bands, paper plate) and of the spring-block model with the same
 state law, for each D_c.
 
-    kappa_map.py <fem folder> <sbm folder> [map.png]
+    kappa_map.py <fem folder> <sbm folder> [map.png] [fem_study.tsv]
 
 FEM files: <fem folder>/n<N>_dc<D_c>_friction.h5 (gradfric-fem sweep over Delta = -0.2, 0, 0.2) and
 n<N>_dc<D_c>_E.h5 (-0.2, 0.2; its reference is the friction file's Delta = 0). SBM files:
 <sbm folder>/dc<D_c>_<property>.h5 (gradfric ensembles over -0.2, 0, 0.2, same seed: paired
 streams, so the variation's interval is the file's own mu_s_relative_ci95).
 kappa = G D_c / (H p (mu_s - mu_k)) for the FEM, and with H -> l_z for the spring blocks.
+With the study's table (docs/fem_study.tsv) the FEM with the Prakash-Clifton filter is added from
+its rows on the finest in-plane mesh run for every plate of a D_c (200 x 200 x 5): the points whose
+ladders converge (docs/accuracy_fem.md, "The map's FEM points refined").
 """
 import glob
 import os
@@ -48,6 +51,25 @@ def fem_map(folder):
     return out
 
 
+def filtered_map(study):
+    """{dc: {(property, delta): v}} from the filtered rows (contact 'penalty,pc=...') on 200 x 200 x 5."""
+    mu = {}
+    for line in open(study):
+        cols = line.rstrip("\n").split("\t")
+        if line.startswith("#") or len(cols) < 12 or "pc=" not in cols[10]:
+            continue
+        law, dc, prop, delta, nx, nz = cols[:6]
+        if (nx, nz, cols[6], cols[9]) == ("200", "5", "1", "0.6"):
+            mu[(float(dc), prop, float(delta))] = float(cols[11])
+    out = {}
+    for (dc, prop, delta), value in mu.items():
+        ref = mu.get((dc, "none", 0.0))
+        plates = [(p, d) for p in ("friction", "E") for d in (-0.2, 0.2)]
+        if ref is not None and prop != "none" and all((dc, p, d) in mu for p, d in plates):
+            out.setdefault(dc, {})[(prop, delta)] = value / ref - 1
+    return out
+
+
 def sbm_map(folder):
     """{dc: {(property, delta): (v, ci95)}, 'mu_s0'}"""
     out = {}
@@ -66,6 +88,7 @@ def main():
     if len(sys.argv) < 3:
         sys.exit(__doc__)
     fem, sbm = fem_map(sys.argv[1]), sbm_map(sys.argv[2])
+    filtered = filtered_map(sys.argv[4]) if len(sys.argv) > 4 else {}
     cols = [("friction", -0.2), ("friction", 0.2), ("E", -0.2), ("E", 0.2)]
     print("| model | mesh / blocks | D_c [m] | kappa | mu_s(0) | v friction -0.2 | v friction +0.2 | v E -0.2 | v E +0.2 |")
     print("|---|---|---|---|---|---|---|---|---|")
@@ -77,6 +100,9 @@ def main():
         row = sbm[dc]
         cells = " | ".join("%+.2f +- %.2f %%" % (100 * row[c][0], 100 * row[c][1]) if c in row else "" for c in cols)
         print(f"| SBM | 60x60, R 8 | {dc:g} | {G * dc / (LZ * P * DMU):.2f} | {row['mu_s0']:.4f} | {cells} |")
+    for dc in sorted(filtered):
+        cells = " | ".join("%+.2f %%" % (100 * filtered[dc][c]) for c in cols)
+        print(f"| FEM, filter | 200x200x5 | {dc:g} | {G * dc / (H * P * DMU):.2f} | | {cells} |")
     if len(sys.argv) > 3:
         import matplotlib
         matplotlib.use("Agg")
@@ -91,6 +117,11 @@ def main():
                     if xs:
                         ax.plot(xs, ys, marker=marker, color=colour, ls="-",
                                 label=f"FEM {n}x{n}x5, Delta {d:+.1f}")
+            for d, colour in ((-0.2, "C0"), (0.2, "C3")):
+                keys = sorted(dc for dc in filtered if (prop, d) in filtered[dc])
+                if keys:
+                    ax.plot([G * dc / (H * P * DMU) for dc in keys], [100 * filtered[dc][(prop, d)] for dc in keys],
+                            marker="D", color=colour, ls=":", lw=2, label=f"FEM 200x200x5 with filter, Delta {d:+.1f}")
             keys = sorted(sbm)
             for d, colour in ((-0.2, "C0"), (0.2, "C3")):
                 xs = [G * dc / (LZ * P * DMU) for dc in keys if (prop, d) in sbm[dc]]
