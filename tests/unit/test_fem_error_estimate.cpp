@@ -163,3 +163,26 @@ TEST(FemErrorBar, OutsideTheStudiesItIsNotMeasured) {
   triangular.profile = GradingProfile::Triangular;
   notMeasured(paperDefaults(), triangular, 0.6, "grading other than linear");
 }
+
+TEST(FemErrorBar, AFilteredRunUsesTheFilteredNonGradedStudiesWhereTheyExist) {
+  // D_c 4e-7 with the filter (L 1e-6 m, V* 0.1 m/s): its thickness (0.988633, 0.988662, 0.988590:
+  // the steps change sign and grow), time-step and contact rows were measured with the filter.
+  FemParameters q = paperDefaults();
+  q.frictionLaw.slipLength = 4e-7;
+  q.normalFilter.length = 1e-6;
+  q.normalFilter.speed = 0.1;
+  const DiscretisationError e = discretisationError(q, Grading{}, 0.6);
+  EXPECT_TRUE(e.mesh.measured) << e.mesh.basis;  // 0.990165, 0.988633, 0.987956: monotone
+  EXPECT_FALSE(e.thickness.measured);
+  EXPECT_NE(e.thickness.basis.find("with the filter"), std::string::npos) << e.thickness.basis;
+  EXPECT_TRUE(e.timeStep.measured) << e.timeStep.basis;
+  EXPECT_NE(e.timeStep.basis.find("with the filter"), std::string::npos) << e.timeStep.basis;
+  ASSERT_TRUE(e.contact.measured) << e.contact.basis;
+  EXPECT_NEAR(e.contact.relative, 1.25 * std::fabs(0.988633 - 0.988656) / 0.988656, 1e-12);
+  EXPECT_FALSE(e.measured);  // no bar: the thickness term has none
+  // At D_c 1e-7 only the unfiltered non-graded studies exist: the filtered run falls back to them.
+  q.frictionLaw.slipLength = 1e-7;
+  const DiscretisationError fallback = discretisationError(q, Grading{}, 0.6);
+  EXPECT_EQ(fallback.thickness.basis.find("with the filter"), std::string::npos) << fallback.thickness.basis;
+  EXPECT_NE(fallback.thickness.basis.find("0.984958"), std::string::npos) << fallback.thickness.basis;
+}
