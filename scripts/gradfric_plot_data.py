@@ -84,6 +84,18 @@ class Ensemble:
         return out
 
 
+def point_run(ensemble, p):
+    """(time, mu, observables, results) of the first finished run of point p: its mu(t) and its
+    observables with their discretisation bars where stored (a FEM run is one realisation)."""
+    runs = ensemble.histories(p)
+    time, mu = runs[0] if runs else (np.array([]), np.array([]))
+    results = {n: float(ensemble.statistic(f"{n}_mean")[p]) for n in ensemble.observables}
+    for n in ensemble.observables:
+        if ensemble.has(f"{n}_discretisation_error"):
+            results[f"{n}_discretisation_error"] = float(ensemble.statistic(f"{n}_discretisation_error")[p])
+    return time, mu, ensemble.observables, results
+
+
 class FemHistory:
     """A single FEM run (docs/fem.md, "Output"): its mu(t) and its observables. A gradfric-fem-run
     file is read as the ensemble layout (its one point and realisation, as a FEM sweep's point);
@@ -95,13 +107,7 @@ class FemHistory:
         if ds.attrs.get("format") not in FEM_RUN_FORMATS:
             raise ValueError(f"{path} is not a gradfric-fem run")
         if ds.attrs["format"] == "gradfric-fem-run":
-            run = Ensemble(path, ds)
-            self.time, self.mu = run.histories(0)[0] if run.histories(0) else (np.array([]), np.array([]))
-            self.observables = run.observables
-            self.results = {n: float(run.statistic(f"{n}_mean")[0]) for n in run.observables}
-            for n in run.observables:
-                if run.has(f"{n}_discretisation_error"):
-                    self.results[f"{n}_discretisation_error"] = float(run.statistic(f"{n}_discretisation_error")[0])
+            self.time, self.mu, self.observables, self.results = point_run(Ensemble(path, ds), 0)
             where = "/fem/results@"
         else:
             self.time = ds["time"].values
@@ -128,13 +134,7 @@ class SweepPoint:
 
     def __init__(self, sweep, p):
         self.path = f"{sweep.path}[{p}]"
-        runs = sweep.histories(p)
-        self.time, self.mu = runs[0] if runs else (np.array([]), np.array([]))
-        self.observables = sweep.observables
-        self.results = {n: float(sweep.statistic(f"{n}_mean")[p]) for n in sweep.observables}
-        for n in sweep.observables:
-            if sweep.has(f"{n}_discretisation_error"):
-                self.results[f"{n}_discretisation_error"] = float(sweep.statistic(f"{n}_discretisation_error")[p])
+        self.time, self.mu, self.observables, self.results = point_run(sweep, p)
         self.parameters = sweep.scene
         self.delta = float(sweep.delta[p]) if sweep.profile[p] != "none" else 0.0
         self.theta = float(sweep.theta[p])

@@ -21,7 +21,9 @@ import re
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "python"))
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import gradfric  # noqa: E402
+from fem_study_table import load as load_study  # noqa: E402  the study table's one reader
 
 G, H, LZ, P, DMU = 10e6 / (2 * (1 + 1 / 3)), 5e-5, 5.7e-5, 1e4, 0.4
 
@@ -53,18 +55,13 @@ def fem_map(folder):
 
 def filtered_map(study):
     """{dc: {(property, delta): v}} from the filtered rows (contact 'penalty,pc=...') on 200 x 200 x 5."""
-    mu = {}
-    for line in open(study):
-        cols = line.rstrip("\n").split("\t")
-        if line.startswith("#") or len(cols) < 12 or "pc=" not in cols[10]:
-            continue
-        law, dc, prop, delta, nx, nz = cols[:6]
-        if (nx, nz, cols[6], cols[9]) == ("200", "5", "1", "0.6"):
-            mu[(float(dc), prop, float(delta))] = float(cols[11])
+    mu = {(dc, prop, delta): value
+          for (law, dc, prop, delta, n, nz, element, dts, contact), value in load_study(study).items()
+          if "pc=" in contact and (n, nz, dts) == (200, 5, 0.6)}
+    plates = [(p, d) for p in ("friction", "E") for d in (-0.2, 0.2)]
     out = {}
     for (dc, prop, delta), value in mu.items():
         ref = mu.get((dc, "none", 0.0))
-        plates = [(p, d) for p in ("friction", "E") for d in (-0.2, 0.2)]
         if ref is not None and prop != "none" and all((dc, p, d) in mu for p, d in plates):
             out.setdefault(dc, {})[(prop, delta)] = value / ref - 1
     return out
