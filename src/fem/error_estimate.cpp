@@ -199,50 +199,53 @@ ErrorTerm meshTerm(const FemParameters& q, const Grading& g, bool* coversThickne
   return {false, 0, text};
 }
 
-// The rows of a study on the non-graded 100 x 100 mesh (nz, dt_safety and contact per rung): those
-// with the run's Prakash-Clifton filter where the study has them all, else those without it (the
-// thickness, time-step and contact studies were first made without the filter). Returns whether
-// the filtered rows were used; m[k] null where a rung is missing.
-bool nonGradedRows(const FemParameters& q, int count, const int nz[], const double dtSafety[], const char* const contact[],
-                   const StudyRow* m[]) {
-  for (const bool filtered : {true, false}) {
-    if (filtered && !q.normalFilter.active()) continue;
-    bool complete = true;
-    for (int k = 0; k < count; ++k)
-      complete = (m[k] = find(q, "none", 0, 100, nz[k], dtSafety[k], contact[k], {},
-                              filtered ? q.normalFilter : NormalStressFilter{})) != nullptr && complete;
-    if (complete || !filtered) return filtered && complete;
-  }
-  return false;
+// One run of a study on the non-graded 100 x 100 mesh.
+struct NonGradedRung {
+  int nz;
+  double dtSafety;
+  const char* contact;
+};
+
+// Every rung found with this filter into m; false if one is missing.
+template <std::size_t N>
+bool findRungs(const FemParameters& q, const NonGradedRung (&rungs)[N], const NormalStressFilter& filter,
+               const StudyRow* (&m)[N]) {
+  bool complete = true;
+  for (std::size_t k = 0; k < N; ++k)
+    complete = (m[k] = find(q, "none", 0, 100, rungs[k].nz, rungs[k].dtSafety, rungs[k].contact, {}, filter)) != nullptr &&
+               complete;
+  return complete;
 }
 
-const char* filterNote(bool filtered) { return filtered ? ", with the filter" : ""; }
+// The rungs with the run's Prakash-Clifton filter where the study has them all, else those without
+// it (the thickness, time-step and contact studies were first made without the filter). Returns
+// ", with the filter" or "" for the term's text; m[k] null where a rung is missing.
+template <std::size_t N>
+const char* nonGradedRows(const FemParameters& q, const NonGradedRung (&rungs)[N], const StudyRow* (&m)[N]) {
+  if (q.normalFilter.active() && findRungs(q, rungs, q.normalFilter, m)) return ", with the filter";
+  findRungs(q, rungs, NormalStressFilter{}, m);
+  return "";
+}
 
 // The thickness and time-step ladders of the non-graded 100 x 100 mesh (nz 5/10/20; dt_safety
 // 0.6/0.3/0.15): the bound of the run's member (nz 5; dt_safety 0.6, which covers smaller steps).
 ErrorTerm thicknessTerm(const FemParameters& q) {
   if (q.nz != 5) return {false, 0, "nz other than 5 (the thickness study: 5/10/20)"};
-  const int nz[] = {5, 10, 20};
-  const double dt[] = {0.6, 0.6, 0.6};
-  const char* const contact[] = {"penalty", "penalty", "penalty"};
   const StudyRow* m[3];
-  const bool filtered = nonGradedRows(q, 3, nz, dt, contact, m);
+  const char* filter = nonGradedRows(q, {{5, 0.6, "penalty"}, {10, 0.6, "penalty"}, {20, 0.6, "penalty"}}, m);
   if (!m[0] || !m[1] || !m[2]) return {false, 0, "thickness ladder nz 5/10/20 not measured for this D_c"};
   char ladder[120];
-  std::snprintf(ladder, sizeof ladder, "nz 5/10/20 (non-graded 100x100%s)", filterNote(filtered));
+  std::snprintf(ladder, sizeof ladder, "nz 5/10/20 (non-graded 100x100%s)", filter);
   return ladderTerm("thickness", ladder, m, 0);
 }
 
 ErrorTerm timeStepTerm(const FemParameters& q, double dtRatio) {
   if (dtRatio > 0.6 + 1e-9) return {false, 0, "dt above 0.6 of the stable step"};
-  const int nz[] = {5, 5, 5};
-  const double dt[] = {0.6, 0.3, 0.15};
-  const char* const contact[] = {"penalty", "penalty", "penalty"};
   const StudyRow* m[3];
-  const bool filtered = nonGradedRows(q, 3, nz, dt, contact, m);
+  const char* filter = nonGradedRows(q, {{5, 0.6, "penalty"}, {5, 0.3, "penalty"}, {5, 0.15, "penalty"}}, m);
   if (!m[0] || !m[1] || !m[2]) return {false, 0, "dt ladder 0.6/0.3/0.15 not measured for this D_c"};
   char ladder[120];
-  std::snprintf(ladder, sizeof ladder, "dt_safety 0.6/0.3/0.15 (non-graded 100x100%s)", filterNote(filtered));
+  std::snprintf(ladder, sizeof ladder, "dt_safety 0.6/0.3/0.15 (non-graded 100x100%s)", filter);
   return ladderTerm("dt", ladder, m, 0);
 }
 
@@ -253,16 +256,13 @@ ErrorTerm contactTerm(const FemParameters& q) {
   const double defaultStiffness = defaultPenaltyStiffness(q.plate);
   if (!near(q.kn, defaultStiffness) || !near(q.kt, defaultStiffness))
     return {false, 0, "penalty stiffness other than 250 G/H"};
-  const int nz[] = {5, 5};
-  const double dt[] = {0.6, 0.6};
-  const char* const contact[] = {"penalty", "kinematic"};
   const StudyRow* m[2];
-  const bool filtered = nonGradedRows(q, 2, nz, dt, contact, m);
+  const char* filter = nonGradedRows(q, {{5, 0.6, "penalty"}, {5, 0.6, "kinematic"}}, m);
   if (!m[0] || !m[1]) return {false, 0, "penalty vs kinematic not measured for this D_c"};
   const double bound = 1.25 * std::fabs(m[0]->mu - m[1]->mu) / std::fabs(m[1]->mu);
   char text[200];
   std::snprintf(text, sizeof text, "penalty vs kinematic %.6f vs %.6f (non-graded 100x100%s)", m[0]->mu, m[1]->mu,
-                filterNote(filtered));
+                filter);
   return {true, bound, text};
 }
 

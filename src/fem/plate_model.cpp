@@ -36,7 +36,7 @@ PlateModel::PlateModel(MPI_Comm comm, const FemParameters& params, const Grading
   top_ = add<TopLoading>(true, mesh_, properties_);
   if (q.bulkLinear > 0 || q.bulkQuadratic > 0) add<BulkViscosity>(true, mesh_, properties_, q.bulkLinear, q.bulkQuadratic);
   for (const FemTerm& term : femTerms())  // the optional terms (term_registry.hpp), off ones not built
-    if (term.wanted(q)) addBuilt(term.build({mesh_, mass_, properties_, q}));
+    if (term.wanted(q)) adopt(term.build({mesh_, mass_, properties_, q}), true);
   contact_ = add<ContactBoundary>(q.contact, properties_, comm, contactSettings(q));
   if (MassDamping::wanted(q)) damping_ = add<MassDamping>(true, q, mesh_.ownedBlocks());
 

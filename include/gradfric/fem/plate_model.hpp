@@ -86,14 +86,13 @@ private:
   // Builds a layer; it joins the list when active.
   template <class L, class... Args>
   L* add(bool active, Args&&... args) {
-    owned_.push_back(std::make_unique<L>(std::forward<Args>(args)...));
-    if (active) layers_.push_back(owned_.back().get());
-    return static_cast<L*>(owned_.back().get());
+    return static_cast<L*>(adopt(std::make_unique<L>(std::forward<Args>(args)...), active));
   }
-  // An optional term's layer, built by its registry entry: always active.
-  void addBuilt(std::unique_ptr<Layer> layer) {
-    layers_.push_back(layer.get());
+  // Owns a built layer (an optional term's, from its registry entry, or add's); in the list if active.
+  Layer* adopt(std::unique_ptr<Layer> layer, bool active) {
     owned_.push_back(std::move(layer));
+    if (active) layers_.push_back(owned_.back().get());
+    return owned_.back().get();
   }
   // F = [v ; M^-1 f + the mass damping's acceleration]; the damping's energy per block to its layer.
   void accelerate(const LayerContext& ctx, Vec X, Vec F);
