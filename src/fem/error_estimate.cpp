@@ -4,9 +4,9 @@
 //    element). Only a ladder whose differences shrink (an observed order p > 0.5) gives a bar
 //    (ladderTerm): Roache's grid convergence index with safety factor 1.25 about the Richardson
 //    extrapolation when they keep their sign, the bracket of the last two values when they
-//    alternate; a ladder that does not converge gives none (never a bar the study does not prove);
+//    alternate; a ladder that does not converge gives none (never a bar the study does not prove).
 //    A ladder refined in every direction (50x50x5, 100x100x10, 200x200x20) is preferred: it bounds
-//    the thickness as well;
+//    the thickness as well. Of several ladders holding the run's mesh, the finest is taken;
 //  - thickness (for an in-plane ladder): the ladder nz 5/10/20 on the non-graded paper mesh, by the
 //    same rule;
 //  - time step: the ladder dt_safety 0.6/0.3/0.15 on the same mesh, by the same rule (the bound of
@@ -166,13 +166,14 @@ ErrorTerm ladderTerm(const char* term, const std::string& ladder, const StudyRow
 
 // The mesh term. A ladder refined in every direction (n x n x nz, 2n x 2n x 2nz, 4n x 4n x 4nz)
 // holding the run's mesh is taken first: it bounds the thickness too (*coversThickness). Else the
-// in-plane ladder (n, 2n, 4n at the run's nz). In each, first the ladder in which the run's mesh is
-// the finest.
+// in-plane ladder (n, 2n, 4n at the run's nz). In each, the finest ladder the study has that holds
+// the run's mesh: the three finest meshes are the likeliest to lie in the asymptotic range (Roache),
+// and where a finer ladder does not converge a coarser one that does is no evidence.
 ErrorTerm meshTerm(const FemParameters& q, const Grading& g, bool* coversThickness) {
   const std::string property = gradingName(g);
   const double delta = g.active() ? g.delta : 0.0;
   for (bool allDirections : {true, false})
-    for (int member = 2; member >= 0; --member) {
+    for (int member = 0; member <= 2; ++member) {
       const int coarsest = q.nx >> member, coarsestNz = allDirections ? q.nz >> member : q.nz;
       if (coarsest < 1 || (coarsest << member) != q.nx) continue;
       if (allDirections && (coarsestNz < 1 || (coarsestNz << member) != q.nz)) continue;
@@ -236,7 +237,9 @@ ErrorTerm thicknessTerm(const FemParameters& q) {
   if (!m[0] || !m[1] || !m[2]) return {false, 0, "thickness ladder nz 5/10/20 not measured for this D_c"};
   char ladder[120];
   std::snprintf(ladder, sizeof ladder, "nz 5/10/20 (non-graded 100x100%s)", filter);
-  return ladderTerm("thickness", ladder, m, 0);
+  ErrorTerm term = ladderTerm("thickness", ladder, m, 0);
+  term.filtered = *filter != '\0';
+  return term;
 }
 
 ErrorTerm timeStepTerm(const FemParameters& q, double dtRatio) {
@@ -246,7 +249,9 @@ ErrorTerm timeStepTerm(const FemParameters& q, double dtRatio) {
   if (!m[0] || !m[1] || !m[2]) return {false, 0, "dt ladder 0.6/0.3/0.15 not measured for this D_c"};
   char ladder[120];
   std::snprintf(ladder, sizeof ladder, "dt_safety 0.6/0.3/0.15 (non-graded 100x100%s)", filter);
-  return ladderTerm("dt", ladder, m, 0);
+  ErrorTerm term = ladderTerm("dt", ladder, m, 0);
+  term.filtered = *filter != '\0';
+  return term;
 }
 
 // The penalty against the kinematic contact (the exact reference, not a refinement) on the
@@ -263,7 +268,20 @@ ErrorTerm contactTerm(const FemParameters& q) {
   char text[200];
   std::snprintf(text, sizeof text, "penalty vs kinematic %.6f vs %.6f (non-graded 100x100%s)", m[0]->mu, m[1]->mu,
                 filter);
-  return {true, bound, text};
+  return {true, bound, text, *filter != '\0'};
+}
+
+// For a filtered run: which of the non-graded terms were measured with its filter.
+std::string filterOfTerms(const FemParameters& q, const ErrorTerm* const (&terms)[3]) {
+  if (!q.normalFilter.active()) return "";
+  const auto count = std::count_if(std::begin(terms), std::end(terms), [](const ErrorTerm* t) { return t->filtered; });
+  if (count == 3) return " with the filter";
+  if (count == 0) return " without the filter";
+  std::string text = " with the filter for";
+  const char* names[] = {" thickness", " dt", " contact"};
+  for (int k = 0; k < 3; ++k)
+    if (terms[k]->filtered) text += names[k];
+  return text + ", without it for the others";
 }
 
 }  // namespace
@@ -277,7 +295,8 @@ DiscretisationError discretisationError(const FemParameters& q, const Grading& g
   }
   bool coversThickness = false;
   e.mesh = meshTerm(q, g, &coversThickness);
-  e.thickness = coversThickness ? ErrorTerm{true, 0.0, "in the mesh ladder (all directions refined)"} : thicknessTerm(q);
+  e.thickness = coversThickness ? ErrorTerm{true, 0.0, "in the mesh ladder (all directions refined)", q.normalFilter.active()}
+                               : thicknessTerm(q);
   e.timeStep = timeStepTerm(q, dtRatio);
   e.contact = contactTerm(q);
   const ErrorTerm* terms[] = {&e.mesh, &e.thickness, &e.timeStep, &e.contact};
@@ -287,7 +306,7 @@ DiscretisationError discretisationError(const FemParameters& q, const Grading& g
     e.basis = "mesh " + percent(e.mesh.relative) + ", thickness " + percent(e.thickness.relative) + ", dt " +
               percent(e.timeStep.relative) + ", contact " + percent(e.contact.relative) + "; " + e.mesh.basis +
               (g.active() || q.normalFilter.active() ? "; thickness, dt and contact terms of the non-graded plate" : "") +
-              (q.normalFilter.active() ? " without the filter" : "");
+              filterOfTerms(q, {&e.thickness, &e.timeStep, &e.contact});
   } else {
     for (const ErrorTerm* t : terms)  // every term without a bound, each with its reason
       if (!t->measured) e.basis += (e.basis.empty() ? "" : "; ") + t->basis;

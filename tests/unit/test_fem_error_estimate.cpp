@@ -111,15 +111,38 @@ TEST(FemErrorBar, AnOscillatingLadderThatShrinksIsBracketedByItsLastTwoValues) {
 }
 
 TEST(FemErrorBar, ALadderThatDoesNotConvergeGivesNoBar) {
-  // Friction +0.2: 0.804064, 0.804509, 0.800688: the differences change sign and grow; so does
-  // D_c 1e-7's non-graded ladder (0.984317, 0.984517, 0.980793).
-  const DiscretisationError e = discretisationError(paperDefaults(), linear(GradedProperty::Friction, 0.2), 0.6);
+  // Friction -0.2 at D_c 4e-7: 0.909194, 0.889669, 0.864449: the differences grow; D_c 1e-7's
+  // non-graded ladder (0.984317, 0.984517, 0.980793) changes sign and grows.
+  FemParameters q = paperDefaults();
+  q.frictionLaw.slipLength = 4e-7;
+  const DiscretisationError e = discretisationError(q, linear(GradedProperty::Friction, -0.2), 0.6);
   EXPECT_FALSE(e.measured);
   EXPECT_NE(e.basis.find("mesh not converged"), std::string::npos) << e.basis;
-  EXPECT_EQ(withErrorBar(0.8045, e).find("+-"), std::string::npos);
-  FemParameters q = paperDefaults();
+  EXPECT_EQ(withErrorBar(0.8897, e).find("+-"), std::string::npos);
   q.frictionLaw.slipLength = 1e-7;
   EXPECT_NE(discretisationError(q, Grading{}, 0.6).mesh.basis.find("mesh not converged"), std::string::npos);
+}
+
+TEST(FemErrorBar, OfTheLaddersHoldingTheRunsMeshTheFinestDecides) {
+  // Friction +-0.2 at the default D_c, x 5: 50/100/200 does not converge, 100/200/400 does.
+  // +0.2: 0.804509, 0.800688, 0.800534 (monotone; order 4.6, capped at 2).
+  const DiscretisationError plus = discretisationError(paperDefaults(), linear(GradedProperty::Friction, 0.2), 0.6);
+  ASSERT_TRUE(plus.mesh.measured) << plus.mesh.basis;
+  EXPECT_NE(plus.mesh.basis.find("100x100/200/400"), std::string::npos) << plus.mesh.basis;
+  const double extrapolated = 0.800534 + (0.800534 - 0.800688) / 3.0;
+  EXPECT_NEAR(plus.mesh.relative, 1.25 * std::fabs(0.804509 - extrapolated) / extrapolated, 1e-12);
+  EXPECT_FALSE(plus.measured) << "the unfiltered thickness ladder at this D_c does not converge";
+  // -0.2: 0.808264, 0.794869, 0.798154 alternate and shrink (ratio 0.25): the limit lies between the
+  // last two. On 200 x 200 the coarser ladder 50/100/200, which does not converge, is not taken.
+  FemParameters fine = paperDefaults();
+  fine.nx = fine.ny = 200;
+  const ErrorTerm minus = discretisationError(fine, linear(GradedProperty::Friction, -0.2), 0.6).mesh;
+  ASSERT_TRUE(minus.measured) << minus.basis;
+  EXPECT_NEAR(minus.relative, 1.25 * std::fabs(0.794869 - 0.798154) / 0.798154, 1e-12);
+  // 50 x 50 belongs only to 50/100/200 (0.809636, 0.808264, 0.794869: the differences grow).
+  FemParameters coarse = paperDefaults();
+  coarse.nx = coarse.ny = 50;
+  EXPECT_FALSE(discretisationError(coarse, linear(GradedProperty::Friction, -0.2), 0.6).mesh.measured);
 }
 
 TEST(FemErrorBar, OutsideTheStudiesItIsNotMeasured) {

@@ -14,6 +14,7 @@ struct ErrorTerm {
   bool measured = false;
   double relative = 0;  // |mu / mu_converged - 1| bound of this term (fraction)
   std::string basis;    // what was measured, or why it was not
+  bool filtered = false;  // measured with the run's Prakash-Clifton filter (else without it)
 };
 
 struct DiscretisationError {
