@@ -103,6 +103,7 @@ def main():
             mu = [rows[k] for k in keys]
             d, p, ext, bounds = analyse(mu)
             print("| %s | %s | %s | %s | %s | %s |" % (label, ", ".join("%.6f" % m for m in mu), d, p, ext, bounds))
+    paired_differences(rows)
     if contacts:
         print()
         print("The penalty against the kinematic contact (the exact reference), non-graded 100 x 100 x 5:")
@@ -110,6 +111,53 @@ def main():
         print("| D_c, filter | penalty | kinematic | difference |")
         print("|---|---|---|---|")
         print("\n".join(contacts))
+
+def paired_differences(rows):
+    """mu_s(+Delta) - mu_s(-Delta) on the same mesh, judged as a ladder by the same rule (absolute
+    values: the difference may cross zero). Its sign is decided when both signs' own ladders converge
+    and the interval that bounds the finest mesh's limit excludes zero."""
+    pairs = sorted({(k[0], k[1], k[8], k[2], abs(k[3])) for k in rows if k[2] != "none" and k[3] > 0
+                    and k[8].startswith("penalty") and (k[0], k[1], k[2], -k[3]) + k[4:] in rows})
+    lines = []
+    for law, dc, contact, prop, delta in pairs:
+        plus = dict(ladders(rows, law, dc, prop, delta, contact=contact))
+        minus = dict(ladders(rows, law, dc, prop, -delta, contact=contact))
+        meshes = {n: "%d/%d/%d" % (n, 2 * n, 4 * n) for n in set(plus) & set(minus)}
+        every = lambda sign: [(law, dc, prop, sign * delta, n, nz, "q1", 0.6, contact)
+                              for n, nz in ((50, 5), (100, 10), (200, 20))]
+        if all(k in rows for sign in (1, -1) for k in every(sign)):  # refined in every direction
+            plus["all"], minus["all"] = ([rows[k] for k in every(sign)] for sign in (1, -1))
+            meshes["all"] = "50x50x5/100x100x10/200x200x20"
+        for n in sorted(meshes, key=lambda n: (n == "all", 0 if n == "all" else n)):
+            d = [a - b for a, b in zip(plus[n], minus[n])]
+            v = judge(d, 2)
+            singles = [judge(mu[n], 2)["outcome"] != "not converged" for mu in (plus, minus)]
+            if v["outcome"] == "not converged":
+                verdict, sign = "not converged", "not decided"
+            elif not all(singles):
+                verdict, sign = "converges, but the ladder of %s does not" % " and of ".join(
+                    "%+.1f" % x for x, ok in zip((delta, -delta), singles) if not ok), "not decided"
+            else:
+                if v["outcome"] == "oscillating":
+                    low, high = sorted(d[1:])
+                    verdict = "oscillating: limit between %+.6f and %+.6f" % (d[1], d[2])
+                else:
+                    half = 1.25 * abs(d[2] - v["extrapolated"])
+                    low, high = d[2] - half, d[2] + half
+                    verdict = "order %.2f, extrapolated %+.6f, finest %+.6f +- %.6f" % (
+                        v["order"], v["extrapolated"], d[2], half)
+                sign = "decided: %s" % ("+Delta above" if low > 0 else "-Delta above") if low * high > 0 else "not decided"
+            tag = "%s %.1f, D_c %g%s" % (prop, delta, dc, "" if contact == "penalty" else ", filter L/V* " + contact.split("=", 1)[1])
+            lines.append("| %s | %s: %s | %s | %s |" % (tag, meshes[n], ", ".join("%+.6f" % x for x in d), verdict, sign))
+    if lines:
+        print()
+        print("The paired difference mu_s(+Delta) - mu_s(-Delta) on the same mesh (in-plane ladders x 5, and refined")
+        print("in every direction where run):")
+        print()
+        print("| grading, interface | differences on n, 2n, 4n | ladder | sign |")
+        print("|---|---|---|---|")
+        print("\n".join(lines))
+
 
 if __name__ == "__main__":
     main()

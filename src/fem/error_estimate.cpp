@@ -200,8 +200,16 @@ ErrorTerm meshTerm(const FemParameters& q, const Grading& g, bool* coversThickne
   return {false, 0, text};
 }
 
-// One run of a study on the non-graded 100 x 100 mesh.
-struct NonGradedRung {
+// The plate and in-plane mesh on which a term's ladder was measured (the time-step and contact
+// terms: the non-graded 100 x 100 plate).
+struct StudiedPlate {
+  std::string property = "none";
+  double delta = 0;
+  int n = 100;
+};
+
+// One run of a term's study on that plate.
+struct StudyRung {
   int nz;
   double dtSafety;
   const char* contact;
@@ -209,11 +217,12 @@ struct NonGradedRung {
 
 // Every rung found with this filter into m; false if one is missing.
 template <std::size_t N>
-bool findRungs(const FemParameters& q, const NonGradedRung (&rungs)[N], const NormalStressFilter& filter,
-               const StudyRow* (&m)[N]) {
+bool findRungs(const FemParameters& q, const StudiedPlate& plate, const StudyRung (&rungs)[N],
+               const NormalStressFilter& filter, const StudyRow* (&m)[N]) {
   bool complete = true;
   for (std::size_t k = 0; k < N; ++k)
-    complete = (m[k] = find(q, "none", 0, 100, rungs[k].nz, rungs[k].dtSafety, rungs[k].contact, {}, filter)) != nullptr &&
+    complete = (m[k] = find(q, plate.property, plate.delta, plate.n, rungs[k].nz, rungs[k].dtSafety, rungs[k].contact,
+                            {}, filter)) != nullptr &&
                complete;
   return complete;
 }
@@ -222,30 +231,44 @@ bool findRungs(const FemParameters& q, const NonGradedRung (&rungs)[N], const No
 // it (the thickness, time-step and contact studies were first made without the filter). Returns
 // ", with the filter" or "" for the term's text; m[k] null where a rung is missing.
 template <std::size_t N>
-const char* nonGradedRows(const FemParameters& q, const NonGradedRung (&rungs)[N], const StudyRow* (&m)[N]) {
-  if (q.normalFilter.active() && findRungs(q, rungs, q.normalFilter, m)) return ", with the filter";
-  findRungs(q, rungs, NormalStressFilter{}, m);
+const char* studyRungs(const FemParameters& q, const StudiedPlate& plate, const StudyRung (&rungs)[N],
+                       const StudyRow* (&m)[N]) {
+  if (q.normalFilter.active() && findRungs(q, plate, rungs, q.normalFilter, m)) return ", with the filter";
+  findRungs(q, plate, rungs, NormalStressFilter{}, m);
   return "";
 }
 
-// The thickness and time-step ladders of the non-graded 100 x 100 mesh (nz 5/10/20; dt_safety
-// 0.6/0.3/0.15): the bound of the run's member (nz 5; dt_safety 0.6, which covers smaller steps).
-ErrorTerm thicknessTerm(const FemParameters& q) {
+// The thickness ladder nz 5/10/20, the bound of the run's member (nz 5). Measured on the run's own
+// plate and in-plane mesh where the study has it (the thickness error depends on both: refined alone
+// through the thickness, the corner singularity converges differently on each in-plane mesh), else
+// on the non-graded plate at the run's in-plane mesh, else on the non-graded 100 x 100 plate.
+ErrorTerm thicknessTerm(const FemParameters& q, const Grading& g) {
   if (q.nz != 5) return {false, 0, "nz other than 5 (the thickness study: 5/10/20)"};
-  const StudyRow* m[3];
-  const char* filter = nonGradedRows(q, {{5, 0.6, "penalty"}, {10, 0.6, "penalty"}, {20, 0.6, "penalty"}}, m);
-  if (!m[0] || !m[1] || !m[2]) return {false, 0, "thickness ladder nz 5/10/20 not measured for this D_c"};
-  char ladder[120];
-  std::snprintf(ladder, sizeof ladder, "nz 5/10/20 (non-graded 100x100%s)", filter);
-  ErrorTerm term = ladderTerm("thickness", ladder, m, 0);
-  term.filtered = *filter != '\0';
-  return term;
+  std::vector<StudiedPlate> plates;
+  if (g.active()) plates.push_back({gradingName(g), g.delta, q.nx});
+  plates.push_back({"none", 0, q.nx});
+  plates.push_back({"none", 0, 100});
+  for (const StudiedPlate& plate : plates) {
+    const StudyRow* m[3];
+    const char* filter = studyRungs(q, plate, {{5, 0.6, "penalty"}, {10, 0.6, "penalty"}, {20, 0.6, "penalty"}}, m);
+    if (!m[0] || !m[1] || !m[2]) continue;
+    char ladder[160];
+    if (plate.property == "none")
+      std::snprintf(ladder, sizeof ladder, "nz 5/10/20 (non-graded %dx%d%s)", plate.n, plate.n, filter);
+    else
+      std::snprintf(ladder, sizeof ladder, "nz 5/10/20 (%s %+g, %dx%d%s)", plate.property.c_str(), plate.delta, plate.n,
+                    plate.n, filter);
+    ErrorTerm term = ladderTerm("thickness", ladder, m, 0);
+    term.filtered = *filter != '\0';
+    return term;
+  }
+  return {false, 0, "thickness ladder nz 5/10/20 not measured for this D_c"};
 }
 
 ErrorTerm timeStepTerm(const FemParameters& q, double dtRatio) {
   if (dtRatio > 0.6 + 1e-9) return {false, 0, "dt above 0.6 of the stable step"};
   const StudyRow* m[3];
-  const char* filter = nonGradedRows(q, {{5, 0.6, "penalty"}, {5, 0.3, "penalty"}, {5, 0.15, "penalty"}}, m);
+  const char* filter = studyRungs(q, StudiedPlate{}, {{5, 0.6, "penalty"}, {5, 0.3, "penalty"}, {5, 0.15, "penalty"}}, m);
   if (!m[0] || !m[1] || !m[2]) return {false, 0, "dt ladder 0.6/0.3/0.15 not measured for this D_c"};
   char ladder[120];
   std::snprintf(ladder, sizeof ladder, "dt_safety 0.6/0.3/0.15 (non-graded 100x100%s)", filter);
@@ -262,7 +285,7 @@ ErrorTerm contactTerm(const FemParameters& q) {
   if (!near(q.kn, defaultStiffness) || !near(q.kt, defaultStiffness))
     return {false, 0, "penalty stiffness other than 250 G/H"};
   const StudyRow* m[2];
-  const char* filter = nonGradedRows(q, {{5, 0.6, "penalty"}, {5, 0.6, "kinematic"}}, m);
+  const char* filter = studyRungs(q, StudiedPlate{}, {{5, 0.6, "penalty"}, {5, 0.6, "kinematic"}}, m);
   if (!m[0] || !m[1]) return {false, 0, "penalty vs kinematic not measured for this D_c"};
   const double bound = 1.25 * std::fabs(m[0]->mu - m[1]->mu) / std::fabs(m[1]->mu);
   char text[200];
@@ -271,17 +294,12 @@ ErrorTerm contactTerm(const FemParameters& q) {
   return {true, bound, text, *filter != '\0'};
 }
 
-// For a filtered run: which of the non-graded terms were measured with its filter.
-std::string filterOfTerms(const FemParameters& q, const ErrorTerm* const (&terms)[3]) {
+// For a filtered run: whether its time-step and contact terms were measured with its filter.
+std::string filterOfTerms(const FemParameters& q, const ErrorTerm& timeStep, const ErrorTerm& contact) {
   if (!q.normalFilter.active()) return "";
-  const auto count = std::count_if(std::begin(terms), std::end(terms), [](const ErrorTerm* t) { return t->filtered; });
-  if (count == 3) return " with the filter";
-  if (count == 0) return " without the filter";
-  std::string text = " with the filter for";
-  const char* names[] = {" thickness", " dt", " contact"};
-  for (int k = 0; k < 3; ++k)
-    if (terms[k]->filtered) text += names[k];
-  return text + ", without it for the others";
+  if (timeStep.filtered && contact.filtered) return " with the filter";
+  if (!timeStep.filtered && !contact.filtered) return " without the filter";
+  return timeStep.filtered ? " (dt with the filter, contact without)" : " (contact with the filter, dt without)";
 }
 
 }  // namespace
@@ -296,7 +314,7 @@ DiscretisationError discretisationError(const FemParameters& q, const Grading& g
   bool coversThickness = false;
   e.mesh = meshTerm(q, g, &coversThickness);
   e.thickness = coversThickness ? ErrorTerm{true, 0.0, "in the mesh ladder (all directions refined)", q.normalFilter.active()}
-                               : thicknessTerm(q);
+                               : thicknessTerm(q, g);
   e.timeStep = timeStepTerm(q, dtRatio);
   e.contact = contactTerm(q);
   const ErrorTerm* terms[] = {&e.mesh, &e.thickness, &e.timeStep, &e.contact};
@@ -305,8 +323,10 @@ DiscretisationError discretisationError(const FemParameters& q, const Grading& g
     e.relative = e.mesh.relative + e.thickness.relative + e.timeStep.relative + e.contact.relative;
     e.basis = "mesh " + percent(e.mesh.relative) + ", thickness " + percent(e.thickness.relative) + ", dt " +
               percent(e.timeStep.relative) + ", contact " + percent(e.contact.relative) + "; " + e.mesh.basis +
-              (g.active() || q.normalFilter.active() ? "; thickness, dt and contact terms of the non-graded plate" : "") +
-              filterOfTerms(q, {&e.thickness, &e.timeStep, &e.contact});
+              (coversThickness ? "" : "; " + e.thickness.basis) +
+              (g.active() || q.normalFilter.active()
+                   ? "; dt and contact terms of the non-graded 100x100 plate" + filterOfTerms(q, e.timeStep, e.contact)
+                   : "");
   } else {
     for (const ErrorTerm* t : terms)  // every term without a bound, each with its reason
       if (!t->measured) e.basis += (e.basis.empty() ? "" : "; ") + t->basis;

@@ -12,10 +12,13 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <system_error>
+#include <vector>
 
 using namespace gradfric;
 using namespace gradfric::io;
@@ -29,6 +32,16 @@ int rank() {
   return r;
 }
 
+// The folders rank 0 made, removed when the process exits (they held only this run's files).
+struct ScratchFolders {
+  std::vector<std::string> paths;
+  ~ScratchFolders() {
+    std::error_code ignored;
+    for (const std::string& path : paths) std::filesystem::remove_all(path, ignored);
+  }
+};
+ScratchFolders scratchFolders;
+
 // A fresh folder for one test, the same path on every rank (rank 0 creates it).
 std::string folder(const char* name) {
   char buffer[256] = "";
@@ -36,6 +49,7 @@ std::string folder(const char* name) {
     std::snprintf(buffer, sizeof buffer, "output_plan_%s_%d", name, static_cast<int>(getpid()));
     EXPECT_EQ(std::system((std::string("rm -rf ") + buffer).c_str()), 0) << buffer;
     mkdir(buffer, 0755);
+    scratchFolders.paths.push_back(buffer);
   }
   MPI_Bcast(buffer, sizeof buffer, MPI_CHAR, 0, comm());
   return buffer;
