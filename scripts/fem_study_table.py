@@ -51,7 +51,7 @@ def analyse(mu):
     """(differences, order, extrapolated, bounds of the three members) by the shared rule."""
     v = [judge(mu, member) for member in range(3)]
     first, second = v[0]["first"], v[0]["second"]
-    d = "%+.2f %%, %+.2f %%" % (100 * first / mu[0], 100 * second / mu[1])
+    d = "%+.3f %%, %+.3f %%" % (100 * first / mu[0], 100 * second / mu[1])
     if v[0]["outcome"] == "not converged":
         why = "signs differ, no shrinking" if first * second <= 0 else "order <= 0.5"
         return d, "none (%s)" % why, "", "not converged: no bar"
@@ -73,8 +73,12 @@ def main():
         grading = "none" if prop == "none" else "%s %+.1f" % (prop, delta)
         if contact != "penalty":
             grading += ", filter L/V* " + contact.split("=", 1)[1]
-        for n, mu in ladders(rows, law, dc, prop, delta, contact=contact):
+        found = ladders(rows, law, dc, prop, delta, contact=contact)
+        for i, (n, mu) in enumerate(found):
             d, p, ext, gci = analyse(mu)
+            finer = [m for m, f in found[i + 1:] if analyse(f)[3].startswith("not converged")]
+            if finer and not gci.startswith("not converged"):  # as in the code's bars
+                gci = "no bar: the finer %d/%d/%d does not converge" % (finer[0], 2 * finer[0], 4 * finer[0])
             print("| %g | %.2f | %s | %d/%d/%d: %s | %s | %s | %s | %s |" % (
                 dc, kappa, grading, n, 2 * n, 4 * n, ", ".join("%.6f" % m for m in mu), d, p, ext, gci))
     print()
@@ -114,8 +118,8 @@ def main():
 
 def paired_differences(rows):
     """mu_s(+Delta) - mu_s(-Delta) on the same mesh, judged as a ladder by the same rule (absolute
-    values: the difference may cross zero). Its sign is decided when both signs' own ladders converge
-    and the interval that bounds the finest mesh's limit excludes zero."""
+    values: the difference may cross zero). Its sign is decided when both signs' own ladders converge,
+    and every finer one, and the interval that bounds the finest mesh's limit excludes zero."""
     pairs = sorted({(k[0], k[1], k[8], k[2], abs(k[3])) for k in rows if k[2] != "none" and k[3] > 0
                     and k[8].startswith("penalty") and (k[0], k[1], k[2], -k[3]) + k[4:] in rows})
     lines = []
@@ -132,11 +136,17 @@ def paired_differences(rows):
             d = [a - b for a, b in zip(plus[n], minus[n])]
             v = judge(d, 2)
             singles = [judge(mu[n], 2)["outcome"] != "not converged" for mu in (plus, minus)]
+            # A finer ladder of either sign that does not converge takes the verdict away (as in the code's bars).
+            finer = [m for m in sorted(k for k in set(plus) | set(minus) if k != "all") if n != "all" and m > n
+                     and any(m in mu and judge(mu[m], 2)["outcome"] == "not converged" for mu in (plus, minus))]
             if v["outcome"] == "not converged":
                 verdict, sign = "not converged", "not decided"
             elif not all(singles):
                 verdict, sign = "converges, but the ladder of %s does not" % " and of ".join(
                     "%+.1f" % x for x, ok in zip((delta, -delta), singles) if not ok), "not decided"
+            elif finer:
+                verdict, sign = "converges, but the finer ladder %d/%d/%d does not" % (finer[0], 2 * finer[0], 4 * finer[0]), \
+                    "not decided"
             else:
                 if v["outcome"] == "oscillating":
                     low, high = sorted(d[1:])

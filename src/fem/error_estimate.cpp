@@ -167,33 +167,51 @@ ErrorTerm ladderTerm(const char* term, const std::string& ladder, const StudyRow
 // The mesh term. A ladder refined in every direction (n x n x nz, 2n x 2n x 2nz, 4n x 4n x 4nz)
 // holding the run's mesh is taken first: it bounds the thickness too (*coversThickness). Else the
 // in-plane ladder (n, 2n, 4n at the run's nz). In each, the finest ladder the study has that holds
-// the run's mesh: the three finest meshes are the likeliest to lie in the asymptotic range (Roache),
-// and where a finer ladder does not converge a coarser one that does is no evidence.
+// the run's mesh: the three finest meshes are the likeliest to lie in the asymptotic range (Roache).
+// Every finer ladder the study has must converge as well: one that does not shows the sequence has
+// not reached its asymptotic range (friction -0.2: 100/200/400 converges by the rule, 200/400/800
+// does not), and a coarser ladder's verdict is then no evidence.
 ErrorTerm meshTerm(const FemParameters& q, const Grading& g, bool* coversThickness) {
   const std::string property = gradingName(g);
   const double delta = g.active() ? g.delta : 0.0;
-  for (bool allDirections : {true, false})
+  for (bool allDirections : {true, false}) {
+    // The ladder whose coarsest mesh is n x n x nz (nz doubling with n when refined in every direction).
+    const auto findLadder = [&](int n, int nz, const StudyRow* (&m)[3]) {
+      bool complete = true;
+      for (int k = 0; k < 3; ++k)
+        complete = complete && (m[k] = find(q, property, delta, n << k, allDirections ? nz << k : nz, 0.6, "penalty",
+                                            q.edge, q.normalFilter)) != nullptr;
+      return complete;
+    };
+    const auto ladderName = [&](int n, int nz) {
+      char text[240];
+      if (allDirections)
+        std::snprintf(text, sizeof text, "%dx%dx%d/%dx%dx%d/%dx%dx%d%s, all directions (run %dx%dx%d)", n, n, nz, 2 * n,
+                      2 * n, 2 * nz, 4 * n, 4 * n, 4 * nz, meshName(q).c_str(), q.nx, q.nx, q.nz);
+      else
+        std::snprintf(text, sizeof text, "%dx%d/%d/%d x %d%s (run %dx%d)", n, n, 2 * n, 4 * n, nz, meshName(q).c_str(),
+                      q.nx, q.nx);
+      return std::string(text);
+    };
     for (int member = 0; member <= 2; ++member) {
       const int coarsest = q.nx >> member, coarsestNz = allDirections ? q.nz >> member : q.nz;
       if (coarsest < 1 || (coarsest << member) != q.nx) continue;
       if (allDirections && (coarsestNz < 1 || (coarsestNz << member) != q.nz)) continue;
       const StudyRow* m[3];
-      bool complete = true;
-      for (int k = 0; k < 3; ++k)
-        complete = complete && (m[k] = find(q, property, delta, coarsest << k, allDirections ? coarsestNz << k : q.nz,
-                                            0.6, "penalty", q.edge, q.normalFilter)) != nullptr;
-      if (!complete) continue;
-      char ladder[240];
-      if (allDirections)
-        std::snprintf(ladder, sizeof ladder, "%dx%dx%d/%dx%dx%d/%dx%dx%d%s, all directions (run %dx%dx%d)", coarsest,
-                      coarsest, coarsestNz, 2 * coarsest, 2 * coarsest, 2 * coarsestNz, 4 * coarsest, 4 * coarsest,
-                      4 * coarsestNz, meshName(q).c_str(), q.nx, q.nx, q.nz);
-      else
-        std::snprintf(ladder, sizeof ladder, "%dx%d/%d/%d x %d%s (run %dx%d)", coarsest, coarsest, 2 * coarsest,
-                      4 * coarsest, q.nz, meshName(q).c_str(), q.nx, q.nx);
+      if (!findLadder(coarsest, coarsestNz, m)) continue;
       *coversThickness = allDirections;
-      return ladderTerm("mesh", ladder, m, member);
+      ErrorTerm term = ladderTerm("mesh", ladderName(coarsest, coarsestNz), m, member);
+      for (int finer = coarsest << 1, finerNz = allDirections ? coarsestNz << 1 : q.nz;; finer <<= 1) {
+        const StudyRow* f[3];
+        if (!findLadder(finer, finerNz, f)) break;
+        const ErrorTerm check = ladderTerm("mesh", ladderName(finer, finerNz), f, 0);
+        if (!check.measured)
+          return {false, 0, check.basis + "; so the coarser " + ladderName(coarsest, coarsestNz) + " proves no bar"};
+        if (allDirections) finerNz <<= 1;
+      }
+      return term;
     }
+  }
   char text[300];
   std::snprintf(text, sizeof text, "mesh %dx%dx%d%s %s (%s) not in the mesh study", q.nx, q.ny, q.nz,
                 meshName(q).c_str(), elementTypeName(q.element), g.active() ? "graded" : "non-graded");
