@@ -52,11 +52,14 @@ def main():
     print("|---|---|---|---|---|---|---|---|")
     for key in sorted({k[:4] for k in rows}, key=lambda k: (k[3], k[1] != "none", k[2])):
         sizes = sorted(k[4] for k in rows if k[:4] == key)
-        for n in sizes:
-            if (*key, 2 * n) not in rows or (*key, 4 * n) not in rows:
-                continue
-            m = [rows[(*key, n << i)] for i in range(3)]
+        ladders = [(n, [rows[(*key, n << i)] for i in range(3)]) for n in sizes
+                   if (*key, 2 * n) in rows and (*key, 4 * n) in rows]
+        for i, (n, m) in enumerate(ladders):
             diffs, order, text, _ = verdict(m)
+            # A finer ladder that does not converge takes the bar away (as in the code's bars).
+            finer = [f for f, fm in ladders[i + 1:] if judge([(x[1], x[2], x[0]) for x in fm], 0)["outcome"] == "not converged"]
+            if finer and not text.startswith(("not converged", "no signal")):
+                text += f"; no bar: the finer {finer[0]}/{2 * finer[0]}/{4 * finer[0]} does not converge"
             grading = "none" if key[1] == "none" else f"{key[1]} {key[2]:+g}"
             means = ", ".join(f"{x[1]:.6f} +- {x[2]:.6f}" for x in m)
             print(f"| {key[3]} | {grading} | {n}/{2 * n}/{4 * n} | {'/'.join(str(x[0]) for x in m)} | {means} | "

@@ -76,8 +76,16 @@ const SbmStudyRow* findLattice(const std::vector<SbmStudyRow>& study, const std:
   return nullptr;
 }
 
+// The ladder rule (core/refinement_ladder.hpp) on three lattice rows, for the bound of `member`.
+LadderVerdict judgeRows(const SbmStudyRow* const m[3], int member) {
+  LadderRung rungs[3];
+  for (int i = 0; i < 3; ++i) rungs[i] = {m[i]->value, m[i]->stdError, m[i]->realisations};
+  return judgeLadder(rungs, member);
+}
+
 // The lattice term: the finest ladder holding the run's N_b (nearest the asymptotic range), taken
-// whether or not it converges (no choosing among ladders by their outcome).
+// whether or not it converges (no choosing among ladders by their outcome); every finer ladder
+// must converge as well.
 SbmBarTerm latticeTerm(const std::vector<SbmStudyRow>& study, const sbm::Parameters& p, const Grading& g,
                        const std::string& observable) {
   const std::string grading = gradingName(g), &law = p.frictionLaw.name;
@@ -105,11 +113,23 @@ SbmBarTerm latticeTerm(const std::vector<SbmStudyRow>& study, const sbm::Paramet
   for (int member = 0; member <= 2; ++member) {
     const int coarsest = n >> member;
     if (coarsest < 1 || (coarsest << member) != n) continue;
+    const auto findLadder = [&](int first, const SbmStudyRow* (&m)[3]) {
+      bool complete = true;
+      for (int k = 0; k < 3; ++k)
+        complete = complete && (m[k] = findLattice(study, law, grading, delta, first << k, observable)) != nullptr;
+      return complete;
+    };
     const SbmStudyRow* m[3];
-    bool complete = true;
-    for (int k = 0; k < 3; ++k)
-      complete = complete && (m[k] = findLattice(study, law, grading, delta, coarsest << k, observable)) != nullptr;
-    if (complete) return latticeLadderTerm(m, member);
+    if (!findLadder(coarsest, m)) continue;
+    // Every finer ladder of the study must converge too, as for the FEM's mesh term: one that does
+    // not shows the sequence has not reached its asymptotic range.
+    for (int finer = coarsest << 1;; finer <<= 1) {
+      const SbmStudyRow* f[3];
+      if (!findLadder(finer, f)) break;
+      if (judgeRows(f, 0).outcome == LadderOutcome::NotConverged)  // no signal there disproves nothing
+        return {false, 0, latticeLadderTerm(f, 0).basis + " (a finer ladder: no bar for N_b = " + std::to_string(n) + ")"};
+    }
+    return latticeLadderTerm(m, member);
   }
   std::snprintf(text, sizeof text, "N_b = %d not in a lattice ladder of the study (N_b, 2 N_b, 4 N_b)", n);
   return {false, 0, text};
@@ -159,9 +179,7 @@ const std::vector<SbmStudyRow>& sbmStudy() {
 }
 
 SbmBarTerm latticeLadderTerm(const SbmStudyRow* const m[3], int member) {
-  LadderRung rungs[3];
-  for (int i = 0; i < 3; ++i) rungs[i] = {m[i]->value, m[i]->stdError, m[i]->realisations};
-  const LadderVerdict v = judgeLadder(rungs, member);
+  const LadderVerdict v = judgeRows(m, member);
   const double coarse = m[0]->value, medium = m[1]->value, fine = m[2]->value;
   char ladder[200], text[500];
   std::snprintf(ladder, sizeof ladder, "lattice N_b %d/%d/%d: %.6f, %.6f, %.6f (differences %+.3f %% +- %.3f %%, %+.3f %% +- %.3f %%)",

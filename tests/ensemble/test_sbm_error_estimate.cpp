@@ -119,6 +119,20 @@ TEST(SbmErrorEstimate, NoBarWhereTheLadderDoesNotConverge) {
   EXPECT_NE(flat.basis.find("proves nothing"), std::string::npos) << flat.basis;
 }
 
+TEST(SbmErrorEstimate, AFinerLadderThatDoesNotConvergeTakesTheBarAway) {
+  // 60/120/240 converges (differences -2.0 %, -0.5 %: order 2), 120/240/480 does not (-0.5 %,
+  // -0.5 %): N_b = 60 gets no bar, although its own ladder converges.
+  const auto rows = study(1.0, 0.98, 0.9751, 0.9702);
+  const SbmDiscretisation coarse = barOf(setting(60), rows);
+  EXPECT_FALSE(coarse.lattice.measured) << coarse.lattice.basis;
+  EXPECT_NE(coarse.lattice.basis.find("120/240/480"), std::string::npos) << coarse.lattice.basis;
+  EXPECT_NE(coarse.lattice.basis.find("no bar for N_b = 60"), std::string::npos) << coarse.lattice.basis;
+  // Where the finer ladder only lacks a signal (its second difference within the statistical
+  // error), it disproves nothing: 60/120/240 (-2.1 %, -0.5 %) bounds N_b = 60.
+  const SbmDiscretisation flat = barOf(setting(60), study(0.97, 0.95, 0.945, 0.9449, 1e-4));
+  EXPECT_TRUE(flat.lattice.measured) << flat.lattice.basis;
+}
+
 TEST(SbmErrorEstimate, OutsideTheStudyNothingIsClaimed) {
   auto mu = [](int n) { return 0.9 + 0.6 / n; };
   const auto rows = study(mu(60), mu(120), mu(240), mu(480));
