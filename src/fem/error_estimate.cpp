@@ -6,9 +6,10 @@
 //    extrapolation when they keep their sign, the bracket of the last two values when they
 //    alternate; a ladder that does not converge gives none (never a bar the study does not prove).
 //    A ladder refined in every direction (50x50x5, 100x100x10, 200x200x20) is preferred: it bounds
-//    the thickness as well. Of several ladders holding the run's mesh, the finest is taken;
-//  - thickness (for an in-plane ladder): the ladder nz 5/10/20 on the non-graded paper mesh, by the
-//    same rule;
+//    the thickness as well. Of several ladders holding the run's mesh, the finest is taken, and
+//    every finer ladder of the study must converge too;
+//  - thickness (for an in-plane ladder): a ladder nz 5/10/20 by the same rule, of the run's own
+//    plate and in-plane mesh where the study has it, else of the non-graded paper mesh;
 //  - time step: the ladder dt_safety 0.6/0.3/0.15 on the same mesh, by the same rule (the bound of
 //    0.6 covers smaller steps);
 //  - contact: penalty 250 G/H against the kinematic contact (the exact reference, no refinement) on
