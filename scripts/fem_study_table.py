@@ -83,7 +83,7 @@ def main():
                 dc, kappa, grading, n, 2 * n, 4 * n, ", ".join("%.6f" % m for m in mu), d, p, ext, gci))
     print()
     print("Refinement in every direction (D_c 2.5e-8 m), and the thickness, time-step and contact terms of the")
-    print("non-graded 100 x 100 mesh for every D_c and filter the study has them:")
+    print("non-graded plate (100 x 100 unless said) for every D_c and filter the study has them:")
     print()
     print("| ladder | mu_s | differences | observed order | extrapolated | bounds of its members |")
     print("|---|---|---|---|---|---|")
@@ -92,11 +92,13 @@ def main():
     table = [("all directions 50x50x5/100x100x10/200x200x20" + ("" if prop == "none" else ", %s %+.1f" % (prop, delta)),
               [base[:2] + (prop, delta, n, nz) + base[6:] for n, nz in ((50, 5), (100, 10), (200, 20))])
              for prop, delta in gradings]
-    variants = sorted({(k[1], k[8]) for k in rows if k[2] == "none" and k[4] == 100 and k[8].startswith("penalty")})
+    variants = sorted({(k[1], k[8], k[4]) for k in rows if k[2] == "none" and k[8].startswith("penalty")
+                       and (k[5] != 5 or k[7] != 0.6)})  # meshes with a thickness or time-step study
     contacts = []
-    for dc, contact in variants:
-        at = ("state", dc, "none", 0.0, 100, 5, "q1", 0.6, contact)
-        tag = "D_c %g%s" % (dc, "" if contact == "penalty" else ", filter L/V* " + contact.split("=", 1)[1])
+    for dc, contact, n in variants:
+        at = ("state", dc, "none", 0.0, n, 5, "q1", 0.6, contact)
+        tag = "D_c %g%s%s" % (dc, "" if contact == "penalty" else ", filter L/V* " + contact.split("=", 1)[1],
+                              "" if n == 100 else ", %d x %d" % (n, n))
         table += [("%s: nz 5/10/20" % tag, [at[:5] + (nz,) + at[6:] for nz in (5, 10, 20)]),
                   ("%s: dt_safety 0.6/0.3/0.15" % tag, [at[:7] + (dts,) + at[8:] for dts in (0.6, 0.3, 0.15)])]
         kinematic = at[:8] + (contact.replace("penalty", "kinematic", 1),)
