@@ -118,10 +118,18 @@ def main():
         print("|---|---|---|---|")
         print("\n".join(contacts))
 
+def limit_interval(mu):
+    """The interval that holds a converged ladder's limit by the rule: the finest value +- its bound."""
+    v = judge(mu, 2)
+    half = v["bound"] * abs(v["extrapolated"] if v["extrapolated"] is not None else mu[2])
+    return mu[2] - half, mu[2] + half
+
+
 def paired_differences(rows):
     """mu_s(+Delta) - mu_s(-Delta) on the same mesh, judged as a ladder by the same rule (absolute
     values: the difference may cross zero). Its sign is decided when both signs' own ladders converge,
-    and every finer one, and the interval that bounds the finest mesh's limit excludes zero."""
+    and every finer one, and either the interval that bounds the difference's limit excludes zero or,
+    where the difference's own ladder does not converge, the two signs' limit intervals lie apart."""
     pairs = sorted({(k[0], k[1], k[8], k[2], abs(k[3])) for k in rows if k[2] != "none" and k[3] > 0
                     and k[8].startswith("penalty") and (k[0], k[1], k[2], -k[3]) + k[4:] in rows})
     lines = []
@@ -141,7 +149,15 @@ def paired_differences(rows):
             # A finer ladder of either sign that does not converge takes the verdict away (as in the code's bars).
             finer = [m for m in sorted(k for k in set(plus) | set(minus) if k != "all") if n != "all" and m > n
                      and any(m in mu and judge(mu[m], 2)["outcome"] == "not converged" for mu in (plus, minus))]
-            if v["outcome"] == "not converged":
+            if v["outcome"] == "not converged" and all(singles) and not finer:
+                # Each sign's own limit is bounded: the sign is decided if the two intervals are apart.
+                lo_hi = [limit_interval(mu[n]) for mu in (plus, minus)]
+                apart = lo_hi[0][0] > lo_hi[1][1] or lo_hi[1][0] > lo_hi[0][1]
+                verdict = "not converged; the limits of +%.1f and -%.1f lie in [%.6f, %.6f] and [%.6f, %.6f]" % (
+                    delta, delta, *lo_hi[0], *lo_hi[1])
+                sign = ("decided: %s" % ("+Delta above" if lo_hi[0][0] > lo_hi[1][1] else "-Delta above")) if apart \
+                    else "not decided"
+            elif v["outcome"] == "not converged":
                 verdict, sign = "not converged", "not decided"
             elif not all(singles):
                 verdict, sign = "converges, but the ladder of %s does not" % " and of ".join(
