@@ -14,7 +14,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from ladder_rule import judge  # noqa: E402  the rule the code's bars use
+from ladder_rule import finer_not_converged, judge  # noqa: E402  the rule the code's bars use
 
 G, H, P = 10e6 / (2 * (1 + 1 / 3)), 5e-5, 1e4
 
@@ -39,12 +39,6 @@ def ladders(rows, law, dc, prop, delta, nz=5, contact="penalty"):
     key = lambda m: (law, dc, prop, delta, m, nz, "q1", 0.6, contact)
     return [(n, [rows[key(n)], rows[key(2 * n)], rows[key(4 * n)]])
             for n in sizes if key(2 * n) in rows and key(4 * n) in rows]
-
-
-def ladder(rows, law, dc, prop, delta, nz=5, contact="penalty"):
-    """The coarsest in-plane ladder (n, [three values]), or (None, None)."""
-    found = ladders(rows, law, dc, prop, delta, nz, contact)
-    return found[0] if found else (None, None)
 
 
 def analyse(mu):
@@ -76,9 +70,9 @@ def main():
         found = ladders(rows, law, dc, prop, delta, contact=contact)
         for i, (n, mu) in enumerate(found):
             d, p, ext, gci = analyse(mu)
-            finer = [m for m, f in found[i + 1:] if analyse(f)[3].startswith("not converged")]
-            if finer and not gci.startswith("not converged"):  # as in the code's bars
-                gci = "no bar: the finer %d/%d/%d does not converge" % (finer[0], 2 * finer[0], 4 * finer[0])
+            finer = finer_not_converged(found, i)
+            if finer and not gci.startswith("not converged"):
+                gci = "no bar: the finer %d/%d/%d does not converge" % (finer, 2 * finer, 4 * finer)
             print("| %g | %.2f | %s | %d/%d/%d: %s | %s | %s | %s | %s |" % (
                 dc, kappa, grading, n, 2 * n, 4 * n, ", ".join("%.6f" % m for m in mu), d, p, ext, gci))
     print()
@@ -125,6 +119,13 @@ def limit_interval(mu):
     return mu[2] - half, mu[2] + half
 
 
+def first_divergent_above(by_mesh, n):
+    """Of one sign's in-plane ladders {coarsest mesh: values}, the first finer than n's that does not
+    converge, or None."""
+    family = sorted((m, mu) for m, mu in by_mesh.items() if m != "all")
+    return finer_not_converged(family, [m for m, _ in family].index(n))
+
+
 def paired_differences(rows):
     """mu_s(+Delta) - mu_s(-Delta) on the same mesh, judged as a ladder by the same rule (absolute
     values: the difference may cross zero). Its sign is decided when both signs' own ladders converge,
@@ -146,9 +147,9 @@ def paired_differences(rows):
             d = [a - b for a, b in zip(plus[n], minus[n])]
             v = judge(d, 2)
             singles = [judge(mu[n], 2)["outcome"] != "not converged" for mu in (plus, minus)]
-            # A finer ladder of either sign that does not converge takes the verdict away (as in the code's bars).
-            finer = [m for m in sorted(k for k in set(plus) | set(minus) if k != "all") if n != "all" and m > n
-                     and any(m in mu and judge(mu[m], 2)["outcome"] == "not converged" for mu in (plus, minus))]
+            # A finer ladder of either sign that does not converge takes the verdict away.
+            finer = None if n == "all" else min(
+                (m for m in (first_divergent_above(mu, n) for mu in (plus, minus)) if m), default=None)
             if v["outcome"] == "not converged" and all(singles) and not finer:
                 # Each sign's own limit is bounded: the sign is decided if the two intervals are apart.
                 lo_hi = [limit_interval(mu[n]) for mu in (plus, minus)]
@@ -163,17 +164,16 @@ def paired_differences(rows):
                 verdict, sign = "converges, but the ladder of %s does not" % " and of ".join(
                     "%+.1f" % x for x, ok in zip((delta, -delta), singles) if not ok), "not decided"
             elif finer:
-                verdict, sign = "converges, but the finer ladder %d/%d/%d does not" % (finer[0], 2 * finer[0], 4 * finer[0]), \
+                verdict, sign = "converges, but the finer ladder %d/%d/%d does not" % (finer, 2 * finer, 4 * finer), \
                     "not decided"
             else:
                 if v["outcome"] == "oscillating":
                     low, high = sorted(d[1:])
                     verdict = "oscillating: limit between %+.6f and %+.6f" % (d[1], d[2])
                 else:
-                    half = 1.25 * abs(d[2] - v["extrapolated"])
-                    low, high = d[2] - half, d[2] + half
+                    low, high = limit_interval(d)
                     verdict = "order %.2f, extrapolated %+.6f, finest %+.6f +- %.6f" % (
-                        v["order"], v["extrapolated"], d[2], half)
+                        v["order"], v["extrapolated"], d[2], (high - low) / 2)
                 sign = "decided: %s" % ("+Delta above" if low > 0 else "-Delta above") if low * high > 0 else "not decided"
             tag = "%s %.1f, D_c %g%s" % (prop, delta, dc, "" if contact == "penalty" else ", filter L/V* " + contact.split("=", 1)[1])
             lines.append("| %s | %s: %s | %s | %s |" % (tag, meshes[n], ", ".join("%+.6f" % x for x in d), verdict, sign))

@@ -54,3 +54,10 @@ def judge(rungs, member):
     coeff[member] += 1
     return dict(v, outcome="monotone", extrapolated=ext,
                 bound=1.25 * (abs(run - ext) + _half(rungs, coeff)) / abs(ext))
+
+
+def finer_not_converged(ladders, i):
+    """The coarsest mesh of the first ladder finer than ladders[i] that does not converge, or None.
+    ladders: [(n, rungs)], coarsest first. Such a ladder takes the bar of ladders[i] away (as in the
+    code's bars); one without a signal disproves nothing."""
+    return next((n for n, rungs in ladders[i + 1:] if judge(rungs, 0)["outcome"] == "not converged"), None)

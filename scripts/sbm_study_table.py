@@ -13,7 +13,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from ladder_rule import judge  # noqa: E402  the rule the code's bars use
+from ladder_rule import finer_not_converged, judge  # noqa: E402  the rule the code's bars use
 
 
 def load(path):
@@ -28,10 +28,15 @@ def load(path):
     return rows
 
 
+def rungs(m):
+    """The rule's (value, standard error, realisations) of a ladder's three (R, mean, se) rows."""
+    return [(x[1], x[2], x[0]) for x in m]
+
+
 def verdict(m):
     """The shared rule on one ladder of three (R, mean, se): (differences, order, text, bound of its
     coarsest member or None)."""
-    v = judge([(x[1], x[2], x[0]) for x in m], 0)
+    v = judge(rungs(m), 0)
     a, b = m[0][1], m[1][1]
     diffs = f"{100 * v['first'] / a:+.3f} +- {100 * v['h1'] / a:.3f} %, {100 * v['second'] / b:+.3f} +- {100 * v['h2'] / b:.3f} %"
     order = f"{v['order']:.2f}"
@@ -56,10 +61,9 @@ def main():
                    if (*key, 2 * n) in rows and (*key, 4 * n) in rows]
         for i, (n, m) in enumerate(ladders):
             diffs, order, text, _ = verdict(m)
-            # A finer ladder that does not converge takes the bar away (as in the code's bars).
-            finer = [f for f, fm in ladders[i + 1:] if judge([(x[1], x[2], x[0]) for x in fm], 0)["outcome"] == "not converged"]
+            finer = finer_not_converged([(f, rungs(fm)) for f, fm in ladders], i)
             if finer and not text.startswith(("not converged", "no signal")):
-                text += f"; no bar: the finer {finer[0]}/{2 * finer[0]}/{4 * finer[0]} does not converge"
+                text += f"; no bar: the finer {finer}/{2 * finer}/{4 * finer} does not converge"
             grading = "none" if key[1] == "none" else f"{key[1]} {key[2]:+g}"
             means = ", ".join(f"{x[1]:.6f} +- {x[2]:.6f}" for x in m)
             print(f"| {key[3]} | {grading} | {n}/{2 * n}/{4 * n} | {'/'.join(str(x[0]) for x in m)} | {means} | "
