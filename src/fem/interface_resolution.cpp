@@ -32,7 +32,10 @@ InterfaceResolution checkInterfaceResolution(const PlateModel& model, double pea
   // A body sliding on a rigid plane with mu > 1 has a growing interface mode (flutter, contact loss)
   // whose growth rate rises with the wavenumber: every finer mesh admits faster modes. The study's
   // plates with a local mu_s above 1 did not converge (docs/accuracy_fem.md, "Local mu_s above 1").
-  if (r.largestStaticCoefficient > 1.0 + 1e-9) {
+  // The Prakash-Clifton filter bounds that growth (normal_stress_filter.hpp): with it the study's
+  // plates above 1 converge or creep by 0.06 % per halving ("Fourth and fifth rungs"), so no flag.
+  r.filtered = q.normalFilter.active();
+  if (r.largestStaticCoefficient > 1.0 + 1e-9 && !r.filtered) {
     std::snprintf(text, sizeof text,
                   "local mu_s up to %.3g > 1: sliding on the rigid plane flutters (mesh-dependent onset, contact loss)",
                   r.largestStaticCoefficient);
@@ -56,6 +59,11 @@ std::string InterfaceResolution::describe() const {
                 slipLength, kappa, elasticSlip / slipLength, largestStepSlip / slipLength, zone.median,
                 zone.medianElements, zone.lowElements, zone.nodes);
   std::string line = text;
+  if (filtered && largestStaticCoefficient > 1.0 + 1e-9) {
+    std::snprintf(text, sizeof text, "; local mu_s up to %.3g > 1, its flutter bounded by the Prakash-Clifton filter",
+                  largestStaticCoefficient);
+    line += text;
+  }
   if (violations.empty()) return line + ": resolved";
   line += ": NOT resolved:";
   for (const std::string& v : violations) line += " " + v + ";";

@@ -25,6 +25,7 @@ struct InterfaceResolution {
   double elasticSlip = 0;  // mu_s,max p / k_t [m]; 0 with kinematic contact
   double largestStepSlip = 0;
   double largestStaticCoefficient = 0;  // over the contact nodes: above 1 the sliding interface flutters
+  bool filtered = false;                 // the Prakash-Clifton filter is on: it bounds that flutter
   ProcessZone zone;
   std::vector<std::string> violations;  // empty: resolved
 
