@@ -81,11 +81,14 @@ def main():
     print()
     print("| ladder | mu_s | differences | observed order | extrapolated | bounds of its members |")
     print("|---|---|---|---|---|---|")
-    base = ("state", 2.5e-8, "none", 0.0, 100, 5, "q1", 0.6, "penalty")
-    gradings = [("none", 0.0)] + sorted({(k[2], k[3]) for k in rows if k[2] != "none" and k[1] == 2.5e-8})
-    table = [("all directions 50x50x5/100x100x10/200x200x20" + ("" if prop == "none" else ", %s %+.1f" % (prop, delta)),
-              [base[:2] + (prop, delta, n, nz) + base[6:] for n, nz in ((50, 5), (100, 10), (200, 20))])
-             for prop, delta in gradings]
+    table = []
+    for contact in sorted({k[8] for k in rows if k[8].startswith("penalty") and k[1] == 2.5e-8 and k[5] == 20}):
+        suffix = "" if contact == "penalty" else ", filter L/V* " + contact.split("=", 1)[1]
+        gradings = [("none", 0.0)] + sorted({(k[2], k[3]) for k in rows if k[2] != "none" and k[1] == 2.5e-8})
+        table += [("all directions 50x50x5/100x100x10/200x200x20" + ("" if prop == "none" else ", %s %+.1f" % (prop, delta))
+                   + suffix, [("state", 2.5e-8, prop, delta, n, nz, "q1", 0.6, contact)
+                              for n, nz in ((50, 5), (100, 10), (200, 20))])
+                  for prop, delta in gradings]
     variants = sorted({(k[1], k[8], k[4]) for k in rows if k[2] == "none" and k[8].startswith("penalty")
                        and (k[5] != 5 or k[7] != 0.6)})  # meshes with a thickness or time-step study
     contacts = []
@@ -94,7 +97,8 @@ def main():
         tag = "D_c %g%s%s" % (dc, "" if contact == "penalty" else ", filter L/V* " + contact.split("=", 1)[1],
                               "" if n == 100 else ", %d x %d" % (n, n))
         table += [("%s: nz 5/10/20" % tag, [at[:5] + (nz,) + at[6:] for nz in (5, 10, 20)]),
-                  ("%s: dt_safety 0.6/0.3/0.15" % tag, [at[:7] + (dts,) + at[8:] for dts in (0.6, 0.3, 0.15)])]
+                  ("%s: dt_safety 0.6/0.3/0.15" % tag, [at[:7] + (dts,) + at[8:] for dts in (0.6, 0.3, 0.15)]),
+                  ("%s: dt_safety 0.3/0.15/0.075" % tag, [at[:7] + (dts,) + at[8:] for dts in (0.3, 0.15, 0.075)])]
         kinematic = at[:8] + (contact.replace("penalty", "kinematic", 1),)
         if at in rows and kinematic in rows:
             contacts.append("| %s | %.6f | %.6f | %+.3f %% |" % (tag, rows[at], rows[kinematic], 100 * (rows[at] / rows[kinematic] - 1)))
