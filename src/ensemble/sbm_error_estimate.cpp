@@ -121,14 +121,11 @@ SbmBarTerm latticeTerm(const std::vector<SbmStudyRow>& study, const sbm::Paramet
     };
     const SbmStudyRow* m[3];
     if (!findLadder(coarsest, m)) continue;
-    // Every finer ladder of the study must converge too, as for the FEM's mesh term: one that does
-    // not shows the sequence has not reached its asymptotic range.
-    for (int finer = coarsest << 1;; finer <<= 1) {
-      const SbmStudyRow* f[3];
-      if (!findLadder(finer, f)) break;
-      if (judgeRows(f, 0).outcome == LadderOutcome::NotConverged)  // no signal there disproves nothing
-        return {false, 0, latticeLadderTerm(f, 0).basis + " (a finer ladder: no bar for N_b = " + std::to_string(n) + ")"};
-    }
+    const SbmStudyRow* f[3];
+    const int finer = firstFinerLadderThatDisproves(
+        coarsest, [&](int first) { return findLadder(first, f); },
+        [&](int) { return judgeRows(f, 0).outcome == LadderOutcome::NotConverged; });  // no signal disproves nothing
+    if (finer) return {false, 0, latticeLadderTerm(f, 0).basis + " (a finer ladder: no bar for N_b = " + std::to_string(n) + ")"};
     return latticeLadderTerm(m, member);
   }
   std::snprintf(text, sizeof text, "N_b = %d not in a lattice ladder of the study (N_b, 2 N_b, 4 N_b)", n);

@@ -169,9 +169,8 @@ ErrorTerm ladderTerm(const char* term, const std::string& ladder, const StudyRow
 // holding the run's mesh is taken first: it bounds the thickness too (*coversThickness). Else the
 // in-plane ladder (n, 2n, 4n at the run's nz). In each, the finest ladder the study has that holds
 // the run's mesh: the three finest meshes are the likeliest to lie in the asymptotic range (Roache).
-// Every finer ladder the study has must converge as well: one that does not shows the sequence has
-// not reached its asymptotic range (friction -0.2: 100/200/400 converges by the rule, 200/400/800
-// does not), and a coarser ladder's verdict is then no evidence.
+// Every finer ladder the study has must converge as well (core/refinement_ladder.hpp,
+// firstFinerLadderThatDisproves).
 ErrorTerm meshTerm(const FemParameters& q, const Grading& g, bool* coversThickness) {
   const std::string property = gradingName(g);
   const double delta = g.active() ? g.delta : 0.0;
@@ -201,16 +200,15 @@ ErrorTerm meshTerm(const FemParameters& q, const Grading& g, bool* coversThickne
       const StudyRow* m[3];
       if (!findLadder(coarsest, coarsestNz, m)) continue;
       *coversThickness = allDirections;
-      ErrorTerm term = ladderTerm("mesh", ladderName(coarsest, coarsestNz), m, member);
-      for (int finer = coarsest << 1, finerNz = allDirections ? coarsestNz << 1 : q.nz;; finer <<= 1) {
-        const StudyRow* f[3];
-        if (!findLadder(finer, finerNz, f)) break;
-        const ErrorTerm check = ladderTerm("mesh", ladderName(finer, finerNz), f, 0);
-        if (!check.measured)
-          return {false, 0, check.basis + "; so the coarser " + ladderName(coarsest, coarsestNz) + " proves no bar"};
-        if (allDirections) finerNz <<= 1;
-      }
-      return term;
+      // The ladder starting at in-plane mesh `first` (its nz scaled alike when refined in every direction).
+      const auto nzOf = [&](int first) { return allDirections ? coarsestNz * (first / coarsest) : q.nz; };
+      const StudyRow* f[3];
+      ErrorTerm check;
+      const int finer = firstFinerLadderThatDisproves(
+          coarsest, [&](int first) { return findLadder(first, nzOf(first), f); },
+          [&](int first) { return !(check = ladderTerm("mesh", ladderName(first, nzOf(first)), f, 0)).measured; });
+      if (finer) return {false, 0, check.basis + "; so the coarser " + ladderName(coarsest, coarsestNz) + " proves no bar"};
+      return ladderTerm("mesh", ladderName(coarsest, coarsestNz), m, member);
     }
   }
   char text[300];

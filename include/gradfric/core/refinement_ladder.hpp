@@ -43,4 +43,16 @@ struct LadderVerdict {
 // The verdict of a ladder on its member 0, 1 or 2.
 LadderVerdict judgeLadder(const LadderRung (&rungs)[3], int member);
 
+// A coarser ladder proves a bar only if every finer ladder of the study converges too: one that does
+// not shows the sequence has not reached its asymptotic range (FEM friction -0.2: 100/200/400
+// converges by the rule, 200/400/800 does not). Walks the ladders whose coarsest rung is coarsest x
+// 2, x 4, ... while the study holds them (held(first)) and returns the first of them that
+// disproves (disproves(first)), or 0 if none does.
+template <class Held, class Disproves>
+int firstFinerLadderThatDisproves(int coarsest, Held held, Disproves disproves) {
+  for (int first = coarsest << 1; held(first); first <<= 1)
+    if (disproves(first)) return first;
+  return 0;
+}
+
 }  // namespace gradfric
