@@ -14,7 +14,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from ladder_rule import finer_not_converged, judge  # noqa: E402  the rule the code's bars use
+from ladder_rule import finer_not_converged, judge, through_finer  # noqa: E402  the rule the code's bars use
 
 G, H, P = 10e6 / (2 * (1 + 1 / 3)), 5e-5, 1e4
 
@@ -73,6 +73,9 @@ def main():
             finer = finer_not_converged(found, i)
             if finer and not gci.startswith("not converged"):
                 gci = "no bar: the finer %d/%d/%d does not converge" % (finer, 2 * finer, 4 * finer)
+            through = through_finer(found, i)
+            if through:
+                gci = "not converged; %d bounded through %d: %.2f %%" % (n, through[0], 100 * through[1])
             print("| %g | %.2f | %s | %d/%d/%d: %s | %s | %s | %s | %s |" % (
                 dc, kappa, grading, n, 2 * n, 4 * n, ", ".join("%.6f" % m for m in mu), d, p, ext, gci))
     print()

@@ -61,3 +61,14 @@ def finer_not_converged(ladders, i):
     ladders: [(n, rungs)], coarsest first. Such a ladder takes the bar of ladders[i] away (as in the
     code's bars); one without a signal disproves nothing."""
     return next((n for n, rungs in ladders[i + 1:] if judge(rungs, 0)["outcome"] == "not converged"), None)
+
+
+def through_finer(ladders, i):
+    """A ladder ladders[i] that does not converge still bounds its coarsest member through the finest
+    value of the finer ladders, when there are some and every one converges (as the code's bars):
+    |mu - mu_lim| <= |mu - mu_f| + f's bound. Returns (finest mesh, bound) or None."""
+    finer = ladders[i + 1:]
+    if not finer or finer_not_converged(ladders, i) or judge(ladders[i][1], 0)["outcome"] != "not converged":
+        return None
+    n, rungs = finer[-1]
+    return 4 * n, abs(ladders[i][1][0] - rungs[2]) / abs(rungs[2]) + judge(rungs, 2)["bound"]

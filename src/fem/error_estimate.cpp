@@ -165,6 +165,17 @@ ErrorTerm ladderTerm(const char* term, const std::string& ladder, const StudyRow
   return {true, v.bound, text};
 }
 
+// A member whose own ladder (own, not measured) does not converge, bounded through the finest value
+// of the finer ladders, which all converge (core/refinement_ladder.hpp, boundThroughFinerValue).
+ErrorTerm throughFinerValue(const char* term, const ErrorTerm& own, double value, const ErrorTerm& finest,
+                            double finestValue) {
+  char text[160];
+  std::snprintf(text, sizeof text, "; bounded through the finest value %.6f: |difference| %s + its bound %s", finestValue,
+                percent(std::fabs(value - finestValue) / std::fabs(finestValue)).c_str(), percent(finest.relative).c_str());
+  return {true, boundThroughFinerValue(value, finestValue, finest.relative),
+          std::string(term) + ": own ladder" + own.basis.substr(own.basis.find(" not converged")) + "; " + finest.basis + text};
+}
+
 // The mesh term. A ladder refined in every direction (n x n x nz, 2n x 2n x 2nz, 4n x 4n x 4nz)
 // holding the run's mesh is taken first: it bounds the thickness too (*coversThickness). Else the
 // in-plane ladder (n, 2n, 4n at the run's nz). In each, the finest ladder the study has that holds
@@ -208,7 +219,12 @@ ErrorTerm meshTerm(const FemParameters& q, const Grading& g, bool* coversThickne
           coarsest, [&](int first) { return findLadder(first, nzOf(first), f); },
           [&](int first) { return !(check = ladderTerm("mesh", ladderName(first, nzOf(first)), f, 0)).measured; });
       if (finer) return {false, 0, check.basis + "; so the coarser " + ladderName(coarsest, coarsestNz) + " proves no bar"};
-      return ladderTerm("mesh", ladderName(coarsest, coarsestNz), m, member);
+      const ErrorTerm own = ladderTerm("mesh", ladderName(coarsest, coarsestNz), m, member);
+      int finest = coarsest;
+      while (findLadder(finest << 1, nzOf(finest << 1), f)) finest <<= 1;
+      if (own.measured || finest == coarsest) return own;
+      findLadder(finest, nzOf(finest), f);
+      return throughFinerValue("mesh", own, m[member]->mu, ladderTerm("mesh", ladderName(finest, nzOf(finest)), f, 2), f[2]->mu);
     }
   }
   char text[300];
@@ -282,6 +298,8 @@ ErrorTerm thicknessTerm(const FemParameters& q, const Grading& g) {
   return {false, 0, "thickness ladder nz 5/10/20 not measured for this D_c"};
 }
 
+// The bound of dt_safety 0.6 (a run at a smaller step is bounded by it too) from the ladder
+// 0.6/0.3/0.15; where that does not converge, through 0.075 if 0.3/0.15/0.075 does.
 ErrorTerm timeStepTerm(const FemParameters& q, double dtRatio) {
   if (dtRatio > 0.6 + 1e-9) return {false, 0, "dt above 0.6 of the stable step"};
   const StudyRow* m[3];
@@ -290,6 +308,12 @@ ErrorTerm timeStepTerm(const FemParameters& q, double dtRatio) {
   char ladder[120];
   std::snprintf(ladder, sizeof ladder, "dt_safety 0.6/0.3/0.15 (non-graded 100x100%s)", filter);
   ErrorTerm term = ladderTerm("dt", ladder, m, 0);
+  const StudyRow* f[3] = {m[1], m[2], nullptr};
+  if (!term.measured && (f[2] = find(q, "none", 0, 100, 5, 0.075, "penalty", {}, *filter ? q.normalFilter : NormalStressFilter{}))) {
+    std::snprintf(ladder, sizeof ladder, "dt_safety 0.3/0.15/0.075 (non-graded 100x100%s)", filter);
+    const ErrorTerm finer = ladderTerm("dt", ladder, f, 2);
+    if (finer.measured) term = throughFinerValue("dt", term, m[0]->mu, finer, f[2]->mu);
+  }
   term.filtered = *filter != '\0';
   return term;
 }

@@ -136,9 +136,32 @@ TEST(FemErrorBar, OfTheLaddersHoldingTheRunsMeshTheFinestDecides) {
   EXPECT_NE(mesh.basis.find("100x100/200/400"), std::string::npos) << mesh.basis;
   const double extrapolated = 0.797957 + (0.797957 - 0.798991) / 3.0;
   EXPECT_NEAR(mesh.relative, 1.25 * std::fabs(0.805813 - extrapolated) / extrapolated, 1e-12);
-  // 50 x 50 belongs only to 50/100/200, which does not converge.
+}
+
+TEST(FemErrorBar, AMeshWhoseLadderDoesNotConvergeIsBoundedThroughTheFinestValueOfConvergingFinerLadders) {
+  // Filtered friction -0.2 on 50 x 50 x 5 belongs only to 50/100/200 (0.812946, 0.805813, 0.798991:
+  // equal steps, not converged); every finer ladder converges (100/200/400, and 200/400/800 with
+  // 0.797359 on 800). So |mu(50) - mu(800)| + the bound of 800 in 200/400/800 bounds it.
+  FemParameters q = paperDefaults();
+  q.normalFilter.length = 1e-6;
+  q.normalFilter.speed = 0.1;
   q.nx = q.ny = 50;
-  EXPECT_FALSE(discretisationError(q, minus, 0.6).mesh.measured);
+  const ErrorTerm mesh = discretisationError(q, linear(GradedProperty::Friction, -0.2), 0.6).mesh;
+  ASSERT_TRUE(mesh.measured) << mesh.basis;
+  const double order = std::log2((0.797957 - 0.798991) / (0.797359 - 0.797957));
+  const double extrapolated = 0.797359 + (0.797359 - 0.797957) / (std::pow(2.0, order) - 1.0);
+  const double bound800 = 1.25 * std::fabs(0.797359 - extrapolated) / extrapolated;
+  EXPECT_NEAR(mesh.relative, std::fabs(0.812946 - 0.797359) / 0.797359 + bound800, 1e-12);
+  EXPECT_NE(mesh.basis.find("bounded through the finest value 0.797359"), std::string::npos) << mesh.basis;
+  // Without a finer ladder there is nothing to bound it through: friction +0.2 unfiltered refined in
+  // every direction (0.804064, 0.805781, 0.804198: not converged, the study's finest such ladder).
+  FemParameters plain;
+  plain.nx = plain.ny = 50;
+  plain.nz = 5;
+  EXPECT_FALSE(discretisationError(plain, linear(GradedProperty::Friction, 0.2), 0.6).mesh.measured);
+  // Nor where a finer ladder does not converge: friction +0.2 filtered, x 5 (200/400/800 creeps).
+  q.nz = 5;
+  EXPECT_FALSE(discretisationError(q, linear(GradedProperty::Friction, 0.2), 0.6).mesh.measured);
 }
 
 TEST(FemErrorBar, AFinerLadderThatDoesNotConvergeTakesTheBarAway) {

@@ -14,6 +14,7 @@
 //    distance to the farther of them + its half-width) / |fine|;
 //  - otherwise no bound.
 // Pure: part of the PETSc-free core (scripts/ladder_rule.py is the same rule for the docs' tables).
+#include <cmath>
 
 namespace gradfric {
 
@@ -53,6 +54,14 @@ int firstFinerLadderThatDisproves(int coarsest, Held held, Disproves disproves) 
   for (int first = coarsest << 1; held(first); first <<= 1)
     if (disproves(first)) return first;
   return 0;
+}
+
+// A member whose own ladder does not converge, while every finer ladder the study holds does, is
+// still bounded through the finest value f of those ladders: |mu - mu_lim| <= |mu - mu_f| +
+// |mu_f - mu_lim| (the triangle inequality; the first term is measured, the second is f's bound).
+// Relative, as the bounds are.
+inline double boundThroughFinerValue(double value, double finerValue, double finerBound) {
+  return std::fabs(value - finerValue) / std::fabs(finerValue) + finerBound;
 }
 
 }  // namespace gradfric
