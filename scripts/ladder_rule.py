@@ -64,11 +64,17 @@ def finer_not_converged(ladders, i):
 
 
 def through_finer(ladders, i):
-    """A ladder ladders[i] that does not converge still bounds its coarsest member through the finest
+    """A ladder ladders[i] that proves no bound (not converged, or no signal) still bounds its coarsest member through the finest
     value of the finer ladders, when there are some and every one converges (as the code's bars):
     |mu - mu_lim| <= |mu - mu_f| + f's bound. Returns (finest mesh, bound) or None."""
     finer = ladders[i + 1:]
-    if not finer or finer_not_converged(ladders, i) or judge(ladders[i][1], 0)["outcome"] != "not converged":
+    if not finer or finer_not_converged(ladders, i) or judge(ladders[i][1], 0)["bound"] is not None:
         return None
     n, rungs = finer[-1]
-    return 4 * n, abs(ladders[i][1][0] - rungs[2]) / abs(rungs[2]) + judge(rungs, 2)["bound"]
+    bound = judge(rungs, 2)["bound"]
+    if bound is None:  # the finest ladder shows no signal: nothing to bound through
+        return None
+    value, f = (r if isinstance(r, tuple) else (r, 0.0, 0) for r in (ladders[i][1][0], rungs[2]))
+    # |mu - mu_lim| <= |mu - f| + h + b |f|, relative to |mu_lim| >= (1 - b) |f|
+    return 4 * n, (abs(value[0] - f[0]) + _half([value, f, (0.0, 0.0, 0)], (1, -1, 0)) + bound * abs(f[0])) / (
+        (1 - bound) * abs(f[0]))

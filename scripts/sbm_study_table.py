@@ -13,7 +13,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from ladder_rule import finer_not_converged, judge  # noqa: E402  the rule the code's bars use
+from ladder_rule import finer_not_converged, judge, through_finer  # noqa: E402  the rule the code's bars use
 
 
 def load(path):
@@ -64,6 +64,9 @@ def main():
             finer = finer_not_converged([(f, rungs(fm)) for f, fm in ladders], i)
             if finer and not text.startswith(("not converged", "no signal")):
                 text += f"; no bar: the finer {finer}/{2 * finer}/{4 * finer} does not converge"
+            through = through_finer([(f, rungs(fm)) for f, fm in ladders], i)
+            if through:
+                text += f"; N_b = {n} bounded through {through[0]}: {100 * through[1]:.2f} %"
             grading = "none" if key[1] == "none" else f"{key[1]} {key[2]:+g}"
             means = ", ".join(f"{x[1]:.6f} +- {x[2]:.6f}" for x in m)
             print(f"| {key[3]} | {grading} | {n}/{2 * n}/{4 * n} | {'/'.join(str(x[0]) for x in m)} | {means} | "

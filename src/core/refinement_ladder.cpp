@@ -61,4 +61,12 @@ LadderVerdict judgeLadder(const LadderRung (&m)[3], int member) {
   return v;
 }
 
+double boundThroughFinerValue(const LadderRung& value, const LadderRung& finer, double finerBound) {
+  const LadderRung pair[3] = {value, finer, {}};
+  const double difference[3] = {1, -1, 0};
+  // |mu - mu_lim| <= |mu - f| + h + b |f|, relative to |mu_lim| >= (1 - b) |f| (b: f's relative bound).
+  const double f = std::fabs(finer.value);
+  return (std::fabs(value.value - finer.value) + halfWidthOf(pair, difference) + finerBound * f) / ((1.0 - finerBound) * f);
+}
+
 }  // namespace gradfric

@@ -126,7 +126,18 @@ SbmBarTerm latticeTerm(const std::vector<SbmStudyRow>& study, const sbm::Paramet
         coarsest, [&](int first) { return findLadder(first, f); },
         [&](int) { return judgeRows(f, 0).outcome == LadderOutcome::NotConverged; });  // no signal disproves nothing
     if (finer) return {false, 0, latticeLadderTerm(f, 0).basis + " (a finer ladder: no bar for N_b = " + std::to_string(n) + ")"};
-    return latticeLadderTerm(m, member);
+    const SbmBarTerm own = latticeLadderTerm(m, member);
+    int finest = coarsest;
+    while (findLadder(finest << 1, f)) finest <<= 1;
+    if (own.measured || finest == coarsest) return own;
+    findLadder(finest, f);  // the finest value bounds the run's through the triangle inequality
+    const SbmBarTerm through = latticeLadderTerm(f, 2);
+    if (!through.measured) return own;
+    const auto rung = [](const SbmStudyRow* r) { return LadderRung{r->value, r->stdError, r->realisations}; };
+    const double bound = boundThroughFinerValue(rung(m[member]), rung(f[2]), through.relative);
+    std::snprintf(text, sizeof text, "; bounded through the finest N_b = %d (%.6f): %s", f[2]->blocks, f[2]->value,
+                  percent(bound).c_str());
+    return {true, bound, own.basis + "; " + through.basis + text};
   }
   std::snprintf(text, sizeof text, "N_b = %d not in a lattice ladder of the study (N_b, 2 N_b, 4 N_b)", n);
   return {false, 0, text};

@@ -172,7 +172,7 @@ ErrorTerm throughFinerValue(const char* term, const ErrorTerm& own, double value
   char text[160];
   std::snprintf(text, sizeof text, "; bounded through the finest value %.6f: |difference| %s + its bound %s", finestValue,
                 percent(std::fabs(value - finestValue) / std::fabs(finestValue)).c_str(), percent(finest.relative).c_str());
-  return {true, boundThroughFinerValue(value, finestValue, finest.relative),
+  return {true, boundThroughFinerValue({value}, {finestValue}, finest.relative),
           std::string(term) + ": own ladder" + own.basis.substr(own.basis.find(" not converged")) + "; " + finest.basis + text};
 }
 

@@ -2,6 +2,8 @@
 // (core/refinement_ladder.hpp), on sequences whose limit is known: mu(h) = mu0 + C h^p.
 #include "gradfric/core/refinement_ladder.hpp"
 
+#include "gradfric/campaign/statistics.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -83,6 +85,24 @@ TEST(RefinementLadder, StatisticalDifferencesMustExceedTheirHalfWidths) {
   // The same means with a statistical error get a wider bar, by the half-width of mu(2n) - mu_ext.
   EXPECT_GT(withError.bound, deterministic.bound);
   EXPECT_LT(withError.bound - deterministic.bound, 0.01);
+}
+
+TEST(RefinementLadder, AValueIsBoundedThroughAFinerOneByTheTriangleInequality) {
+  // mu(h) = 1 + 0.05 h^2 on h = 8 (a coarse run), and the ladder 4, 2, 1: the bound through mu(1)
+  // must hold the true error of mu(8), 3.2 (relative 0.05 * 64 / 1).
+  LadderRung finer[3];
+  for (int k = 0; k < 3; ++k) finer[k] = {1.0 + 0.05 * std::pow(2.0, 2 * (2 - k))};
+  const auto v = judgeLadder(finer, 2);
+  ASSERT_EQ(v.outcome, LadderOutcome::Monotone);
+  const LadderRung coarse{1.0 + 0.05 * 64};
+  const double bound = boundThroughFinerValue(coarse, finer[2], v.bound);
+  EXPECT_GE(bound, std::fabs(coarse.value - 1.0) / 1.0);
+  EXPECT_GE(bound, (coarse.value - finer[2].value) / finer[2].value + v.bound);
+  // Two ensemble means: the measured difference is widened by its 95 % half-width.
+  const LadderRung a{0.90, 0.002, 10}, b{0.85, 0.001, 20};
+  EXPECT_NEAR(boundThroughFinerValue(a, b, 0.01),
+              (0.05 + gradfric::campaign::t95(9) * std::sqrt(0.002 * 0.002 + 0.001 * 0.001) + 0.01 * 0.85) / (0.99 * 0.85),
+              1e-12);
 }
 
 }  // namespace

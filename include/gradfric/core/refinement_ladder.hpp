@@ -14,8 +14,6 @@
 //    distance to the farther of them + its half-width) / |fine|;
 //  - otherwise no bound.
 // Pure: part of the PETSc-free core (scripts/ladder_rule.py is the same rule for the docs' tables).
-#include <cmath>
-
 namespace gradfric {
 
 struct LadderRung {
@@ -59,9 +57,8 @@ int firstFinerLadderThatDisproves(int coarsest, Held held, Disproves disproves) 
 // A member whose own ladder does not converge, while every finer ladder the study holds does, is
 // still bounded through the finest value f of those ladders: |mu - mu_lim| <= |mu - mu_f| +
 // |mu_f - mu_lim| (the triangle inequality; the first term is measured, the second is f's bound).
-// Relative, as the bounds are.
-inline double boundThroughFinerValue(double value, double finerValue, double finerBound) {
-  return std::fabs(value - finerValue) / std::fabs(finerValue) + finerBound;
-}
+// Relative to the limit, as the bounds are; an ensemble mean's difference is widened by its 95 %
+// half-width.
+double boundThroughFinerValue(const LadderRung& value, const LadderRung& finer, double finerBound);
 
 }  // namespace gradfric
