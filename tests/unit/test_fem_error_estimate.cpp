@@ -139,29 +139,30 @@ TEST(FemErrorBar, OfTheLaddersHoldingTheRunsMeshTheFinestDecides) {
 }
 
 TEST(FemErrorBar, AMeshWhoseLadderDoesNotConvergeIsBoundedThroughTheFinestValueOfConvergingFinerLadders) {
-  // Filtered friction -0.2 on 50 x 50 x 5 belongs only to 50/100/200 (0.812946, 0.805813, 0.798991:
-  // equal steps, not converged); every finer ladder converges (100/200/400, and 200/400/800 with
-  // 0.797359 on 800). So |mu(50) - mu(800)| + the bound of 800 in 200/400/800 bounds it.
+  // Filtered friction +0.2 at D_c 1e-7, x 5: 50 x 50 belongs only to 50/100/200 (0.910000, 0.908971,
+  // 0.907965: equal steps, not converged); the finer 100/200/400 converges (0.907699 on 400). So
+  // |mu(50) - mu(400)| + the bound of 400 in 100/200/400 bounds it, relative to the limit.
   FemParameters q = paperDefaults();
+  q.frictionLaw.slipLength = 1e-7;
   q.normalFilter.length = 1e-6;
   q.normalFilter.speed = 0.1;
   q.nx = q.ny = 50;
-  const ErrorTerm mesh = discretisationError(q, linear(GradedProperty::Friction, -0.2), 0.6).mesh;
+  const ErrorTerm mesh = discretisationError(q, linear(GradedProperty::Friction, 0.2), 0.6).mesh;
   ASSERT_TRUE(mesh.measured) << mesh.basis;
-  const double order = std::log2((0.797957 - 0.798991) / (0.797359 - 0.797957));
-  const double extrapolated = 0.797359 + (0.797359 - 0.797957) / (std::pow(2.0, order) - 1.0);
-  const double bound800 = 1.25 * std::fabs(0.797359 - extrapolated) / extrapolated;
-  EXPECT_NEAR(mesh.relative, (std::fabs(0.812946 - 0.797359) + bound800 * 0.797359) / ((1 - bound800) * 0.797359), 1e-12);
-  EXPECT_NE(mesh.basis.find("bounded through the finest value 0.797359"), std::string::npos) << mesh.basis;
-  // Without a finer ladder there is nothing to bound it through: friction +0.2 unfiltered refined in
-  // every direction (0.804064, 0.805781, 0.804198: not converged, the study's finest such ladder).
-  FemParameters plain;
-  plain.nx = plain.ny = 50;
-  plain.nz = 5;
-  EXPECT_FALSE(discretisationError(plain, linear(GradedProperty::Friction, 0.2), 0.6).mesh.measured);
-  // Nor where a finer ladder does not converge: friction +0.2 filtered, x 5 (200/400/800 creeps).
-  q.nz = 5;
+  const double order = std::log2((0.907965 - 0.908971) / (0.907699 - 0.907965));
+  const double extrapolated = 0.907699 + (0.907699 - 0.907965) / (std::pow(2.0, order) - 1.0);
+  const double bound400 = 1.25 * std::fabs(0.907699 - extrapolated) / extrapolated;
+  EXPECT_NEAR(mesh.relative, (std::fabs(0.910000 - 0.907699) + bound400 * 0.907699) / ((1 - bound400) * 0.907699), 1e-12);
+  EXPECT_NE(mesh.basis.find("bounded through the finest value 0.907699"), std::string::npos) << mesh.basis;
+  // Without a finer ladder there is nothing to bound it through: friction +0.2 with the filter at
+  // the default D_c refined in every direction (0.807608, 0.806817, 0.805256: the steps grow), the
+  // study's finest such ladder; 50x50x5 takes that ladder before its in-plane ones.
+  q.frictionLaw.slipLength = 2.5e-8;
   EXPECT_FALSE(discretisationError(q, linear(GradedProperty::Friction, 0.2), 0.6).mesh.measured);
+  // Nor where a finer ladder does not converge: friction -0.2 without the filter, x 5 on 100 x 100
+  // (200/400/800 does not converge).
+  FemParameters plain = paperDefaults();
+  EXPECT_FALSE(discretisationError(plain, linear(GradedProperty::Friction, -0.2), 0.6).mesh.measured);
 }
 
 TEST(FemErrorBar, AFinerLadderThatDoesNotConvergeTakesTheBarAway) {
