@@ -262,3 +262,29 @@ TEST(FemErrorBar, AFilteredRunUsesTheFilteredNonGradedStudiesWhereTheyExist) {
   EXPECT_EQ(fallback.thickness.basis.find("with the filter"), std::string::npos) << fallback.thickness.basis;
   EXPECT_NE(fallback.thickness.basis.find("0.984958"), std::string::npos) << fallback.thickness.basis;
 }
+
+TEST(FemErrorBar, AFilteredRunsTimeStepIsBoundedThroughTheFinerStepWhereItsOwnLadderDoesNotConverge) {
+  // The default D_c with the filter, non-graded 100 x 100 x 5: dt_safety 0.6/0.3/0.15 give 0.930091,
+  // 0.930061, 0.930114 (the steps change sign and grow: not converged); 0.3/0.15/0.075 (0.930129)
+  // converge (monotone, order 1.8). So 0.6 is bounded through 0.075.
+  FemParameters q;  // the default mesh 100 x 100 x 10
+  q.normalFilter.length = 1e-6;
+  q.normalFilter.speed = 0.1;
+  const Grading minus = linear(GradedProperty::Friction, -0.2);
+  const DiscretisationError e = discretisationError(q, minus, 0.6);
+  ASSERT_TRUE(e.timeStep.measured) << e.timeStep.basis;
+  const double order = std::log2((0.930114 - 0.930061) / (0.930129 - 0.930114));
+  const double extrapolated = 0.930129 + (0.930129 - 0.930114) / (std::pow(2.0, order) - 1.0);
+  const double bound0075 = 1.25 * std::fabs(0.930129 - extrapolated) / extrapolated;
+  EXPECT_NEAR(e.timeStep.relative, (std::fabs(0.930091 - 0.930129) + bound0075 * 0.930129) / ((1 - bound0075) * 0.930129),
+              1e-12);
+  EXPECT_LT(e.timeStep.relative, 1e-4);
+  EXPECT_NE(e.timeStep.basis.find("with the filter"), std::string::npos) << e.timeStep.basis;
+  // With it, the filtered friction -0.2 plate on the default mesh carries a bar: its ladder in every
+  // direction (0.812946, 0.804233, 0.800461) converges and bounds the thickness.
+  ASSERT_TRUE(e.measured) << e.basis;
+  EXPECT_NEAR(e.relative, e.mesh.relative + e.timeStep.relative + e.contact.relative, 1e-15);
+  EXPECT_LT(e.relative, 0.015);
+  // Its partner +0.2 (0.807608, 0.806817, 0.805256: the steps grow) does not.
+  EXPECT_FALSE(discretisationError(q, linear(GradedProperty::Friction, 0.2), 0.6).measured);
+}
