@@ -122,15 +122,14 @@ SbmBarTerm latticeTerm(const std::vector<SbmStudyRow>& study, const sbm::Paramet
     const SbmStudyRow* m[3];
     if (!findLadder(coarsest, m)) continue;
     const SbmStudyRow* f[3];
-    const int finer = firstFinerLadderThatDisproves(
+    const FinerLadders finer = walkFinerLadders(
         coarsest, [&](int first) { return findLadder(first, f); },
         [&](int) { return judgeRows(f, 0).outcome == LadderOutcome::NotConverged; });  // no signal disproves nothing
-    if (finer) return {false, 0, latticeLadderTerm(f, 0).basis + " (a finer ladder: no bar for N_b = " + std::to_string(n) + ")"};
+    if (finer.disproving)
+      return {false, 0, latticeLadderTerm(f, 0).basis + " (a finer ladder: no bar for N_b = " + std::to_string(n) + ")"};
     const SbmBarTerm own = latticeLadderTerm(m, member);
-    int finest = coarsest;
-    while (findLadder(finest << 1, f)) finest <<= 1;
-    if (own.measured || finest == coarsest) return own;
-    findLadder(finest, f);  // the finest value bounds the run's through the triangle inequality
+    if (own.measured || finer.finest == coarsest) return own;
+    findLadder(finer.finest, f);  // the finest value bounds the run's through the triangle inequality
     const SbmBarTerm through = latticeLadderTerm(f, 2);
     if (!through.measured) return own;
     const auto rung = [](const SbmStudyRow* r) { return LadderRung{r->value, r->stdError, r->realisations}; };

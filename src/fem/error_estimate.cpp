@@ -181,7 +181,7 @@ ErrorTerm throughFinerValue(const char* term, const ErrorTerm& own, double value
 // in-plane ladder (n, 2n, 4n at the run's nz). In each, the finest ladder the study has that holds
 // the run's mesh: the three finest meshes are the likeliest to lie in the asymptotic range (Roache).
 // Every finer ladder the study has must converge as well (core/refinement_ladder.hpp,
-// firstFinerLadderThatDisproves).
+// walkFinerLadders).
 ErrorTerm meshTerm(const FemParameters& q, const Grading& g, bool* coversThickness) {
   const std::string property = gradingName(g);
   const double delta = g.active() ? g.delta : 0.0;
@@ -215,15 +215,15 @@ ErrorTerm meshTerm(const FemParameters& q, const Grading& g, bool* coversThickne
       const auto nzOf = [&](int first) { return allDirections ? coarsestNz * (first / coarsest) : q.nz; };
       const StudyRow* f[3];
       ErrorTerm check;
-      const int finer = firstFinerLadderThatDisproves(
+      const FinerLadders finer = walkFinerLadders(
           coarsest, [&](int first) { return findLadder(first, nzOf(first), f); },
           [&](int first) { return !(check = ladderTerm("mesh", ladderName(first, nzOf(first)), f, 0)).measured; });
-      if (finer) return {false, 0, check.basis + "; so the coarser " + ladderName(coarsest, coarsestNz) + " proves no bar"};
+      if (finer.disproving)
+        return {false, 0, check.basis + "; so the coarser " + ladderName(coarsest, coarsestNz) + " proves no bar"};
       const ErrorTerm own = ladderTerm("mesh", ladderName(coarsest, coarsestNz), m, member);
-      int finest = coarsest;
-      while (findLadder(finest << 1, nzOf(finest << 1), f)) finest <<= 1;
-      if (own.measured || finest == coarsest) return own;
-      findLadder(finest, nzOf(finest), f);
+      if (own.measured || finer.finest == coarsest) return own;
+      const int finest = finer.finest;
+      findLadder(finest, nzOf(finest), f);  // the walk's last probe (one finer) left f partly filled
       return throughFinerValue("mesh", own, m[member]->mu, ladderTerm("mesh", ladderName(finest, nzOf(finest)), f, 2), f[2]->mu);
     }
   }

@@ -14,6 +14,7 @@
 //    distance to the farther of them + its half-width) / |fine|;
 //  - otherwise no bound.
 // Pure: part of the PETSc-free core (scripts/ladder_rule.py is the same rule for the docs' tables).
+
 namespace gradfric {
 
 struct LadderRung {
@@ -45,13 +46,23 @@ LadderVerdict judgeLadder(const LadderRung (&rungs)[3], int member);
 // A coarser ladder proves a bar only if every finer ladder of the study converges too: one that does
 // not shows the sequence has not reached its asymptotic range (FEM friction -0.2: 100/200/400
 // converges by the rule, 200/400/800 does not). Walks the ladders whose coarsest rung is coarsest x
-// 2, x 4, ... while the study holds them (held(first)) and returns the first of them that
-// disproves (disproves(first)), or 0 if none does.
+// 2, x 4, ... while the study holds them (held(first)): the first of them that disproves
+// (disproves(first)), 0 if none does, and the coarsest rung of the finest one held (coarsest if none).
+struct FinerLadders {
+  int disproving = 0;
+  int finest = 0;
+};
 template <class Held, class Disproves>
-int firstFinerLadderThatDisproves(int coarsest, Held held, Disproves disproves) {
-  for (int first = coarsest << 1; held(first); first <<= 1)
-    if (disproves(first)) return first;
-  return 0;
+FinerLadders walkFinerLadders(int coarsest, Held held, Disproves disproves) {
+  FinerLadders walk{0, coarsest};
+  for (int first = coarsest << 1; held(first); first <<= 1) {
+    walk.finest = first;
+    if (disproves(first)) {
+      walk.disproving = first;
+      break;
+    }
+  }
+  return walk;
 }
 
 // A member whose own ladder does not converge, while every finer ladder the study holds does, is
