@@ -119,6 +119,7 @@ def main():
                     bounds = "not converged; 0.6 bounded through 0.075: %.4f %%" % (100 * through[1])
             print("| %s | %s | %s | %s | %s | %s |" % (label, ", ".join("%.6f" % m for m in mu), d, p, ext, bounds))
     paired_differences(rows)
+    each_direction_apart(rows)
     if contacts:
         print()
         print("The penalty against the kinematic contact (the exact reference), non-graded 100 x 100 x 5:")
@@ -126,6 +127,84 @@ def main():
         print("| D_c, filter | penalty | kinematic | difference |")
         print("|---|---|---|---|")
         print("\n".join(contacts))
+
+def mesh_bound(found, n):
+    """The bound of in-plane mesh n from one family of in-plane ladders found = [(coarsest, values)], as the
+    code's mesh term: the finest ladder holding n, every finer one converging, else through the finest
+    value of the finer ones; None where that proves no bound."""
+    starts = [m for m, _ in found]
+    for member in range(3):
+        c = n >> member
+        if c << member != n or c not in starts:
+            continue
+        i = starts.index(c)
+        if finer_not_converged(found, i):
+            return None
+        bound = judge(found[i][1], member)["bound"]
+        if bound is None and member == 0:
+            through = through_finer(found, i)
+            bound = through[1] if through else None
+        return bound
+    return None
+
+
+def thickness_bound(rows, key, n, nz):
+    """The bound of nz (5, 10 or 20) from the thickness ladder 5/10/20 on in-plane mesh n and every
+    finer one the rows hold (each must converge; the largest bound), as the code's thickness term."""
+    bounds = []
+    while all(key(n, z) in rows for z in (5, 10, 20)):
+        bound = judge([rows[key(n, z)] for z in (5, 10, 20)], (5, 10, 20).index(nz))["bound"]
+        if bound is None:
+            return None
+        bounds.append(bound)
+        n *= 2
+    return max(bounds) if bounds else None
+
+
+def shares_a_limit(values):
+    """Whether some limit L satisfies |v - L| <= b L for every (v, b) (positive values), as core shareALimit."""
+    low = max(v / (1 + b) for v, b in values)
+    high = min((v / (1 - b) for v, b in values if b < 1), default=math.inf)
+    return low <= high
+
+
+def each_direction_apart(rows):
+    """The plates refined each direction apart on 50/100/200 x 5/10/20: the in-plane ladder at the
+    mesh's nz plus the thickness ladder at its in-plane mesh, the code's bound where the ladder refined in
+    every direction does not converge, tested against that ladder's meshes (they must share a limit)."""
+    plates = sorted({(k[0], k[1], k[2], k[3], k[8]) for k in rows if k[5] == 20 and k[4] == 50})
+    lines = []
+    for law, dc, prop, delta, contact in plates:
+        key = lambda n, nz: (law, dc, prop, delta, n, nz, "q1", 0.6, contact)
+        if not all(key(n, nz) in rows for n in (50, 100, 200) for nz in (5, 10, 20)):
+            continue
+        tag = ("none" if prop == "none" else "%s %+.1f" % (prop, delta)) + ", D_c %g%s" % (
+            dc, "" if contact == "penalty" else ", filter L/V* " + contact.split("=", 1)[1])
+        lines.append("| %s | grid | %s |" % (tag, "; ".join(
+            "nz %d: %s" % (nz, ", ".join("%.6f" % rows[key(n, nz)] for n in (50, 100, 200))) for nz in (5, 10, 20))))
+        apart = []
+        for n, nz in ((50, 5), (100, 10), (200, 20)):
+            inplane = mesh_bound(ladders(rows, law, dc, prop, delta, nz=nz, contact=contact), n)
+            thick = thickness_bound(rows, key, n, nz)
+            total = inplane + thick if inplane is not None and thick is not None else None
+            apart.append((rows[key(n, nz)], total))
+            lines.append("| %s | %dx%dx%d %.6f | in-plane %s + thickness %s = %s |" % (
+                tag, n, n, nz, rows[key(n, nz)], *("%.2f %%" % (100 * b) if b is not None else "none"
+                                                  for b in (inplane, thick, total))))
+        bounded = [(v, b) for v, b in apart if b is not None]
+        if len(bounded) >= 2:
+            lines.append("| %s | test | the bounded meshes %s a limit |" % (
+                tag, "share" if shares_a_limit(bounded) else "do not share"))
+    if lines:
+        print()
+        print("Refined each direction apart (50/100/200 x 5/10/20): the in-plane ladder at the mesh's nz plus the")
+        print("thickness ladder 5/10/20 at its in-plane mesh and the finer ones, and the test against the ladder")
+        print("refined in every direction:")
+        print()
+        print("| plate | mesh | values, bound |")
+        print("|---|---|---|")
+        print("\n".join(lines))
+
 
 def limit_interval(mu):
     """The interval that holds a converged ladder's limit by the rule: the finest value +- its bound."""

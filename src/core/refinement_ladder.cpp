@@ -69,4 +69,15 @@ double boundThroughFinerValue(const LadderRung& value, const LadderRung& finer, 
   return (std::fabs(value.value - finer.value) + halfWidthOf(pair, difference) + finerBound * f) / ((1.0 - finerBound) * f);
 }
 
+bool shareALimit(const BoundedValue* values, int count) {
+  double low = 0, high = INFINITY;  // of |L|; the values share one sign or none is bounded
+  for (int i = 0; i < count; ++i) {
+    const double v = std::fabs(values[i].value), b = values[i].bound;
+    if (i > 0 && values[i].value * values[0].value <= 0) return false;
+    low = std::max(low, v / (1.0 + b));
+    if (b < 1.0) high = std::min(high, v / (1.0 - b));
+  }
+  return low <= high;
+}
+
 }  // namespace gradfric

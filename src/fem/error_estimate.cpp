@@ -176,61 +176,70 @@ ErrorTerm throughFinerValue(const char* term, const ErrorTerm& own, double value
           std::string(term) + ": own ladder" + own.basis.substr(own.basis.find(" not converged")) + "; " + finest.basis + text};
 }
 
-// The mesh term. A ladder refined in every direction (n x n x nz, 2n x 2n x 2nz, 4n x 4n x 4nz)
-// holding the run's mesh is taken first: it bounds the thickness too (*coversThickness). Else the
-// in-plane ladder (n, 2n, 4n at the run's nz). In each, the finest ladder the study has that holds
-// the run's mesh: the three finest meshes are the likeliest to lie in the asymptotic range (Roache).
-// Every finer ladder the study has must converge as well (core/refinement_ladder.hpp,
-// walkFinerLadders).
-ErrorTerm meshTerm(const FemParameters& q, const Grading& g, bool* coversThickness) {
+// The mesh ladder of one kind holding the run's mesh: refined in every direction (n x n x nz, 2n x 2n x
+// 2nz, 4n x 4n x 4nz) or in-plane (n, 2n, 4n at the run's nz). Of those holding the run's mesh, the
+// finest: the three finest meshes are the likeliest to lie in the asymptotic range (Roache). Every
+// finer ladder the study has must converge as well (core/refinement_ladder.hpp, walkFinerLadders).
+struct MeshLadder {
+  bool held = false;  // the study holds a ladder of this kind with the run's mesh
+  ErrorTerm term;     // its bound of the run's mesh, or why none
+  const StudyRow* rows[3] = {nullptr, nullptr, nullptr};
+  int member = 0;     // the run's mesh in rows
+};
+
+MeshLadder meshLadder(const FemParameters& q, const Grading& g, bool allDirections) {
   const std::string property = gradingName(g);
   const double delta = g.active() ? g.delta : 0.0;
-  for (bool allDirections : {true, false}) {
-    // The ladder whose coarsest mesh is n x n x nz (nz doubling with n when refined in every direction).
-    const auto findLadder = [&](int n, int nz, const StudyRow* (&m)[3]) {
-      bool complete = true;
-      for (int k = 0; k < 3; ++k)
-        complete = complete && (m[k] = find(q, property, delta, n << k, allDirections ? nz << k : nz, 0.6, "penalty",
-                                            q.edge, q.normalFilter)) != nullptr;
-      return complete;
-    };
-    const auto ladderName = [&](int n, int nz) {
-      char text[240];
-      if (allDirections)
-        std::snprintf(text, sizeof text, "%dx%dx%d/%dx%dx%d/%dx%dx%d%s, all directions (run %dx%dx%d)", n, n, nz, 2 * n,
-                      2 * n, 2 * nz, 4 * n, 4 * n, 4 * nz, meshName(q).c_str(), q.nx, q.nx, q.nz);
-      else
-        std::snprintf(text, sizeof text, "%dx%d/%d/%d x %d%s (run %dx%d)", n, n, 2 * n, 4 * n, nz, meshName(q).c_str(),
-                      q.nx, q.nx);
-      return std::string(text);
-    };
-    for (int member = 0; member <= 2; ++member) {
-      const int coarsest = q.nx >> member, coarsestNz = allDirections ? q.nz >> member : q.nz;
-      if (coarsest < 1 || (coarsest << member) != q.nx) continue;
-      if (allDirections && (coarsestNz < 1 || (coarsestNz << member) != q.nz)) continue;
-      const StudyRow* m[3];
-      if (!findLadder(coarsest, coarsestNz, m)) continue;
-      *coversThickness = allDirections;
-      // The ladder starting at in-plane mesh `first` (its nz scaled alike when refined in every direction).
-      const auto nzOf = [&](int first) { return allDirections ? coarsestNz * (first / coarsest) : q.nz; };
-      const StudyRow* f[3];
-      ErrorTerm check;
-      const FinerLadders finer = walkFinerLadders(
-          coarsest, [&](int first) { return findLadder(first, nzOf(first), f); },
-          [&](int first) { return !(check = ladderTerm("mesh", ladderName(first, nzOf(first)), f, 0)).measured; });
-      if (finer.disproving)
-        return {false, 0, check.basis + "; so the coarser " + ladderName(coarsest, coarsestNz) + " proves no bar"};
-      const ErrorTerm own = ladderTerm("mesh", ladderName(coarsest, coarsestNz), m, member);
-      if (own.measured || finer.finest == coarsest) return own;
-      const int finest = finer.finest;
-      findLadder(finest, nzOf(finest), f);  // the walk's last probe (one finer) left f partly filled
-      return throughFinerValue("mesh", own, m[member]->mu, ladderTerm("mesh", ladderName(finest, nzOf(finest)), f, 2), f[2]->mu);
+  // The ladder whose coarsest mesh is n x n x nz (nz doubling with n when refined in every direction).
+  const auto findLadder = [&](int n, int nz, const StudyRow* (&m)[3]) {
+    bool complete = true;
+    for (int k = 0; k < 3; ++k)
+      complete = complete && (m[k] = find(q, property, delta, n << k, allDirections ? nz << k : nz, 0.6, "penalty",
+                                          q.edge, q.normalFilter)) != nullptr;
+    return complete;
+  };
+  const auto ladderName = [&](int n, int nz) {
+    char text[240];
+    if (allDirections)
+      std::snprintf(text, sizeof text, "%dx%dx%d/%dx%dx%d/%dx%dx%d%s, all directions (run %dx%dx%d)", n, n, nz, 2 * n,
+                    2 * n, 2 * nz, 4 * n, 4 * n, 4 * nz, meshName(q).c_str(), q.nx, q.nx, q.nz);
+    else
+      std::snprintf(text, sizeof text, "%dx%d/%d/%d x %d%s (run %dx%d)", n, n, 2 * n, 4 * n, nz, meshName(q).c_str(),
+                    q.nx, q.nx);
+    return std::string(text);
+  };
+  MeshLadder ladder;
+  for (int member = 0; member <= 2; ++member) {
+    const int coarsest = q.nx >> member, coarsestNz = allDirections ? q.nz >> member : q.nz;
+    if (coarsest < 1 || (coarsest << member) != q.nx) continue;
+    if (allDirections && (coarsestNz < 1 || (coarsestNz << member) != q.nz)) continue;
+    const StudyRow** m = ladder.rows;
+    if (!findLadder(coarsest, coarsestNz, ladder.rows)) continue;
+    ladder.held = true;
+    ladder.member = member;
+    // The ladder starting at in-plane mesh `first` (its nz scaled alike when refined in every direction).
+    const auto nzOf = [&](int first) { return allDirections ? coarsestNz * (first / coarsest) : q.nz; };
+    const StudyRow* f[3];
+    ErrorTerm check;
+    const FinerLadders finer = walkFinerLadders(
+        coarsest, [&](int first) { return findLadder(first, nzOf(first), f); },
+        [&](int first) { return !(check = ladderTerm("mesh", ladderName(first, nzOf(first)), f, 0)).measured; });
+    if (finer.disproving) {
+      ladder.term = {false, 0, check.basis + "; so the coarser " + ladderName(coarsest, coarsestNz) + " proves no bar"};
+      return ladder;
     }
+    const ErrorTerm own = ladderTerm("mesh", ladderName(coarsest, coarsestNz), ladder.rows, member);
+    if (own.measured || finer.finest == coarsest) {
+      ladder.term = own;
+      return ladder;
+    }
+    const int finest = finer.finest;
+    findLadder(finest, nzOf(finest), f);  // the walk's last probe (one finer) left f partly filled
+    ladder.term =
+        throughFinerValue("mesh", own, m[member]->mu, ladderTerm("mesh", ladderName(finest, nzOf(finest)), f, 2), f[2]->mu);
+    return ladder;
   }
-  char text[300];
-  std::snprintf(text, sizeof text, "mesh %dx%dx%d%s %s (%s) not in the mesh study", q.nx, q.ny, q.nz,
-                meshName(q).c_str(), elementTypeName(q.element), g.active() ? "graded" : "non-graded");
-  return {false, 0, text};
+  return ladder;
 }
 
 // The plate and in-plane mesh on which a term's ladder was measured (the time-step and contact
@@ -271,28 +280,46 @@ const char* studyRungs(const FemParameters& q, const StudiedPlate& plate, const 
   return "";
 }
 
-// The thickness ladder nz 5/10/20, the bound of the run's member (nz 5). Measured on the run's own
-// plate and in-plane mesh where the study has it (the thickness error depends on both: refined alone
-// through the thickness, the corner singularity converges differently on each in-plane mesh), else
-// on the non-graded plate at the run's in-plane mesh, else on the non-graded 100 x 100 plate.
+std::string thicknessLadderName(const StudiedPlate& plate, const char* filter) {
+  char text[160];
+  if (plate.property == "none")
+    std::snprintf(text, sizeof text, "nz 5/10/20 (non-graded %dx%d%s)", plate.n, plate.n, filter);
+  else
+    std::snprintf(text, sizeof text, "nz 5/10/20 (%s %+g, %dx%d%s)", plate.property.c_str(), plate.delta, plate.n,
+                  plate.n, filter);
+  return text;
+}
+
+// The thickness ladder nz 5/10/20, the bound of the run's member (nz 5, 10 or 20). Measured on the
+// run's own plate and in-plane mesh where the study has it, else on the non-graded plate at the
+// run's in-plane mesh, else on the non-graded 100 x 100 plate. The thickness error depends on the
+// in-plane mesh (refined alone through the thickness, the corner singularity converges differently
+// on each), so the same plate's ladders on every finer in-plane mesh the study has must converge
+// too, and the largest of their bounds is taken.
 ErrorTerm thicknessTerm(const FemParameters& q, const Grading& g) {
-  if (q.nz != 5) return {false, 0, "nz other than 5 (the thickness study: 5/10/20)"};
+  const int member = q.nz == 5 ? 0 : q.nz == 10 ? 1 : q.nz == 20 ? 2 : -1;
+  if (member < 0) return {false, 0, "nz other than 5, 10 or 20 (the thickness study: 5/10/20)"};
+  const StudyRung rungs[3] = {{5, 0.6, "penalty"}, {10, 0.6, "penalty"}, {20, 0.6, "penalty"}};
   std::vector<StudiedPlate> plates;
   if (g.active()) plates.push_back({gradingName(g), g.delta, q.nx});
   plates.push_back({"none", 0, q.nx});
   plates.push_back({"none", 0, 100});
   for (const StudiedPlate& plate : plates) {
     const StudyRow* m[3];
-    const char* filter = studyRungs(q, plate, {{5, 0.6, "penalty"}, {10, 0.6, "penalty"}, {20, 0.6, "penalty"}}, m);
+    const char* filter = studyRungs(q, plate, rungs, m);
     if (!m[0] || !m[1] || !m[2]) continue;
-    char ladder[160];
-    if (plate.property == "none")
-      std::snprintf(ladder, sizeof ladder, "nz 5/10/20 (non-graded %dx%d%s)", plate.n, plate.n, filter);
-    else
-      std::snprintf(ladder, sizeof ladder, "nz 5/10/20 (%s %+g, %dx%d%s)", plate.property.c_str(), plate.delta, plate.n,
-                    plate.n, filter);
-    ErrorTerm term = ladderTerm("thickness", ladder, m, 0);
+    ErrorTerm term = ladderTerm("thickness", thicknessLadderName(plate, filter), m, member);
     term.filtered = *filter != '\0';
+    const NormalStressFilter rowsFilter = term.filtered ? q.normalFilter : NormalStressFilter{};
+    for (StudiedPlate finer{plate.property, plate.delta, 2 * plate.n}; term.measured && findRungs(q, finer, rungs, rowsFilter, m);
+         finer.n *= 2) {
+      const ErrorTerm other = ladderTerm("thickness", thicknessLadderName(finer, filter), m, member);
+      if (!other.measured)
+        return {false, 0, other.basis + "; so the coarser " + thicknessLadderName(plate, filter) + " proves no bar",
+                term.filtered};
+      term.relative = std::max(term.relative, other.relative);
+      term.basis += "; " + other.basis + " (the larger bound taken)";
+    }
     return term;
   }
   return {false, 0, "thickness ladder nz 5/10/20 not measured for this D_c"};
@@ -343,6 +370,63 @@ std::string filterOfTerms(const FemParameters& q, const ErrorTerm& timeStep, con
   return timeStep.filtered ? " (dt with the filter, contact without)" : " (contact with the filter, dt without)";
 }
 
+// The in-plane mesh term where the study holds no ladder of the run's mesh.
+ErrorTerm notInTheStudy(const FemParameters& q, const Grading& g) {
+  char text[300];
+  std::snprintf(text, sizeof text, "mesh %dx%dx%d%s %s (%s) not in the mesh study", q.nx, q.ny, q.nz,
+                meshName(q).c_str(), elementTypeName(q.element), g.active() ? "graded" : "non-graded");
+  return {false, 0, text};
+}
+
+// The mesh refined each direction apart: the in-plane ladder at the run's nz and the thickness
+// ladder at its in-plane mesh (and the finer ones), whose bounds add.
+struct DirectionsApart {
+  ErrorTerm inPlane, thickness;
+  bool measured() const { return inPlane.measured && thickness.measured; }
+  double relative() const { return inPlane.relative + thickness.relative; }
+};
+
+DirectionsApart eachDirectionApart(const FemParameters& q, const Grading& g) {
+  const MeshLadder inPlane = meshLadder(q, g, false);
+  return {inPlane.held ? inPlane.term : notInTheStudy(q, g), thicknessTerm(q, g)};
+}
+
+// Refined each direction apart, the bar assumes that the in-plane and the thickness errors add (the
+// thickness error measured on the run's in-plane mesh and the finer ones, not on the limit). Where
+// the ladder refined in every direction holds the run but does not converge, its other meshes test
+// that: each bounded the same way must share a limit with the run (core shareALimit), and at least
+// one must be bounded, or the assumption is untested. Returns the test, and whether it passed.
+struct DirectionsTest {
+  bool passed = false;
+  std::string text;
+};
+
+DirectionsTest testDirectionsApart(const FemParameters& q, const Grading& g, const MeshLadder& all,
+                                   const DirectionsApart& run) {
+  std::vector<BoundedValue> values{{all.rows[all.member]->mu, run.relative()}};
+  std::string others;
+  for (int k = 0; k < 3; ++k) {
+    if (k == all.member) continue;
+    FemParameters other = q;
+    other.nx = other.ny = all.rows[k]->n;
+    other.nz = all.rows[k]->nz;
+    const DirectionsApart apart = eachDirectionApart(other, g);
+    if (!apart.measured()) continue;
+    values.push_back({all.rows[k]->mu, apart.relative()});
+    char text[120];
+    std::snprintf(text, sizeof text, "%s%dx%dx%d %.6f +- %s", others.empty() ? "" : ", ", other.nx, other.nx, other.nz,
+                  all.rows[k]->mu, percent(apart.relative()).c_str());
+    others += text;
+  }
+  if (values.size() < 2)
+    return {false, "no other mesh of the ladder refined in every direction is bounded each direction apart, so "
+                   "their sum is untested"};
+  if (!shareALimit(values.data(), int(values.size())))
+    return {false, "bounded the same way, " + others + " share no limit with the run's " + percent(run.relative()) +
+                       ": the in-plane and thickness errors do not add"};
+  return {true, "tested against the ladder refined in every direction: " + others + " share a limit with the run"};
+}
+
 }  // namespace
 
 DiscretisationError discretisationError(const FemParameters& q, const Grading& g, double dtRatio) {
@@ -352,10 +436,36 @@ DiscretisationError discretisationError(const FemParameters& q, const Grading& g
     e.basis = e.kineticBasis = outside;
     return e;
   }
-  bool coversThickness = false;
-  e.mesh = meshTerm(q, g, &coversThickness);
-  e.thickness = coversThickness ? ErrorTerm{true, 0.0, "in the mesh ladder (all directions refined)", q.normalFilter.active()}
-                               : thicknessTerm(q, g);
+  // The ladder refined in every direction first: it bounds the thickness too. Where the study holds
+  // none with the run's mesh, each direction apart; where it holds one that does not converge, each
+  // direction apart if that is measured and passes the ladder's test (refined together, in-plane and
+  // thickness errors of opposite signs can keep a ladder out of its asymptotic range).
+  const MeshLadder all = meshLadder(q, g, true);
+  bool coversThickness = all.held;
+  const ErrorTerm inTheLadder{true, 0.0, "in the mesh ladder (all directions refined)", q.normalFilter.active()};
+  if (all.held && all.term.measured) {
+    e.mesh = all.term;
+    e.thickness = inTheLadder;
+  } else {
+    const DirectionsApart apart = eachDirectionApart(q, g);
+    if (!all.held) {
+      e.mesh = apart.inPlane;
+      e.thickness = apart.thickness;
+    } else {
+      const DirectionsTest test = apart.measured() ? testDirectionsApart(q, g, all, apart) : DirectionsTest{};
+      coversThickness = !test.passed;
+      if (test.passed) {
+        e.mesh = apart.inPlane;
+        e.mesh.basis = all.term.basis + "; each direction apart, " + apart.inPlane.basis + " (" + test.text + ")";
+        e.thickness = apart.thickness;
+      } else {
+        e.mesh = all.term;
+        e.mesh.basis += "; each direction apart: " +
+                        (apart.measured() ? test.text : (apart.inPlane.measured ? apart.thickness : apart.inPlane).basis);
+        e.thickness = inTheLadder;
+      }
+    }
+  }
   e.timeStep = timeStepTerm(q, dtRatio);
   e.contact = contactTerm(q);
   const ErrorTerm* terms[] = {&e.mesh, &e.thickness, &e.timeStep, &e.contact};
@@ -377,12 +487,10 @@ DiscretisationError discretisationError(const FemParameters& q, const Grading& g
 }
 
 std::string withErrorBar(double mu, const DiscretisationError& e) {
-  char text[600];
-  if (e.measured)
-    std::snprintf(text, sizeof text, "%.6f +- %s (discretisation: %s)", mu, percent(e.relative).c_str(), e.basis.c_str());
-  else
-    std::snprintf(text, sizeof text, "%.6f (discretisation error not measured: %s)", mu, e.basis.c_str());
-  return text;
+  char value[32];
+  std::snprintf(value, sizeof value, "%.6f", mu);
+  if (e.measured) return std::string(value) + " +- " + percent(e.relative) + " (discretisation: " + e.basis + ")";
+  return std::string(value) + " (discretisation error not measured: " + e.basis + ")";
 }
 
 std::string withKineticErrorBar(double mu, const DiscretisationError& e) {

@@ -13,6 +13,8 @@ namespace {
 using gradfric::judgeLadder;
 using gradfric::LadderOutcome;
 using gradfric::LadderRung;
+using gradfric::BoundedValue;
+using gradfric::shareALimit;
 
 constexpr double kLimit = 0.93;
 
@@ -103,6 +105,24 @@ TEST(RefinementLadder, AValueIsBoundedThroughAFinerOneByTheTriangleInequality) {
   EXPECT_NEAR(boundThroughFinerValue(a, b, 0.01),
               (0.05 + gradfric::campaign::t95(9) * std::sqrt(0.002 * 0.002 + 0.001 * 0.001) + 0.01 * 0.85) / (0.99 * 0.85),
               1e-12);
+}
+
+TEST(RefinementLadder, BoundsShareALimitOnlyWhereTheirIntervalsOverlap) {
+  // |v - L| <= b L holds L in [v / (1 + b), v / (1 - b)]: 1 +- 1 % holds [0.990, 1.010], 1.03 +- 1 %
+  // holds [1.0198, 1.0404] (apart); at 2 % they are [0.980, 1.020] and [1.0098, 1.0510] (overlap).
+  const BoundedValue apart[2] = {{1.0, 0.01}, {1.03, 0.01}}, overlap[2] = {{1.0, 0.02}, {1.03, 0.02}};
+  EXPECT_FALSE(shareALimit(apart, 2));
+  EXPECT_TRUE(shareALimit(overlap, 2));
+  // The exact limit 1 of mu(h) = 1 + 0.05 h^2 lies in every bound that holds it: they share it.
+  const BoundedValue exact[3] = {{1.2, 0.2}, {1.05, 0.05}, {1.0125, 0.0125}};
+  EXPECT_TRUE(shareALimit(exact, 3));
+  // 1.2 +- 20 % puts the limit at or above 1.0; 0.95 +- 4 % at or below 0.9896: refuted.
+  const BoundedValue tight[2] = {{1.2, 0.2}, {0.95, 0.04}};
+  EXPECT_FALSE(shareALimit(tight, 2));
+  // A single bounded value shares a limit with itself; values of opposite signs share none.
+  EXPECT_TRUE(shareALimit(apart, 1));
+  const BoundedValue signs[2] = {{0.01, 0.5}, {-0.01, 0.5}};
+  EXPECT_FALSE(shareALimit(signs, 2));
 }
 
 }  // namespace

@@ -72,4 +72,14 @@ FinerLadders walkFinerLadders(int coarsest, Held held, Disproves disproves) {
 // half-width.
 double boundThroughFinerValue(const LadderRung& value, const LadderRung& finer, double finerBound);
 
+// Whether some limit L satisfies every bound |value_i - L| <= bound_i |L| (relative bounds, as the
+// rule's): the intervals [v / (1 + b), v / (1 - b)] of positive values overlap. Bounds of two
+// results of one model that share no limit refute the assumption that made them (the FEM's mesh
+// refined each direction apart, checked against the ladder refined in every direction).
+struct BoundedValue {
+  double value = 0;
+  double bound = 0;  // relative to the limit
+};
+bool shareALimit(const BoundedValue* values, int count);
+
 }  // namespace gradfric
