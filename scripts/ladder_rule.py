@@ -34,7 +34,7 @@ def judge(rungs, member):
     a, b, c = (r[0] for r in rungs)
     first, second = b - a, c - b
     h1, h2 = _half(rungs, (-1, 1, 0)), _half(rungs, (0, -1, 1))
-    order = math.log2(abs(first / second)) if second else math.inf
+    order = math.log2(abs(first / second)) if second and first else (-math.inf if second else math.inf)
     v = dict(first=first, second=second, h1=h1, h2=h2, order=order, extrapolated=None, bound=None)
     statistical = any(r[1] for r in rungs)
     if statistical and (abs(first) <= h1 or abs(second) <= h2):

@@ -55,24 +55,21 @@ void splitContact(StudyRow& r) {
   r.filter.speed = slash == std::string::npos ? 0.0 : std::stod(filter.substr(slash + 1));
 }
 
-const std::vector<StudyRow>& studyRows() {
-  static const std::vector<StudyRow> rows = [] {
-    std::vector<StudyRow> parsed;
-    std::istringstream table(kFemStudyTable);
-    std::string line;
-    while (std::getline(table, line)) {
-      if (line.empty() || line[0] == '#') continue;
-      std::istringstream fields(line);
-      StudyRow r;
-      if (fields >> r.law >> r.slipLength >> r.property >> r.delta >> r.n >> r.nz >> r.edgeRatio >> r.edgeBand >>
-          r.element >> r.dtSafety >> r.contact >> r.mu) {
-        splitContact(r);
-        parsed.push_back(r);
-      }
+std::vector<StudyRow> parseStudyTable(const std::string& text) {
+  std::vector<StudyRow> parsed;
+  std::istringstream table(text);
+  std::string line;
+  while (std::getline(table, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream fields(line);
+    StudyRow r;
+    if (fields >> r.law >> r.slipLength >> r.property >> r.delta >> r.n >> r.nz >> r.edgeRatio >> r.edgeBand >>
+        r.element >> r.dtSafety >> r.contact >> r.mu) {
+      splitContact(r);
+      parsed.push_back(r);
     }
-    return parsed;
-  }();
-  return rows;
+  }
+  return parsed;
 }
 
 // The scene the study ran: the paper's plate, the state law, the derived pressure step, no
@@ -118,13 +115,79 @@ bool sameMesh(const StudyRow& r, const EdgeGrading& edge) {
   return near(r.edgeRatio, edge.ratio) && near(r.edgeBand, edge.band);
 }
 
-// The study's mu_s for the settings given (nullptr: not run), on a mesh graded as `edge` (the
-// thickness, time-step and contact terms: the uniform mesh, EdgeGrading{}) with the normal-stress
-// filter `filter` (those terms: none).
-const StudyRow* find(const FemParameters& q, const std::string& property, double delta, int n, int nz,
-                     double dtSafety, const char* contact, const EdgeGrading& edge = {},
-                     const NormalStressFilter& filter = {}) {
-  for (const StudyRow& r : studyRows())
+// The plate and in-plane mesh on which a term's ladder was measured (the time-step and contact
+// terms: the non-graded 100 x 100 plate).
+struct StudiedPlate {
+  std::string property = "none";
+  double delta = 0;
+  int n = 100;
+};
+
+// One run of a term's study on that plate.
+struct StudyRung {
+  int nz;
+  double dtSafety;
+  const char* contact;
+};
+
+// The mesh ladder of one kind holding the run's mesh: refined in every direction (n x n x nz, 2n x 2n x
+// 2nz, 4n x 4n x 4nz) or in-plane (n, 2n, 4n at the run's nz). Of those holding the run's mesh, the
+// finest: the three finest meshes are the likeliest to lie in the asymptotic range (Roache). Every
+// finer ladder the study has must converge as well (core/refinement_ladder.hpp, walkFinerLadders).
+struct MeshLadder {
+  bool held = false;  // the study holds a ladder of this kind with the run's mesh
+  ErrorTerm term;     // its bound of the run's mesh, or why none
+  const StudyRow* rows[3] = {nullptr, nullptr, nullptr};
+  int member = 0;     // the run's mesh in rows
+};
+
+// The mesh refined each direction apart: the in-plane ladder at the run's nz and the thickness
+// ladder at its in-plane mesh (and the finer ones), whose bounds add.
+struct DirectionsApart {
+  ErrorTerm inPlane, thickness;
+  bool measured() const { return inPlane.measured && thickness.measured; }
+  double relative() const { return inPlane.relative + thickness.relative; }
+};
+
+struct DirectionsTest {
+  bool passed = false;
+  std::string text;
+};
+
+// The bounds the study's rows prove (the embedded docs/fem_study.tsv, or another table for tests).
+class StudyBounds {
+public:
+  explicit StudyBounds(const std::vector<StudyRow>& rows) : rows_(rows) {}
+  DiscretisationError discretisationError(const FemParameters& q, const Grading& g, double dtRatio) const;
+
+private:
+  // The study's mu_s for the settings given (nullptr: not run), on a mesh graded as `edge` (the
+  // thickness, time-step and contact terms: the uniform mesh, EdgeGrading{}) with the normal-stress
+  // filter `filter` (those terms: none).
+  const StudyRow* find(const FemParameters& q, const std::string& property, double delta, int n, int nz,
+                       double dtSafety, const char* contact, const EdgeGrading& edge = {},
+                       const NormalStressFilter& filter = {}) const;
+  MeshLadder meshLadder(const FemParameters& q, const Grading& g, bool allDirections) const;
+  template <std::size_t N>
+  bool findRungs(const FemParameters& q, const StudiedPlate& plate, const StudyRung (&rungs)[N],
+                 const NormalStressFilter& filter, const StudyRow* (&m)[N]) const;
+  template <std::size_t N>
+  const char* studyRungs(const FemParameters& q, const StudiedPlate& plate, const StudyRung (&rungs)[N],
+                         const StudyRow* (&m)[N]) const;
+  ErrorTerm thicknessTerm(const FemParameters& q, const Grading& g) const;
+  ErrorTerm timeStepTerm(const FemParameters& q, double dtRatio) const;
+  ErrorTerm contactTerm(const FemParameters& q) const;
+  DirectionsApart eachDirectionApart(const FemParameters& q, const Grading& g) const;
+  DirectionsTest testDirectionsApart(const FemParameters& q, const Grading& g, const MeshLadder& all,
+                                     const DirectionsApart& run) const;
+
+  const std::vector<StudyRow>& rows_;
+};
+
+const StudyRow* StudyBounds::find(const FemParameters& q, const std::string& property, double delta, int n, int nz,
+                                  double dtSafety, const char* contact, const EdgeGrading& edge,
+                                  const NormalStressFilter& filter) const {
+  for (const StudyRow& r : rows_)
     if (r.law == q.frictionLaw.name && near(r.slipLength, q.frictionLaw.slipLength) && r.property == property &&
         std::fabs(r.delta - delta) < 1e-9 && r.n == n && r.nz == nz && sameMesh(r, edge) &&
         r.element == elementTypeName(q.element) && std::fabs(r.dtSafety - dtSafety) < 1e-9 && r.contact == contact &&
@@ -176,18 +239,7 @@ ErrorTerm throughFinerValue(const char* term, const ErrorTerm& own, double value
           std::string(term) + ": own ladder" + own.basis.substr(own.basis.find(" not converged")) + "; " + finest.basis + text};
 }
 
-// The mesh ladder of one kind holding the run's mesh: refined in every direction (n x n x nz, 2n x 2n x
-// 2nz, 4n x 4n x 4nz) or in-plane (n, 2n, 4n at the run's nz). Of those holding the run's mesh, the
-// finest: the three finest meshes are the likeliest to lie in the asymptotic range (Roache). Every
-// finer ladder the study has must converge as well (core/refinement_ladder.hpp, walkFinerLadders).
-struct MeshLadder {
-  bool held = false;  // the study holds a ladder of this kind with the run's mesh
-  ErrorTerm term;     // its bound of the run's mesh, or why none
-  const StudyRow* rows[3] = {nullptr, nullptr, nullptr};
-  int member = 0;     // the run's mesh in rows
-};
-
-MeshLadder meshLadder(const FemParameters& q, const Grading& g, bool allDirections) {
+MeshLadder StudyBounds::meshLadder(const FemParameters& q, const Grading& g, bool allDirections) const {
   const std::string property = gradingName(g);
   const double delta = g.active() ? g.delta : 0.0;
   // The ladder whose coarsest mesh is n x n x nz (nz doubling with n when refined in every direction).
@@ -242,25 +294,10 @@ MeshLadder meshLadder(const FemParameters& q, const Grading& g, bool allDirectio
   return ladder;
 }
 
-// The plate and in-plane mesh on which a term's ladder was measured (the time-step and contact
-// terms: the non-graded 100 x 100 plate).
-struct StudiedPlate {
-  std::string property = "none";
-  double delta = 0;
-  int n = 100;
-};
-
-// One run of a term's study on that plate.
-struct StudyRung {
-  int nz;
-  double dtSafety;
-  const char* contact;
-};
-
 // Every rung found with this filter into m; false if one is missing.
 template <std::size_t N>
-bool findRungs(const FemParameters& q, const StudiedPlate& plate, const StudyRung (&rungs)[N],
-               const NormalStressFilter& filter, const StudyRow* (&m)[N]) {
+bool StudyBounds::findRungs(const FemParameters& q, const StudiedPlate& plate, const StudyRung (&rungs)[N],
+                            const NormalStressFilter& filter, const StudyRow* (&m)[N]) const {
   bool complete = true;
   for (std::size_t k = 0; k < N; ++k)
     complete = (m[k] = find(q, plate.property, plate.delta, plate.n, rungs[k].nz, rungs[k].dtSafety, rungs[k].contact,
@@ -273,8 +310,8 @@ bool findRungs(const FemParameters& q, const StudiedPlate& plate, const StudyRun
 // it (the thickness, time-step and contact studies were first made without the filter). Returns
 // ", with the filter" or "" for the term's text; m[k] null where a rung is missing.
 template <std::size_t N>
-const char* studyRungs(const FemParameters& q, const StudiedPlate& plate, const StudyRung (&rungs)[N],
-                       const StudyRow* (&m)[N]) {
+const char* StudyBounds::studyRungs(const FemParameters& q, const StudiedPlate& plate, const StudyRung (&rungs)[N],
+                                    const StudyRow* (&m)[N]) const {
   if (q.normalFilter.active() && findRungs(q, plate, rungs, q.normalFilter, m)) return ", with the filter";
   findRungs(q, plate, rungs, NormalStressFilter{}, m);
   return "";
@@ -296,7 +333,7 @@ std::string thicknessLadderName(const StudiedPlate& plate, const char* filter) {
 // in-plane mesh (refined alone through the thickness, the corner singularity converges differently
 // on each), so the same plate's ladders on every finer in-plane mesh the study has must converge
 // too, and the largest of their bounds is taken.
-ErrorTerm thicknessTerm(const FemParameters& q, const Grading& g) {
+ErrorTerm StudyBounds::thicknessTerm(const FemParameters& q, const Grading& g) const {
   const int member = q.nz == 5 ? 0 : q.nz == 10 ? 1 : q.nz == 20 ? 2 : -1;
   if (member < 0) return {false, 0, "nz other than 5, 10 or 20 (the thickness study: 5/10/20)"};
   const StudyRung rungs[3] = {{5, 0.6, "penalty"}, {10, 0.6, "penalty"}, {20, 0.6, "penalty"}};
@@ -327,7 +364,7 @@ ErrorTerm thicknessTerm(const FemParameters& q, const Grading& g) {
 
 // The bound of dt_safety 0.6 (a run at a smaller step is bounded by it too) from the ladder
 // 0.6/0.3/0.15; where that does not converge, through 0.075 if 0.3/0.15/0.075 does.
-ErrorTerm timeStepTerm(const FemParameters& q, double dtRatio) {
+ErrorTerm StudyBounds::timeStepTerm(const FemParameters& q, double dtRatio) const {
   if (dtRatio > 0.6 + 1e-9) return {false, 0, "dt above 0.6 of the stable step"};
   const StudyRow* m[3];
   const char* filter = studyRungs(q, StudiedPlate{}, {{5, 0.6, "penalty"}, {5, 0.3, "penalty"}, {5, 0.15, "penalty"}}, m);
@@ -347,7 +384,7 @@ ErrorTerm timeStepTerm(const FemParameters& q, double dtRatio) {
 
 // The penalty against the kinematic contact (the exact reference, not a refinement) on the
 // non-graded 100 x 100 mesh: 1.25 |penalty - kinematic| / kinematic.
-ErrorTerm contactTerm(const FemParameters& q) {
+ErrorTerm StudyBounds::contactTerm(const FemParameters& q) const {
   if (q.contactMethod == ContactMethod::Kinematic) return {true, 0.0, "kinematic contact (the reference)"};
   const double defaultStiffness = defaultPenaltyStiffness(q.plate);
   if (!near(q.kn, defaultStiffness) || !near(q.kt, defaultStiffness))
@@ -378,15 +415,7 @@ ErrorTerm notInTheStudy(const FemParameters& q, const Grading& g) {
   return {false, 0, text};
 }
 
-// The mesh refined each direction apart: the in-plane ladder at the run's nz and the thickness
-// ladder at its in-plane mesh (and the finer ones), whose bounds add.
-struct DirectionsApart {
-  ErrorTerm inPlane, thickness;
-  bool measured() const { return inPlane.measured && thickness.measured; }
-  double relative() const { return inPlane.relative + thickness.relative; }
-};
-
-DirectionsApart eachDirectionApart(const FemParameters& q, const Grading& g) {
+DirectionsApart StudyBounds::eachDirectionApart(const FemParameters& q, const Grading& g) const {
   const MeshLadder inPlane = meshLadder(q, g, false);
   return {inPlane.held ? inPlane.term : notInTheStudy(q, g), thicknessTerm(q, g)};
 }
@@ -396,13 +425,8 @@ DirectionsApart eachDirectionApart(const FemParameters& q, const Grading& g) {
 // the ladder refined in every direction holds the run but does not converge, its other meshes test
 // that: each bounded the same way must share a limit with the run (core shareALimit), and at least
 // one must be bounded, or the assumption is untested. Returns the test, and whether it passed.
-struct DirectionsTest {
-  bool passed = false;
-  std::string text;
-};
-
-DirectionsTest testDirectionsApart(const FemParameters& q, const Grading& g, const MeshLadder& all,
-                                   const DirectionsApart& run) {
+DirectionsTest StudyBounds::testDirectionsApart(const FemParameters& q, const Grading& g, const MeshLadder& all,
+                                                const DirectionsApart& run) const {
   std::vector<BoundedValue> values{{all.rows[all.member]->mu, run.relative()}};
   std::string others;
   for (int k = 0; k < 3; ++k) {
@@ -427,9 +451,7 @@ DirectionsTest testDirectionsApart(const FemParameters& q, const Grading& g, con
   return {true, "tested against the ladder refined in every direction: " + others + " share a limit with the run"};
 }
 
-}  // namespace
-
-DiscretisationError discretisationError(const FemParameters& q, const Grading& g, double dtRatio) {
+DiscretisationError StudyBounds::discretisationError(const FemParameters& q, const Grading& g, double dtRatio) const {
   DiscretisationError e;
   const std::string outside = outsideStudiedScene(q, g);
   if (!outside.empty()) {
@@ -460,8 +482,13 @@ DiscretisationError discretisationError(const FemParameters& q, const Grading& g
         e.thickness = apart.thickness;
       } else {
         e.mesh = all.term;
-        e.mesh.basis += "; each direction apart: " +
-                        (apart.measured() ? test.text : (apart.inPlane.measured ? apart.thickness : apart.inPlane).basis);
+        e.mesh.basis += "; each direction apart: ";
+        if (apart.measured())
+          e.mesh.basis += test.text;
+        else
+          e.mesh.basis += !apart.inPlane.measured && !apart.thickness.measured
+                              ? apart.inPlane.basis + "; " + apart.thickness.basis
+                              : (apart.inPlane.measured ? apart.thickness : apart.inPlane).basis;
         e.thickness = inTheLadder;
       }
     }
@@ -484,6 +511,19 @@ DiscretisationError discretisationError(const FemParameters& q, const Grading& g
   }
   e.kineticBasis = "no convergence study of mu_k with the state law yet";
   return e;
+}
+
+}  // namespace
+
+DiscretisationError discretisationError(const FemParameters& q, const Grading& g, double dtRatio) {
+  static const std::vector<StudyRow> rows = parseStudyTable(kFemStudyTable);
+  return StudyBounds(rows).discretisationError(q, g, dtRatio);
+}
+
+DiscretisationError discretisationError(const FemParameters& q, const Grading& g, double dtRatio,
+                                        const std::string& studyTable) {
+  const std::vector<StudyRow> rows = parseStudyTable(studyTable);
+  return StudyBounds(rows).discretisationError(q, g, dtRatio);
 }
 
 std::string withErrorBar(double mu, const DiscretisationError& e) {

@@ -288,3 +288,64 @@ TEST(FemErrorBar, AFilteredRunsTimeStepIsBoundedThroughTheFinerStepWhereItsOwnLa
   // Its partner +0.2 (0.807608, 0.806817, 0.805256: the steps grow) does not.
   EXPECT_FALSE(discretisationError(q, linear(GradedProperty::Friction, 0.2), 0.6).measured);
 }
+
+namespace {
+
+// A study table of one plate (friction +0.2, filtered as the study's) on the meshes 50/100/200 x
+// 5/10/20, mu(n, nz) from `mu` of h = 50 / n and k = 5 / nz; `skip` leaves one mesh out.
+template <class Mu>
+std::string gridTable(Mu mu, int skipN = 0, int skipNz = 0) {
+  std::string table;
+  for (int n : {50, 100, 200})
+    for (int nz : {5, 10, 20}) {
+      if (n == skipN && nz == skipNz) continue;
+      char row[160];
+      std::snprintf(row, sizeof row, "state\t2.5e-8\tfriction\t0.2\t%d\t%d\t1\t0\tq1\t0.6\tpenalty,pc=1e-6/0.1\t%.9f\n", n,
+                    nz, mu(50.0 / n, 5.0 / nz));
+      table += row;
+    }
+  return table;
+}
+
+FemParameters filtered(int n, int nz) {
+  FemParameters q;
+  q.nx = q.ny = n;
+  q.nz = nz;
+  q.normalFilter.length = 1e-6;
+  q.normalFilter.speed = 0.1;
+  return q;
+}
+
+}  // namespace
+
+TEST(FemErrorBar, WhereTheLadderInEveryDirectionDoesNotConvergeEachDirectionApartBoundsTheRun) {
+  // mu = 0.8 + 0.014 h - 0.01 k^2: the in-plane error first order and positive, the thickness error
+  // second order and negative. Refined together they nearly cancel on the coarse meshes: 0.804,
+  // 0.8045, 0.802875 (steps +0.0005, -0.001625: no convergence). Apart, each converges to its limit.
+  const auto mu = [](double h, double k) { return 0.8 + 0.014 * h - 0.01 * k * k; };
+  const Grading plus = linear(GradedProperty::Friction, 0.2);
+  const DiscretisationError e = discretisationError(filtered(100, 10), plus, 0.6, gridTable(mu));
+  ASSERT_TRUE(e.mesh.measured) << e.mesh.basis;
+  ASSERT_TRUE(e.thickness.measured) << e.thickness.basis;
+  // In-plane at nz 10: 0.8115, 0.8045, 0.801, order 1, extrapolated 0.7975 (its exact limit).
+  EXPECT_NEAR(e.mesh.relative, 1.25 * (0.8045 - 0.7975) / 0.7975, 1e-9);
+  // Thickness: nz 5/10/20 on 100 (extrapolated 0.807, exact) and on 200 (0.8035): the larger bound.
+  EXPECT_NEAR(e.thickness.relative, std::max(1.25 * (0.807 - 0.8045) / 0.807, 1.25 * (0.8035 - 0.801) / 0.8035), 1e-9);
+  // Their sum holds the true error of the run against the limit 0.8.
+  EXPECT_GE(e.mesh.relative + e.thickness.relative, (0.8045 - 0.8) / 0.8);
+  EXPECT_NE(e.mesh.basis.find("all directions (run 100x100x10) give 0.804000, 0.804500, 0.802875"), std::string::npos)
+      << e.mesh.basis;
+  EXPECT_NE(e.mesh.basis.find("share a limit with the run"), std::string::npos) << e.mesh.basis;
+  // Without 50 x 50 x 20 neither 50x50x5 (its thickness ladder) nor 200x200x20 (its in-plane ladder at
+  // 20) is bounded apart: the sum is untested, so no bar.
+  const DiscretisationError untested = discretisationError(filtered(100, 10), plus, 0.6, gridTable(mu, 50, 20));
+  EXPECT_FALSE(untested.mesh.measured);
+  EXPECT_NE(untested.mesh.basis.find("untested"), std::string::npos) << untested.mesh.basis;
+  // The study's own filtered friction +0.2 plate: neither direction converges on 20 layers or 100 x
+  // 100 (0.813066, 0.808637, 0.805256; 0.804415, 0.806817, 0.808637: order about 0.4), so no bar.
+  const DiscretisationError study = discretisationError(filtered(200, 20), plus, 0.6);
+  EXPECT_FALSE(study.measured);
+  EXPECT_NE(study.mesh.basis.find("each direction apart: mesh not converged: 50x50/100/200 x 20"), std::string::npos)
+      << study.mesh.basis;
+}
+

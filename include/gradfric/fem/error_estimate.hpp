@@ -28,6 +28,10 @@ struct DiscretisationError {
 
 // params as resolved (PlateModel::params()); dtRatio = dt / stable step of the run.
 DiscretisationError discretisationError(const FemParameters& params, const Grading& grading, double dtRatio);
+// The same from another study table (the text of a fem_study.tsv): the rules checked on ladders of
+// known limit (tests).
+DiscretisationError discretisationError(const FemParameters& params, const Grading& grading, double dtRatio,
+                                        const std::string& studyTable);
 
 // "0.883912 +- 1.3 % (discretisation: mesh 0.5 %, ...)" or "0.883912 (discretisation error not
 // measured: ...)".
