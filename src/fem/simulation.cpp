@@ -20,6 +20,7 @@
 #include "gradfric/fem/pressed_equilibrium.hpp"
 #include "gradfric/physics/friction_laws.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <string>
@@ -117,9 +118,13 @@ private:
     return guardedCallback([&] {
       auto* e = static_cast<Experiment*>(ctx);
       if (!e->sampled(step) || e->model_.phase() != Phase::Sliding || e->r_.time.size() % 500 != 0) return;
+      // The wall time left is a bound: the run stops earlier once its observables are known.
+      const double tSliding = t - e->r_.slideStart, wall = MPI_Wtime() - e->wall0_;
+      const double left = tSliding > 0 ? wall * std::max(0.0, e->q_.slideTime - tSliding) / tSliding : 0.0;
       GF_CALL(PetscPrintf(e->model_.comm(),
-                          "  sliding: t - t0 = %.4e s, mu = %.5f, slipping nodes %lld, sticking %lld\n",
-                          t - e->r_.slideStart, e->sample_.mu, e->sample_.totals.slip, e->sample_.totals.stick));
+                          "  sliding: t - t0 = %.4e s, mu = %.5f, slipping nodes %lld, sticking %lld; wall %.0f s, "
+                          "at most %.0f s left\n",
+                          tSliding, e->sample_.mu, e->sample_.totals.slip, e->sample_.totals.stick, wall, left));
     });
   }
 
