@@ -104,9 +104,11 @@ std::string gradingName(const Grading& g) {
   return g.property == GradedProperty::YoungsModulus ? "E" : "friction";
 }
 
+// Two decimals; below 0.1 % two significant digits, so a small term is not printed as 0.00 %.
 std::string percent(double fraction) {
   char text[32];
-  std::snprintf(text, sizeof text, "%.2f %%", 100 * fraction);
+  const double value = 100 * fraction;
+  std::snprintf(text, sizeof text, value != 0.0 && std::fabs(value) < 0.1 ? "%.2g %%" : "%.2f %%", value);
   return text;
 }
 
@@ -363,20 +365,39 @@ ErrorTerm StudyBounds::thicknessTerm(const FemParameters& q, const Grading& g) c
 }
 
 // The bound of dt_safety 0.6 (a run at a smaller step is bounded by it too) from the ladder
-// 0.6/0.3/0.15; where that does not converge, through 0.075 if 0.3/0.15/0.075 does.
+// 0.6/0.3/0.15 on the non-graded 100 x 100 x 5 plate. As the mesh term: every finer ladder the study
+// has (0.3/0.15/0.075, ...) must converge too, and where 0.6/0.3/0.15 does not, 0.6 is bounded
+// through the finest step of the finer ones.
 ErrorTerm StudyBounds::timeStepTerm(const FemParameters& q, double dtRatio) const {
   if (dtRatio > 0.6 + 1e-9) return {false, 0, "dt above 0.6 of the stable step"};
   const StudyRow* m[3];
   const char* filter = studyRungs(q, StudiedPlate{}, {{5, 0.6, "penalty"}, {5, 0.3, "penalty"}, {5, 0.15, "penalty"}}, m);
   if (!m[0] || !m[1] || !m[2]) return {false, 0, "dt ladder 0.6/0.3/0.15 not measured for this D_c"};
-  char ladder[120];
-  std::snprintf(ladder, sizeof ladder, "dt_safety 0.6/0.3/0.15 (non-graded 100x100%s)", filter);
-  ErrorTerm term = ladderTerm("dt", ladder, m, 0);
-  const StudyRow* f[3] = {m[1], m[2], nullptr};
-  if (!term.measured && (f[2] = find(q, "none", 0, 100, 5, 0.075, "penalty", {}, *filter ? q.normalFilter : NormalStressFilter{}))) {
-    std::snprintf(ladder, sizeof ladder, "dt_safety 0.3/0.15/0.075 (non-graded 100x100%s)", filter);
-    const ErrorTerm finer = ladderTerm("dt", ladder, f, 2);
-    if (finer.measured) term = throughFinerValue("dt", term, m[0]->mu, finer, f[2]->mu);
+  const NormalStressFilter rowsFilter = *filter ? q.normalFilter : NormalStressFilter{};
+  // The ladder 0.6/k, 0.3/k, 0.15/k (k = 1, 2, 4, ...).
+  const auto ladderName = [&](int k) {
+    char text[120];
+    std::snprintf(text, sizeof text, "dt_safety %g/%g/%g (non-graded 100x100%s)", 0.6 / k, 0.3 / k, 0.15 / k, filter);
+    return std::string(text);
+  };
+  const StudyRow* f[3];
+  const auto findLadder = [&](int k) {
+    bool complete = true;
+    for (int i = 0; i < 3; ++i)
+      complete = (f[i] = find(q, "none", 0, 100, 5, 0.6 / (k << i), "penalty", {}, rowsFilter)) != nullptr && complete;
+    return complete;
+  };
+  ErrorTerm check, term;
+  const FinerLadders finer = walkFinerLadders(
+      1, findLadder, [&](int k) { return !(check = ladderTerm("dt", ladderName(k), f, 0)).measured; });
+  if (finer.disproving) {
+    term = {false, 0, check.basis + "; so the coarser " + ladderName(1) + " proves no bar"};
+  } else {
+    term = ladderTerm("dt", ladderName(1), m, 0);
+    if (!term.measured && finer.finest > 1) {
+      findLadder(finer.finest);  // the walk's last probe (one finer) left f partly filled
+      term = throughFinerValue("dt", term, m[0]->mu, ladderTerm("dt", ladderName(finer.finest), f, 2), f[2]->mu);
+    }
   }
   term.filtered = *filter != '\0';
   return term;
