@@ -14,7 +14,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from ladder_rule import finer_not_converged, judge, through_finer  # noqa: E402  the rule the code's bars use
+from ladder_rule import finer_not_converged, judge, shares_a_limit, through_finer  # noqa: E402  the rule the code's bars use
 
 G, H, P = 10e6 / (2 * (1 + 1 / 3)), 5e-5, 1e4
 
@@ -159,13 +159,6 @@ def thickness_bound(rows, key, n, nz):
         bounds.append(bound)
         n *= 2
     return max(bounds) if bounds else None
-
-
-def shares_a_limit(values):
-    """Whether some limit L satisfies |v - L| <= b L for every (v, b) (positive values), as core shareALimit."""
-    low = max(v / (1 + b) for v, b in values)
-    high = min((v / (1 - b) for v, b in values if b < 1), default=math.inf)
-    return low <= high
 
 
 def each_direction_apart(rows):

@@ -78,3 +78,13 @@ def through_finer(ladders, i):
     # |mu - mu_lim| <= |mu - f| + h + b |f|, relative to |mu_lim| >= (1 - b) |f|
     return 4 * n, (abs(value[0] - f[0]) + _half([value, f, (0.0, 0.0, 0)], (1, -1, 0)) + bound * abs(f[0])) / (
         (1 - bound) * abs(f[0]))
+
+
+def shares_a_limit(values):
+    """Whether some limit L satisfies |v - L| <= b |L| for every (v, b): the intervals [v / (1 + b),
+    v / (1 - b)] overlap (values of one sign), as the code's shareALimit (core/refinement_ladder.hpp)."""
+    if any(v * values[0][0] <= 0 for v, _ in values[1:]):
+        return False
+    low = max(abs(v) / (1 + b) for v, b in values)
+    high = min((abs(v) / (1 - b) for v, b in values if b < 1), default=math.inf)
+    return low <= high

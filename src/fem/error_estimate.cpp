@@ -149,6 +149,10 @@ struct DirectionsApart {
   ErrorTerm inPlane, thickness;
   bool measured() const { return inPlane.measured && thickness.measured; }
   double relative() const { return inPlane.relative + thickness.relative; }
+  std::string whyNot() const {  // the reasons of the terms without a bound
+    if (!inPlane.measured && !thickness.measured) return inPlane.basis + "; " + thickness.basis;
+    return inPlane.measured ? thickness.basis : inPlane.basis;
+  }
 };
 
 struct DirectionsTest {
@@ -267,7 +271,6 @@ MeshLadder StudyBounds::meshLadder(const FemParameters& q, const Grading& g, boo
     const int coarsest = q.nx >> member, coarsestNz = allDirections ? q.nz >> member : q.nz;
     if (coarsest < 1 || (coarsest << member) != q.nx) continue;
     if (allDirections && (coarsestNz < 1 || (coarsestNz << member) != q.nz)) continue;
-    const StudyRow** m = ladder.rows;
     if (!findLadder(coarsest, coarsestNz, ladder.rows)) continue;
     ladder.held = true;
     ladder.member = member;
@@ -290,7 +293,7 @@ MeshLadder StudyBounds::meshLadder(const FemParameters& q, const Grading& g, boo
     const int finest = finer.finest;
     findLadder(finest, nzOf(finest), f);  // the walk's last probe (one finer) left f partly filled
     ladder.term =
-        throughFinerValue("mesh", own, m[member]->mu, ladderTerm("mesh", ladderName(finest, nzOf(finest)), f, 2), f[2]->mu);
+        throughFinerValue("mesh", own, ladder.rows[member]->mu, ladderTerm("mesh", ladderName(finest, nzOf(finest)), f, 2), f[2]->mu);
     return ladder;
   }
   return ladder;
@@ -382,10 +385,8 @@ ErrorTerm StudyBounds::timeStepTerm(const FemParameters& q, double dtRatio) cons
   };
   const StudyRow* f[3];
   const auto findLadder = [&](int k) {
-    bool complete = true;
-    for (int i = 0; i < 3; ++i)
-      complete = (f[i] = find(q, "none", 0, 100, 5, 0.6 / (k << i), "penalty", {}, rowsFilter)) != nullptr && complete;
-    return complete;
+    const StudyRung rungs[3] = {{5, 0.6 / k, "penalty"}, {5, 0.3 / k, "penalty"}, {5, 0.15 / k, "penalty"}};
+    return findRungs(q, StudiedPlate{}, rungs, rowsFilter, f);
   };
   ErrorTerm check, term;
   const FinerLadders finer = walkFinerLadders(
@@ -503,13 +504,7 @@ DiscretisationError StudyBounds::discretisationError(const FemParameters& q, con
         e.thickness = apart.thickness;
       } else {
         e.mesh = all.term;
-        e.mesh.basis += "; each direction apart: ";
-        if (apart.measured())
-          e.mesh.basis += test.text;
-        else
-          e.mesh.basis += !apart.inPlane.measured && !apart.thickness.measured
-                              ? apart.inPlane.basis + "; " + apart.thickness.basis
-                              : (apart.inPlane.measured ? apart.thickness : apart.inPlane).basis;
+        e.mesh.basis += "; each direction apart: " + (apart.measured() ? test.text : apart.whyNot());
         e.thickness = inTheLadder;
       }
     }
