@@ -10,6 +10,7 @@
 // no bar, with the reason.
 #include "gradfric/ensemble/sbm_error_estimate.hpp"
 
+#include "gradfric/core/data_table.hpp"
 #include "gradfric/core/refinement_ladder.hpp"
 #include "gradfric/ensemble/sbm_study_data.hpp"  // generated: kSbmStudyTable, the text of docs/sbm_study.tsv
 #include "gradfric/physics/field.hpp"
@@ -164,19 +165,21 @@ SbmBarTerm timeStepTerm(const std::vector<SbmStudyRow>& study, const sbm::Parame
 
 std::vector<SbmStudyRow> parseSbmStudy(const std::string& text) {
   std::vector<SbmStudyRow> rows;
-  std::istringstream table(text);
-  std::string line;
-  while (std::getline(table, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    std::istringstream fields(line);
+  forEachDataRow(text, "the spring-block study table (docs/sbm_study.tsv)", [&](std::istringstream& fields) {
     SbmStudyRow r;
     std::string dt;
     if (!(fields >> r.kind >> r.law >> r.grading >> r.delta >> r.blocks >> r.observable >> r.realisations >> r.value >>
           r.stdError >> dt))
-      continue;
-    r.dt = dt == "default" ? 0.0 : std::stod(dt);
+      return false;
+    if (dt == "default") {
+      r.dt = 0.0;
+    } else {
+      std::istringstream step(dt);
+      if (!(step >> r.dt) || !step.eof()) return false;
+    }
     rows.push_back(r);
-  }
+    return true;
+  });
   return rows;
 }
 

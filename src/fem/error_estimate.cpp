@@ -18,6 +18,7 @@
 // applied to the graded ones (said in the basis). The terms are added: their signs are not known.
 #include "gradfric/fem/error_estimate.hpp"
 
+#include "gradfric/core/data_table.hpp"
 #include "gradfric/core/refinement_ladder.hpp"
 #include "gradfric/fem/fem_study_data.hpp"  // generated: kFemStudyTable, the text of docs/fem_study.tsv
 #include "gradfric/physics/field.hpp"
@@ -57,18 +58,15 @@ void splitContact(StudyRow& r) {
 
 std::vector<StudyRow> parseStudyTable(const std::string& text) {
   std::vector<StudyRow> parsed;
-  std::istringstream table(text);
-  std::string line;
-  while (std::getline(table, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    std::istringstream fields(line);
+  forEachDataRow(text, "the FEM study table (docs/fem_study.tsv)", [&](std::istringstream& fields) {
     StudyRow r;
-    if (fields >> r.law >> r.slipLength >> r.property >> r.delta >> r.n >> r.nz >> r.edgeRatio >> r.edgeBand >>
-        r.element >> r.dtSafety >> r.contact >> r.mu) {
-      splitContact(r);
-      parsed.push_back(r);
-    }
-  }
+    if (!(fields >> r.law >> r.slipLength >> r.property >> r.delta >> r.n >> r.nz >> r.edgeRatio >> r.edgeBand >>
+          r.element >> r.dtSafety >> r.contact >> r.mu))
+      return false;
+    splitContact(r);
+    parsed.push_back(r);
+    return true;
+  });
   return parsed;
 }
 

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <stdexcept>
 #include <string>
 
 using namespace gradfric;
@@ -196,4 +197,24 @@ TEST(SbmErrorEstimate, TheEmbeddedStudyHoldsBothLaddersAndTheStep) {
   const SbmDiscretisation bar = barOf(setting(120), rows);
   EXPECT_TRUE(bar.timeStep.measured) << bar.basis;
   EXPECT_NE(bar.basis.find("lattice N_b 120/240/480"), std::string::npos) << bar.basis;
+}
+
+TEST(SbmErrorEstimate, AStudyRowThatDoesNotReadIsAnErrorNotADroppedRung) {
+  const std::string header = "# kind law grading delta N_b observable R value std_error dt\n";
+  const std::vector<SbmStudyRow> rows =
+      parseSbmStudy(header + "lattice\tcoulomb\tnone\t0\t60\tmu_s\t100\t0.91\t1e-3\tdefault\n"
+                             "dt\tcoulomb\tfriction\t0.2\t120\tmu_s\t3\t8e-4\t0\t3e-8\n");
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_EQ(rows[0].dt, 0.0);
+  EXPECT_EQ(rows[1].dt, 3e-8);
+  for (const std::string bad : {"lattice\tcoulomb\tnone\t0\t60\tmu_s\t100\t0.91\t1e-3\n",
+                                "dt\tcoulomb\tfriction\t0.2\t120\tmu_s\t3\t8e-4\t0\t3e-8s\n",
+                                "lattice\tcoulomb\tnone\t0\t60\tmu_s\tmany\t0.91\t1e-3\tdefault\n"}) {
+    try {
+      parseSbmStudy(header + bad);
+      ADD_FAILURE() << "no error for " << bad;
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find("docs/sbm_study.tsv), line 2"), std::string::npos) << e.what();
+    }
+  }
 }

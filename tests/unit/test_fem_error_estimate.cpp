@@ -8,6 +8,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 using namespace gradfric;
 using namespace gradfric::fem;
@@ -349,3 +351,21 @@ TEST(FemErrorBar, WhereTheLadderInEveryDirectionDoesNotConvergeEachDirectionApar
       << study.mesh.basis;
 }
 
+
+TEST(FemErrorBar, AStudyRowThatDoesNotReadIsAnErrorNotADroppedRung) {
+  // A mistyped mu_s, a missing column, a column too many: each would otherwise drop one rung of a
+  // ladder without a word, and with it a bar or the reason a bar is missing.
+  const std::string good = "# law d_c property delta nx nz edge_ratio edge_band element dt_safety contact mu_s\n"
+                           "state\t2.5e-8\tnone\t0\t50\t5\t1\t0\tq1\t0.6\tpenalty\t0.950239\n\n";
+  EXPECT_NO_THROW(discretisationError(paperDefaults(), Grading{}, 0.6, good));
+  for (const std::string bad : {"state\t2.5e-8\tnone\t0\t100\t5\t1\t0\tq1\t0.6\tpenalty\t0.93b322\n",
+                                "state\t2.5e-8\tnone\t0\t100\t5\t1\t0\tq1\t0.6\t0.936322\n",
+                                "state\t2.5e-8\tnone\t0\t100\t5\t1\t0\tq1\t0.6\tpenalty\t0.936322\t0.1\n"}) {
+    try {
+      discretisationError(paperDefaults(), Grading{}, 0.6, good + bad);
+      ADD_FAILURE() << "no error for " << bad;
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find("docs/fem_study.tsv), line 4"), std::string::npos) << e.what();
+    }
+  }
+}

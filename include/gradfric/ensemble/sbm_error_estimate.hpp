@@ -29,7 +29,8 @@ struct SbmStudyRow {
   double dt = 0;  // kind dt: the step [s]; lattice: 0 (the default rule)
 };
 
-// The rows of a table in the format of docs/sbm_study.tsv ('#' lines are comments).
+// The rows of a table in the format of docs/sbm_study.tsv ('#' lines are comments); a row that does
+// not read throws std::invalid_argument naming its line (core/data_table.hpp).
 std::vector<SbmStudyRow> parseSbmStudy(const std::string& text);
 // The embedded docs/sbm_study.tsv.
 const std::vector<SbmStudyRow>& sbmStudy();
