@@ -351,7 +351,6 @@ TEST(FemErrorBar, WhereTheLadderInEveryDirectionDoesNotConvergeEachDirectionApar
       << study.mesh.basis;
 }
 
-
 TEST(FemErrorBar, AStudyRowThatDoesNotReadIsAnErrorNotADroppedRung) {
   // A mistyped mu_s, a missing column, a column too many: each would otherwise drop one rung of a
   // ladder without a word, and with it a bar or the reason a bar is missing.
