@@ -108,7 +108,7 @@ _EXTRA_RESULTS = {k: v for k, v in _RESULTS.items() if k not in
 
 def extras(f):
     """(coords, data, attrs) of /fem: dims cell_x, node_x (/fem/properties), cell_y (/fem/fields),
-    node_y (/fem/pressure_response); the normal force along (point, realisation, sample); each
+    node_y (/fem/pressure_response, /fem/first_slip: fem_first_slip_time); the normal force along (point, realisation, sample); each
     /fem/results attribute as a 0-d variable; /fem/derived as attributes."""
     fem = f["fem"]
     coords, data = {}, {}
@@ -132,6 +132,10 @@ def extras(f):
         group = fem["pressure_response"]
         axis(group["node_y"], "node_y")
         data["pressure_response_g"] = _h5.variable(group["g"], ("node_y", "node_x"))
+    if "first_slip" in fem:  # each bottom node's first slip (with first_slip in -friction_observables)
+        group = fem["first_slip"]
+        axis(group["node_y"], "node_y")
+        data["fem_first_slip_time"] = _h5.variable(group["time"], ("node_y", "node_x"))
     if "history" in fem:
         data["normal_force"] = _h5.variable(fem["history/normal_force"], ("point", "realisation", "sample"))
     units = _h5.attributes(fem["results/units"])

@@ -193,8 +193,16 @@ void ContactBoundary::commit() {
 }
 
 void ContactBoundary::resetSlipRecord() {
-  for (Node& n : nodes_) n.everSlipped = false;
+  for (Node& n : nodes_) {
+    n.everSlipped = false;
+    n.firstSlip = std::numeric_limits<double>::quiet_NaN();
+  }
   slipRecord_.clear();
+}
+
+void ContactBoundary::recordFirstSlips(double t) {
+  for (Node& n : nodes_)
+    if (n.state == ContactState::Slip && std::isnan(n.firstSlip)) n.firstSlip = t;
 }
 
 void ContactBoundary::settleFilteredPressure() {

@@ -215,6 +215,8 @@ void OutputFiles::writeResults(const PlateModel& model, const FemRunResult& r, c
       PetscPrintf(model.comm(), "gradfric-fem: no /fem/pressure_response in the results file: %s\n", e.what());
     }
   }
+  std::optional<FirstSlipMap> firstSlips;  // gathered on rank 0 (collective)
+  if (params_.measurement.firstSlipMap) firstSlips = gatherFirstSlipMap(model);
   const std::vector<PropertyProfile> properties = gatherPropertyProfiles(model);  // collective
   const FemSweep campaign = oneRunCampaign(params_, model.grading(), scene);
   io::ResultsFile file = io::ResultsFile::create(comm_, resultsPlan_->workPath(), campaign.layout, campaign.table,
@@ -245,7 +247,7 @@ void OutputFiles::writeResults(const PlateModel& model, const FemRunResult& r, c
   for (const io::Attribute& a : io::optionAttributes(scene)) known.insert(a.name);
   for (const io::Attribute& a : io::optionAttributes(record))
     if (!known.count(a.name)) derived.push_back(a);
-  const RunExtras extras{model, r, response, properties, xdmf, derived};
+  const RunExtras extras{model, r, response, firstSlips, properties, xdmf, derived};
   file.addGroups(runExtrasBytes(extras), [&](hid_t h5) { writeRunExtras(h5, extras); });
   file.markCompleteAndClose();  // complete; renamed into place with the fields files in finish()
   resultsWritten_ = true;

@@ -45,6 +45,23 @@ void writePressureResponse(hid_t fem, const PressureResponseMap& m) {
   writeRealAttribute(map, "moment_over_H", m.momentOverThickness);
 }
 
+// /fem/first_slip/time [ny+1][nx+1] on the bottom node grid (first_slip_map.hpp).
+void writeFirstSlipMap(hid_t fem, const FirstSlipMap& m) {
+  using namespace io;
+  H5Group group = createGroup(fem, "first_slip");
+  const hsize_t dims[2] = {hsize_t(m.ny), hsize_t(m.nx)};
+  H5Space space(GF_H5(H5Screate_simple(2, dims, nullptr)));
+  H5Dataset map(GF_H5(H5Dcreate2(group, "time", H5T_IEEE_F64LE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT)));
+  GF_H5(H5Dwrite(map, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, m.time.data()));
+  describe(map, "s",
+           "time since the start of sliding at which each bottom node first slid, [ny+1][nx+1] (rows along y); "
+           "NaN: it never slid");
+  const H5Dataset nodeY = createCoordinateScale(group, "node_y", m.nodeY, "m", "bottom node position along y");
+  const H5Dataset nodeX = createCoordinateScale(group, "node_x", m.nodeX, "m", "bottom node position along x");
+  attachScale(map, nodeY, 0);
+  attachScale(map, nodeX, 1);
+}
+
 // /fem/results: the run's scalars the campaign layout has no place for, with their units.
 void writeResults(hid_t fem, const PlateModel& model, const FemRunResult& r) {
   using namespace io;
@@ -118,6 +135,7 @@ std::uint64_t runExtrasBytes(const RunExtras& c) {
   bytes += 8 * 8 * static_cast<std::uint64_t>(q.nx + 1) * (q.ny + 1);  // properties, fields
   for (const PropertyProfile& p : c.properties) bytes += 8 * p.values.size() + p.description.size() + 256;
   if (c.response) bytes += 8 * (c.response->g.size() + c.response->nodeX.size() + c.response->nodeY.size());
+  if (c.firstSlips) bytes += 8 * (c.firstSlips->time.size() + c.firstSlips->nodeX.size() + c.firstSlips->nodeY.size());
   for (const auto& a : c.derived) bytes += 3 * (a.name.size() + 128) + a.value.size() + a.unit.size() + a.origin.size();
   return bytes + 64 * 1024 + c.fieldsXdmf.size();
 }
@@ -179,6 +197,7 @@ void writeRunExtras(hid_t file, const RunExtras& c) {
       writeDescribedColumn(properties, p.name, p.values, p.unit, p.description, p.perNode ? node : column);
   }
   if (c.response) writePressureResponse(fem, *c.response);
+  if (c.firstSlips) writeFirstSlipMap(fem, *c.firstSlips);
 }
 
 }  // namespace gradfric::fem

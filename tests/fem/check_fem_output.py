@@ -79,6 +79,12 @@ with h5py.File(out, "r") as f:
     assert np.allclose(f["fem/properties/E"][:], float(scene["plate_E"]))
     assert np.allclose(f["properties/E"][0], float(scene["plate_E"]))
     assert f["fem/pressure_response/g"].shape == (9, 9)
+    # The bottom nodes' first slips (first_slip is in the default -friction_observables): the
+    # earliest is the observer's first slip, the nodes' positions are the axes.
+    first = f["fem/first_slip/time"]
+    assert first.shape == (9, 9) and [d.keys()[0] for d in first.dims] == ["node_y", "node_x"]
+    assert np.nanmin(first[:]) == res["first_slip_time"], (np.nanmin(first[:]), res["first_slip_time"])
+    assert np.allclose(first.dims[1][0][:], f["fem/properties/node_x"][:])
     prov = f["run"].attrs
     assert prov["ranks"] == 2 and prov["software_version"] and prov["software_commit"], dict(prov)
     assert "-output" in prov["command_line"] and prov["date"].endswith("Z"), dict(prov)
@@ -119,8 +125,11 @@ if with_paraview:  # ParaView itself (Debian's paraview + python3-paraview provi
 # No overwrite without the flag; nothing half-written left behind.
 r = subprocess.run(mpi + base, env=env, capture_output=True, text=True)
 assert r.returncode == 2 and "-output_overwrite" in r.stderr, r.stdout + r.stderr
-r = subprocess.run(mpi + base + ["-output_overwrite"], env=env, capture_output=True, text=True)
+r = subprocess.run(mpi + base + ["-output_overwrite", "-friction_observables", "mu_s,mu_k"], env=env,
+                   capture_output=True, text=True)
 assert r.returncode == 0, r.stderr
+with h5py.File(out, "r") as f:  # an observable not asked for is not recorded
+    assert "first_slip" not in f["fem"] and "pressure_response" in f["fem"], list(f["fem"])
 assert not [n for n in os.listdir(work) if n.endswith(".tmp")], os.listdir(work)
 shutil.rmtree(work)
 print("fem output OK")

@@ -2,6 +2,7 @@
 #include <petscsection.h>
 #include <petscsf.h>
 #include "gradfric/core/petsc_handle.hpp"
+#include "gradfric/fem/first_slip_map.hpp"
 #include "gradfric/fem/partition.hpp"
 #include "gradfric/fem/simulation.hpp"
 #include "fem_test_util.hpp"
@@ -32,8 +33,8 @@ void expectSameBits(const char* what, const std::vector<double>& one, const std:
 }  // namespace
 
 // The whole run, not only mu_s: every step's mu(t), forces and normal force, the energy samples,
-// the observer's results and the step count are the same bits on N ranks as on one. Every nodal
-// sum is taken in the global cell order (fem/ordered_assembly.hpp) and every total over ranks is
+// the observer's results, the first-slip map and the step count are the same bits on N ranks as
+// on one. Every nodal sum is taken in the global cell order (fem/ordered_assembly.hpp) and every total over ranks is
 // exact (core/exact_sum.hpp); before, the sliding phase amplified the last-bit differences of
 // rank-partial sums to 6 % in mu(t) after the peak (bench_fem_roundoff shows the same growth from
 // a change of the cell order on one rank). The scene slides well past the peak, with the state
@@ -44,14 +45,18 @@ void expectSameHistoryOnOneAndManyRanks(const FemParameters& q, const Grading& g
   int size = 1;
   MPI_Comm_size(PETSC_COMM_WORLD, &size);
   FemRunResult many;
+  FirstSlipMap mapMany;  // gathered on rank 0
   {
     PlateModel model(PETSC_COMM_WORLD, q, g);
     many = runPlateExperiment(model);
+    mapMany = gatherFirstSlipMap(model);
   }
   FemRunResult one;  // each rank runs the serial model on its own
+  FirstSlipMap mapOne;
   {
     PlateModel model(PETSC_COMM_SELF, q, g);
     one = runPlateExperiment(model);
+    mapOne = gatherFirstSlipMap(model);
   }
   PetscPrintf(PETSC_COMM_WORLD, "1 vs %d ranks: %zu steps of sliding, mu_s %.17g vs %.17g, mu_k %.17g vs %.17g\n", size,
               one.mu.size(), one.friction.muStatic, many.friction.muStatic, one.friction.muKinetic,
@@ -71,6 +76,12 @@ void expectSameHistoryOnOneAndManyRanks(const FemParameters& q, const Grading& g
   const std::vector<double> observedN = {many.friction.muStatic, many.friction.muKinetic, many.friction.peakTime,
                                          many.friction.firstSlipTime, many.peakDampingStart};
   expectSameBits("mu_s, mu_k, peak time, first slip, damping start", observed1, observedN);
+  int rank = 0;
+  MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
+  if (rank == 0) {
+    ASSERT_EQ(mapOne.time.size(), std::size_t(q.nx + 1) * (q.ny + 1));
+    expectSameBits("first-slip map", mapOne.time, mapMany.time);
+  }
 }
 
 }  // namespace

@@ -162,7 +162,7 @@ with gradfric.open(path("ens_v2.h5")) as old:
 # 2. A FEM run with a property field (/fields) and its pressure response.
 fem_out = "-output"
 run(fem, "-field_mu_profile", "step", "-field_mu_position", "3e-3", "-field_mu_delta", "0.2", "-fem_nx", "8",
-    "-fem_ny", "6", "-fem_nz", "1", "-friction_observables", "mu_s", fem_out, path("fem.h5"))
+    "-fem_ny", "6", "-fem_nz", "1", "-friction_observables", "mu_s,first_slip", fem_out, path("fem.h5"))
 with gradfric.open(path("fem.h5")) as ds, h5py.File(path("fem.h5"), "r") as f:
     # The campaign layout of one point, one realisation (as a FEM sweep's), plus the /fem extras.
     expect_dims(ds, {"point": 1, "realisation": 1, "sample": f.attrs["history_capacity"], "block_row": 8,
@@ -173,6 +173,9 @@ with gradfric.open(path("fem.h5")) as ds, h5py.File(path("fem.h5"), "r") as f:
     assert ds["fem_properties_mu_s"].dims == ("node_x",) and ds["fem_properties_E"].dims == ("cell_x",)
     assert ds["fem_fields_mu_s_map"].dims == ("cell_y", "cell_x") and ds["pressure_response_g"].dims == ("node_y", "node_x")
     assert ds["normal_force"].dims == ("point", "realisation", "sample")
+    first = ds["fem_first_slip_time"]  # each bottom node's first slip; the earliest is the run's first slip
+    assert first.dims == ("node_y", "node_x") and first.attrs["units"] == "s"
+    assert float(first.min()) == float(ds["first_slip_time"])
     assert np.allclose(ds["node_x"], np.linspace(0, 0.005, 9)) and np.allclose(ds["cell_y"], (np.arange(6) + 0.5) * 0.005 / 6)
     mu_map = ds["fem_fields_mu_s_map"]  # the step at x = 3 mm: 1 - D before, 1 + D beyond, every row alike
     assert np.allclose(mu_map.where(mu_map["cell_x"] < 3e-3, drop=True), 0.8)

@@ -16,6 +16,7 @@
 
 #include "gradfric/core/exact_sum.hpp"
 
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -40,6 +41,7 @@ public:
     double anchorX = 0, anchorY = 0, pendingX = 0, pendingY = 0;
     ContactState state = ContactState::Open, pendingState = ContactState::Open;
     bool everSlipped = false;
+    double firstSlip = std::numeric_limits<double>::quiet_NaN();  // time its committed state first was Slip [s]
     double weakenStart = -1, weakenEnd = -1;  // times its strength fell 10 % and 90 % of the way to mu_k
     double pressure = 0, tx = 0, ty = 0;  // of the last evaluation
     double filtered = 0, pendingFiltered = 0;  // the normal-stress filter's p* [Pa]: committed, pending
@@ -68,7 +70,10 @@ public:
   void addKinematicForce(Vec X, Vec F, const std::vector<double>& mass, const SlidingDamping& damping, double dt,
                          ContactSums& totals);
   void commit();  // accept the pending contact state (after a step)
-  void resetSlipRecord();  // from now on, everSlipped counts slips after this point (and the slip per step)
+  void resetSlipRecord();  // from now on, everSlipped and firstSlip count slips after this point (and the slip per step)
+  // After each sliding step at time t, with first_slip asked for: the nodes that slide now and never
+  // did before get firstSlip = t (the first-slip map, first_slip_map.hpp).
+  void recordFirstSlips(double t);
   // At the start of sliding: every node's filtered pressure p* is its pressure (the plate has been
   // pressed at rest, where p* would follow p over L / V*).
   void settleFilteredPressure();

@@ -62,6 +62,7 @@ public:
   void rhs(double t, Vec X, Vec F);
   void postStep();  // the TS post-step, after each accepted step: every layer's, in the list's order
   void recordOnset(double t) { contact_->recordOnset(t); }  // for the interface resolution check (sliding)
+  void recordFirstSlips(double t) { contact_->recordFirstSlips(t); }  // for the first-slip map (sliding)
 
   // The loading protocol (loading_protocol.hpp).
   const LoadingProtocol& protocol() const { return protocol_; }

@@ -4,8 +4,10 @@
 // /fem: the run's own scalars (/fem/results), the normal force at the stored history's samples
 // (/fem/history), what the run derived once built (/fem/derived, an option record like /scene:
 // its time step, the stable step, the interface resolution), the property values the physics used (/fem/properties), the property-field maps
-// (/fem/fields) and the pressure response (/fem/pressure_response). Serial: rank 0 writes them
+// (/fem/fields), the pressure response (/fem/pressure_response) and the first-slip map
+// (/fem/first_slip/time). Serial: rank 0 writes them
 // into the closed results file (io::ResultsFile::addGroups).
+#include "gradfric/fem/first_slip_map.hpp"
 #include "gradfric/fem/pressure_response_recorder.hpp"
 #include "gradfric/fem/property_profiles.hpp"
 #include "gradfric/fem/simulation.hpp"
@@ -27,6 +29,7 @@ struct RunExtras {
   const PlateModel& model;
   const FemRunResult& result;
   const std::optional<PressureResponseMap>& response;
+  const std::optional<FirstSlipMap>& firstSlips;   // with first_slip in -friction_observables
   const std::vector<PropertyProfile>& properties;  // the physics' values (gatherPropertyProfiles)
   std::string fieldsXdmf;                          // the snapshots' .xmf beside the file, or empty
   std::vector<io::Attribute> derived;  // what the run derived once built (its dt, the interface resolution)
