@@ -68,7 +68,9 @@ io::ResultsFile openSweepFile(MPI_Comm comm, const FemSweep& s, const io::Output
 
 // One run of the sweep on the group's communicator; the leader writes it into the file.
 io::TaskOutput runPoint(const FemSweep& s, int point, MPI_Comm group, int worldRank) {
-  PlateModel model(group, s.pointParameters(point), s.pointGrading(point));
+  FemParameters q = s.pointParameters(point);
+  q.measurement.firstSlipMap = false;  // a sweep's file has no place for the FEM's node map: not recorded
+  PlateModel model(group, q, s.pointGrading(point));
   const double wall0 = MPI_Wtime();
   FemRunResult r = runPlateExperiment(model);
   io::TaskOutput o;

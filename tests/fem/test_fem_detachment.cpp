@@ -126,6 +126,8 @@ TEST(FemFirstSlipMap, StartsAtTheObserversFirstSlipOnTheTrailingEdge) {
     EXPECT_EQ(earliest, run.friction.firstSlipTime) << c.name;
     EXPECT_EQ(earliestColumn, 0) << c.name << ": the slip starts on the trailing edge";
     EXPECT_GT(slid, map.nx * map.ny * 9 / 10) << c.name << ": the run went on through the kinetic window";
-    if (c.frontCrosses) EXPECT_LT(trailingHalf / trailingNodes, leadingHalf / leadingNodes) << c.name;
+    if (c.frontCrosses) {
+      EXPECT_LT(trailingHalf / trailingNodes, leadingHalf / leadingNodes) << c.name;
+    }
   }
 }

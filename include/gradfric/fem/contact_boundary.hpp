@@ -70,7 +70,8 @@ public:
   void addKinematicForce(Vec X, Vec F, const std::vector<double>& mass, const SlidingDamping& damping, double dt,
                          ContactSums& totals);
   void commit();  // accept the pending contact state (after a step)
-  void resetSlipRecord();  // from now on, everSlipped and firstSlip count slips after this point (and the slip per step)
+  // From now on, everSlipped and firstSlip count slips after this point (and the slip per step).
+  void resetSlipRecord();
   // After each sliding step at time t, with first_slip asked for: the nodes that slide now and never
   // did before get firstSlip = t (the first-slip map, first_slip_map.hpp).
   void recordFirstSlips(double t);

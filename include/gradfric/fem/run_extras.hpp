@@ -5,8 +5,8 @@
 // (/fem/history), what the run derived once built (/fem/derived, an option record like /scene:
 // its time step, the stable step, the interface resolution), the property values the physics used (/fem/properties), the property-field maps
 // (/fem/fields), the pressure response (/fem/pressure_response) and the first-slip map
-// (/fem/first_slip/time). Serial: rank 0 writes them
-// into the closed results file (io::ResultsFile::addGroups).
+// (/fem/first_slip/time). Serial: rank 0 writes them into the closed results file
+// (io::ResultsFile::addGroups).
 #include "gradfric/fem/first_slip_map.hpp"
 #include "gradfric/fem/pressure_response_recorder.hpp"
 #include "gradfric/fem/property_profiles.hpp"
