@@ -313,6 +313,30 @@ TEST(FemErrorBar, FilteredEGradedPlatesCarryBarsThatTheirGapExceeds) {
   EXPECT_GT(0.821929 - 0.804985, 2 * (finePlus.relative * 0.804985 + fineMinus.relative * 0.821929));
 }
 
+TEST(FemErrorBar, FrictionGradedPlatesGetTheirBarsFromTheEdgeGradedLadderInEveryDirection) {
+  // Uniform, friction +0.2 refined in every direction does not converge (0.804064, 0.805781,
+  // 0.804198: the steps change sign and do not shrink); on the meshes graded toward the edges
+  // (ratio 4 over L/10 bands: 60x60x5, 120x120x10, 240x240x20) it does, just (0.802918, 0.804526,
+  // 0.803462: the second step is 0.66 of the first, the rule's limit 0.71), so a run on 120x120x10
+  // graded is bracketed by its last two values.
+  FemParameters q;
+  const Grading plus = linear(GradedProperty::Friction, 0.2);
+  EXPECT_FALSE(discretisationError(q, plus, 0.6).measured);
+  q.nx = q.ny = 120;
+  q.edge.ratio = 4;
+  q.edge.band = 5e-4;
+  const DiscretisationError e = discretisationError(q, plus, 0.6);
+  ASSERT_TRUE(e.measured) << e.basis;
+  EXPECT_NE(e.mesh.basis.find("edge-graded"), std::string::npos) << e.mesh.basis;
+  EXPECT_NEAR(e.mesh.relative, 1.25 * std::fabs(0.804526 - 0.803462) / 0.803462, 1e-12);
+  EXPECT_LT(e.relative, 0.01);
+  // Its partner -0.2 on the same meshes converges monotonically (0.810959, 0.804266, 0.803303:
+  // order 2.8, capped at 2), where its uniform ladder does not.
+  const DiscretisationError minus = discretisationError(q, linear(GradedProperty::Friction, -0.2), 0.6);
+  ASSERT_TRUE(minus.measured) << minus.basis;
+  EXPECT_NEAR(minus.mesh.relative, gci(0.804266, 0.810959, 0.804266, 0.803303), 1e-12);
+}
+
 namespace {
 
 // A study table of one plate (friction +0.2, filtered as the study's) on the meshes 50/100/200 x
