@@ -108,8 +108,9 @@ _EXTRA_RESULTS = {k: v for k, v in _RESULTS.items() if k not in
 
 def extras(f):
     """(coords, data, attrs) of /fem: dims cell_x, node_x (/fem/properties), cell_y (/fem/fields),
-    node_y (/fem/pressure_response, /fem/first_slip: fem_first_slip_time); the normal force along (point, realisation, sample); each
-    /fem/results attribute as a 0-d variable; /fem/derived as attributes."""
+    node_y (/fem/pressure_response, and /fem/first_slip as fem_first_slip_time); the normal force
+    along (point, realisation, sample); each /fem/results attribute as a 0-d variable; /fem/derived
+    as attributes."""
     fem = f["fem"]
     coords, data = {}, {}
     def axis(d, name):
