@@ -22,22 +22,32 @@ void writeRealsAttribute(hid_t object, const char* name, const double* values, h
   GF_H5(H5Awrite(a, H5T_NATIVE_DOUBLE, values));
 }
 
+// A map on the bottom node grid, [ny][nx] (rows along y), written as `name` in `group` with the
+// node positions as its axes (dimension scales node_y, node_x: named, with units, in h5py and xarray).
+io::H5Dataset writeNodeGridMap(hid_t group, const char* name, const std::vector<double>& values, int nx, int ny,
+                               const std::vector<double>& nodeX, const std::vector<double>& nodeY, const char* unit,
+                               const std::string& description) {
+  using namespace io;
+  const hsize_t dims[2] = {hsize_t(ny), hsize_t(nx)};
+  H5Space space(GF_H5(H5Screate_simple(2, dims, nullptr)));
+  H5Dataset map(GF_H5(H5Dcreate2(group, name, H5T_IEEE_F64LE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT)));
+  GF_H5(H5Dwrite(map, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()));
+  describe(map, unit, description);
+  const H5Dataset y = createCoordinateScale(group, "node_y", nodeY, "m", "bottom node position along y");
+  const H5Dataset x = createCoordinateScale(group, "node_x", nodeX, "m", "bottom node position along x");
+  attachScale(map, y, 0);
+  attachScale(map, x, 1);
+  return map;
+}
+
 // /fem/pressure_response/g [ny+1][nx+1] with the extent of a property-field map (docs/fields.md).
 void writePressureResponse(hid_t fem, const PressureResponseMap& m) {
   using namespace io;
   H5Group group = createGroup(fem, "pressure_response");
-  const hsize_t dims[2] = {hsize_t(m.ny), hsize_t(m.nx)};
-  H5Space space(GF_H5(H5Screate_simple(2, dims, nullptr)));
-  H5Dataset map(GF_H5(H5Dcreate2(group, "g", H5T_IEEE_F64LE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT)));
-  GF_H5(H5Dwrite(map, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, m.g.data()));
-  describe(map, "1",
-           "change of the bottom contact pressure per unit of mu(t), (1/p) dp_c/dmu, at every bottom node [ny+1][nx+1] "
-           "(rows along y); least squares over the loading phase; -pressure_response fem reads it");
-  // The node positions as the map's axes (dimension scales: named, with units, in h5py and xarray).
-  const H5Dataset nodeY = createCoordinateScale(group, "node_y", m.nodeY, "m", "bottom node position along y");
-  const H5Dataset nodeX = createCoordinateScale(group, "node_x", m.nodeX, "m", "bottom node position along x");
-  attachScale(map, nodeY, 0);
-  attachScale(map, nodeX, 1);
+  const H5Dataset map = writeNodeGridMap(
+      group, "g", m.g, m.nx, m.ny, m.nodeX, m.nodeY, "1",
+      "change of the bottom contact pressure per unit of mu(t), (1/p) dp_c/dmu, at every bottom node [ny+1][nx+1] "
+      "(rows along y); least squares over the loading phase; -pressure_response fem reads it");
   writeRealsAttribute(map, "extent", m.extent, 4);
   writeRealsAttribute(map, "mu_window", m.window, 2);
   writeIntAttribute(map, "samples", static_cast<int>(m.samples));
@@ -47,19 +57,10 @@ void writePressureResponse(hid_t fem, const PressureResponseMap& m) {
 
 // /fem/first_slip/time [ny+1][nx+1] on the bottom node grid (first_slip_map.hpp).
 void writeFirstSlipMap(hid_t fem, const FirstSlipMap& m) {
-  using namespace io;
-  H5Group group = createGroup(fem, "first_slip");
-  const hsize_t dims[2] = {hsize_t(m.ny), hsize_t(m.nx)};
-  H5Space space(GF_H5(H5Screate_simple(2, dims, nullptr)));
-  H5Dataset map(GF_H5(H5Dcreate2(group, "time", H5T_IEEE_F64LE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT)));
-  GF_H5(H5Dwrite(map, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, m.time.data()));
-  describe(map, "s",
-           "time since the start of sliding at which each bottom node first slid, [ny+1][nx+1] (rows along y); "
-           "NaN: it never slid");
-  const H5Dataset nodeY = createCoordinateScale(group, "node_y", m.nodeY, "m", "bottom node position along y");
-  const H5Dataset nodeX = createCoordinateScale(group, "node_x", m.nodeX, "m", "bottom node position along x");
-  attachScale(map, nodeY, 0);
-  attachScale(map, nodeX, 1);
+  io::H5Group group = io::createGroup(fem, "first_slip");
+  writeNodeGridMap(group, "time", m.time, m.nx, m.ny, m.nodeX, m.nodeY, "s",
+                   "time since the start of sliding at which each bottom node first slid, [ny+1][nx+1] (rows along "
+                   "y); NaN: it never slid");
 }
 
 // /fem/results: the run's scalars the campaign layout has no place for, with their units.
