@@ -18,9 +18,10 @@
 // applied to the graded ones (said in the basis). The terms are added: their signs are not known.
 #include "gradfric/fem/error_estimate.hpp"
 
-#include "gradfric/core/data_table.hpp"
 #include "gradfric/core/refinement_ladder.hpp"
 #include "gradfric/fem/fem_study_data.hpp"  // generated: kFemStudyTable, the text of docs/fem_study.tsv
+#include "gradfric/fem/kinetic_error_estimate.hpp"
+#include "gradfric/fem/study_table.hpp"
 #include "gradfric/physics/field.hpp"
 #include "gradfric/physics/state_weakening_law.hpp"
 
@@ -28,7 +29,6 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <sstream>
 #include <vector>
 
 namespace gradfric::fem {
@@ -36,39 +36,6 @@ namespace gradfric::fem {
 namespace {
 
 bool near(double a, double b) { return std::fabs(a - b) <= 1e-9 * std::fabs(b); }
-
-struct StudyRow {
-  std::string law, property, element, contact;
-  double slipLength = 0, delta = 0, dtSafety = 0, mu = 0;
-  int n = 0, nz = 0;
-  double edgeRatio = 1, edgeBand = 0;  // the mesh's edge grading (edge_grading.hpp; ratio 1: uniform)
-  NormalStressFilter filter;           // the contact column's ",pc=L/V*" (off without it)
-};
-
-// "penalty" or "penalty,pc=1e-6/0.1": the contact method, then the Prakash-Clifton filter if any.
-void splitContact(StudyRow& r) {
-  const std::size_t comma = r.contact.find(",pc=");
-  if (comma == std::string::npos) return;
-  const std::string filter = r.contact.substr(comma + 4);
-  r.contact.resize(comma);
-  const std::size_t slash = filter.find('/');
-  r.filter.length = std::stod(filter.substr(0, slash));
-  r.filter.speed = slash == std::string::npos ? 0.0 : std::stod(filter.substr(slash + 1));
-}
-
-std::vector<StudyRow> parseStudyTable(const std::string& text) {
-  std::vector<StudyRow> parsed;
-  forEachDataRow(text, "the FEM study table (docs/fem_study.tsv)", [&](std::istringstream& fields) {
-    StudyRow r;
-    if (!(fields >> r.law >> r.slipLength >> r.property >> r.delta >> r.n >> r.nz >> r.edgeRatio >> r.edgeBand >>
-          r.element >> r.dtSafety >> r.contact >> r.mu))
-      return false;
-    splitContact(r);
-    parsed.push_back(r);
-    return true;
-  });
-  return parsed;
-}
 
 // The scene the study ran: the paper's plate, the state law, the derived pressure step, no
 // damping in step 2, no property fields.
@@ -95,24 +62,6 @@ std::string outsideStudiedScene(const FemParameters& q, const Grading& g) {
   if (q.plate.slidingAngle != 0.0) return "sliding angle other than 0";
   if (q.nx != q.ny) return "nx != ny";
   return "";
-}
-
-std::string gradingName(const Grading& g) {
-  if (!g.active()) return "none";
-  return g.property == GradedProperty::YoungsModulus ? "E" : "friction";
-}
-
-// Two decimals; below 0.1 % two significant digits, so a small term is not printed as 0.00 %.
-std::string percent(double fraction) {
-  char text[32];
-  const double value = 100 * fraction;
-  std::snprintf(text, sizeof text, value != 0.0 && std::fabs(value) < 0.1 ? "%.2g %%" : "%.2f %%", value);
-  return text;
-}
-
-bool sameMesh(const StudyRow& r, const EdgeGrading& edge) {
-  if (edge.uniform()) return r.edgeRatio == 1.0;
-  return near(r.edgeRatio, edge.ratio) && near(r.edgeBand, edge.band);
 }
 
 // The plate and in-plane mesh on which a term's ladder was measured (the time-step and contact
@@ -192,10 +141,7 @@ const StudyRow* StudyBounds::find(const FemParameters& q, const std::string& pro
                                   double dtSafety, const char* contact, const EdgeGrading& edge,
                                   const NormalStressFilter& filter) const {
   for (const StudyRow& r : rows_)
-    if (r.law == q.frictionLaw.name && near(r.slipLength, q.frictionLaw.slipLength) && r.property == property &&
-        std::fabs(r.delta - delta) < 1e-9 && r.n == n && r.nz == nz && sameMesh(r, edge) &&
-        r.element == elementTypeName(q.element) && std::fabs(r.dtSafety - dtSafety) < 1e-9 && r.contact == contact &&
-        near(r.filter.length, filter.length) && near(r.filter.speed, filter.speed))
+    if (studyRowMatches(r, q, property, delta, n, nz, dtSafety, contact, edge, filter))
       return &r;
   return nullptr;
 }
@@ -225,10 +171,10 @@ ErrorTerm ladderTerm(const char* term, const std::string& ladder, const StudyRow
   }
   if (v.outcome == LadderOutcome::Oscillating)
     std::snprintf(text, sizeof text, "%s %s: %.6f, %.6f, %.6f, oscillating convergence (limit between the last two), bound %s",
-                  term, ladder.c_str(), coarse, medium, fine, percent(v.bound).c_str());
+                  term, ladder.c_str(), coarse, medium, fine, percentText(v.bound).c_str());
   else
     std::snprintf(text, sizeof text, "%s %s: %.6f, %.6f, %.6f, observed order %.2f, extrapolated %.6f, GCI %s", term,
-                  ladder.c_str(), coarse, medium, fine, v.order, v.extrapolated, percent(v.bound).c_str());
+                  ladder.c_str(), coarse, medium, fine, v.order, v.extrapolated, percentText(v.bound).c_str());
   return {true, v.bound, text};
 }
 
@@ -238,13 +184,13 @@ ErrorTerm throughFinerValue(const char* term, const ErrorTerm& own, double value
                             double finestValue) {
   char text[160];
   std::snprintf(text, sizeof text, "; bounded through the finest value %.6f: |difference| %s + its bound %s", finestValue,
-                percent(std::fabs(value - finestValue) / std::fabs(finestValue)).c_str(), percent(finest.relative).c_str());
+                percentText(std::fabs(value - finestValue) / std::fabs(finestValue)).c_str(), percentText(finest.relative).c_str());
   return {true, boundThroughFinerValue({value}, {finestValue}, finest.relative),
           std::string(term) + ": own ladder" + own.basis.substr(own.basis.find(" not converged")) + "; " + finest.basis + text};
 }
 
 MeshLadder StudyBounds::meshLadder(const FemParameters& q, const Grading& g, bool allDirections) const {
-  const std::string property = gradingName(g);
+  const std::string property = studiedPropertyName(g);
   const double delta = g.active() ? g.delta : 0.0;
   // The ladder whose coarsest mesh is n x n x nz (nz doubling with n when refined in every direction).
   const auto findLadder = [&](int n, int nz, const StudyRow* (&m)[3]) {
@@ -341,7 +287,7 @@ ErrorTerm StudyBounds::thicknessTerm(const FemParameters& q, const Grading& g) c
   if (member < 0) return {false, 0, "nz other than 5, 10 or 20 (the thickness study: 5/10/20)"};
   const StudyRung rungs[3] = {{5, 0.6, "penalty"}, {10, 0.6, "penalty"}, {20, 0.6, "penalty"}};
   std::vector<StudiedPlate> plates;
-  if (g.active()) plates.push_back({gradingName(g), g.delta, q.nx});
+  if (g.active()) plates.push_back({studiedPropertyName(g), g.delta, q.nx});
   plates.push_back({"none", 0, q.nx});
   plates.push_back({"none", 0, 100});
   for (const StudiedPlate& plate : plates) {
@@ -459,14 +405,14 @@ DirectionsTest StudyBounds::testDirectionsApart(const FemParameters& q, const Gr
     values.push_back({all.rows[k]->mu, apart.relative()});
     char text[120];
     std::snprintf(text, sizeof text, "%s%dx%dx%d %.6f +- %s", others.empty() ? "" : ", ", other.nx, other.nx, other.nz,
-                  all.rows[k]->mu, percent(apart.relative()).c_str());
+                  all.rows[k]->mu, percentText(apart.relative()).c_str());
     others += text;
   }
   if (values.size() < 2)
     return {false, "no other mesh of the ladder refined in every direction is bounded each direction apart, so "
                    "their sum is untested"};
   if (!shareALimit(values.data(), int(values.size())))
-    return {false, "bounded the same way, " + others + " share no limit with the run's " + percent(run.relative()) +
+    return {false, "bounded the same way, " + others + " share no limit with the run's " + percentText(run.relative()) +
                        ": the in-plane and thickness errors do not add"};
   return {true, "tested against the ladder refined in every direction: " + others + " share a limit with the run"};
 }
@@ -513,8 +459,8 @@ DiscretisationError StudyBounds::discretisationError(const FemParameters& q, con
   e.measured = std::all_of(std::begin(terms), std::end(terms), [](const ErrorTerm* t) { return t->measured; });
   if (e.measured) {
     e.relative = e.mesh.relative + e.thickness.relative + e.timeStep.relative + e.contact.relative;
-    e.basis = "mesh " + percent(e.mesh.relative) + ", thickness " + percent(e.thickness.relative) + ", dt " +
-              percent(e.timeStep.relative) + ", contact " + percent(e.contact.relative) + "; " + e.mesh.basis +
+    e.basis = "mesh " + percentText(e.mesh.relative) + ", thickness " + percentText(e.thickness.relative) + ", dt " +
+              percentText(e.timeStep.relative) + ", contact " + percentText(e.contact.relative) + "; " + e.mesh.basis +
               (coversThickness ? "" : "; " + e.thickness.basis) +
               (g.active() || q.normalFilter.active()
                    ? "; dt and contact terms of the non-graded 100x100 plate" + filterOfTerms(q, e.timeStep, e.contact)
@@ -523,7 +469,7 @@ DiscretisationError StudyBounds::discretisationError(const FemParameters& q, con
     for (const ErrorTerm* t : terms)  // every term without a bound, each with its reason
       if (!t->measured) e.basis += (e.basis.empty() ? "" : "; ") + t->basis;
   }
-  e.kineticBasis = "no convergence study of mu_k with the state law yet";
+  e.kineticBasis = kineticErrorBasis(q, g, dtRatio);
   return e;
 }
 
@@ -543,7 +489,7 @@ DiscretisationError discretisationError(const FemParameters& q, const Grading& g
 std::string withErrorBar(double mu, const DiscretisationError& e) {
   char value[32];
   std::snprintf(value, sizeof value, "%.6f", mu);
-  if (e.measured) return std::string(value) + " +- " + percent(e.relative) + " (discretisation: " + e.basis + ")";
+  if (e.measured) return std::string(value) + " +- " + percentText(e.relative) + " (discretisation: " + e.basis + ")";
   return std::string(value) + " (discretisation error not measured: " + e.basis + ")";
 }
 

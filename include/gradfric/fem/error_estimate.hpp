@@ -22,8 +22,8 @@ struct DiscretisationError {
   bool measured = false;              // every term measured
   double relative = 0;                // sum of the terms (a bound: their signs are not known)
   std::string basis;                  // the terms, or the first one not measured
-  bool kineticMeasured = false;       // mu_k: no study bounds all its terms (see the docs)
-  std::string kineticBasis;
+  std::string kineticBasis;           // mu_k carries no bar: why, and what its study measured
+                                      // (kinetic_error_estimate.hpp)
 };
 
 // params as resolved (PlateModel::params()); dtRatio = dt / stable step of the run.

@@ -1,0 +1,72 @@
+#include "gradfric/fem/study_table.hpp"
+
+#include "gradfric/core/data_table.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+namespace gradfric::fem {
+
+namespace {
+
+bool near(double a, double b) { return std::fabs(a - b) <= 1e-9 * std::fabs(b); }
+
+// "penalty" or "penalty,pc=1e-6/0.1": the contact method, then the Prakash-Clifton filter if any.
+void splitContact(StudyRow& r) {
+  const std::size_t comma = r.contact.find(",pc=");
+  if (comma == std::string::npos) return;
+  const std::string filter = r.contact.substr(comma + 4);
+  r.contact.resize(comma);
+  const std::size_t slash = filter.find('/');
+  r.filter.length = std::stod(filter.substr(0, slash));
+  r.filter.speed = slash == std::string::npos ? 0.0 : std::stod(filter.substr(slash + 1));
+}
+
+}  // namespace
+
+std::vector<StudyRow> parseStudyTable(const std::string& text, StudyColumns columns) {
+  const bool kinetic = columns == StudyColumns::KineticWithSpread;
+  std::vector<StudyRow> parsed;
+  forEachDataRow(text, kinetic ? "the FEM mu_k study table (docs/fem_study_kinetic.tsv)"
+                               : "the FEM study table (docs/fem_study.tsv)",
+                 [&](std::istringstream& fields) {
+                   StudyRow r;
+                   if (!(fields >> r.law >> r.slipLength >> r.property >> r.delta >> r.n >> r.nz >> r.edgeRatio >>
+                         r.edgeBand >> r.element >> r.dtSafety >> r.contact >> r.mu))
+                     return false;
+                   if (kinetic && !(fields >> r.spread)) return false;
+                   splitContact(r);
+                   parsed.push_back(r);
+                   return true;
+                 });
+  return parsed;
+}
+
+std::string studiedPropertyName(const Grading& g) {
+  if (!g.active()) return "none";
+  return g.property == GradedProperty::YoungsModulus ? "E" : "friction";
+}
+
+bool sameEdgeGrading(const StudyRow& r, const EdgeGrading& edge) {
+  if (edge.uniform()) return r.edgeRatio == 1.0;
+  return near(r.edgeRatio, edge.ratio) && near(r.edgeBand, edge.band);
+}
+
+bool studyRowMatches(const StudyRow& r, const FemParameters& q, const std::string& property, double delta, int n,
+                     int nz, double dtSafety, const char* contact, const EdgeGrading& edge,
+                     const NormalStressFilter& filter) {
+  return r.law == q.frictionLaw.name && near(r.slipLength, q.frictionLaw.slipLength) && r.property == property &&
+         std::fabs(r.delta - delta) < 1e-9 && r.n == n && r.nz == nz && sameEdgeGrading(r, edge) &&
+         r.element == elementTypeName(q.element) && std::fabs(r.dtSafety - dtSafety) < 1e-9 && r.contact == contact &&
+         near(r.filter.length, filter.length) && near(r.filter.speed, filter.speed);
+}
+
+std::string percentText(double fraction) {
+  char text[32];
+  const double value = 100 * fraction;
+  std::snprintf(text, sizeof text, value != 0.0 && std::fabs(value) < 0.1 ? "%.2g %%" : "%.2f %%", value);
+  return text;
+}
+
+}  // namespace gradfric::fem
