@@ -127,6 +127,7 @@ def main():
         print("| D_c, filter | penalty | kinematic | difference |")
         print("|---|---|---|---|")
         print("\n".join(contacts))
+    edge_graded(path)
 
 def mesh_bound(found, n):
     """The bound of in-plane mesh n from one family of in-plane ladders found = [(coarsest, values)], as the
@@ -205,6 +206,53 @@ def each_direction_apart(rows):
         print("| plate | ladder | mu_s | differences | observed order | bounds of its members |")
         print("|---|---|---|---|---|---|")
         print("\n".join(lines))
+
+
+EDGE = (4.0, 5e-4)  # the meshes graded toward the edges the study refined in every direction
+EDGE_MESHES = ((60, 5), (120, 10), (240, 20))
+
+
+def edge_graded(path):
+    """The plates on the meshes graded toward the edges (ratio 4 over L/10 bands, D_c 2.5e-8 m, no
+    filter), refined in every direction: each plate's ladder and bounds by the rule, as the code's mesh
+    term, and the paired differences of the gradings run with both signs."""
+    rows = load(path, edge=EDGE)
+    key = lambda prop, delta, n, nz: ("state", 2.5e-8, prop, delta, n, nz, "q1", 0.6, "penalty")
+    plates = sorted({(k[2], k[3]) for k in rows if (k[4], k[5]) == EDGE_MESHES[0] and k[8] == "penalty"},
+                    key=lambda p: (p[0] != "none", p))
+    lines, mu_of = [], {}
+    for prop, delta in plates:
+        keys = [key(prop, delta, n, nz) for n, nz in EDGE_MESHES]
+        if not all(k in rows for k in keys):
+            continue
+        mu = mu_of[(prop, delta)] = [rows[k] for k in keys]
+        d, p, ext, bounds = analyse(mu)
+        tag = "none" if prop == "none" else "%s %+.1f" % (prop, delta)
+        lines.append("| %s | %s | %s | %s | %s | %s |" % (tag, ", ".join("%.6f" % m for m in mu), d, p, ext, bounds))
+    if not lines:
+        return
+    print()
+    print("The meshes graded toward the edges (ratio %g over bands of %g m), refined in every direction" % EDGE)
+    print("%s:" % "/".join("%dx%dx%d" % (n, n, nz) for n, nz in EDGE_MESHES))
+    print()
+    print("| grading | mu_s | differences | observed order | extrapolated | bounds of its members |")
+    print("|---|---|---|---|---|---|")
+    print("\n".join(lines))
+    pairs = [(prop, delta) for prop, delta in mu_of if delta > 0 and (prop, -delta) in mu_of]
+    if pairs:
+        print()
+        print("| grading | mu_s(+Delta) - mu_s(-Delta) | ladder |")
+        print("|---|---|---|")
+        for prop, delta in pairs:
+            diff = [a - b for a, b in zip(mu_of[(prop, delta)], mu_of[(prop, -delta)])]
+            v = judge(diff, 2)
+            if v["outcome"] == "oscillating":
+                verdict = "oscillating: limit between %+.6f and %+.6f" % (diff[1], diff[2])
+            elif v["outcome"] == "monotone":
+                verdict = "order %.2f, extrapolated %+.6f" % (v["order"], v["extrapolated"])
+            else:
+                verdict = v["outcome"]
+            print("| %s %.1f | %s | %s |" % (prop, delta, ", ".join("%+.6f" % x for x in diff), verdict))
 
 
 def limit_interval(mu):
