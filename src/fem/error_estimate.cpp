@@ -19,6 +19,7 @@
 #include "gradfric/fem/error_estimate.hpp"
 
 #include "gradfric/core/refinement_ladder.hpp"
+#include "gradfric/fem/edge_grading.hpp"
 #include "gradfric/fem/fem_study_data.hpp"  // generated: kFemStudyTable, the text of docs/fem_study.tsv
 #include "gradfric/fem/kinetic_error_estimate.hpp"
 #include "gradfric/fem/study_table.hpp"
@@ -133,6 +134,7 @@ private:
   DirectionsApart eachDirectionApart(const FemParameters& q, const Grading& g) const;
   DirectionsTest testDirectionsApart(const FemParameters& q, const Grading& g, const MeshLadder& all,
                                      const DirectionsApart& run) const;
+  ErrorTerm throughEdgeGradedLadder(const FemParameters& q, const Grading& g) const;
 
   const std::vector<StudyRow>& rows_;
 };
@@ -417,6 +419,49 @@ DirectionsTest StudyBounds::testDirectionsApart(const FemParameters& q, const Gr
   return {true, "tested against the ladder refined in every direction: " + others + " share a limit with the run"};
 }
 
+// A uniform run whose own ladders prove no bound, bounded through the finest value of a converging
+// ladder refined in every direction on meshes graded toward the edges whose finest mesh is nowhere
+// coarser than the run's (in-plane cells no wider, no fewer layers): |mu - mu_lim| <= |mu - mu_f| +
+// |mu_f - mu_lim| (boundThroughFinerValue). Both families discretise one problem, so they share its
+// limit; the bound holds the run's thickness error too. Of several graded families, the smallest bound.
+ErrorTerm StudyBounds::throughEdgeGradedLadder(const FemParameters& q, const Grading& g) const {
+  ErrorTerm best{false, 0, ""};
+  if (!q.edge.uniform()) return best;
+  const std::string property = studiedPropertyName(g);
+  const double delta = g.active() ? g.delta : 0.0;
+  const StudyRow* run = find(q, property, delta, q.nx, q.nz, 0.6, "penalty", q.edge, q.normalFilter);
+  if (!run) return best;
+  const double runWidth = q.plate.length / q.nx;
+  for (const StudyRow& r : rows_) {  // r: the coarsest mesh of a graded ladder
+    if (r.edgeRatio == 1.0 || !studyRowMatches(r, q, property, delta, r.n, r.nz, 0.6, "penalty",
+                                               EdgeGrading{r.edgeRatio, r.edgeBand}, q.normalFilter))
+      continue;
+    const EdgeGrading edge{r.edgeRatio, r.edgeBand};
+    const StudyRow* m[3] = {&r, find(q, property, delta, 2 * r.n, 2 * r.nz, 0.6, "penalty", edge, q.normalFilter),
+                            find(q, property, delta, 4 * r.n, 4 * r.nz, 0.6, "penalty", edge, q.normalFilter)};
+    if (!m[1] || !m[2] || find(q, property, delta, 8 * r.n, 8 * r.nz, 0.6, "penalty", edge, q.normalFilter))
+      continue;  // not a complete ladder, or not the family's finest
+    const MeshAxis finest = makeMeshAxis(edge, m[2]->n, q.plate.length);
+    const double widest = *std::max_element(finest.classWidth.begin(), finest.classWidth.end());
+    if (widest > runWidth * (1 + 1e-9) || m[2]->nz < q.nz) continue;
+    char name[200];
+    std::snprintf(name, sizeof name, "%dx%dx%d/%dx%dx%d/%dx%dx%d edge-graded (ratio %g, band %g m), all directions",
+                  m[0]->n, m[0]->n, m[0]->nz, m[1]->n, m[1]->n, m[1]->nz, m[2]->n, m[2]->n, m[2]->nz, edge.ratio,
+                  edge.band);
+    const ErrorTerm graded = ladderTerm("mesh", name, m, 2);
+    if (!graded.measured) continue;
+    const double bound = boundThroughFinerValue({run->mu}, {m[2]->mu}, graded.relative);
+    if (best.measured && bound >= best.relative) continue;
+    char text[200];
+    std::snprintf(text, sizeof text, "; the run %.6f bounded through its finest value %.6f (nowhere coarser than "
+                  "the run's mesh): |difference| %s + its bound %s",
+                  run->mu, m[2]->mu, percentText(std::fabs(run->mu - m[2]->mu) / std::fabs(m[2]->mu)).c_str(),
+                  percentText(graded.relative).c_str());
+    best = {true, bound, graded.basis + text, q.normalFilter.active()};
+  }
+  return best;
+}
+
 DiscretisationError StudyBounds::discretisationError(const FemParameters& q, const Grading& g, double dtRatio) const {
   DiscretisationError e;
   const std::string outside = outsideStudiedScene(q, g);
@@ -451,6 +496,16 @@ DiscretisationError StudyBounds::discretisationError(const FemParameters& q, con
         e.mesh.basis += "; each direction apart: " + (apart.measured() ? test.text : apart.whyNot());
         e.thickness = inTheLadder;
       }
+    }
+  }
+  if (!e.mesh.measured || !e.thickness.measured) {
+    const ErrorTerm through = throughEdgeGradedLadder(q, g);
+    if (through.measured) {
+      const std::string own = e.mesh.measured ? e.thickness.basis : e.mesh.basis;
+      e.mesh = through;
+      e.mesh.basis = "own ladders prove none (" + own + "); " + through.basis;
+      e.thickness = inTheLadder;
+      coversThickness = true;
     }
   }
   e.timeStep = timeStepTerm(q, dtRatio);

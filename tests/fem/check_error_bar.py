@@ -4,7 +4,9 @@ stores it in the results file. The study's rows (docs/fem_study.tsv), judged her
 written out on its own: the ladder refined in every direction (50x50x5/100x100x10/200x200x20) and
 the time-step ladder converge, so the non-graded 50x50x5 mesh gets the bar recomputed here; the
 same mesh graded (friction -0.2), whose ladder refined in every direction does not converge, gets
-none and names it; an unstudied one (6x6x2) says "not measured" naming every term."""
+the bar through the edge-graded ladder's finest value, recomputed here; filtered friction +0.2,
+which nothing bounds, gets none and names it; an unstudied one (6x6x2) says "not measured" naming
+every term."""
 import math
 import os
 import re
@@ -99,15 +101,42 @@ with h5py.File(path, "r") as f:
         fail("mu_s_discretisation_error without its unit")
 
 # The same mesh graded (friction -0.2): its ladder refined in every direction does not converge
-# (0.809636, 0.806982, 0.799410: the differences grow): no bar, and the reason.
-out, path = run((50, 50, 5), ["-grading_profile", "linear", "-grading_property", "friction", "-grading_delta", "-0.2"],
-                "graded")
+# (0.809636, 0.806982, 0.799410: the differences grow), so it is bounded through the finest value of
+# the ladder on the meshes graded toward the edges (60x60x5/120x120x10/240x240x20, which converges
+# and whose finest mesh is nowhere coarser): |mu - f| + the bound of f, relative to the limit.
+graded_rows = load(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "docs", "fem_study.tsv"),
+                   edge=(4.0, 5e-4))
+minus = lambda n, nz, table: table[("state", 2.5e-8, "friction", -0.2, n, nz, "q1", 0.6, "penalty")]
+edge = [minus(n, nz, graded_rows) for n, nz in ((60, 5), (120, 10), (240, 20))]
+if not converges(edge):
+    fail("the study's edge-graded friction -0.2 ladder: expected it to converge: %r" % edge)
+own, finest, b = minus(50, 5, rows), edge[2], bound(edge, 2)
+through = (abs(own - finest) + b * finest) / ((1 - b) * finest)
+graded_bar = through + bound(dt, 0) + 1.25 * abs(rows[key(100)] - kinematic) / kinematic
+friction_minus = ["-grading_profile", "linear", "-grading_property", "friction", "-grading_delta", "-0.2"]
+out, path = run((50, 50, 5), friction_minus, "graded")
+line = re.search(r"mu_s \(global\) +[0-9.]+ \+- ([0-9.]+) % \(discretisation: mesh [0-9.]+ %, thickness 0\.00 %[^\n]*"
+                 r"own ladders prove none \(mesh not converged: 50x50x5/100x100x10/200x200x20, all directions "
+                 r"\(run 50x50x5\) give 0\.809636, 0\.806982, 0\.799410[^\n]*bounded through its finest value "
+                 + re.escape("%.6f" % finest), out)
+if not line:
+    fail("graded studied mesh: no bar through the edge-graded ladder next to mu_s", out)
+if abs(float(line.group(1)) - 100 * graded_bar) > 0.006:
+    fail("graded: printed bar %s %% differs from the study's %.3f %%" % (line.group(1), 100 * graded_bar))
+with h5py.File(path, "r") as f:
+    if abs(f["statistics/mu_s_discretisation_error"][0] - graded_bar) > 1e-9:
+        fail("graded: stored error %r, expected %r" % (f["statistics/mu_s_discretisation_error"][0], graded_bar))
+
+# Filtered friction +0.2 (L 1e-6 m, V* 0.1 m/s) on the same mesh: its ladder refined in every
+# direction does not converge (the steps grow) and no filtered graded ladder exists: no bar, and the reason.
+out, path = run((50, 50, 5), ["-grading_profile", "linear", "-grading_property", "friction", "-grading_delta", "0.2",
+                              "-fem_pc_length", "1e-6", "-fem_pc_speed", "0.1"], "filtered")
 if not re.search(r"mu_s \(global\) +[0-9.]+ \(discretisation error not measured: mesh not converged: "
-                 r"50x50x5/100x100x10/200x200x20, all directions \(run 50x50x5\) give 0\.809636, 0\.806982, 0\.799410", out):
-    fail("graded studied mesh: no 'not measured' naming the ladder that does not converge next to mu_s", out)
+                 r"50x50x5/100x100x10/200x200x20 with the Prakash-Clifton filter", out):
+    fail("filtered graded mesh: no 'not measured' naming the ladder that does not converge next to mu_s", out)
 with h5py.File(path, "r") as f:
     if not math.isnan(f["statistics/mu_s_discretisation_error"][0]):
-        fail("graded studied mesh: stored error is not NaN")
+        fail("filtered graded mesh: stored error is not NaN")
 
 out, path = run((6, 6, 2), [], "unstudied")
 if not re.search(r"mu_s \(global\) +[0-9.]+ \(discretisation error not measured: mesh 6x6x2 q1 \(non-graded\) not in the mesh study; "
