@@ -108,6 +108,13 @@ struct DirectionsTest {
   std::string text;
 };
 
+// A converging ladder refined in every direction on meshes graded toward the edges: its finest row
+// and that row's bound.
+struct GradedLadder {
+  const StudyRow* finest = nullptr;
+  ErrorTerm term;
+};
+
 // The bounds the study's rows prove (the embedded docs/fem_study.tsv, or another table for tests).
 class StudyBounds {
 public:
@@ -134,7 +141,9 @@ private:
   DirectionsApart eachDirectionApart(const FemParameters& q, const Grading& g) const;
   DirectionsTest testDirectionsApart(const FemParameters& q, const Grading& g, const MeshLadder& all,
                                      const DirectionsApart& run) const;
+  std::vector<GradedLadder> edgeGradedLadders(const FemParameters& q, const Grading& g) const;
   ErrorTerm throughEdgeGradedLadder(const FemParameters& q, const Grading& g) const;
+  std::string refutedByEdgeGradedLadder(const FemParameters& q, const Grading& g, const ErrorTerm& mesh) const;
 
   const std::vector<StudyRow>& rows_;
 };
@@ -419,47 +428,76 @@ DirectionsTest StudyBounds::testDirectionsApart(const FemParameters& q, const Gr
   return {true, "tested against the ladder refined in every direction: " + others + " share a limit with the run"};
 }
 
-// A uniform run whose own ladders prove no bound, bounded through the finest value of a converging
-// ladder refined in every direction on meshes graded toward the edges whose finest mesh is nowhere
-// coarser than the run's (in-plane cells no wider, no fewer layers): |mu - mu_lim| <= |mu - mu_f| +
-// |mu_f - mu_lim| (boundThroughFinerValue). Both families discretise one problem, so they share its
-// limit; the bound holds the run's thickness error too. Of several graded families, the smallest bound.
-ErrorTerm StudyBounds::throughEdgeGradedLadder(const FemParameters& q, const Grading& g) const {
-  ErrorTerm best{false, 0, ""};
-  if (!q.edge.uniform()) return best;
+// Every converging ladder of the run's plate refined in every direction on meshes graded toward the
+// edges (the finest ladder of each grading the study has), with its finest value's bound.
+std::vector<GradedLadder> StudyBounds::edgeGradedLadders(const FemParameters& q, const Grading& g) const {
+  std::vector<GradedLadder> found;
   const std::string property = studiedPropertyName(g);
   const double delta = g.active() ? g.delta : 0.0;
-  const StudyRow* run = find(q, property, delta, q.nx, q.nz, 0.6, "penalty", q.edge, q.normalFilter);
-  if (!run) return best;
-  const double runWidth = q.plate.length / q.nx;
   for (const StudyRow& r : rows_) {  // r: the coarsest mesh of a graded ladder
-    if (r.edgeRatio == 1.0 || !studyRowMatches(r, q, property, delta, r.n, r.nz, 0.6, "penalty",
-                                               EdgeGrading{r.edgeRatio, r.edgeBand}, q.normalFilter))
-      continue;
     const EdgeGrading edge{r.edgeRatio, r.edgeBand};
+    if (r.edgeRatio == 1.0 || !studyRowMatches(r, q, property, delta, r.n, r.nz, 0.6, "penalty", edge, q.normalFilter))
+      continue;
     const StudyRow* m[3] = {&r, find(q, property, delta, 2 * r.n, 2 * r.nz, 0.6, "penalty", edge, q.normalFilter),
                             find(q, property, delta, 4 * r.n, 4 * r.nz, 0.6, "penalty", edge, q.normalFilter)};
     if (!m[1] || !m[2] || find(q, property, delta, 8 * r.n, 8 * r.nz, 0.6, "penalty", edge, q.normalFilter))
-      continue;  // not a complete ladder, or not the family's finest
-    const MeshAxis finest = makeMeshAxis(edge, m[2]->n, q.plate.length);
-    const double widest = *std::max_element(finest.classWidth.begin(), finest.classWidth.end());
-    if (widest > runWidth * (1 + 1e-9) || m[2]->nz < q.nz) continue;
+      continue;  // not a complete ladder, or not the grading's finest
     char name[200];
     std::snprintf(name, sizeof name, "%dx%dx%d/%dx%dx%d/%dx%dx%d edge-graded (ratio %g, band %g m), all directions",
                   m[0]->n, m[0]->n, m[0]->nz, m[1]->n, m[1]->n, m[1]->nz, m[2]->n, m[2]->n, m[2]->nz, edge.ratio,
                   edge.band);
-    const ErrorTerm graded = ladderTerm("mesh", name, m, 2);
-    if (!graded.measured) continue;
-    const double bound = boundThroughFinerValue({run->mu}, {m[2]->mu}, graded.relative);
+    const ErrorTerm term = ladderTerm("mesh", name, m, 2);
+    if (term.measured) found.push_back({m[2], term});
+  }
+  return found;
+}
+
+// A uniform run whose own ladders prove no bound, bounded through the finest value of a converging
+// graded ladder whose finest mesh is nowhere coarser than the run's (in-plane cells no wider, no
+// fewer layers): |mu - mu_lim| <= |mu - mu_f| + |mu_f - mu_lim| (boundThroughFinerValue). Both
+// families discretise one problem, so they share its limit; the bound holds the run's thickness
+// error too. Of several graded families, the smallest bound.
+ErrorTerm StudyBounds::throughEdgeGradedLadder(const FemParameters& q, const Grading& g) const {
+  ErrorTerm best{false, 0, ""};
+  if (!q.edge.uniform()) return best;
+  const StudyRow* run = find(q, studiedPropertyName(g), g.active() ? g.delta : 0.0, q.nx, q.nz, 0.6, "penalty", q.edge,
+                             q.normalFilter);
+  if (!run) return best;
+  for (const GradedLadder& ladder : edgeGradedLadders(q, g)) {
+    const StudyRow& f = *ladder.finest;
+    const MeshAxis axis = makeMeshAxis(EdgeGrading{f.edgeRatio, f.edgeBand}, f.n, q.plate.length);
+    const double widest = *std::max_element(axis.classWidth.begin(), axis.classWidth.end());
+    if (widest > q.plate.length / q.nx * (1 + 1e-9) || f.nz < q.nz) continue;
+    const double bound = boundThroughFinerValue({run->mu}, {f.mu}, ladder.term.relative);
     if (best.measured && bound >= best.relative) continue;
     char text[200];
     std::snprintf(text, sizeof text, "; the run %.6f bounded through its finest value %.6f (nowhere coarser than "
                   "the run's mesh): |difference| %s + its bound %s",
-                  run->mu, m[2]->mu, percentText(std::fabs(run->mu - m[2]->mu) / std::fabs(m[2]->mu)).c_str(),
-                  percentText(graded.relative).c_str());
-    best = {true, bound, graded.basis + text, q.normalFilter.active()};
+                  run->mu, f.mu, percentText(std::fabs(run->mu - f.mu) / std::fabs(f.mu)).c_str(),
+                  percentText(ladder.term.relative).c_str());
+    best = {true, bound, ladder.term.basis + text, q.normalFilter.active()};
   }
   return best;
+}
+
+// A bound from the run's own family is refuted where a converging graded ladder of the same plate
+// bounds a limit that the run's bound does not reach (core shareALimit): the two families cannot
+// both be right. Returns the refutation, or "" where none.
+std::string StudyBounds::refutedByEdgeGradedLadder(const FemParameters& q, const Grading& g, const ErrorTerm& mesh) const {
+  if (!q.edge.uniform() || !mesh.measured) return "";
+  const StudyRow* run = find(q, studiedPropertyName(g), g.active() ? g.delta : 0.0, q.nx, q.nz, 0.6, "penalty", q.edge,
+                             q.normalFilter);
+  if (!run) return "";
+  for (const GradedLadder& ladder : edgeGradedLadders(q, g)) {
+    const BoundedValue values[2] = {{run->mu, mesh.relative}, {ladder.finest->mu, ladder.term.relative}};
+    if (shareALimit(values, 2)) continue;
+    char text[160];
+    std::snprintf(text, sizeof text, "; refuted: the run's %.6f +- %s and %.6f +- %s share no limit",
+                  run->mu, percentText(mesh.relative).c_str(), ladder.finest->mu,
+                  percentText(ladder.term.relative).c_str());
+    return "mesh: " + mesh.basis + "; but " + ladder.term.basis + text;
+  }
+  return "";
 }
 
 DiscretisationError StudyBounds::discretisationError(const FemParameters& q, const Grading& g, double dtRatio) const {
@@ -497,6 +535,12 @@ DiscretisationError StudyBounds::discretisationError(const FemParameters& q, con
         e.thickness = inTheLadder;
       }
     }
+  }
+  if (e.mesh.measured && e.thickness.measured) {  // the run's bound from its own family, both directions
+    ErrorTerm own = e.mesh;
+    own.relative += coversThickness ? 0.0 : e.thickness.relative;
+    const std::string refuted = refutedByEdgeGradedLadder(q, g, own);
+    if (!refuted.empty()) e.mesh = {false, 0, refuted};
   }
   if (!e.mesh.measured || !e.thickness.measured) {
     const ErrorTerm through = throughEdgeGradedLadder(q, g);

@@ -448,3 +448,35 @@ TEST(FemErrorBar, AStudyRowThatDoesNotReadIsAnErrorNotADroppedRung) {
     }
   }
 }
+
+TEST(FemErrorBar, AnEdgeGradedLadderThatConvergesElsewhereRefutesTheUniformBar) {
+  // Uniform 50x50x5/100x100x10/200x200x20: 0.95, 0.94, 0.9375 (order 2, limit 0.936667, GCI of 100
+  // 0.45 %); graded 60x60x5/120x120x10/240x240x20 at ratio 4 over L/10 bands converge to 0.923333.
+  // The two limits' intervals lie apart: the uniform bar is refuted, and the run is bounded through
+  // the graded finest value instead (240x240x20 is nowhere coarser than 100x100x10).
+  const auto table = [](double g60, double g120, double g240) {
+    char text[800];
+    std::snprintf(text, sizeof text,
+                  "state 2.5e-8 none 0 50 5 1 0 q1 0.6 penalty 0.95\n"
+                  "state 2.5e-8 none 0 100 10 1 0 q1 0.6 penalty 0.94\n"
+                  "state 2.5e-8 none 0 200 20 1 0 q1 0.6 penalty 0.9375\n"
+                  "state 2.5e-8 none 0 60 5 4 5e-4 q1 0.6 penalty %.6f\n"
+                  "state 2.5e-8 none 0 120 10 4 5e-4 q1 0.6 penalty %.6f\n"
+                  "state 2.5e-8 none 0 240 20 4 5e-4 q1 0.6 penalty %.6f\n",
+                  g60, g120, g240);
+    return std::string(text);
+  };
+  const FemParameters q;  // 100x100x10
+  const double own = gci(0.94, 0.95, 0.94, 0.9375);
+  const ErrorTerm apart = discretisationError(q, Grading{}, 0.6, table(0.930, 0.925, 0.92375)).mesh;
+  ASSERT_TRUE(apart.measured) << apart.basis;
+  EXPECT_NE(apart.basis.find("refuted"), std::string::npos) << apart.basis;
+  const double graded = gci(0.92375, 0.930, 0.925, 0.92375);
+  EXPECT_NEAR(apart.relative, throughFinest(0.94, 0.92375, graded), 1e-12);
+  EXPECT_GT(apart.relative, 3 * own) << "the refuted bar was the smaller one";
+  // A graded ladder whose limit the uniform bar reaches leaves that bar as it was.
+  const ErrorTerm agreeing = discretisationError(q, Grading{}, 0.6, table(0.945, 0.939, 0.9375)).mesh;
+  ASSERT_TRUE(agreeing.measured) << agreeing.basis;
+  EXPECT_EQ(agreeing.basis.find("refuted"), std::string::npos) << agreeing.basis;
+  EXPECT_NEAR(agreeing.relative, own, 1e-12);
+}
