@@ -491,11 +491,11 @@ std::string StudyBounds::refutedByEdgeGradedLadder(const FemParameters& q, const
   for (const GradedLadder& ladder : edgeGradedLadders(q, g)) {
     const BoundedValue values[2] = {{run->mu, mesh.relative}, {ladder.finest->mu, ladder.term.relative}};
     if (shareALimit(values, 2)) continue;
-    char text[160];
-    std::snprintf(text, sizeof text, "; refuted: the run's %.6f +- %s and %.6f +- %s share no limit",
-                  run->mu, percentText(mesh.relative).c_str(), ladder.finest->mu,
-                  percentText(ladder.term.relative).c_str());
-    return "mesh: " + mesh.basis + "; but " + ladder.term.basis + text;
+    char text[200];
+    std::snprintf(text, sizeof text, "; refuted: the run's %.6f +- %s and the edge-graded %dx%dx%d's %.6f +- %s share "
+                  "no limit", run->mu, percentText(mesh.relative).c_str(), ladder.finest->n, ladder.finest->n,
+                  ladder.finest->nz, ladder.finest->mu, percentText(ladder.term.relative).c_str());
+    return mesh.basis + text;
   }
   return "";
 }
