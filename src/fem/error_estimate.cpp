@@ -16,12 +16,15 @@
 //    the same mesh, 1.25 |difference|.
 // The thickness, time-step and contact terms were measured on the non-graded plate and are
 // applied to the graded ones (said in the basis). The terms are added: their signs are not known.
+// A uniform run's mesh bound is then checked against the meshes graded toward the edges, which can
+// refute it or bound the run where its own ladders prove nothing (edge_graded_bounds.hpp).
 #include "gradfric/fem/error_estimate.hpp"
 
 #include "gradfric/core/refinement_ladder.hpp"
-#include "gradfric/fem/edge_grading.hpp"
+#include "gradfric/fem/edge_graded_bounds.hpp"
 #include "gradfric/fem/fem_study_data.hpp"  // generated: kFemStudyTable, the text of docs/fem_study.tsv
 #include "gradfric/fem/kinetic_error_estimate.hpp"
+#include "gradfric/fem/ladder_term.hpp"
 #include "gradfric/fem/study_table.hpp"
 #include "gradfric/physics/field.hpp"
 #include "gradfric/physics/state_weakening_law.hpp"
@@ -108,13 +111,6 @@ struct DirectionsTest {
   std::string text;
 };
 
-// A converging ladder refined in every direction on meshes graded toward the edges: its finest row
-// and that row's bound.
-struct GradedLadder {
-  const StudyRow* finest = nullptr;
-  ErrorTerm term;
-};
-
 // The bounds the study's rows prove (the embedded docs/fem_study.tsv, or another table for tests).
 class StudyBounds {
 public:
@@ -141,9 +137,6 @@ private:
   DirectionsApart eachDirectionApart(const FemParameters& q, const Grading& g) const;
   DirectionsTest testDirectionsApart(const FemParameters& q, const Grading& g, const MeshLadder& all,
                                      const DirectionsApart& run) const;
-  std::vector<GradedLadder> edgeGradedLadders(const FemParameters& q, const Grading& g) const;
-  ErrorTerm throughEdgeGradedLadder(const FemParameters& q, const Grading& g) const;
-  std::string refutedByEdgeGradedLadder(const FemParameters& q, const Grading& g, const ErrorTerm& mesh) const;
 
   const std::vector<StudyRow>& rows_;
 };
@@ -151,10 +144,7 @@ private:
 const StudyRow* StudyBounds::find(const FemParameters& q, const std::string& property, double delta, int n, int nz,
                                   double dtSafety, const char* contact, const EdgeGrading& edge,
                                   const NormalStressFilter& filter) const {
-  for (const StudyRow& r : rows_)
-    if (studyRowMatches(r, q, property, delta, n, nz, dtSafety, contact, edge, filter))
-      return &r;
-  return nullptr;
+  return findStudyRow(rows_, q, property, delta, n, nz, dtSafety, contact, edge, filter);
 }
 
 std::string meshName(const FemParameters& q) {
@@ -166,60 +156,20 @@ std::string meshName(const FemParameters& q) {
   return text;
 }
 
-// The bound of one member of a refinement ladder (coarse, medium, fine at ratio 2; member 0, 1
-// or 2) by the rule both models share (core/refinement_ladder.hpp), or none where the ladder does
-// not converge. term, ladder: the names in the basis.
-ErrorTerm ladderTerm(const char* term, const std::string& ladder, const StudyRow* const m[3], int member) {
-  const LadderRung rungs[3] = {{m[0]->mu}, {m[1]->mu}, {m[2]->mu}};
-  const LadderVerdict v = judgeLadder(rungs, member);
-  const double coarse = m[0]->mu, medium = m[1]->mu, fine = m[2]->mu;
-  char text[300];
-  if (!v.converged()) {
-    std::snprintf(text, sizeof text, "%s not converged: %s give %.6f, %.6f, %.6f (differences %+.2f %%, %+.2f %%: %s)",
-                  term, ladder.c_str(), coarse, medium, fine, 100 * v.first / coarse, 100 * v.second / medium,
-                  v.first * v.second > 0 ? "observed order <= 0.5" : "they change sign and do not shrink");
-    return {false, 0, text};
-  }
-  if (v.outcome == LadderOutcome::Oscillating)
-    std::snprintf(text, sizeof text, "%s %s: %.6f, %.6f, %.6f, oscillating convergence (limit between the last two), bound %s",
-                  term, ladder.c_str(), coarse, medium, fine, percentText(v.bound).c_str());
-  else
-    std::snprintf(text, sizeof text, "%s %s: %.6f, %.6f, %.6f, observed order %.2f, extrapolated %.6f, GCI %s", term,
-                  ladder.c_str(), coarse, medium, fine, v.order, v.extrapolated, percentText(v.bound).c_str());
-  return {true, v.bound, text};
-}
-
-// A member whose own ladder (own, not measured) does not converge, bounded through the finest value
-// of the finer ladders, which all converge (core/refinement_ladder.hpp, boundThroughFinerValue).
-ErrorTerm throughFinerValue(const char* term, const ErrorTerm& own, double value, const ErrorTerm& finest,
-                            double finestValue) {
-  char text[160];
-  std::snprintf(text, sizeof text, "; bounded through the finest value %.6f: |difference| %s + its bound %s", finestValue,
-                percentText(std::fabs(value - finestValue) / std::fabs(finestValue)).c_str(), percentText(finest.relative).c_str());
-  return {true, boundThroughFinerValue({value}, {finestValue}, finest.relative),
-          std::string(term) + ": own ladder" + own.basis.substr(own.basis.find(" not converged")) + "; " + finest.basis + text};
-}
-
 MeshLadder StudyBounds::meshLadder(const FemParameters& q, const Grading& g, bool allDirections) const {
   const std::string property = studiedPropertyName(g);
   const double delta = g.active() ? g.delta : 0.0;
   // The ladder whose coarsest mesh is n x n x nz (nz doubling with n when refined in every direction).
   const auto findLadder = [&](int n, int nz, const StudyRow* (&m)[3]) {
-    bool complete = true;
-    for (int k = 0; k < 3; ++k)
-      complete = complete && (m[k] = find(q, property, delta, n << k, allDirections ? nz << k : nz, 0.6, "penalty",
-                                          q.edge, q.normalFilter)) != nullptr;
-    return complete;
+    return findMeshLadder(rows_, q, property, delta, n, nz, allDirections, 0.6, "penalty", q.edge, q.normalFilter, m);
   };
   const auto ladderName = [&](int n, int nz) {
-    char text[240];
+    char run[80];
     if (allDirections)
-      std::snprintf(text, sizeof text, "%dx%dx%d/%dx%dx%d/%dx%dx%d%s, all directions (run %dx%dx%d)", n, n, nz, 2 * n,
-                    2 * n, 2 * nz, 4 * n, 4 * n, 4 * nz, meshName(q).c_str(), q.nx, q.nx, q.nz);
+      std::snprintf(run, sizeof run, ", all directions (run %dx%dx%d)", q.nx, q.nx, q.nz);
     else
-      std::snprintf(text, sizeof text, "%dx%d/%d/%d x %d%s (run %dx%d)", n, n, 2 * n, 4 * n, nz, meshName(q).c_str(),
-                    q.nx, q.nx);
-    return std::string(text);
+      std::snprintf(run, sizeof run, " (run %dx%d)", q.nx, q.nx);
+    return ladderMeshes(n, nz, allDirections) + meshName(q) + run;
   };
   MeshLadder ladder;
   for (int member = 0; member <= 2; ++member) {
@@ -428,78 +378,6 @@ DirectionsTest StudyBounds::testDirectionsApart(const FemParameters& q, const Gr
   return {true, "tested against the ladder refined in every direction: " + others + " share a limit with the run"};
 }
 
-// Every converging ladder of the run's plate refined in every direction on meshes graded toward the
-// edges (the finest ladder of each grading the study has), with its finest value's bound.
-std::vector<GradedLadder> StudyBounds::edgeGradedLadders(const FemParameters& q, const Grading& g) const {
-  std::vector<GradedLadder> found;
-  const std::string property = studiedPropertyName(g);
-  const double delta = g.active() ? g.delta : 0.0;
-  for (const StudyRow& r : rows_) {  // r: the coarsest mesh of a graded ladder
-    const EdgeGrading edge{r.edgeRatio, r.edgeBand};
-    if (r.edgeRatio == 1.0 || !studyRowMatches(r, q, property, delta, r.n, r.nz, 0.6, "penalty", edge, q.normalFilter))
-      continue;
-    const StudyRow* m[3] = {&r, find(q, property, delta, 2 * r.n, 2 * r.nz, 0.6, "penalty", edge, q.normalFilter),
-                            find(q, property, delta, 4 * r.n, 4 * r.nz, 0.6, "penalty", edge, q.normalFilter)};
-    if (!m[1] || !m[2] || find(q, property, delta, 8 * r.n, 8 * r.nz, 0.6, "penalty", edge, q.normalFilter))
-      continue;  // not a complete ladder, or not the grading's finest
-    char name[200];
-    std::snprintf(name, sizeof name, "%dx%dx%d/%dx%dx%d/%dx%dx%d edge-graded (ratio %g, band %g m), all directions",
-                  m[0]->n, m[0]->n, m[0]->nz, m[1]->n, m[1]->n, m[1]->nz, m[2]->n, m[2]->n, m[2]->nz, edge.ratio,
-                  edge.band);
-    const ErrorTerm term = ladderTerm("mesh", name, m, 2);
-    if (term.measured) found.push_back({m[2], term});
-  }
-  return found;
-}
-
-// A uniform run whose own ladders prove no bound, bounded through the finest value of a converging
-// graded ladder whose finest mesh is nowhere coarser than the run's (in-plane cells no wider, no
-// fewer layers): |mu - mu_lim| <= |mu - mu_f| + |mu_f - mu_lim| (boundThroughFinerValue). Both
-// families discretise one problem, so they share its limit; the bound holds the run's thickness
-// error too. Of several graded families, the smallest bound.
-ErrorTerm StudyBounds::throughEdgeGradedLadder(const FemParameters& q, const Grading& g) const {
-  ErrorTerm best{false, 0, ""};
-  if (!q.edge.uniform()) return best;
-  const StudyRow* run = find(q, studiedPropertyName(g), g.active() ? g.delta : 0.0, q.nx, q.nz, 0.6, "penalty", q.edge,
-                             q.normalFilter);
-  if (!run) return best;
-  for (const GradedLadder& ladder : edgeGradedLadders(q, g)) {
-    const StudyRow& f = *ladder.finest;
-    const MeshAxis axis = makeMeshAxis(EdgeGrading{f.edgeRatio, f.edgeBand}, f.n, q.plate.length);
-    const double widest = *std::max_element(axis.classWidth.begin(), axis.classWidth.end());
-    if (widest > q.plate.length / q.nx * (1 + 1e-9) || f.nz < q.nz) continue;
-    const double bound = boundThroughFinerValue({run->mu}, {f.mu}, ladder.term.relative);
-    if (best.measured && bound >= best.relative) continue;
-    char text[200];
-    std::snprintf(text, sizeof text, "; the run %.6f bounded through its finest value %.6f (nowhere coarser than "
-                  "the run's mesh): |difference| %s + its bound %s",
-                  run->mu, f.mu, percentText(std::fabs(run->mu - f.mu) / std::fabs(f.mu)).c_str(),
-                  percentText(ladder.term.relative).c_str());
-    best = {true, bound, ladder.term.basis + text, q.normalFilter.active()};
-  }
-  return best;
-}
-
-// A bound from the run's own family is refuted where a converging graded ladder of the same plate
-// bounds a limit that the run's bound does not reach (core shareALimit): the two families cannot
-// both be right. Returns the refutation, or "" where none.
-std::string StudyBounds::refutedByEdgeGradedLadder(const FemParameters& q, const Grading& g, const ErrorTerm& mesh) const {
-  if (!q.edge.uniform() || !mesh.measured) return "";
-  const StudyRow* run = find(q, studiedPropertyName(g), g.active() ? g.delta : 0.0, q.nx, q.nz, 0.6, "penalty", q.edge,
-                             q.normalFilter);
-  if (!run) return "";
-  for (const GradedLadder& ladder : edgeGradedLadders(q, g)) {
-    const BoundedValue values[2] = {{run->mu, mesh.relative}, {ladder.finest->mu, ladder.term.relative}};
-    if (shareALimit(values, 2)) continue;
-    char text[200];
-    std::snprintf(text, sizeof text, "; refuted: the run's %.6f +- %s and the edge-graded %dx%dx%d's %.6f +- %s share "
-                  "no limit", run->mu, percentText(mesh.relative).c_str(), ladder.finest->n, ladder.finest->n,
-                  ladder.finest->nz, ladder.finest->mu, percentText(ladder.term.relative).c_str());
-    return mesh.basis + text;
-  }
-  return "";
-}
-
 DiscretisationError StudyBounds::discretisationError(const FemParameters& q, const Grading& g, double dtRatio) const {
   DiscretisationError e;
   const std::string outside = outsideStudiedScene(q, g);
@@ -536,14 +414,20 @@ DiscretisationError StudyBounds::discretisationError(const FemParameters& q, con
       }
     }
   }
-  if (e.mesh.measured && e.thickness.measured) {  // the run's bound from its own family, both directions
+  // The second mesh family checks the first (edge_graded_bounds.hpp): a uniform run's study row
+  // against the converging ladders graded toward the edges of its plate.
+  const StudyRow* run = q.edge.uniform() ? find(q, studiedPropertyName(g), g.active() ? g.delta : 0.0, q.nx, q.nz, 0.6,
+                                                "penalty", q.edge, q.normalFilter)
+                                         : nullptr;
+  const std::vector<GradedLadder> graded = run ? edgeGradedLadders(rows_, q, g) : std::vector<GradedLadder>{};
+  if (run && e.mesh.measured && e.thickness.measured) {  // the run's bound from its own family, both directions
     ErrorTerm own = e.mesh;
     own.relative += coversThickness ? 0.0 : e.thickness.relative;
-    const std::string refuted = refutedByEdgeGradedLadder(q, g, own);
+    const std::string refuted = refutedByEdgeGradedLadder(*run, graded, own);
     if (!refuted.empty()) e.mesh = {false, 0, refuted};
   }
-  if (!e.mesh.measured || !e.thickness.measured) {
-    const ErrorTerm through = throughEdgeGradedLadder(q, g);
+  if (run && (!e.mesh.measured || !e.thickness.measured)) {
+    const ErrorTerm through = throughEdgeGradedLadder(*run, graded, q);
     if (through.measured) {
       const std::string own = e.mesh.measured ? e.thickness.basis : e.mesh.basis;
       e.mesh = through;

@@ -20,24 +20,18 @@ double windowStandardError(double mean, double spread) {
 namespace {
 
 // The ladder refined in every direction (n x n x nz, 2n x 2n x 2nz, 4n x 4n x 4nz) holding the run's
-// mesh, at the run's plate, dt / stable step, contact and filter; false if the study has none.
+// mesh, at the run's plate, dt / stable step, contact and filter; false if the study has none. Of
+// several, the finest (the run its coarsest member), as for mu_s: Roache's likeliest asymptotic.
 bool findLadder(const std::vector<StudyRow>& rows, const FemParameters& q, const Grading& g, double dtRatio,
                 const StudyRow* (&m)[3], int& member) {
   const std::string property = studiedPropertyName(g);
   const double delta = g.active() ? g.delta : 0.0;
-  const char* contact = contactMethodName(q.contactMethod);
-  for (member = 2; member >= 0; --member) {  // the finest ladder first (Roache: the likeliest asymptotic)
+  for (member = 0; member <= 2; ++member) {
     const int n = q.nx >> member, nz = q.nz >> member;
     if (n < 1 || nz < 1 || (n << member) != q.nx || (nz << member) != q.nz) continue;
-    bool complete = true;
-    for (int k = 0; k < 3 && complete; ++k) {
-      m[k] = nullptr;
-      for (const StudyRow& r : rows)
-        if (studyRowMatches(r, q, property, delta, n << k, nz << k, dtRatio, contact, q.edge, q.normalFilter))
-          m[k] = &r;
-      complete = m[k] != nullptr;
-    }
-    if (complete) return true;
+    if (findMeshLadder(rows, q, property, delta, n, nz, true, dtRatio, contactMethodName(q.contactMethod), q.edge,
+                       q.normalFilter, m))
+      return true;
   }
   return false;
 }
@@ -55,9 +49,9 @@ std::string kineticErrorBasis(const FemParameters& q, const Grading& g, double d
   for (int k = 0; k < 3; ++k) rungs[k] = {m[k]->mu, windowStandardError(m[k]->mu, m[k]->spread), kSteadyBatches};
   const LadderVerdict v = judgeLadder(rungs, member);
   char text[600];
-  int used = std::snprintf(text, sizeof text, "mu_k ladder %dx%dx%d/%dx%dx%d/%dx%dx%d: %.6f, %.6f, %.6f (windows' spreads "
-                           "%s, %s, %s); ", m[0]->n, m[0]->n, m[0]->nz, m[1]->n, m[1]->n, m[1]->nz, m[2]->n, m[2]->n,
-                           m[2]->nz, m[0]->mu, m[1]->mu, m[2]->mu, percentText(m[0]->spread).c_str(),
+  int used = std::snprintf(text, sizeof text, "mu_k ladder %s: %.6f, %.6f, %.6f (windows' spreads %s, %s, %s); ",
+                           ladderMeshes(m[0]->n, m[0]->nz, true).c_str(), m[0]->mu, m[1]->mu, m[2]->mu,
+                           percentText(m[0]->spread).c_str(),
                            percentText(m[1]->spread).c_str(), percentText(m[2]->spread).c_str());
   const double medium = m[1]->mu, coarse = m[0]->mu;
   if (v.outcome == LadderOutcome::NoSignal)

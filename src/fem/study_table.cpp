@@ -62,6 +62,34 @@ bool studyRowMatches(const StudyRow& r, const FemParameters& q, const std::strin
          near(r.filter.length, filter.length) && near(r.filter.speed, filter.speed);
 }
 
+const StudyRow* findStudyRow(const std::vector<StudyRow>& rows, const FemParameters& q, const std::string& property,
+                             double delta, int n, int nz, double dtSafety, const char* contact, const EdgeGrading& edge,
+                             const NormalStressFilter& filter) {
+  for (const StudyRow& r : rows)
+    if (studyRowMatches(r, q, property, delta, n, nz, dtSafety, contact, edge, filter)) return &r;
+  return nullptr;
+}
+
+bool findMeshLadder(const std::vector<StudyRow>& rows, const FemParameters& q, const std::string& property,
+                    double delta, int n, int nz, bool allDirections, double dtSafety, const char* contact,
+                    const EdgeGrading& edge, const NormalStressFilter& filter, const StudyRow* (&m)[3]) {
+  bool complete = true;
+  for (int k = 0; k < 3; ++k)
+    complete = (m[k] = findStudyRow(rows, q, property, delta, n << k, allDirections ? nz << k : nz, dtSafety, contact,
+                                    edge, filter)) != nullptr &&
+               complete;
+  return complete;
+}
+
+std::string ladderMeshes(int n, int nz, bool allDirections) {
+  char text[100];
+  if (allDirections)
+    std::snprintf(text, sizeof text, "%dx%dx%d/%dx%dx%d/%dx%dx%d", n, n, nz, 2 * n, 2 * n, 2 * nz, 4 * n, 4 * n, 4 * nz);
+  else
+    std::snprintf(text, sizeof text, "%dx%d/%d/%d x %d", n, n, 2 * n, 4 * n, nz);
+  return text;
+}
+
 std::string percentText(double fraction) {
   char text[32];
   const double value = 100 * fraction;

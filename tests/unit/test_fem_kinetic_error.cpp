@@ -98,3 +98,16 @@ TEST(FemKineticError, ARowWithoutItsSpreadIsAnErrorNamingTheTable) {
     EXPECT_TRUE(contains(e.what(), "line 1")) << e.what();
   }
 }
+
+TEST(FemKineticError, OfTwoLaddersHoldingTheRunTheFinestIsJudged) {
+  // 100x100x10 lies in 50/100/200 (not converged) and in 100/200/400 (converging): the finer ladder,
+  // the likelier to be asymptotic, is the one read, as for mu_s. The coarser alone would say
+  // "not converged".
+  const std::string table = kineticTable(0.630, 0.625, 0.615, 1e-5) +
+                            "state 2.5e-8 none 0 400 40 1 0 q1 0.6 penalty 0.611000 1e-5\n";
+  const std::string basis = kineticErrorBasis(FemParameters{}, Grading{}, 0.6, table);
+  EXPECT_TRUE(contains(basis, "mu_k ladder 100x100x10/200x200x20/400x400x40: 0.625000, 0.615000, 0.611000")) << basis;
+  EXPECT_TRUE(contains(basis, "the mesh ladder converges")) << basis;
+  const std::string coarserOnly = kineticErrorBasis(FemParameters{}, Grading{}, 0.6, kineticTable(0.630, 0.625, 0.615, 1e-5));
+  EXPECT_TRUE(contains(coarserOnly, "not converged")) << coarserOnly;
+}

@@ -38,6 +38,20 @@ bool studyRowMatches(const StudyRow& row, const FemParameters& q, const std::str
                      int nz, double dtSafety, const char* contact, const EdgeGrading& edge,
                      const NormalStressFilter& filter);
 
+// The first row that matches those settings (nullptr: the study did not run them).
+const StudyRow* findStudyRow(const std::vector<StudyRow>& rows, const FemParameters& q, const std::string& property,
+                             double delta, int n, int nz, double dtSafety, const char* contact, const EdgeGrading& edge,
+                             const NormalStressFilter& filter);
+
+// The rows of the mesh ladder whose coarsest mesh is n x n x nz, refined in every direction
+// (2n x 2n x 2nz, 4n x 4n x 4nz) or in-plane (2n, 4n at nz), into m; false where a rung is missing.
+bool findMeshLadder(const std::vector<StudyRow>& rows, const FemParameters& q, const std::string& property,
+                    double delta, int n, int nz, bool allDirections, double dtSafety, const char* contact,
+                    const EdgeGrading& edge, const NormalStressFilter& filter, const StudyRow* (&m)[3]);
+
+// That ladder's meshes as the bases print them: "50x50x5/100x100x10/200x200x20" or "50x50/100/200 x 5".
+std::string ladderMeshes(int n, int nz, bool allDirections);
+
 // Two decimals; below 0.1 % two significant digits, so a small term is not printed as 0.00 %.
 std::string percentText(double fraction);
 
