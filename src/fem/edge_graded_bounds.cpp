@@ -13,19 +13,16 @@ namespace gradfric::fem {
 std::vector<GradedLadder> edgeGradedLadders(const std::vector<StudyRow>& rows, const FemParameters& q,
                                             const Grading& g) {
   std::vector<GradedLadder> found;
-  const std::string property = studiedPropertyName(g);
-  const double delta = g.active() ? g.delta : 0.0;
   for (const StudyRow& r : rows) {  // r: the coarsest mesh of a graded ladder
-    const EdgeGrading edge{r.edgeRatio, r.edgeBand};
-    if (r.edgeRatio == 1.0 || !studyRowMatches(r, q, property, delta, r.n, r.nz, 0.6, "penalty", edge, q.normalFilter))
-      continue;
+    StudySettings s = meshStudySettings(q, g);
+    s.edge = {r.edgeRatio, r.edgeBand};
+    if (r.edgeRatio == 1.0 || !studyRowMatches(r, q, s, r.n, r.nz)) continue;
     const StudyRow* m[3];
-    if (!findMeshLadder(rows, q, property, delta, r.n, r.nz, true, 0.6, "penalty", edge, q.normalFilter, m) ||
-        findStudyRow(rows, q, property, delta, 8 * r.n, 8 * r.nz, 0.6, "penalty", edge, q.normalFilter))
+    if (!findMeshLadder(rows, q, s, r.n, r.nz, true, m) || findStudyRow(rows, q, s, 8 * r.n, 8 * r.nz))
       continue;  // not a complete ladder, or not the grading's finest
     char name[200];
     std::snprintf(name, sizeof name, "%s edge-graded (ratio %g, band %g m), all directions",
-                  ladderMeshes(r.n, r.nz, true).c_str(), edge.ratio, edge.band);
+                  ladderMeshes(r.n, r.nz, true).c_str(), r.edgeRatio, r.edgeBand);
     const ErrorTerm term = ladderTerm("mesh", name, m, 2);
     if (term.measured) found.push_back({m[2], term});
   }

@@ -8,12 +8,7 @@
 //    A ladder refined in every direction (50x50x5, 100x100x10, 200x200x20) is preferred: it bounds
 //    the thickness as well. Of several ladders holding the run's mesh, the finest is taken, and
 //    every finer ladder of the study must converge too;
-//  - thickness (for an in-plane ladder): a ladder nz 5/10/20 by the same rule, of the run's own
-//    plate and in-plane mesh where the study has it, else of the non-graded paper mesh;
-//  - time step: the ladder dt_safety 0.6/0.3/0.15 on the same mesh, by the same rule (the bound of
-//    0.6 covers smaller steps);
-//  - contact: penalty 250 G/H against the kinematic contact (the exact reference, no refinement) on
-//    the same mesh, 1.25 |difference|.
+//  - thickness (for an in-plane ladder), time step and contact: thickness_dt_contact_terms.hpp.
 // The thickness, time-step and contact terms were measured on the non-graded plate and are
 // applied to the graded ones (said in the basis). The terms are added: their signs are not known.
 // A uniform run's mesh bound is then checked against the meshes graded toward the edges, which can
@@ -26,6 +21,7 @@
 #include "gradfric/fem/kinetic_error_estimate.hpp"
 #include "gradfric/fem/ladder_term.hpp"
 #include "gradfric/fem/study_table.hpp"
+#include "gradfric/fem/thickness_dt_contact_terms.hpp"
 #include "gradfric/physics/field.hpp"
 #include "gradfric/physics/state_weakening_law.hpp"
 
@@ -68,21 +64,6 @@ std::string outsideStudiedScene(const FemParameters& q, const Grading& g) {
   return "";
 }
 
-// The plate and in-plane mesh on which a term's ladder was measured (the time-step and contact
-// terms: the non-graded 100 x 100 plate).
-struct StudiedPlate {
-  std::string property = "none";
-  double delta = 0;
-  int n = 100;
-};
-
-// One run of a term's study on that plate.
-struct StudyRung {
-  int nz;
-  double dtSafety;
-  const char* contact;
-};
-
 // The mesh ladder of one kind holding the run's mesh: refined in every direction (n x n x nz, 2n x 2n x
 // 2nz, 4n x 4n x 4nz) or in-plane (n, 2n, 4n at the run's nz). Of those holding the run's mesh, the
 // finest: the three finest meshes are the likeliest to lie in the asymptotic range (Roache). Every
@@ -118,34 +99,13 @@ public:
   DiscretisationError discretisationError(const FemParameters& q, const Grading& g, double dtRatio) const;
 
 private:
-  // The study's mu_s for the settings given (nullptr: not run), on a mesh graded as `edge` (the
-  // thickness, time-step and contact terms: the uniform mesh, EdgeGrading{}) with the normal-stress
-  // filter `filter` (those terms: none).
-  const StudyRow* find(const FemParameters& q, const std::string& property, double delta, int n, int nz,
-                       double dtSafety, const char* contact, const EdgeGrading& edge = {},
-                       const NormalStressFilter& filter = {}) const;
   MeshLadder meshLadder(const FemParameters& q, const Grading& g, bool allDirections) const;
-  template <std::size_t N>
-  bool findRungs(const FemParameters& q, const StudiedPlate& plate, const StudyRung (&rungs)[N],
-                 const NormalStressFilter& filter, const StudyRow* (&m)[N]) const;
-  template <std::size_t N>
-  const char* studyRungs(const FemParameters& q, const StudiedPlate& plate, const StudyRung (&rungs)[N],
-                         const StudyRow* (&m)[N]) const;
-  ErrorTerm thicknessTerm(const FemParameters& q, const Grading& g) const;
-  ErrorTerm timeStepTerm(const FemParameters& q, double dtRatio) const;
-  ErrorTerm contactTerm(const FemParameters& q) const;
   DirectionsApart eachDirectionApart(const FemParameters& q, const Grading& g) const;
   DirectionsTest testDirectionsApart(const FemParameters& q, const Grading& g, const MeshLadder& all,
                                      const DirectionsApart& run) const;
 
   const std::vector<StudyRow>& rows_;
 };
-
-const StudyRow* StudyBounds::find(const FemParameters& q, const std::string& property, double delta, int n, int nz,
-                                  double dtSafety, const char* contact, const EdgeGrading& edge,
-                                  const NormalStressFilter& filter) const {
-  return findStudyRow(rows_, q, property, delta, n, nz, dtSafety, contact, edge, filter);
-}
 
 std::string meshName(const FemParameters& q) {
   char text[200] = "";
@@ -157,11 +117,10 @@ std::string meshName(const FemParameters& q) {
 }
 
 MeshLadder StudyBounds::meshLadder(const FemParameters& q, const Grading& g, bool allDirections) const {
-  const std::string property = studiedPropertyName(g);
-  const double delta = g.active() ? g.delta : 0.0;
+  const StudySettings settings = meshStudySettings(q, g);
   // The ladder whose coarsest mesh is n x n x nz (nz doubling with n when refined in every direction).
   const auto findLadder = [&](int n, int nz, const StudyRow* (&m)[3]) {
-    return findMeshLadder(rows_, q, property, delta, n, nz, allDirections, 0.6, "penalty", q.edge, q.normalFilter, m);
+    return findMeshLadder(rows_, q, settings, n, nz, allDirections, m);
   };
   const auto ladderName = [&](int n, int nz) {
     char run[80];
@@ -204,128 +163,6 @@ MeshLadder StudyBounds::meshLadder(const FemParameters& q, const Grading& g, boo
   return ladder;
 }
 
-// Every rung found with this filter into m; false if one is missing.
-template <std::size_t N>
-bool StudyBounds::findRungs(const FemParameters& q, const StudiedPlate& plate, const StudyRung (&rungs)[N],
-                            const NormalStressFilter& filter, const StudyRow* (&m)[N]) const {
-  bool complete = true;
-  for (std::size_t k = 0; k < N; ++k)
-    complete = (m[k] = find(q, plate.property, plate.delta, plate.n, rungs[k].nz, rungs[k].dtSafety, rungs[k].contact,
-                            {}, filter)) != nullptr &&
-               complete;
-  return complete;
-}
-
-// The rungs with the run's Prakash-Clifton filter where the study has them all, else those without
-// it (the thickness, time-step and contact studies were first made without the filter). Returns
-// ", with the filter" or "" for the term's text; m[k] null where a rung is missing.
-template <std::size_t N>
-const char* StudyBounds::studyRungs(const FemParameters& q, const StudiedPlate& plate, const StudyRung (&rungs)[N],
-                                    const StudyRow* (&m)[N]) const {
-  if (q.normalFilter.active() && findRungs(q, plate, rungs, q.normalFilter, m)) return ", with the filter";
-  findRungs(q, plate, rungs, NormalStressFilter{}, m);
-  return "";
-}
-
-std::string thicknessLadderName(const StudiedPlate& plate, const char* filter) {
-  char text[160];
-  if (plate.property == "none")
-    std::snprintf(text, sizeof text, "nz 5/10/20 (non-graded %dx%d%s)", plate.n, plate.n, filter);
-  else
-    std::snprintf(text, sizeof text, "nz 5/10/20 (%s %+g, %dx%d%s)", plate.property.c_str(), plate.delta, plate.n,
-                  plate.n, filter);
-  return text;
-}
-
-// The thickness ladder nz 5/10/20, the bound of the run's member (nz 5, 10 or 20). Measured on the
-// run's own plate and in-plane mesh where the study has it, else on the non-graded plate at the
-// run's in-plane mesh, else on the non-graded 100 x 100 plate. The thickness error depends on the
-// in-plane mesh (refined alone through the thickness, the corner singularity converges differently
-// on each), so the same plate's ladders on every finer in-plane mesh the study has must converge
-// too, and the largest of their bounds is taken.
-ErrorTerm StudyBounds::thicknessTerm(const FemParameters& q, const Grading& g) const {
-  const int member = q.nz == 5 ? 0 : q.nz == 10 ? 1 : q.nz == 20 ? 2 : -1;
-  if (member < 0) return {false, 0, "nz other than 5, 10 or 20 (the thickness study: 5/10/20)"};
-  const StudyRung rungs[3] = {{5, 0.6, "penalty"}, {10, 0.6, "penalty"}, {20, 0.6, "penalty"}};
-  std::vector<StudiedPlate> plates;
-  if (g.active()) plates.push_back({studiedPropertyName(g), g.delta, q.nx});
-  plates.push_back({"none", 0, q.nx});
-  plates.push_back({"none", 0, 100});
-  for (const StudiedPlate& plate : plates) {
-    const StudyRow* m[3];
-    const char* filter = studyRungs(q, plate, rungs, m);
-    if (!m[0] || !m[1] || !m[2]) continue;
-    ErrorTerm term = ladderTerm("thickness", thicknessLadderName(plate, filter), m, member);
-    term.filtered = *filter != '\0';
-    const NormalStressFilter rowsFilter = term.filtered ? q.normalFilter : NormalStressFilter{};
-    for (StudiedPlate finer{plate.property, plate.delta, 2 * plate.n}; term.measured && findRungs(q, finer, rungs, rowsFilter, m);
-         finer.n *= 2) {
-      const ErrorTerm other = ladderTerm("thickness", thicknessLadderName(finer, filter), m, member);
-      if (!other.measured)
-        return {false, 0, other.basis + "; so the coarser " + thicknessLadderName(plate, filter) + " proves no bar",
-                term.filtered};
-      term.relative = std::max(term.relative, other.relative);
-      term.basis += "; " + other.basis + " (the larger bound taken)";
-    }
-    return term;
-  }
-  return {false, 0, "thickness ladder nz 5/10/20 not measured for this D_c"};
-}
-
-// The bound of dt_safety 0.6 (a run at a smaller step is bounded by it too) from the ladder
-// 0.6/0.3/0.15 on the non-graded 100 x 100 x 5 plate. As the mesh term: every finer ladder the study
-// has (0.3/0.15/0.075, ...) must converge too, and where 0.6/0.3/0.15 does not, 0.6 is bounded
-// through the finest step of the finer ones.
-ErrorTerm StudyBounds::timeStepTerm(const FemParameters& q, double dtRatio) const {
-  if (dtRatio > 0.6 + 1e-9) return {false, 0, "dt above 0.6 of the stable step"};
-  const StudyRow* m[3];
-  const char* filter = studyRungs(q, StudiedPlate{}, {{5, 0.6, "penalty"}, {5, 0.3, "penalty"}, {5, 0.15, "penalty"}}, m);
-  if (!m[0] || !m[1] || !m[2]) return {false, 0, "dt ladder 0.6/0.3/0.15 not measured for this D_c"};
-  const NormalStressFilter rowsFilter = *filter ? q.normalFilter : NormalStressFilter{};
-  // The ladder 0.6/k, 0.3/k, 0.15/k (k = 1, 2, 4, ...).
-  const auto ladderName = [&](int k) {
-    char text[120];
-    std::snprintf(text, sizeof text, "dt_safety %g/%g/%g (non-graded 100x100%s)", 0.6 / k, 0.3 / k, 0.15 / k, filter);
-    return std::string(text);
-  };
-  const StudyRow* f[3];
-  const auto findLadder = [&](int k) {
-    const StudyRung rungs[3] = {{5, 0.6 / k, "penalty"}, {5, 0.3 / k, "penalty"}, {5, 0.15 / k, "penalty"}};
-    return findRungs(q, StudiedPlate{}, rungs, rowsFilter, f);
-  };
-  ErrorTerm check, term;
-  const FinerLadders finer = walkFinerLadders(
-      1, findLadder, [&](int k) { return !(check = ladderTerm("dt", ladderName(k), f, 0)).measured; });
-  if (finer.disproving) {
-    term = {false, 0, check.basis + "; so the coarser " + ladderName(1) + " proves no bar"};
-  } else {
-    term = ladderTerm("dt", ladderName(1), m, 0);
-    if (!term.measured && finer.finest > 1) {
-      findLadder(finer.finest);  // the walk's last probe (one finer) left f partly filled
-      term = throughFinerValue("dt", term, m[0]->mu, ladderTerm("dt", ladderName(finer.finest), f, 2), f[2]->mu);
-    }
-  }
-  term.filtered = *filter != '\0';
-  return term;
-}
-
-// The penalty against the kinematic contact (the exact reference, not a refinement) on the
-// non-graded 100 x 100 mesh: 1.25 |penalty - kinematic| / kinematic.
-ErrorTerm StudyBounds::contactTerm(const FemParameters& q) const {
-  if (q.contactMethod == ContactMethod::Kinematic) return {true, 0.0, "kinematic contact (the reference)"};
-  const double defaultStiffness = defaultPenaltyStiffness(q.plate);
-  if (!near(q.kn, defaultStiffness) || !near(q.kt, defaultStiffness))
-    return {false, 0, "penalty stiffness other than 250 G/H"};
-  const StudyRow* m[2];
-  const char* filter = studyRungs(q, StudiedPlate{}, {{5, 0.6, "penalty"}, {5, 0.6, "kinematic"}}, m);
-  if (!m[0] || !m[1]) return {false, 0, "penalty vs kinematic not measured for this D_c"};
-  const double bound = 1.25 * std::fabs(m[0]->mu - m[1]->mu) / std::fabs(m[1]->mu);
-  char text[200];
-  std::snprintf(text, sizeof text, "penalty vs kinematic %.6f vs %.6f (non-graded 100x100%s)", m[0]->mu, m[1]->mu,
-                filter);
-  return {true, bound, text, *filter != '\0'};
-}
-
 // For a filtered run: whether its time-step and contact terms were measured with its filter.
 std::string filterOfTerms(const FemParameters& q, const ErrorTerm& timeStep, const ErrorTerm& contact) {
   if (!q.normalFilter.active()) return "";
@@ -344,7 +181,7 @@ ErrorTerm notInTheStudy(const FemParameters& q, const Grading& g) {
 
 DirectionsApart StudyBounds::eachDirectionApart(const FemParameters& q, const Grading& g) const {
   const MeshLadder inPlane = meshLadder(q, g, false);
-  return {inPlane.held ? inPlane.term : notInTheStudy(q, g), thicknessTerm(q, g)};
+  return {inPlane.held ? inPlane.term : notInTheStudy(q, g), thicknessTerm(rows_, q, g)};
 }
 
 // Refined each direction apart, the bar assumes that the in-plane and the thickness errors add (the
@@ -416,9 +253,7 @@ DiscretisationError StudyBounds::discretisationError(const FemParameters& q, con
   }
   // The second mesh family checks the first (edge_graded_bounds.hpp): a uniform run's study row
   // against the converging ladders graded toward the edges of its plate.
-  const StudyRow* run = q.edge.uniform() ? find(q, studiedPropertyName(g), g.active() ? g.delta : 0.0, q.nx, q.nz, 0.6,
-                                                "penalty", q.edge, q.normalFilter)
-                                         : nullptr;
+  const StudyRow* run = q.edge.uniform() ? findStudyRow(rows_, q, meshStudySettings(q, g), q.nx, q.nz) : nullptr;
   const std::vector<GradedLadder> graded = run ? edgeGradedLadders(rows_, q, g) : std::vector<GradedLadder>{};
   if (run && e.mesh.measured && e.thickness.measured) {  // the run's bound from its own family, both directions
     ErrorTerm own = e.mesh;
@@ -436,8 +271,8 @@ DiscretisationError StudyBounds::discretisationError(const FemParameters& q, con
       coversThickness = true;
     }
   }
-  e.timeStep = timeStepTerm(q, dtRatio);
-  e.contact = contactTerm(q);
+  e.timeStep = timeStepTerm(rows_, q, dtRatio);
+  e.contact = contactTerm(rows_, q);
   const ErrorTerm* terms[] = {&e.mesh, &e.thickness, &e.timeStep, &e.contact};
   e.measured = std::all_of(std::begin(terms), std::end(terms), [](const ErrorTerm* t) { return t->measured; });
   if (e.measured) {

@@ -24,13 +24,13 @@ namespace {
 // several, the finest (the run its coarsest member), as for mu_s: Roache's likeliest asymptotic.
 bool findLadder(const std::vector<StudyRow>& rows, const FemParameters& q, const Grading& g, double dtRatio,
                 const StudyRow* (&m)[3], int& member) {
-  const std::string property = studiedPropertyName(g);
-  const double delta = g.active() ? g.delta : 0.0;
+  StudySettings s = meshStudySettings(q, g);
+  s.dtSafety = dtRatio;
+  s.contact = contactMethodName(q.contactMethod);
   for (member = 0; member <= 2; ++member) {
     const int n = q.nx >> member, nz = q.nz >> member;
     if (n < 1 || nz < 1 || (n << member) != q.nx || (nz << member) != q.nz) continue;
-    if (findMeshLadder(rows, q, property, delta, n, nz, true, dtRatio, contactMethodName(q.contactMethod), q.edge,
-                       q.normalFilter, m))
+    if (findMeshLadder(rows, q, s, n, nz, true, m))
       return true;
   }
   return false;

@@ -43,41 +43,47 @@ std::vector<StudyRow> parseStudyTable(const std::string& text, StudyColumns colu
   return parsed;
 }
 
-std::string studiedPropertyName(const Grading& g) {
-  if (!g.active()) return "none";
-  return g.property == GradedProperty::YoungsModulus ? "E" : "friction";
+StudiedPlate studiedPlate(const Grading& g) {
+  if (!g.active()) return {};
+  return {g.property == GradedProperty::YoungsModulus ? "E" : "friction", g.delta};
 }
+
+StudySettings meshStudySettings(const FemParameters& q, const Grading& g) {
+  StudySettings s;
+  s.plate = studiedPlate(g);
+  s.edge = q.edge;
+  s.filter = q.normalFilter;
+  return s;
+}
+
+namespace {
 
 bool sameEdgeGrading(const StudyRow& r, const EdgeGrading& edge) {
   if (edge.uniform()) return r.edgeRatio == 1.0;
   return near(r.edgeRatio, edge.ratio) && near(r.edgeBand, edge.band);
 }
 
-bool studyRowMatches(const StudyRow& r, const FemParameters& q, const std::string& property, double delta, int n,
-                     int nz, double dtSafety, const char* contact, const EdgeGrading& edge,
-                     const NormalStressFilter& filter) {
-  return r.law == q.frictionLaw.name && near(r.slipLength, q.frictionLaw.slipLength) && r.property == property &&
-         std::fabs(r.delta - delta) < 1e-9 && r.n == n && r.nz == nz && sameEdgeGrading(r, edge) &&
-         r.element == elementTypeName(q.element) && std::fabs(r.dtSafety - dtSafety) < 1e-9 && r.contact == contact &&
-         near(r.filter.length, filter.length) && near(r.filter.speed, filter.speed);
+}  // namespace
+
+bool studyRowMatches(const StudyRow& r, const FemParameters& q, const StudySettings& s, int n, int nz) {
+  return r.law == q.frictionLaw.name && near(r.slipLength, q.frictionLaw.slipLength) && r.property == s.plate.property &&
+         std::fabs(r.delta - s.plate.delta) < 1e-9 && r.n == n && r.nz == nz && sameEdgeGrading(r, s.edge) &&
+         r.element == elementTypeName(q.element) && std::fabs(r.dtSafety - s.dtSafety) < 1e-9 &&
+         r.contact == s.contact && near(r.filter.length, s.filter.length) && near(r.filter.speed, s.filter.speed);
 }
 
-const StudyRow* findStudyRow(const std::vector<StudyRow>& rows, const FemParameters& q, const std::string& property,
-                             double delta, int n, int nz, double dtSafety, const char* contact, const EdgeGrading& edge,
-                             const NormalStressFilter& filter) {
+const StudyRow* findStudyRow(const std::vector<StudyRow>& rows, const FemParameters& q, const StudySettings& s, int n,
+                             int nz) {
   for (const StudyRow& r : rows)
-    if (studyRowMatches(r, q, property, delta, n, nz, dtSafety, contact, edge, filter)) return &r;
+    if (studyRowMatches(r, q, s, n, nz)) return &r;
   return nullptr;
 }
 
-bool findMeshLadder(const std::vector<StudyRow>& rows, const FemParameters& q, const std::string& property,
-                    double delta, int n, int nz, bool allDirections, double dtSafety, const char* contact,
-                    const EdgeGrading& edge, const NormalStressFilter& filter, const StudyRow* (&m)[3]) {
+bool findMeshLadder(const std::vector<StudyRow>& rows, const FemParameters& q, const StudySettings& s, int n, int nz,
+                    bool allDirections, const StudyRow* (&m)[3]) {
   bool complete = true;
   for (int k = 0; k < 3; ++k)
-    complete = (m[k] = findStudyRow(rows, q, property, delta, n << k, allDirections ? nz << k : nz, dtSafety, contact,
-                                    edge, filter)) != nullptr &&
-               complete;
+    complete = (m[k] = findStudyRow(rows, q, s, n << k, allDirections ? nz << k : nz)) != nullptr && complete;
   return complete;
 }
 

@@ -26,28 +26,37 @@ enum class StudyColumns { StaticOnly, KineticWithSpread };
 // The rows of a table's text; a row that does not read is an error naming the table and the line.
 std::vector<StudyRow> parseStudyTable(const std::string& text, StudyColumns columns = StudyColumns::StaticOnly);
 
-// The grading as the tables name it: "none", "E" or "friction".
-std::string studiedPropertyName(const Grading& grading);
+// The plate as the tables name it: the graded property ("none", "E" or "friction") and Delta.
+struct StudiedPlate {
+  std::string property = "none";
+  double delta = 0;
+};
+StudiedPlate studiedPlate(const Grading& grading);
 
-// Whether the row ran on a mesh graded as `edge` (uniform: ratio 1).
-bool sameEdgeGrading(const StudyRow& row, const EdgeGrading& edge);
+// What a row ran besides the run's law, D_c and element and besides its mesh size.
+struct StudySettings {
+  StudiedPlate plate;
+  double dtSafety = 0.6;            // dt / stable step
+  std::string contact = "penalty";  // "penalty" or "kinematic"
+  EdgeGrading edge;                 // ratio 1: uniform
+  NormalStressFilter filter;        // off: none
+};
 
-// Whether the row ran the run's law and D_c, element, the given plate, in-plane n and nz, dt
-// safety, contact method ("penalty", "kinematic"), edge grading and normal-stress filter.
-bool studyRowMatches(const StudyRow& row, const FemParameters& q, const std::string& property, double delta, int n,
-                     int nz, double dtSafety, const char* contact, const EdgeGrading& edge,
-                     const NormalStressFilter& filter);
+// The run's plate, edge grading and filter, at dt safety 0.6 and the penalty contact (the settings of
+// the mu_s study's mesh ladders).
+StudySettings meshStudySettings(const FemParameters& q, const Grading& grading);
 
-// The first row that matches those settings (nullptr: the study did not run them).
-const StudyRow* findStudyRow(const std::vector<StudyRow>& rows, const FemParameters& q, const std::string& property,
-                             double delta, int n, int nz, double dtSafety, const char* contact, const EdgeGrading& edge,
-                             const NormalStressFilter& filter);
+// Whether the row ran the run's law, D_c and element with these settings on n x n x nz.
+bool studyRowMatches(const StudyRow& row, const FemParameters& q, const StudySettings& s, int n, int nz);
+
+// The first row that matches (nullptr: the study did not run it).
+const StudyRow* findStudyRow(const std::vector<StudyRow>& rows, const FemParameters& q, const StudySettings& s, int n,
+                             int nz);
 
 // The rows of the mesh ladder whose coarsest mesh is n x n x nz, refined in every direction
 // (2n x 2n x 2nz, 4n x 4n x 4nz) or in-plane (2n, 4n at nz), into m; false where a rung is missing.
-bool findMeshLadder(const std::vector<StudyRow>& rows, const FemParameters& q, const std::string& property,
-                    double delta, int n, int nz, bool allDirections, double dtSafety, const char* contact,
-                    const EdgeGrading& edge, const NormalStressFilter& filter, const StudyRow* (&m)[3]);
+bool findMeshLadder(const std::vector<StudyRow>& rows, const FemParameters& q, const StudySettings& s, int n, int nz,
+                    bool allDirections, const StudyRow* (&m)[3]);
 
 // That ladder's meshes as the bases print them: "50x50x5/100x100x10/200x200x20" or "50x50/100/200 x 5".
 std::string ladderMeshes(int n, int nz, bool allDirections);
