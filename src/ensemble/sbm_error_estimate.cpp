@@ -24,8 +24,6 @@ namespace gradfric::ensemble {
 
 namespace {
 
-bool near(double a, double b) { return std::fabs(a - b) <= 1e-9 * std::fabs(b); }
-
 std::string percent(double fraction) {
   char text[32];
   std::snprintf(text, sizeof text, "%.2f %%", 100 * fraction);
@@ -39,25 +37,25 @@ std::string outsideStudiedScene(const sbm::Parameters& p, const Grading& g, cons
                                 bool kinetic) {
   const Plate paper;
   const Plate& q = p.plate;
-  if (!near(q.length, paper.length) || !near(q.youngsModulus, paper.youngsModulus) ||
-      !near(q.poissonRatio, paper.poissonRatio) || !near(q.density, paper.density) || !near(q.pressure, paper.pressure) ||
-      !near(q.velocity, paper.velocity) || !near(q.muStatic, paper.muStatic) || !near(q.muKinetic, paper.muKinetic))
+  if (!sameStudiedValue(q.length, paper.length) || !sameStudiedValue(q.youngsModulus, paper.youngsModulus) ||
+      !sameStudiedValue(q.poissonRatio, paper.poissonRatio) || !sameStudiedValue(q.density, paper.density) || !sameStudiedValue(q.pressure, paper.pressure) ||
+      !sameStudiedValue(q.velocity, paper.velocity) || !sameStudiedValue(q.muStatic, paper.muStatic) || !sameStudiedValue(q.muKinetic, paper.muKinetic))
     return "plate other than the paper's";
   if (q.slidingAngle != 0.0) return "sliding angle other than 0";
-  if (!near(p.layerThickness, sbm::Parameters{}.layerThickness)) return "l_z other than 5.7e-5 m";
-  if (!near(p.sigmaStatic, 0.028) || !near(p.sigmaKinetic, 0.028)) return "sigma other than the study's 2.8 %";
+  if (!sameStudiedValue(p.layerThickness, sbm::Parameters{}.layerThickness)) return "l_z other than 5.7e-5 m";
+  if (!sameStudiedValue(p.sigmaStatic, 0.028) || !sameStudiedValue(p.sigmaKinetic, 0.028)) return "sigma other than the study's 2.8 %";
   if (p.smallStrain) return "small-strain springs";
   if (p.pressureResponse.active()) return "load-dependent pressure";
-  if (!near(p.damping, 0.1 * std::sqrt(p.axialStiffness(q.youngsModulus) / p.blockMass())))
+  if (!sameStudiedValue(p.damping, 0.1 * std::sqrt(p.axialStiffness(q.youngsModulus) / p.blockMass())))
     return "damping other than 0.1 sqrt(K_int/m)";
   if (p.integrator != sbm::Integrator::VelocityVerlet) return "integrator other than velocity Verlet (the study's)";
-  if (!near(p.frictionLaw.criticalVelocity, FrictionLawSettings::kCriticalVelocity) ||
-      !near(p.frictionLaw.slipLength, FrictionLawSettings::kSlipLength))
+  if (!sameStudiedValue(p.frictionLaw.criticalVelocity, FrictionLawSettings::kCriticalVelocity) ||
+      !sameStudiedValue(p.frictionLaw.slipLength, FrictionLawSettings::kSlipLength))
     return "friction law parameters other than the defaults";
   const double load = p.loadingTime();
-  if (!near(m.peakDrop, FrictionMeasurement{}.peakDrop) || !near(m.peakHold, 0.25 * load))
+  if (!sameStudiedValue(m.peakDrop, FrictionMeasurement{}.peakDrop) || !sameStudiedValue(m.peakHold, 0.25 * load))
     return "peak rule other than the default";
-  if (kinetic && (!near(m.kineticDelay, 0.5 * load) || !near(m.kineticWidth, load) || m.kineticSteadyTolerance != 0.0))
+  if (kinetic && (!sameStudiedValue(m.kineticDelay, 0.5 * load) || !sameStudiedValue(m.kineticWidth, load) || m.kineticSteadyTolerance != 0.0))
     return "mu_k window other than the default";
   if (g.fields && g.fields->any()) return "property fields";
   if (g.active() && (g.profile != GradingProfile::Linear || g.property != GradedProperty::Friction))

@@ -15,6 +15,7 @@
 // refute it or bound the run where its own ladders prove nothing (edge_graded_bounds.hpp).
 #include "gradfric/fem/error_estimate.hpp"
 
+#include "gradfric/core/data_table.hpp"
 #include "gradfric/core/refinement_ladder.hpp"
 #include "gradfric/fem/edge_graded_bounds.hpp"
 #include "gradfric/fem/fem_study_data.hpp"  // generated: kFemStudyTable, the text of docs/fem_study.tsv
@@ -35,23 +36,21 @@ namespace gradfric::fem {
 
 namespace {
 
-bool near(double a, double b) { return std::fabs(a - b) <= 1e-9 * std::fabs(b); }
-
 // The scene the study ran: the paper's plate, the state law, the derived pressure step, no
 // damping in step 2, no property fields.
 std::string outsideStudiedScene(const FemParameters& q, const Grading& g) {
   const Plate paper;
   const Plate& p = q.plate;
-  if (!near(p.length, paper.length) || !near(p.thickness, paper.thickness) || !near(p.youngsModulus, paper.youngsModulus) ||
-      !near(p.poissonRatio, paper.poissonRatio) || !near(p.density, paper.density) || !near(p.pressure, paper.pressure) ||
-      !near(p.velocity, paper.velocity) || !near(p.muStatic, paper.muStatic) || !near(p.muKinetic, paper.muKinetic))
+  if (!sameStudiedValue(p.length, paper.length) || !sameStudiedValue(p.thickness, paper.thickness) || !sameStudiedValue(p.youngsModulus, paper.youngsModulus) ||
+      !sameStudiedValue(p.poissonRatio, paper.poissonRatio) || !sameStudiedValue(p.density, paper.density) || !sameStudiedValue(p.pressure, paper.pressure) ||
+      !sameStudiedValue(p.velocity, paper.velocity) || !sameStudiedValue(p.muStatic, paper.muStatic) || !sameStudiedValue(p.muKinetic, paper.muKinetic))
     return "plate other than the paper's";
   if (q.frictionLaw.name != StateWeakening::name ||
-      !near(q.frictionLaw.criticalVelocity, FemParameters{}.frictionLaw.criticalVelocity))
+      !sameStudiedValue(q.frictionLaw.criticalVelocity, FemParameters{}.frictionLaw.criticalVelocity))
     return "friction law other than the state law with the paper's v_c (no other law converges)";
   const FemParameters derived(p);  // the study's pressure step: the derived ramp and hold
-  if (!near(q.rampTime, derived.rampTime) || !near(q.settleTime, derived.settleTime) ||
-      !near(q.settleDamping, derived.settleDamping))
+  if (!sameStudiedValue(q.rampTime, derived.rampTime) || !sameStudiedValue(q.settleTime, derived.settleTime) ||
+      !sameStudiedValue(q.settleDamping, derived.settleDamping))
     return "pressure step other than the derived ramp, hold and damping";
   if (q.slideDamping > 0 || q.stiffnessDamping > 0 || q.bulkLinear > 0 || q.bulkQuadratic > 0)
     return "damping while sliding";

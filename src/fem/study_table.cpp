@@ -10,8 +10,6 @@ namespace gradfric::fem {
 
 namespace {
 
-bool near(double a, double b) { return std::fabs(a - b) <= 1e-9 * std::fabs(b); }
-
 // "penalty" or "penalty,pc=1e-6/0.1": the contact method, then the Prakash-Clifton filter if any.
 void splitContact(StudyRow& r) {
   const std::size_t comma = r.contact.find(",pc=");
@@ -60,16 +58,16 @@ namespace {
 
 bool sameEdgeGrading(const StudyRow& r, const EdgeGrading& edge) {
   if (edge.uniform()) return r.edgeRatio == 1.0;
-  return near(r.edgeRatio, edge.ratio) && near(r.edgeBand, edge.band);
+  return sameStudiedValue(r.edgeRatio, edge.ratio) && sameStudiedValue(r.edgeBand, edge.band);
 }
 
 }  // namespace
 
 bool studyRowMatches(const StudyRow& r, const FemParameters& q, const StudySettings& s, int n, int nz) {
-  return r.law == q.frictionLaw.name && near(r.slipLength, q.frictionLaw.slipLength) && r.property == s.plate.property &&
+  return r.law == q.frictionLaw.name && sameStudiedValue(r.slipLength, q.frictionLaw.slipLength) && r.property == s.plate.property &&
          std::fabs(r.delta - s.plate.delta) < 1e-9 && r.n == n && r.nz == nz && sameEdgeGrading(r, s.edge) &&
          r.element == elementTypeName(q.element) && std::fabs(r.dtSafety - s.dtSafety) < 1e-9 &&
-         r.contact == s.contact && near(r.filter.length, s.filter.length) && near(r.filter.speed, s.filter.speed);
+         r.contact == s.contact && sameStudiedValue(r.filter.length, s.filter.length) && sameStudiedValue(r.filter.speed, s.filter.speed);
 }
 
 const StudyRow* findStudyRow(const std::vector<StudyRow>& rows, const FemParameters& q, const StudySettings& s, int n,

@@ -1,5 +1,6 @@
 #include "gradfric/fem/thickness_dt_contact_terms.hpp"
 
+#include "gradfric/core/data_table.hpp"
 #include "gradfric/core/refinement_ladder.hpp"
 #include "gradfric/fem/ladder_term.hpp"
 
@@ -10,8 +11,6 @@
 namespace gradfric::fem {
 
 namespace {
-
-bool near(double a, double b) { return std::fabs(a - b) <= 1e-9 * std::fabs(b); }
 
 // The plate and in-plane mesh on which a term's ladder was measured (the time-step and contact
 // terms: the non-graded 100 x 100 plate).
@@ -132,7 +131,7 @@ ErrorTerm timeStepTerm(const std::vector<StudyRow>& rows, const FemParameters& q
 ErrorTerm contactTerm(const std::vector<StudyRow>& rows, const FemParameters& q) {
   if (q.contactMethod == ContactMethod::Kinematic) return {true, 0.0, "kinematic contact (the reference)"};
   const double defaultStiffness = defaultPenaltyStiffness(q.plate);
-  if (!near(q.kn, defaultStiffness) || !near(q.kt, defaultStiffness))
+  if (!sameStudiedValue(q.kn, defaultStiffness) || !sameStudiedValue(q.kt, defaultStiffness))
     return {false, 0, "penalty stiffness other than 250 G/H"};
   const StudyRow* m[2];
   const char* filter = studyRungs(rows, q, PlateMesh{}, {{5, 0.6, "penalty"}, {5, 0.6, "kinematic"}}, m);

@@ -4,11 +4,17 @@
 // with '#' are skipped. A row that does not read, or has fields left over, is an error naming the
 // table, the line and its text: a skipped row would silently drop a rung from a study, and with
 // it a bar or a reason. PETSc-free.
+#include <cmath>
 #include <sstream>
 #include <stdexcept>
 #include <string>
 
 namespace gradfric {
+
+// Whether a run's setting is the value a study ran (relative 1e-9: the tables' decimal text).
+inline bool sameStudiedValue(double value, double studied) {
+  return std::fabs(value - studied) <= 1e-9 * std::fabs(studied);
+}
 
 // read(fields) takes one row's fields from the stream and returns whether it read them all.
 template <class Read>
