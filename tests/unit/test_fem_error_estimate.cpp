@@ -534,3 +534,45 @@ TEST(FemErrorBar, ThePlatesAtFourTenthsCarryTheBarsTheirLaddersProve) {
   EXPECT_FALSE(frictionMinus.measured) << frictionMinus.basis;
   EXPECT_NE(frictionMinus.basis.find("0.729380, 0.719638, 0.646948"), std::string::npos) << frictionMinus.basis;
 }
+
+TEST(FemErrorBar, TheEPlatesAtOneTenthAndThreeTenthsCarryTheBarsTheirLaddersProve) {
+  // Refined in every direction (50x50x5, 100x100x10, 200x200x20), uniform. E +0.1: 0.883770,
+  // 0.885938, 0.885190 (alternating, the second step a third of the first: the limit between the
+  // last two); E -0.1: 0.882533, 0.867679, 0.865644 (monotone, order 2.87, capped at 2).
+  const FemParameters q;
+  const DiscretisationError plus = discretisationError(q, linear(GradedProperty::YoungsModulus, 0.1), 0.6);
+  ASSERT_TRUE(plus.measured) << plus.basis;
+  EXPECT_NEAR(plus.mesh.relative, 1.25 * std::fabs(0.885938 - 0.885190) / 0.885190, 1e-12);
+  const DiscretisationError minus = discretisationError(q, linear(GradedProperty::YoungsModulus, -0.1), 0.6);
+  ASSERT_TRUE(minus.measured) << minus.basis;
+  EXPECT_NEAR(minus.mesh.relative, gci(0.867679, 0.882533, 0.867679, 0.865644), 1e-12);
+  // The claim these bars decide (docs/reproduction.md, Figure 9): at |Delta| = 0.1 the plate with
+  // the stiff end leading (Delta > 0) keeps the larger mu_s, beyond the two bars, against the
+  // paper's order at small |Delta|.
+  EXPECT_GT(0.885938 - 0.867679, 0.885938 * plus.relative + 0.867679 * minus.relative);
+  // At 0.3: E -0.3 converges (0.750873, 0.741562, 0.738749: order 1.73); E +0.3 does not (0.758385,
+  // 0.758053, 0.754981: the second step nine times the first), so the order at 0.3 has no bar.
+  const DiscretisationError minus3 = discretisationError(q, linear(GradedProperty::YoungsModulus, -0.3), 0.6);
+  ASSERT_TRUE(minus3.measured) << minus3.basis;
+  EXPECT_NEAR(minus3.mesh.relative, gci(0.741562, 0.750873, 0.741562, 0.738749), 1e-12);
+  EXPECT_LT(minus3.relative, 0.01);
+  const DiscretisationError plus3 = discretisationError(q, linear(GradedProperty::YoungsModulus, 0.3), 0.6);
+  EXPECT_FALSE(plus3.measured);
+  EXPECT_NE(plus3.basis.find("0.758385, 0.758053, 0.754981"), std::string::npos) << plus3.basis;
+}
+
+TEST(FemErrorBar, TheFrictionPlatesAtOneTenthHaveNoBar) {
+  // Local mu_s up to 1.1: friction +0.1 on the meshes graded toward the edges alternates with a
+  // growing step (0.888323, 0.889653, 0.887603), so neither its graded runs nor the default mesh
+  // (bounded through them where they converge) get a bar; friction -0.1 has no complete ladder.
+  FemParameters graded;
+  graded.nx = graded.ny = 240;
+  graded.nz = 20;
+  graded.edge = EdgeGrading{4, 5e-4};
+  const DiscretisationError finest = discretisationError(graded, linear(GradedProperty::Friction, 0.1), 0.6);
+  EXPECT_FALSE(finest.measured);
+  EXPECT_NE(finest.basis.find("0.888323, 0.889653, 0.887603"), std::string::npos) << finest.basis;
+  const FemParameters q;
+  EXPECT_FALSE(discretisationError(q, linear(GradedProperty::Friction, 0.1), 0.6).measured);
+  EXPECT_FALSE(discretisationError(q, linear(GradedProperty::Friction, -0.1), 0.6).measured);
+}
