@@ -37,13 +37,16 @@ std::string outsideStudiedScene(const sbm::Parameters& p, const Grading& g, cons
                                 bool kinetic) {
   const Plate paper;
   const Plate& q = p.plate;
-  if (!sameStudiedValue(q.length, paper.length) || !sameStudiedValue(q.youngsModulus, paper.youngsModulus) ||
-      !sameStudiedValue(q.poissonRatio, paper.poissonRatio) || !sameStudiedValue(q.density, paper.density) || !sameStudiedValue(q.pressure, paper.pressure) ||
-      !sameStudiedValue(q.velocity, paper.velocity) || !sameStudiedValue(q.muStatic, paper.muStatic) || !sameStudiedValue(q.muKinetic, paper.muKinetic))
+  const auto same = sameStudiedValue;
+  if (!same(q.length, paper.length) || !same(q.youngsModulus, paper.youngsModulus) ||
+      !same(q.poissonRatio, paper.poissonRatio) || !same(q.density, paper.density) ||
+      !same(q.pressure, paper.pressure) || !same(q.velocity, paper.velocity) || !same(q.muStatic, paper.muStatic) ||
+      !same(q.muKinetic, paper.muKinetic))
     return "plate other than the paper's";
   if (q.slidingAngle != 0.0) return "sliding angle other than 0";
   if (!sameStudiedValue(p.layerThickness, sbm::Parameters{}.layerThickness)) return "l_z other than 5.7e-5 m";
-  if (!sameStudiedValue(p.sigmaStatic, 0.028) || !sameStudiedValue(p.sigmaKinetic, 0.028)) return "sigma other than the study's 2.8 %";
+  if (!sameStudiedValue(p.sigmaStatic, 0.028) || !sameStudiedValue(p.sigmaKinetic, 0.028))
+    return "sigma other than the study's 2.8 %";
   if (p.smallStrain) return "small-strain springs";
   if (p.pressureResponse.active()) return "load-dependent pressure";
   if (!sameStudiedValue(p.damping, 0.1 * std::sqrt(p.axialStiffness(q.youngsModulus) / p.blockMass())))
@@ -55,7 +58,8 @@ std::string outsideStudiedScene(const sbm::Parameters& p, const Grading& g, cons
   const double load = p.loadingTime();
   if (!sameStudiedValue(m.peakDrop, FrictionMeasurement{}.peakDrop) || !sameStudiedValue(m.peakHold, 0.25 * load))
     return "peak rule other than the default";
-  if (kinetic && (!sameStudiedValue(m.kineticDelay, 0.5 * load) || !sameStudiedValue(m.kineticWidth, load) || m.kineticSteadyTolerance != 0.0))
+  if (kinetic && (!sameStudiedValue(m.kineticDelay, 0.5 * load) || !sameStudiedValue(m.kineticWidth, load) ||
+                  m.kineticSteadyTolerance != 0.0))
     return "mu_k window other than the default";
   if (g.fields && g.fields->any()) return "property fields";
   if (g.active() && (g.profile != GradingProfile::Linear || g.property != GradedProperty::Friction))

@@ -41,9 +41,11 @@ namespace {
 std::string outsideStudiedScene(const FemParameters& q, const Grading& g) {
   const Plate paper;
   const Plate& p = q.plate;
-  if (!sameStudiedValue(p.length, paper.length) || !sameStudiedValue(p.thickness, paper.thickness) || !sameStudiedValue(p.youngsModulus, paper.youngsModulus) ||
-      !sameStudiedValue(p.poissonRatio, paper.poissonRatio) || !sameStudiedValue(p.density, paper.density) || !sameStudiedValue(p.pressure, paper.pressure) ||
-      !sameStudiedValue(p.velocity, paper.velocity) || !sameStudiedValue(p.muStatic, paper.muStatic) || !sameStudiedValue(p.muKinetic, paper.muKinetic))
+  const auto same = sameStudiedValue;
+  if (!same(p.length, paper.length) || !same(p.thickness, paper.thickness) ||
+      !same(p.youngsModulus, paper.youngsModulus) || !same(p.poissonRatio, paper.poissonRatio) ||
+      !same(p.density, paper.density) || !same(p.pressure, paper.pressure) || !same(p.velocity, paper.velocity) ||
+      !same(p.muStatic, paper.muStatic) || !same(p.muKinetic, paper.muKinetic))
     return "plate other than the paper's";
   if (q.frictionLaw.name != StateWeakening::name ||
       !sameStudiedValue(q.frictionLaw.criticalVelocity, FemParameters{}.frictionLaw.criticalVelocity))

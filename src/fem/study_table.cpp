@@ -64,10 +64,11 @@ bool sameEdgeGrading(const StudyRow& r, const EdgeGrading& edge) {
 }  // namespace
 
 bool studyRowMatches(const StudyRow& r, const FemParameters& q, const StudySettings& s, int n, int nz) {
-  return r.law == q.frictionLaw.name && sameStudiedValue(r.slipLength, q.frictionLaw.slipLength) && r.property == s.plate.property &&
-         std::fabs(r.delta - s.plate.delta) < 1e-9 && r.n == n && r.nz == nz && sameEdgeGrading(r, s.edge) &&
-         r.element == elementTypeName(q.element) && std::fabs(r.dtSafety - s.dtSafety) < 1e-9 &&
-         r.contact == s.contact && sameStudiedValue(r.filter.length, s.filter.length) && sameStudiedValue(r.filter.speed, s.filter.speed);
+  return r.law == q.frictionLaw.name && sameStudiedValue(r.slipLength, q.frictionLaw.slipLength) &&
+         r.property == s.plate.property && std::fabs(r.delta - s.plate.delta) < 1e-9 && r.n == n && r.nz == nz &&
+         sameEdgeGrading(r, s.edge) && r.element == elementTypeName(q.element) &&
+         std::fabs(r.dtSafety - s.dtSafety) < 1e-9 && r.contact == s.contact &&
+         sameStudiedValue(r.filter.length, s.filter.length) && sameStudiedValue(r.filter.speed, s.filter.speed);
 }
 
 const StudyRow* findStudyRow(const std::vector<StudyRow>& rows, const FemParameters& q, const StudySettings& s, int n,

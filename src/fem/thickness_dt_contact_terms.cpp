@@ -98,7 +98,8 @@ ErrorTerm thicknessTerm(const std::vector<StudyRow>& rows, const FemParameters& 
 ErrorTerm timeStepTerm(const std::vector<StudyRow>& rows, const FemParameters& q, double dtRatio) {
   if (dtRatio > 0.6 + 1e-9) return {false, 0, "dt above 0.6 of the stable step"};
   const StudyRow* m[3];
-  const char* filter = studyRungs(rows, q, PlateMesh{}, {{5, 0.6, "penalty"}, {5, 0.3, "penalty"}, {5, 0.15, "penalty"}}, m);
+  const char* filter =
+      studyRungs(rows, q, PlateMesh{}, {{5, 0.6, "penalty"}, {5, 0.3, "penalty"}, {5, 0.15, "penalty"}}, m);
   if (!m[0] || !m[1] || !m[2]) return {false, 0, "dt ladder 0.6/0.3/0.15 not measured for this D_c"};
   const NormalStressFilter rowsFilter = *filter ? q.normalFilter : NormalStressFilter{};
   // The ladder 0.6/k, 0.3/k, 0.15/k (k = 1, 2, 4, ...).
