@@ -35,14 +35,9 @@ std::string percent(double fraction) {
 // fields, sliding along the grading, a linear friction grading of 10 bands (or none).
 std::string outsideStudiedScene(const sbm::Parameters& p, const Grading& g, const FrictionMeasurement& m,
                                 bool kinetic) {
-  const Plate paper;
   const Plate& q = p.plate;
-  const auto same = sameStudiedValue;
-  if (!same(q.length, paper.length) || !same(q.youngsModulus, paper.youngsModulus) ||
-      !same(q.poissonRatio, paper.poissonRatio) || !same(q.density, paper.density) ||
-      !same(q.pressure, paper.pressure) || !same(q.velocity, paper.velocity) || !same(q.muStatic, paper.muStatic) ||
-      !same(q.muKinetic, paper.muKinetic))
-    return "plate other than the paper's";
+  const std::string plate = differenceFromPapersPlate(q, PlateThickness::Ignored);  // H does not enter the SBM
+  if (!plate.empty()) return plate;
   if (q.slidingAngle != 0.0) return "sliding angle other than 0";
   if (!sameStudiedValue(p.layerThickness, sbm::Parameters{}.layerThickness)) return "l_z other than 5.7e-5 m";
   if (!sameStudiedValue(p.sigmaStatic, 0.028) || !sameStudiedValue(p.sigmaKinetic, 0.028))

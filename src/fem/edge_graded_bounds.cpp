@@ -13,8 +13,9 @@ namespace gradfric::fem {
 std::vector<GradedLadder> edgeGradedLadders(const std::vector<StudyRow>& rows, const FemParameters& q,
                                             const Grading& g) {
   std::vector<GradedLadder> found;
+  const StudySettings run = meshStudySettings(q, g);
   for (const StudyRow& r : rows) {  // r: the coarsest mesh of a graded ladder
-    StudySettings s = meshStudySettings(q, g);
+    StudySettings s = run;  // the run's settings on this row's edge grading
     s.edge = {r.edgeRatio, r.edgeBand};
     if (r.edgeRatio == 1.0 || !studyRowMatches(r, q, s, r.n, r.nz)) continue;
     const StudyRow* m[3];

@@ -39,18 +39,12 @@ namespace {
 // The scene the study ran: the paper's plate, the state law, the derived pressure step, no
 // damping in step 2, no property fields.
 std::string outsideStudiedScene(const FemParameters& q, const Grading& g) {
-  const Plate paper;
-  const Plate& p = q.plate;
-  const auto same = sameStudiedValue;
-  if (!same(p.length, paper.length) || !same(p.thickness, paper.thickness) ||
-      !same(p.youngsModulus, paper.youngsModulus) || !same(p.poissonRatio, paper.poissonRatio) ||
-      !same(p.density, paper.density) || !same(p.pressure, paper.pressure) || !same(p.velocity, paper.velocity) ||
-      !same(p.muStatic, paper.muStatic) || !same(p.muKinetic, paper.muKinetic))
-    return "plate other than the paper's";
+  const std::string plate = differenceFromPapersPlate(q.plate, PlateThickness::Compared);
+  if (!plate.empty()) return plate;
   if (q.frictionLaw.name != StateWeakening::name ||
       !sameStudiedValue(q.frictionLaw.criticalVelocity, FemParameters{}.frictionLaw.criticalVelocity))
     return "friction law other than the state law with the paper's v_c (no other law converges)";
-  const FemParameters derived(p);  // the study's pressure step: the derived ramp and hold
+  const FemParameters derived(q.plate);  // the study's pressure step: the derived ramp and hold
   if (!sameStudiedValue(q.rampTime, derived.rampTime) || !sameStudiedValue(q.settleTime, derived.settleTime) ||
       !sameStudiedValue(q.settleDamping, derived.settleDamping))
     return "pressure step other than the derived ramp, hold and damping";
@@ -58,9 +52,7 @@ std::string outsideStudiedScene(const FemParameters& q, const Grading& g) {
     return "damping while sliding";
   if (g.fields && g.fields->any()) return "property fields";
   if (!q.contact) return "no contact";
-  if (g.active() && (g.profile != GradingProfile::Linear || g.property == GradedProperty::Both))
-    return "grading other than linear E or friction";
-  if (q.plate.slidingAngle != 0.0) return "sliding angle other than 0";
+  if (g.active() && g.property == GradedProperty::Both) return "grading of E and friction together";
   if (q.nx != q.ny) return "nx != ny";
   return "";
 }
@@ -174,9 +166,15 @@ std::string filterOfTerms(const FemParameters& q, const ErrorTerm& timeStep, con
 
 // The in-plane mesh term where the study holds no ladder of the run's mesh.
 ErrorTerm notInTheStudy(const FemParameters& q, const Grading& g) {
+  const StudiedPlate plate = studiedPlate(g, q.plate.slidingAngle);
+  char name[80];
+  if (g.active())
+    std::snprintf(name, sizeof name, "%s %+g", plate.property.c_str(), plate.delta);
+  else  // "none" or "none,theta=90"
+    std::snprintf(name, sizeof name, "non-graded%s", plate.property.substr(4).c_str());
   char text[300];
   std::snprintf(text, sizeof text, "mesh %dx%dx%d%s %s (%s) not in the mesh study", q.nx, q.ny, q.nz,
-                meshName(q).c_str(), elementTypeName(q.element), g.active() ? "graded" : "non-graded");
+                meshName(q).c_str(), elementTypeName(q.element), name);
   return {false, 0, text};
 }
 

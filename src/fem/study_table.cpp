@@ -41,14 +41,23 @@ std::vector<StudyRow> parseStudyTable(const std::string& text, StudyColumns colu
   return parsed;
 }
 
-StudiedPlate studiedPlate(const Grading& g) {
-  if (!g.active()) return {};
-  return {g.property == GradedProperty::YoungsModulus ? "E" : "friction", g.delta};
+StudiedPlate studiedPlate(const Grading& g, double slidingAngleDegrees) {
+  StudiedPlate plate;
+  if (g.active()) {
+    plate = {toString(g.property), g.delta};
+    if (g.profile != GradingProfile::Linear) plate.property += std::string(",") + toString(g.profile);
+  }
+  if (slidingAngleDegrees != 0.0) {
+    char angle[40];
+    std::snprintf(angle, sizeof angle, ",theta=%g", slidingAngleDegrees);
+    plate.property += angle;
+  }
+  return plate;
 }
 
 StudySettings meshStudySettings(const FemParameters& q, const Grading& g) {
   StudySettings s;
-  s.plate = studiedPlate(g);
+  s.plate = studiedPlate(g, q.plate.slidingAngle);
   s.edge = q.edge;
   s.filter = q.normalFilter;
   return s;

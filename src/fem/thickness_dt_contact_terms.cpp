@@ -69,7 +69,8 @@ ErrorTerm thicknessTerm(const std::vector<StudyRow>& rows, const FemParameters& 
   if (member < 0) return {false, 0, "nz other than 5, 10 or 20 (the thickness study: 5/10/20)"};
   const StudyRung rungs[3] = {{5, 0.6, "penalty"}, {10, 0.6, "penalty"}, {20, 0.6, "penalty"}};
   std::vector<PlateMesh> plates;
-  if (g.active()) plates.push_back({studiedPlate(g), q.nx});
+  const StudiedPlate run = studiedPlate(g, q.plate.slidingAngle);
+  if (run.property != "none") plates.push_back({run, q.nx});
   plates.push_back({StudiedPlate{}, q.nx});
   plates.push_back({StudiedPlate{}, 100});
   for (const PlateMesh& on : plates) {

@@ -146,6 +146,13 @@ TEST(SbmErrorEstimate, OutsideTheStudyNothingIsClaimed) {
   Setting sigma = setting(120);
   sigma.parameters.sigmaStatic = 0.05;
   EXPECT_NE(reason(sigma).find("sigma"), std::string::npos);
+  Setting dense = setting(120);
+  dense.parameters.plate.density = 2400;
+  EXPECT_NE(reason(dense).find("plate other than the paper's (rho [kg/m^3] 2400, the paper's 1200)"), std::string::npos)
+      << reason(dense);
+  Setting thick = setting(120);  // H does not enter the spring-block model: the bar stands
+  thick.parameters.plate.thickness = 1e-4;
+  EXPECT_TRUE(barOf(thick, rows, false).measured) << barOf(thick, rows, false).basis;
   Setting rk4 = setting(120);
   rk4.parameters.integrator = sbm::Integrator::RK4;
   EXPECT_NE(reason(rk4).find("integrator"), std::string::npos);

@@ -246,13 +246,13 @@ TEST(FemErrorBar, OutsideTheStudiesItIsNotMeasured) {
   notMeasured(q, Grading{}, 0.6, "mesh 100x100x5 edge-graded (ratio 8, band 0.001 m) q1 (non-graded) not in the mesh study");
   q = paperDefaults();
   q.plate.slidingAngle = 90;
-  notMeasured(q, Grading{}, 0.6, "sliding angle other than 0");
+  notMeasured(q, Grading{}, 0.6, "mesh 100x100x5 q1 (non-graded,theta=90) not in the mesh study");
   q = paperDefaults();
   q.kt = 10 * q.plate.shearModulus() / q.plate.thickness;
   notMeasured(q, Grading{}, 0.6, "penalty stiffness other than 250 G/H");
   q = paperDefaults();
   q.plate.length *= 2;
-  notMeasured(q, Grading{}, 0.6, "plate other than the paper's");
+  notMeasured(q, Grading{}, 0.6, "plate other than the paper's (L [m] 0.01, the paper's 0.005)");
   q = paperDefaults();
   q.stiffnessDamping = 3e-8;
   notMeasured(q, Grading{}, 0.6, "damping while sliding");
@@ -261,7 +261,9 @@ TEST(FemErrorBar, OutsideTheStudiesItIsNotMeasured) {
   notMeasured(q, Grading{}, 0.6, "pressure step other than");
   Grading triangular = linear(GradedProperty::Friction, 0.2);
   triangular.profile = GradingProfile::Triangular;
-  notMeasured(paperDefaults(), triangular, 0.6, "grading other than linear");
+  notMeasured(paperDefaults(), triangular, 0.6, "mesh 100x100x5 q1 (friction,triangular +0.2) not in the mesh study");
+  Grading both = linear(GradedProperty::Both, 0.2);
+  notMeasured(paperDefaults(), both, 0.6, "grading of E and friction together");
 }
 
 TEST(FemErrorBar, AFilteredRunUsesTheFilteredNonGradedStudiesWhereTheyExist) {

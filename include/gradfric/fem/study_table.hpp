@@ -26,12 +26,14 @@ enum class StudyColumns { StaticOnly, KineticWithSpread };
 // The rows of a table's text; a row that does not read is an error naming the table and the line.
 std::vector<StudyRow> parseStudyTable(const std::string& text, StudyColumns columns = StudyColumns::StaticOnly);
 
-// The plate as the tables name it: the graded property ("none", "E" or "friction") and Delta.
+// The plate as the tables name it: the graded property ("none", "E" or "friction") and Delta. A
+// profile other than linear and a sliding angle other than 0 follow the property after commas, as
+// the filter follows the contact: "E,triangular", "friction,theta=90", "E,triangular,theta=90".
 struct StudiedPlate {
   std::string property = "none";
   double delta = 0;
 };
-StudiedPlate studiedPlate(const Grading& grading);
+StudiedPlate studiedPlate(const Grading& grading, double slidingAngleDegrees);
 
 // What a row ran besides the run's law, D_c and element and besides its mesh size.
 struct StudySettings {

@@ -3,6 +3,7 @@
 // (size, thickness, material, load, sliding speed and angle, mean local friction). Each model
 // adds only its numerics (-sbm_*, -fem_*). PETSc-free; the reader is plate_options.hpp.
 #include <cmath>
+#include <string>
 
 namespace gradfric {
 
@@ -29,5 +30,11 @@ struct Plate {
     return muStatic * pressure * layerHeight / (shearModulus() * velocity);
   }
 };
+
+// Why a plate is not the paper's, naming the first field that differs, its value and the paper's
+// ("" when it is): the error bars hold only for the plate their studies ran. The sliding angle is
+// not compared (each study says which angles it ran); the thickness only where it enters the model.
+enum class PlateThickness { Compared, Ignored };
+std::string differenceFromPapersPlate(const Plate& plate, PlateThickness thickness);
 
 }  // namespace gradfric
