@@ -47,6 +47,9 @@ StudiedPlate studiedPlate(const Grading& g, double slidingAngleDegrees) {
     plate = {toString(g.property), g.delta};
     if (g.profile != GradingProfile::Linear) plate.property += std::string(",") + toString(g.profile);
   }
+  // Sliding across a linear grading, the plate at -Delta is the mirror image (x -> L - x) of the one
+  // at +Delta: the same mu_s to the last digit (docs/reproduction.md, Figure 8), so one study.
+  if (slidingAngleDegrees == 90.0 && g.profile == GradingProfile::Linear) plate.delta = std::fabs(plate.delta);
   if (slidingAngleDegrees != 0.0) {
     char angle[40];
     std::snprintf(angle, sizeof angle, ",theta=%g", slidingAngleDegrees);

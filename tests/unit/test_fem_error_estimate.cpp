@@ -552,15 +552,24 @@ TEST(FemErrorBar, TheEPlatesAtOneTenthAndThreeTenthsCarryTheBarsTheirLaddersProv
   // the stiff end leading (Delta > 0) keeps the larger mu_s, beyond the two bars, against the
   // paper's order at small |Delta|.
   EXPECT_GT(0.885938 - 0.867679, 0.885938 * plus.relative + 0.867679 * minus.relative);
-  // At 0.3: E -0.3 converges (0.750873, 0.741562, 0.738749: order 1.73); E +0.3 does not (0.758385,
-  // 0.758053, 0.754981: the second step nine times the first), so the order at 0.3 has no bar.
+  // At 0.3: E -0.3 converges (0.750873, 0.741562, 0.738749: order 1.73). E +0.3's uniform ladder
+  // does not (0.758385, 0.758053, 0.754981: the second step nine times the first), but its ladder
+  // on the meshes graded toward the edges does (0.760971, 0.755903, 0.755650: order 4.3, capped at
+  // 2), and the default run is bounded through that family's finest value (triangle inequality).
   const DiscretisationError minus3 = discretisationError(q, linear(GradedProperty::YoungsModulus, -0.3), 0.6);
   ASSERT_TRUE(minus3.measured) << minus3.basis;
   EXPECT_NEAR(minus3.mesh.relative, gci(0.741562, 0.750873, 0.741562, 0.738749), 1e-12);
   EXPECT_LT(minus3.relative, 0.01);
   const DiscretisationError plus3 = discretisationError(q, linear(GradedProperty::YoungsModulus, 0.3), 0.6);
-  EXPECT_FALSE(plus3.measured);
+  ASSERT_TRUE(plus3.measured) << plus3.basis;
   EXPECT_NE(plus3.basis.find("0.758385, 0.758053, 0.754981"), std::string::npos) << plus3.basis;
+  // |mu - mu_lim| <= |mu - f| + b |f|, relative to |mu_lim| >= (1 - b) |f|; b: f's GCI.
+  const double b = gci(0.755650, 0.760971, 0.755903, 0.755650);
+  EXPECT_NEAR(plus3.mesh.relative, (0.758053 - 0.755650 + b * 0.755650) / ((1 - b) * 0.755650), 1e-12);
+  EXPECT_LT(plus3.relative, 0.005);
+  // The claim these bars decide: at 0.3 too the plate with the stiff end leading keeps the larger
+  // mu_s beyond the two bars (the paper's order at large |Delta|).
+  EXPECT_GT(0.758053 - 0.741562, 0.758053 * plus3.relative + 0.741562 * minus3.relative);
 }
 
 TEST(FemErrorBar, TheFrictionPlatesAtOneTenthHaveNoBar) {
@@ -577,4 +586,37 @@ TEST(FemErrorBar, TheFrictionPlatesAtOneTenthHaveNoBar) {
   const FemParameters q;
   EXPECT_FALSE(discretisationError(q, linear(GradedProperty::Friction, 0.1), 0.6).measured);
   EXPECT_FALSE(discretisationError(q, linear(GradedProperty::Friction, -0.1), 0.6).measured);
+}
+
+TEST(FemErrorBar, TheTableTellsTheProfileAndTheSlidingAngleApart) {
+  // A profile other than linear and a sliding angle other than 0 follow the property in the study
+  // table ("E,triangular", "friction,theta=90"): a ladder bounds only the plate it ran.
+  const std::string table =
+      "state 2.5e-8 friction,theta=90 0.4 50 5 1 0 q1 0.6 penalty 0.73\n"
+      "state 2.5e-8 friction,theta=90 0.4 100 10 1 0 q1 0.6 penalty 0.72\n"
+      "state 2.5e-8 friction,theta=90 0.4 200 20 1 0 q1 0.6 penalty 0.7175\n"
+      "state 2.5e-8 E,triangular 0.1 50 5 1 0 q1 0.6 penalty 0.88\n"
+      "state 2.5e-8 E,triangular 0.1 100 10 1 0 q1 0.6 penalty 0.87\n"
+      "state 2.5e-8 E,triangular 0.1 200 20 1 0 q1 0.6 penalty 0.8675\n";
+  const auto meshTerm = [&](double angle, const Grading& g) {
+    FemParameters q;  // 100x100x10
+    q.plate.slidingAngle = angle;
+    return discretisationError(q, g, 0.6, table).mesh;
+  };
+  const ErrorTerm across = meshTerm(90, linear(GradedProperty::Friction, 0.4));
+  ASSERT_TRUE(across.measured) << across.basis;
+  EXPECT_NEAR(across.relative, gci(0.72, 0.73, 0.72, 0.7175), 1e-12);
+  EXPECT_FALSE(meshTerm(0, linear(GradedProperty::Friction, 0.4)).measured);   // the 0 degree plate
+  // Across the grading, -Delta is +Delta's mirror image (x -> L - x): the same study bounds it.
+  EXPECT_NEAR(meshTerm(90, linear(GradedProperty::Friction, -0.4)).relative, across.relative, 0);
+  EXPECT_FALSE(meshTerm(45, linear(GradedProperty::Friction, 0.4)).measured);
+  Grading triangular = linear(GradedProperty::YoungsModulus, 0.1);
+  triangular.profile = GradingProfile::Triangular;
+  const ErrorTerm tri = meshTerm(0, triangular);
+  ASSERT_TRUE(tri.measured) << tri.basis;
+  EXPECT_NEAR(tri.relative, gci(0.87, 0.88, 0.87, 0.8675), 1e-12);
+  EXPECT_FALSE(meshTerm(0, linear(GradedProperty::YoungsModulus, 0.1)).measured);
+  EXPECT_FALSE(meshTerm(90, triangular).measured);
+  EXPECT_NE(meshTerm(90, triangular).basis.find("(E,triangular,theta=90 +0.1) not in the mesh study"), std::string::npos)
+      << meshTerm(90, triangular).basis;
 }
