@@ -19,6 +19,14 @@ from ladder_rule import finer_not_converged, judge, shares_a_limit, through_fine
 G, H, P = 10e6 / (2 * (1 + 1 / 3)), 5e-5, 1e4
 
 
+def plate_name(prop, delta, fmt="%+.1f"):
+    """"friction +0.4, theta=90" for the table's "friction,theta=90" (a profile or angle after commas)."""
+    if prop == "none":
+        return "none"
+    base, *others = prop.split(",")
+    return ", ".join(["%s %s" % (base, fmt % delta)] + others)
+
+
 def load(path, edge=(1.0, 0.0)):
     """The rows of one mesh family: edge = (edge_ratio, edge_band), (1, 0) the uniform meshes."""
     rows = {}
@@ -64,7 +72,7 @@ def main():
     seen = sorted({(k[8] != "penalty", k[8], k[0], k[1], k[2], k[3]) for k in rows if k[8].startswith("penalty")})
     for _, contact, law, dc, prop, delta in seen:
         kappa = G * dc / (H * P * 0.4)
-        grading = "none" if prop == "none" else "%s %+.1f" % (prop, delta)
+        grading = plate_name(prop, delta)
         if contact != "penalty":
             grading += ", filter L/V* " + contact.split("=", 1)[1]
         found = ladders(rows, law, dc, prop, delta, contact=contact)
@@ -91,7 +99,7 @@ def main():
     for contact in sorted({k[8] for k in rows if k[8].startswith("penalty") and k[1] == 2.5e-8 and k[5] == 20}):
         suffix = "" if contact == "penalty" else ", filter L/V* " + contact.split("=", 1)[1]
         gradings = [("none", 0.0)] + sorted({(k[2], k[3]) for k in rows if k[2] != "none" and k[1] == 2.5e-8})
-        table += [("all directions 50x50x5/100x100x10/200x200x20" + ("" if prop == "none" else ", %s %+.1f" % (prop, delta))
+        table += [("all directions 50x50x5/100x100x10/200x200x20" + ("" if prop == "none" else ", " + plate_name(prop, delta))
                    + suffix, [("state", 2.5e-8, prop, delta, n, nz, "q1", 0.6, contact)
                               for n, nz in ((50, 5), (100, 10), (200, 20))])
                   for prop, delta in gradings]
@@ -172,7 +180,7 @@ def each_direction_apart(rows):
     lines = []
     for law, dc, prop, delta, contact in plates:
         key = lambda n, nz: (law, dc, prop, delta, n, nz, "q1", 0.6, contact)
-        tag = ("none" if prop == "none" else "%s %+.1f" % (prop, delta)) + ", D_c %g%s" % (
+        tag = plate_name(prop, delta) + ", D_c %g%s" % (
             dc, "" if contact == "penalty" else ", filter L/V* " + contact.split("=", 1)[1])
         runs = [("in-plane 50/100/200 x %d" % nz, [key(n, nz) for n in (50, 100, 200)]) for nz in (5, 10, 20)]
         runs += [("nz 5/10/20 on %d x %d" % (n, n), [key(n, nz) for nz in (5, 10, 20)]) for n in (50, 100, 200)]
@@ -227,7 +235,7 @@ def edge_graded(path):
             continue
         mu = mu_of[(prop, delta)] = [rows[k] for k in keys]
         d, p, ext, bounds = analyse(mu)
-        tag = "none" if prop == "none" else "%s %+.1f" % (prop, delta)
+        tag = plate_name(prop, delta)
         lines.append("| %s | %s | %s | %s | %s | %s |" % (tag, ", ".join("%.6f" % m for m in mu), d, p, ext, bounds))
     if not lines:
         return
@@ -252,7 +260,7 @@ def edge_graded(path):
                 verdict = "order %.2f, extrapolated %+.6f" % (v["order"], v["extrapolated"])
             else:
                 verdict = v["outcome"]
-            print("| %s %.1f | %s | %s |" % (prop, delta, ", ".join("%+.6f" % x for x in diff), verdict))
+            print("| %s | %s | %s |" % (plate_name(prop, delta, "%.1f"), ", ".join("%+.6f" % x for x in diff), verdict))
 
 
 def limit_interval(mu):
@@ -318,7 +326,7 @@ def paired_differences(rows):
                     verdict = "order %.2f, extrapolated %+.6f, finest %+.6f +- %.6f" % (
                         v["order"], v["extrapolated"], d[2], (high - low) / 2)
                 sign = "decided: %s" % ("+Delta above" if low > 0 else "-Delta above") if low * high > 0 else "not decided"
-            tag = "%s %.1f, D_c %g%s" % (prop, delta, dc, "" if contact == "penalty" else ", filter L/V* " + contact.split("=", 1)[1])
+            tag = "%s, D_c %g%s" % (plate_name(prop, delta, "%.1f"), dc, "" if contact == "penalty" else ", filter L/V* " + contact.split("=", 1)[1])
             lines.append("| %s | %s: %s | %s | %s |" % (tag, meshes[n], ", ".join("%+.6f" % x for x in d), verdict, sign))
     if lines:
         print()
