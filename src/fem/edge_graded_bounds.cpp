@@ -24,8 +24,7 @@ std::vector<GradedLadder> edgeGradedLadders(const std::vector<StudyRow>& rows, c
     char name[200];
     std::snprintf(name, sizeof name, "%s edge-graded (ratio %g, band %g m), all directions",
                   ladderMeshes(r.n, r.nz, true).c_str(), r.edgeRatio, r.edgeBand);
-    const ErrorTerm term = ladderTerm("mesh", name, m, 2);
-    if (term.measured) found.push_back({m[2], term});
+    found.push_back({m[2], ladderTerm("mesh", name, m, 2)});
   }
   return found;
 }
@@ -36,6 +35,7 @@ ErrorTerm throughEdgeGradedLadder(const StudyRow& run, const std::vector<GradedL
                                   const FemParameters& q) {
   ErrorTerm best{false, 0, ""};
   for (const GradedLadder& ladder : ladders) {
+    if (!ladder.term.measured) continue;
     const StudyRow& f = *ladder.finest;
     const MeshAxis axis = makeMeshAxis(EdgeGrading{f.edgeRatio, f.edgeBand}, f.n, q.plate.length);
     const double widest = *std::max_element(axis.classWidth.begin(), axis.classWidth.end());
@@ -55,6 +55,7 @@ ErrorTerm throughEdgeGradedLadder(const StudyRow& run, const std::vector<GradedL
 std::string refutedByEdgeGradedLadder(const StudyRow& run, const std::vector<GradedLadder>& ladders,
                                       const ErrorTerm& mesh) {
   for (const GradedLadder& ladder : ladders) {
+    if (!ladder.term.measured) continue;
     const BoundedValue values[2] = {{run.mu, mesh.relative}, {ladder.finest->mu, ladder.term.relative}};
     if (shareALimit(values, 2)) continue;
     char text[200];

@@ -541,6 +541,7 @@ TEST(FemErrorBar, ThePlatesAtFourTenthsCarryTheBarsTheirLaddersProve) {
   const DiscretisationError frictionMinus = discretisationError(q, linear(GradedProperty::Friction, -0.4), 0.6);
   EXPECT_FALSE(frictionMinus.measured) << frictionMinus.basis;
   EXPECT_NE(frictionMinus.basis.find("0.729380, 0.719638, 0.646948"), std::string::npos) << frictionMinus.basis;
+  EXPECT_NE(frictionMinus.basis.find("0.725532, 0.710856, 0.655292"), std::string::npos) << frictionMinus.basis;
 }
 
 TEST(FemErrorBar, TheEPlatesAtOneTenthAndThreeTenthsCarryTheBarsTheirLaddersProve) {
@@ -637,15 +638,28 @@ TEST(FemErrorBar, TheFigure8And11PlatesCarryWhatTheirLaddersProve) {
   const DiscretisationError minus = discretisationError(q, triangular, 0.6);
   ASSERT_TRUE(minus.measured) << minus.basis;
   EXPECT_NEAR(minus.mesh.relative, gci(0.871502, 0.884671, 0.871502, 0.870157), 1e-12);
+  // +0.1's uniform ladder creeps, but on the meshes graded toward the edges it converges (stop 43:
+  // 0.901136, 0.895615, 0.893540, order 1.41), and the default run is bounded through that finest
+  // value, as E +0.3 and +0.4 are.
   triangular.delta = 0.1;
   const DiscretisationError plus = discretisationError(q, triangular, 0.6);
-  EXPECT_FALSE(plus.measured);
+  ASSERT_TRUE(plus.measured) << plus.basis;
   EXPECT_NE(plus.basis.find("0.905715, 0.900695, 0.895302"), std::string::npos) << plus.basis;
+  EXPECT_NEAR(plus.mesh.relative, throughFinest(0.900695, 0.893540, gci(0.893540, 0.901136, 0.895615, 0.893540)),
+              1e-12);
+  // The claim these bars decide (docs/reproduction.md, Figure 11): under the triangular E profile
+  // the plate with stiff edges (Delta < 0) has the smaller mu_s, beyond the two bars.
+  EXPECT_GT(0.900695 - 0.871502, 0.900695 * plus.relative + 0.871502 * minus.relative);
   FemParameters across;
   across.plate.slidingAngle = 90;
+  // On the meshes graded toward the edges it does not converge either (stop 43: 0.712453, 0.724126,
+  // 0.714498, the second step 0.82 of the first); the message names both families.
   for (double delta : {0.4, -0.4}) {
     const DiscretisationError e = discretisationError(across, linear(GradedProperty::Friction, delta), 0.6);
     EXPECT_FALSE(e.measured);
     EXPECT_NE(e.basis.find("0.709511, 0.723374, 0.712839"), std::string::npos) << e.basis;
+    EXPECT_NE(e.basis.find("edge-graded (ratio 4, band 0.0005 m), all directions give 0.712453, 0.724126, 0.714498"),
+              std::string::npos)
+        << e.basis;
   }
 }

@@ -16,25 +16,25 @@
 
 namespace gradfric::fem {
 
-// A converging ladder refined in every direction on meshes graded toward the edges: its finest row
-// and that row's bound.
+// A ladder refined in every direction on meshes graded toward the edges: its finest row and that
+// row's bound (not measured where the ladder does not converge; its basis then says why).
 struct GradedLadder {
   const StudyRow* finest = nullptr;
   ErrorTerm term;
 };
 
-// Every converging graded ladder of the run's plate refined in every direction (the finest ladder
-// of each edge grading the study has), at the run's filter.
+// Every graded ladder of the run's plate refined in every direction (the finest ladder of each edge
+// grading the study has), at the run's filter, converging or not.
 std::vector<GradedLadder> edgeGradedLadders(const std::vector<StudyRow>& rows, const FemParameters& q,
                                             const Grading& g);
 
-// The run (its study row) bounded through the graded ladder that gives the smallest bound, or not
-// measured where none is nowhere coarser than its mesh.
+// The run (its study row) bounded through the converging graded ladder that gives the smallest
+// bound, or not measured where none is nowhere coarser than its mesh.
 ErrorTerm throughEdgeGradedLadder(const StudyRow& run, const std::vector<GradedLadder>& ladders,
                                   const FemParameters& q);
 
-// The refutation of the run's own bound `mesh` by the first graded ladder whose bound shares no
-// limit with it, or "" where none.
+// The refutation of the run's own bound `mesh` by the first converging graded ladder whose bound
+// shares no limit with it, or "" where none.
 std::string refutedByEdgeGradedLadder(const StudyRow& run, const std::vector<GradedLadder>& ladders,
                                       const ErrorTerm& mesh);
 
