@@ -650,6 +650,19 @@ TEST(FemErrorBar, TheFigure8And11PlatesCarryWhatTheirLaddersProve) {
   // The claim these bars decide (docs/reproduction.md, Figure 11): under the triangular E profile
   // the plate with stiff edges (Delta < 0) has the smaller mu_s, beyond the two bars.
   EXPECT_GT(0.900695 - 0.871502, 0.900695 * plus.relative + 0.871502 * minus.relative);
+  // At 0.2 the same (stop 43): -0.2 converges on the uniform meshes (0.822034, 0.812549, 0.811092,
+  // order 2.70), +0.2 on the graded ones (0.834730, 0.829516, 0.826828, order 0.96; its uniform
+  // ladder has no third rung), and the order holds beyond the two bars.
+  triangular.delta = -0.2;
+  const DiscretisationError minus2 = discretisationError(q, triangular, 0.6);
+  ASSERT_TRUE(minus2.measured) << minus2.basis;
+  EXPECT_NEAR(minus2.mesh.relative, gci(0.812549, 0.822034, 0.812549, 0.811092), 1e-12);
+  triangular.delta = 0.2;
+  const DiscretisationError plus2 = discretisationError(q, triangular, 0.6);
+  ASSERT_TRUE(plus2.measured) << plus2.basis;
+  EXPECT_NEAR(plus2.mesh.relative, throughFinest(0.833107, 0.826828, gci(0.826828, 0.834730, 0.829516, 0.826828)),
+              1e-12);
+  EXPECT_GT(0.833107 - 0.812549, 0.833107 * plus2.relative + 0.812549 * minus2.relative);
   FemParameters across;
   across.plate.slidingAngle = 90;
   // On the meshes graded toward the edges it does not converge either (stop 43: 0.712453, 0.724126,
