@@ -13,6 +13,9 @@ endforeach()
 set(GRADFRIC_INSTALL_DATADIR ${CMAKE_INSTALL_DATADIR}/gradfric)
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/input/ DESTINATION ${GRADFRIC_INSTALL_DATADIR}/input
         FILES_MATCHING PATTERN "*.opts" PATTERN "*.yaml" PATTERN "*.h5" PATTERN "*.png")
+# The convergence studies' measurements, read at run time by the error bars (core/study_table.hpp).
+install(FILES ${PROJECT_SOURCE_DIR}/docs/fem_study.tsv ${PROJECT_SOURCE_DIR}/docs/sbm_study.tsv
+        DESTINATION ${GRADFRIC_INSTALL_DATADIR}/studies)
 # The plotting scripts work on any results file; scripts/setup.sh, run-*.sh and
 # reproduce_paper.sh drive a source tree and stay there.
 install(PROGRAMS ${PROJECT_SOURCE_DIR}/scripts/gradfric_plot.py ${PROJECT_SOURCE_DIR}/scripts/gradfric_plot_data.py

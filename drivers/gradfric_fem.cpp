@@ -6,7 +6,6 @@
 #include "gradfric/core/driver.hpp"
 #include "gradfric/core/input_error.hpp"
 #include "gradfric/core/options.hpp"
-#include "gradfric/fem/error_estimate.hpp"
 #include "gradfric/fem/output.hpp"
 #include "gradfric/fem/parameters.hpp"
 #include "gradfric/fem/plate_model.hpp"
@@ -33,7 +32,8 @@
 
 static const char help[] =
     "gradfric-fem: explicit 3D FEM of an elastic plate sliding on a rigid plane with penalty contact and the\n"
-    "velocity-weakening friction of the paper's Eq. 1; pressure step, then sliding; reports mu(t), mu_s,\n"
+    "velocity-weakening friction of a state law whose steady state is the paper's Eq. 1 (-friction_law);\n"
+    "pressure step, then sliding; reports mu(t), mu_s,\n"
     "the peak time (vs Eq. 2) and mu_k. Options -fem_*, -plate_*, -friction_*, -grading_*, -field_*,\n"
     "-output; PETSc's TS options with the prefix fem_ (-fem_ts_type, default gfverlet). -help <prefix> (-help fem) lists the options of one prefix.\n";
 
@@ -158,10 +158,14 @@ std::string otherObservables(const FrictionSummary& f) {
   return lines;
 }
 
-void printResults(MPI_Comm comm, const FemRun& run, const FemRunResult& r, double wall) {
+// The value with its discretisation bar (the study's ladder of the run's scene and mesh).
+std::string withBar(double value, const study::StudyBar& bar) {
+  return formatReal(value) + "  (discretisation " + study::describeBar(bar) + ")";
+}
+
+void printResults(MPI_Comm comm, const FemRun& run, const FemRunResult& r, double wall, const RunParameters& scene) {
   const double eq2 = run.params.eq2PeakTime();
   const FrictionSummary& f = r.friction;
-  const DiscretisationError error = discretisationError(run.params, run.grading, r.dt / r.stableDt);
   PetscPrintf(comm,
               "Results (FEM):\n"
               "  settled normal force / (p L^2)  %.6f\n"
@@ -173,9 +177,9 @@ void printResults(MPI_Comm comm, const FemRun& run, const FemRunResult& r, doubl
               "  mu_k (kinetic window)           %s%s\n"
               "%s"
               "  steps %ld, dt %.4e s, wall %.2f s (pressure %.2f s, sliding %.2f s), %.3f ms/step\n",
-              r.settledNormalForce, withErrorBar(f.muStatic, error).c_str(),
+              r.settledNormalForce, withBar(f.muStatic, femStudyBar(scene, nullptr, run.params, "mu_s")).c_str(),
               f.peakConfirmed ? "" : "  (peak not confirmed)", r.resolution.describe().c_str(), f.peakTime, eq2, f.peakTime / eq2, f.firstSlipTime,
-              otherObservables(f).c_str(), withKineticErrorBar(f.muKinetic, error).c_str(),
+              otherObservables(f).c_str(), withBar(f.muKinetic, femStudyBar(scene, nullptr, run.params, "mu_k")).c_str(),
               !run.params.measurement.kinetic ? "  (not asked: -friction_observables)"
               : f.kineticComplete             ? ""
                                               : "  (window incomplete)",
@@ -245,7 +249,7 @@ int main(int argc, char** argv) {
                 OptionOrigin::Derived});
     output.writeResults(model, result, scene, record);
     output.finish();                                              // complete: renamed into place
-    printResults(comm, *run, result, wall);
+    printResults(comm, *run, result, wall, scene);
     compareWithSpringBlocks(comm, *run, result, wall);
   });
 }

@@ -1,6 +1,9 @@
 // The /statistics columns (include/gradfric/campaign/statistics_columns.hpp).
 #include "gradfric/campaign/statistics_columns.hpp"
 
+#include <cmath>
+#include <limits>
+
 #include "gradfric/physics/observables.hpp"
 
 namespace gradfric::campaign {
@@ -62,15 +65,54 @@ std::vector<io::StatisticColumn> statisticsColumns() {
   return out;
 }
 
-io::StatisticColumn discretisationColumn(const std::string& observable, const std::string& term) {
-  const std::string description =
-      term == "error"     ? "relative discretisation error bound of " + observable +
-                                " at the point's settings (NaN: not measured)"
-      : term == "lattice" ? "its lattice term (N_b ladder), relative (NaN: not measured)"
-                          : "its time-step term, relative (NaN: not measured)";
-  return column(observable + "_discretisation_" + term, "1", description, false,
-                "bound from the convergence study (GCI with safety factor 1.25 and time-step term), not a "
-                "statistical interval");
+namespace {
+
+const char* const kBarFields[][2] = {
+    {"error", "U / |value|: the relative discretisation uncertainty of the point's mean (NaN: not measured)"},
+    {"order", "observed order p of the ladder's fit phi_0 + alpha h^p (NaN: not measured)"},
+    {"safety_factor", "safety factor Fs of the procedure: 1.25 in the asymptotic range, 3 otherwise (NaN: not measured)"},
+    {"extrapolated", "phi_0, the value the error fit extrapolates to (NaN: not measured)"},
+    {"half_width", "the 95 % statistical half-width included in U, relative (NaN: not measured)"}};
+
+// The per-point text of a field, one line per point.
+std::string perPoint(const std::vector<study::StudyBar>& bars, std::string (*field)(const study::StudyBar&)) {
+  std::string text;
+  for (std::size_t p = 0; p < bars.size(); ++p) text += (p ? "\n" : "") + field(bars[p]);
+  return text;
+}
+
+}  // namespace
+
+std::vector<io::StatisticColumn> discretisationColumns(const std::string& observable,
+                                                       const std::vector<study::StudyBar>& bars) {
+  std::vector<io::StatisticColumn> columns;
+  for (const auto& [field, description] : kBarFields)
+    columns.push_back(column(observable + "_discretisation_" + field, "1", description, false,
+                             "Eca and Hoekstra (2014) least-squares procedure on the study's ladder "
+                             "(docs/verification.md), not a statistical interval"));
+  auto& attributes = columns.front().attributes;  // one line per point
+  attributes.emplace_back("convergence", perPoint(bars, [](const study::StudyBar& b) {
+                            return b.ladder.empty() ? std::string("not in the study") : verification::toString(b.verdict.convergence);
+                          }));
+  attributes.emplace_back("fit", perPoint(bars, [](const study::StudyBar& b) {
+                            return b.measured ? std::string(verification::toString(b.verdict.fit)) : std::string("none");
+                          }));
+  attributes.emplace_back("ladder", perPoint(bars, study::ladderText));
+  attributes.emplace_back("basis", perPoint(bars, study::describeBar));
+  return columns;
+}
+
+std::vector<std::pair<std::string, std::vector<double>>> discretisationValues(const std::string& observable,
+                                                                              const std::vector<study::StudyBar>& bars) {
+  std::vector<std::pair<std::string, std::vector<double>>> values;
+  for (const auto& field : kBarFields) values.emplace_back(observable + "_discretisation_" + field[0], std::vector<double>{});
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (const study::StudyBar& b : bars) {
+    const verification::Verdict& v = b.verdict;
+    const double fields[] = {v.relative(), v.order, v.safetyFactor, v.extrapolated, v.halfWidth / std::fabs(v.value)};
+    for (std::size_t k = 0; k < values.size(); ++k) values[k].second.push_back(b.measured ? fields[k] : nan);
+  }
+  return values;
 }
 
 std::vector<io::StatisticColumn> targetColumns() {

@@ -65,6 +65,18 @@ HelpText& helpText() {
   return text;
 }
 
+// GRADFRIC_HELP_FORMAT=tsv: -help prints one line per option, section<TAB>name<TAB>default<TAB>
+// unit<TAB>help, and no section headings (scripts/options_reference.sh makes docs/options.md of it).
+bool helpAsTsv() {
+  const char* format = std::getenv("GRADFRIC_HELP_FORMAT");
+  return format && std::string(format) == "tsv";
+}
+
+std::string tsvField(std::string text) {
+  std::replace_if(text.begin(), text.end(), [](char c) { return c == '\t' || c == '\n' || c == '\r'; }, ' ');
+  return text;
+}
+
 std::set<std::string>& knownNames() {
   static std::set<std::string> names;
   return names;
@@ -134,7 +146,7 @@ int helpLinesPrinted() { return static_cast<int>(helpText().listed.size()); }
 void printHelpSections(MPI_Comm comm) {
   HelpText& text = helpText();
   for (const auto& section : text.sections) {
-    GF_CALL(PetscPrintf(comm, "%s:\n", section.c_str()));
+    if (!helpAsTsv()) GF_CALL(PetscPrintf(comm, "%s:\n", section.c_str()));
     for (const auto& line : text.lines[section]) GF_CALL(PetscPrintf(comm, "%s\n", line.c_str()));
   }
   text.sections.clear();
@@ -149,16 +161,22 @@ void OptionReader::printHelp(const std::string& name, const std::string& current
   if (option.compare(1, helpFilter().size(), helpFilter()) != 0 || !text.listed.insert(option).second) return;
   const std::string section = prefix_.empty() ? title_ : title_ + " (-" + prefix_ + ")";
   if (!text.lines.count(section)) text.sections.push_back(section);
+  if (helpAsTsv()) {
+    text.lines[section].push_back(tsvField(section) + "\t" + option + "\t" + tsvField(current) + "\t" + tsvField(unit) +
+                                  "\t" + tsvField(help));
+    return;
+  }
   std::string unitText = unit.empty() ? "" : " [" + unit + "]";
   text.lines[section].push_back("  " + option + " <" + current + ">" + unitText + ": " + help);
 }
 
 void OptionReader::store(const std::string& name, const std::string& value, const std::string& unit,
-                         const std::string& help, bool userSet, const std::string& fallback, bool isPath) {
+                         const std::string& help, bool userSet, const std::string& fallback, bool isPath,
+                         const std::string& defaultText) {
   knownNames().insert(fullName(name));
   if (record_)
     record_->add({fullName(name), value, unit, help, userSet ? OptionOrigin::User : OptionOrigin::Default, fallback,
-                  isPath});
+                  isPath, defaultText.empty() ? fallback : defaultText});
 }
 
 bool OptionReader::wasSet(const std::string& name) const {
@@ -212,7 +230,7 @@ PetscInt OptionReader::integer(const std::string& name, PetscInt fallback, Petsc
     value = static_cast<PetscInt>(parsed);
   }
   printHelp(name, std::to_string(value), unit, help + " (" + range + ")");
-  store(name, std::to_string(value), unit, help, set);
+  store(name, std::to_string(value), unit, help, set, "", false, std::to_string(fallback));
   return value;
 }
 
@@ -228,7 +246,7 @@ bool OptionReader::flag(const std::string& name, bool fallback, const std::strin
     else throw InputError(fullName(name), text, "true or false");
   }
   printHelp(name, value ? "true" : "false", "", help);
-  store(name, value ? "true" : "false", "", help, set);
+  store(name, value ? "true" : "false", "", help, set, "", false, fallback ? "true" : "false");
   return value;
 }
 
@@ -246,7 +264,7 @@ std::string OptionReader::text(const std::string& name, const std::string& fallb
   GF_CALL(PetscOptionsGetString(nullptr, prefix_.c_str(), ("-" + name).c_str(), raw, sizeof raw, &set));
   std::string value = set ? std::string(raw) : fallback;
   printHelp(name, value, "", help);
-  store(name, value, "", help, set);
+  store(name, value, "", help, set, "", false, fallback);
   return value;
 }
 
@@ -289,7 +307,7 @@ std::vector<double> OptionReader::realList(const std::string& name, const std::v
     }
   }
   printHelp(name, joinedReals(values), unit, help + " (comma-separated)");
-  store(name, joinedReals(values), unit, help, set);
+  store(name, joinedReals(values), unit, help, set, "", false, joinedReals(fallback));
   return values;
 }
 
@@ -304,7 +322,7 @@ std::vector<std::string> OptionReader::choiceList(const std::string& name, const
     if (std::find(allowed.begin(), allowed.end(), v) == allowed.end())
       throw InputError(fullName(name), v, "a comma-separated list of: " + joined(allowed, ", "));
   printHelp(name, joined(values, ","), "", help + " (comma-separated from " + joined(allowed, ", ") + ")");
-  store(name, joined(values, ","), "", help, set);
+  store(name, joined(values, ","), "", help, set, "", false, joined(fallback, ","));
   return values;
 }
 

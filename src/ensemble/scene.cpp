@@ -1,6 +1,7 @@
 // Reading a spring-block scene: every option read and checked before any work, then the sweep,
 // the results file's layout and the attributes it stores.
 #include "gradfric/ensemble/scene.hpp"
+#include "gradfric/study/scene_key.hpp"
 
 #include "gradfric/core/input_error.hpp"
 #include "gradfric/core/petsc_call.hpp"
@@ -179,16 +180,10 @@ io::EnsembleLayout layoutOf(const Scene& s) {
   layout.frictionFields = s.frictionFields;
   layout.snapshotTimes = s.request.snapshotTimes;
   layout.statistics = statisticsColumns();
-  // Each point's discretisation bar (sbm_error_estimate.hpp): total, lattice and time-step terms,
-  // and the basis of every point's bar as an attribute of the total.
-  for (const char* mu : {"mu_s", "mu_k"}) {
-    std::string basis;
-    for (int p = 0; p < s.points(); ++p) {
-      basis += (p ? "\n" : "") + std::string("point ") + std::to_string(p) + ": " +
-               s.discretisation(p, mu[3] == 'k').basis;
-    }
-    for (const char* term : {"error", "lattice", "dt"}) layout.statistics.push_back(discretisationColumn(mu, term));
-    layout.statistics[layout.statistics.size() - 3].attributes.emplace_back("basis", basis);
+  // Each point's discretisation bar, as fields (campaign/statistics_columns.hpp).
+  for (int k = 0; k < 2; ++k) {
+    const auto columns = discretisationColumns(k ? "mu_k" : "mu_s", s.bars[k]);
+    layout.statistics.insert(layout.statistics.end(), columns.begin(), columns.end());
   }
   if (s.target.active()) {  // what the target asked and what each point reached
     const auto target = targetColumns();
@@ -238,10 +233,6 @@ sbm::Parameters Scene::pointParameters(int p) const {
   q.sigmaStatic = sweep.points[p].sigma;
   q.sigmaKinetic = sweep.points[p].sigmaKinetic;
   return q;
-}
-
-SbmDiscretisation Scene::discretisation(int p, bool kinetic) const {
-  return sbmDiscretisationError(pointParameters(p), pointGrading(p), request.measurement, kinetic);
 }
 
 std::optional<Scene> readScene(MPI_Comm comm, RunParameters* record) {
@@ -305,6 +296,11 @@ std::optional<Scene> readScene(MPI_Comm comm, RunParameters* record) {
         throw InputError("-ensemble_target_type", "variation",
                          "sweeps with a non-graded point for every graded one (point " + std::to_string(p) +
                              " has none: add 0 to -ensemble_delta)");
+  for (int p = 0; p < s.points(); ++p) {  // the study's bar of each point (its scene and N_b)
+    const study::SceneKey key = study::sceneKey(*record, {"-sbm_N"}, &s.sweep.points[p]);
+    for (int k = 0; k < 2; ++k)
+      s.bars[k].push_back(study::studyBar("sbm_study.tsv", k ? "mu_k" : "mu_s", key, {s.parameters.blocksPerSide}));
+  }
   s.layout = layoutOf(s);
   s.table = tableOf(s);
   for (const io::Attribute& a : io::optionAttributes(*record)) {

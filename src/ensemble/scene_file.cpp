@@ -85,20 +85,11 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 std::vector<PointStatistics> writeStatistics(io::ResultsFile& file, const Scene& scene) {
   auto stats = writeStatistics(file, scene.realisations, scene.sweep.reference, scene.commonStreams,
                                scene.target.active() ? &scene.target : nullptr);
-  // Each point's discretisation bar and its terms, relative; NaN where not measured (the basis of
-  // each is the attribute `basis` of mu_*_discretisation_error, written with the layout).
+  // Each point's discretisation bar as fields (their text attributes came with the layout).
   std::vector<std::pair<std::string, std::vector<double>>> bars;
-  for (const char* mu : {"mu_s", "mu_k"}) {
-    std::vector<double> total, lattice, step;
-    for (int p = 0; p < scene.points(); ++p) {
-      const SbmDiscretisation e = scene.discretisation(p, mu[3] == 'k');
-      total.push_back(e.measured ? e.relative : kNaN);
-      lattice.push_back(e.lattice.measured ? e.lattice.relative : kNaN);
-      step.push_back(e.timeStep.measured ? e.timeStep.relative : kNaN);
-    }
-    bars.emplace_back(discretisationColumn(mu, "error").name, total);
-    bars.emplace_back(discretisationColumn(mu, "lattice").name, lattice);
-    bars.emplace_back(discretisationColumn(mu, "dt").name, step);
+  for (int k = 0; k < 2; ++k) {
+    const auto values = discretisationValues(k ? "mu_k" : "mu_s", scene.bars[k]);
+    bars.insert(bars.end(), values.begin(), values.end());
   }
   file.writeStatistics(bars, {});
   return stats;

@@ -64,8 +64,7 @@ void printSweep(MPI_Comm comm, const Scene& scene) {
 void printDiscretisation(MPI_Comm comm, const Scene& scene, bool kinetic) {
   std::vector<std::pair<std::string, std::string>> lines;  // (bar and basis, its points)
   for (int p = 0; p < scene.points(); ++p) {
-    const SbmDiscretisation bar = scene.discretisation(p, kinetic);
-    const std::string line = describeBar(bar) + (bar.measured ? ": " + bar.basis : "");
+    const std::string line = "discretisation " + study::describeBar(scene.discretisation(p, kinetic));
     auto same = std::find_if(lines.begin(), lines.end(), [&](const auto& l) { return l.first == line; });
     if (same == lines.end()) same = lines.insert(lines.end(), {line, ""});
     same->second += (same->second.empty() ? "" : ", ") + std::to_string(p);
@@ -107,8 +106,8 @@ void printTable(MPI_Comm comm, const Scene& scene, const std::vector<PointStatis
       std::snprintf(rel, sizeof rel, "%s", "(no reference)");
     char discretisation[32] = "n/m";  // not measured: the reason follows the table
     if (hasBar(observable)) {
-      const SbmDiscretisation bar = scene.discretisation(static_cast<int>(p), observable.name == "mu_k");
-      if (bar.measured) std::snprintf(discretisation, sizeof discretisation, "+- %.2f", 100 * bar.relative);
+      const study::StudyBar& bar = scene.discretisation(static_cast<int>(p), observable.name == "mu_k");
+      if (bar.measured) std::snprintf(discretisation, sizeof discretisation, "+- %.2f", 100 * bar.verdict.relative());
     }
     GF_CALL(PetscPrintf(comm, pure ? "  %-5zu %-32s %4d %10.6f %10.6f %10.6f %23s %19s %11s%s\n"
                                    : "  %-5zu %-32s %4d %10.4g %10.4g %10.4g %23s %19s %11s%s\n",
@@ -148,7 +147,7 @@ void printStatistics(MPI_Comm comm, const Scene& scene, const std::vector<PointS
                         s.peaksUnconfirmed ? "  (peak NOT confirmed before t_max: mu_s is the maximum reached)" : ""));
     for (bool kinetic : {false, true})
       if (!kinetic || scene.request.measurement.kinetic)
-        GF_CALL(PetscPrintf(comm, "  %s: %s\n", kinetic ? "mu_k" : "mu_s", describeBar(scene.discretisation(0, kinetic)).c_str()));
+        GF_CALL(PetscPrintf(comm, "  %s: %s\n", kinetic ? "mu_k" : "mu_s", ("discretisation " + study::describeBar(scene.discretisation(0, kinetic))).c_str()));
     return;
   }
   for (std::size_t o = 0; o < rows.size(); ++o)  // an observable of the kinetic window only when it was measured
@@ -156,8 +155,8 @@ void printStatistics(MPI_Comm comm, const Scene& scene, const std::vector<PointS
   GF_CALL(PetscPrintf(comm,
                       "  rel. var. = (mu - mu_0)/mu_0 against the non-graded point of the same angle and dispersion,"
                       " +- the 95 %% half-width: %s\n"
-                      "  discr. = the discretisation bound of the mean (lattice + time step; docs/accuracy.md), n/m: not "
-                      "measured\n",
+                      "  discr. = the discretisation uncertainty of the mean (the study's lattice ladder, docs/verification.md), "
+                      "n/m: not measured\n",
                       scene.commonStreams ? "the paired differences' standard error x t(0.975, pairs - 1) (common random "
                                             "numbers)"
                                           : "the error propagated from both standard errors x t(0.975, min(n, n_0) - 1)"));

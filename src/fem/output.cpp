@@ -247,7 +247,8 @@ void OutputFiles::writeResults(const PlateModel& model, const FemRunResult& r, c
   for (const io::Attribute& a : io::optionAttributes(scene)) known.insert(a.name);
   for (const io::Attribute& a : io::optionAttributes(record))
     if (!known.count(a.name)) derived.push_back(a);
-  const RunExtras extras{model, r, response, firstSlips, properties, xdmf, derived};
+  const RunExtras extras{model, r, response, firstSlips, properties, xdmf, derived,
+                         {study::describeBar(campaign.bars[0][0]), study::describeBar(campaign.bars[1][0])}};
   file.addGroups(runExtrasBytes(extras), [&](hid_t h5) { writeRunExtras(h5, extras); });
   file.markCompleteAndClose();  // complete; renamed into place with the fields files in finish()
   resultsWritten_ = true;

@@ -1,7 +1,6 @@
 // The FEM extras of a single run's results file (include/gradfric/fem/run_extras.hpp).
 #include "gradfric/fem/run_extras.hpp"
 
-#include "gradfric/fem/error_estimate.hpp"
 #include "gradfric/io/file_room.hpp"
 #include "gradfric/io/hdf5_attributes.hpp"
 #include "gradfric/io/hdf5_datasets.hpp"
@@ -64,15 +63,14 @@ void writeFirstSlipMap(hid_t fem, const FirstSlipMap& m) {
 }
 
 // /fem/results: the run's scalars the campaign layout has no place for, with their units.
-void writeResults(hid_t fem, const PlateModel& model, const FemRunResult& r) {
+void writeResults(hid_t fem, const PlateModel& model, const FemRunResult& r, const std::string (&errorBasis)[2]) {
   using namespace io;
   H5Group results = createGroup(fem, "results");
   const FemParameters& q = model.params();
   const FrictionSummary& f = r.friction;
-  // The error bars themselves are /statistics/mu_*_discretisation_error (as in a sweep); their basis here.
-  const DiscretisationError e = discretisationError(q, model.grading(), r.dt / r.stableDt);
-  writeStringAttribute(results, "mu_s_error_basis", e.measured ? e.basis : "not measured: " + e.basis);
-  writeStringAttribute(results, "mu_k_error_basis", "not measured: " + e.kineticBasis);
+  // The bars' fields are /statistics/mu_*_discretisation_* (as in a sweep); their text here.
+  writeStringAttribute(results, "mu_s_error_basis", errorBasis[0]);
+  writeStringAttribute(results, "mu_k_error_basis", errorBasis[1]);
   const std::pair<const char*, double> seconds[] = {
       {"eq2_peak_time", q.eq2PeakTime()}, {"first_slip_time", f.firstSlipTime}, {"slide_start", r.slideStart},
       {"mu_k_window_start", f.kineticFrom}, {"mu_k_window_end", f.kineticTo}, {"dt", r.dt}, {"stable_dt", r.stableDt}};
@@ -148,7 +146,7 @@ void writeRunExtras(hid_t file, const RunExtras& c) {
   writeIntAttribute(fem, "format_version", kFemExtrasVersion);
   writeStringAttribute(fem, "description", "what a single gradfric-fem run stores beside the campaign layout (docs/fem.md)");
   if (!c.fieldsXdmf.empty()) writeStringAttribute(fem, "fields_xdmf", c.fieldsXdmf);
-  writeResults(fem, model, c.result);
+  writeResults(fem, model, c.result, c.errorBasis);
   writeOptionRecord(fem, "derived", c.derived);
   writeNormalForce(file, fem, c.result);
   {  // The property fields as given (-field_*), sampled at the bottom cells' centres: the input maps.

@@ -2,6 +2,8 @@
 // and the results file's layout, before any work.
 #include "gradfric/fem/sweep.hpp"
 
+#include "gradfric/study/scene_key.hpp"
+
 #include "gradfric/fem/mesh_sites.hpp"
 
 #include "gradfric/core/input_error.hpp"
@@ -48,10 +50,12 @@ io::EnsembleLayout layoutOf(const FemSweep& s) {
   layout.historyCapacity = historyCapacity(s);
   layout.mapSide = s.params.nx;  // /properties: one column per hexahedron column along x
   // The columns ensemble::writeStatistics writes (the same as the spring-block ensemble's file),
-  // and the FEM's own: each point's discretisation error bar (error_estimate.hpp), relative, NaN
-  // where no study measured it (sweep_run.cpp writes them with the statistics).
+  // and each point's discretisation bar as fields (sweep_run.cpp writes their values).
   layout.statistics = campaign::statisticsColumns();
-  for (const char* mu : {"mu_s", "mu_k"}) layout.statistics.push_back(campaign::discretisationColumn(mu, "error"));
+  for (int k = 0; k < 2; ++k) {
+    const auto columns = campaign::discretisationColumns(k ? "mu_k" : "mu_s", s.bars[k]);
+    layout.statistics.insert(layout.statistics.end(), columns.begin(), columns.end());
+  }
   return layout;
 }
 
@@ -96,6 +100,13 @@ campaign::SweepPoint basePoint(const FemParameters& params, const Grading& gradi
   return base;
 }
 
+// Each point's bars (before the layout, which stores their text).
+void findStudyBars(const RunParameters& record, FemSweep* s) {
+  for (int p = 0; p < s->points(); ++p)
+    for (int k = 0; k < 2; ++k)
+      s->bars[k].push_back(femStudyBar(record, &s->sweep.points[p], s->pointParameters(p), k ? "mu_k" : "mu_s"));
+}
+
 // The options into /scene (they define the results) and /run (they steer this run only).
 void splitRecord(const RunParameters& record, FemSweep* s) {
   for (const io::Attribute& a : io::optionAttributes(record))
@@ -103,6 +114,12 @@ void splitRecord(const RunParameters& record, FemSweep* s) {
 }
 
 }  // namespace
+
+study::StudyBar femStudyBar(const RunParameters& record, const campaign::SweepPoint* point, const FemParameters& q,
+                            const std::string& observable) {
+  const study::SceneKey key = study::sceneKey(record, {"-fem_nx", "-fem_ny", "-fem_nz"}, point);
+  return study::studyBar("fem_study.tsv", observable, key, {q.nx, q.ny, q.nz});
+}
 
 SweepOptions readSweepOptions(MPI_Comm comm, RunParameters* record) {
   SweepOptions s;
@@ -176,6 +193,7 @@ FemSweep buildFemSweep(MPI_Comm comm, const FemParameters& params, const Grading
   if (s.points() > 1000000) throw InputError("too many FEM sweep points: " + std::to_string(s.points()) + " > 1e6");
   for (int p = 0; p < s.points(); ++p)  // every point's step and run length, before any work
     requireFemRunLength(s.pointParameters(p), s.pointGrading(p), &record);
+  findStudyBars(record, &s);
   s.layout = layoutOf(s);
   s.table = tableOf(s);
   splitRecord(record, &s);
@@ -188,6 +206,7 @@ FemSweep oneRunCampaign(const FemParameters& params, const Grading& grading, con
   s.baseGrading = grading;
   s.sweep = campaign::buildSweep(campaign::SweepLists{}, basePoint(params, grading));  // no lists: one point
   s.output = params.output;
+  findStudyBars(record, &s);
   s.layout = layoutOf(s);
   s.layout.format = io::kFemRunFormatName;
   s.table = tableOf(s);

@@ -6,7 +6,7 @@
 #include "gradfric/campaign/interruption.hpp"
 #include "gradfric/campaign/resume_check.hpp"
 #include "gradfric/campaign/runner.hpp"
-#include "gradfric/fem/error_estimate.hpp"
+#include "gradfric/campaign/statistics_columns.hpp"
 #include "gradfric/fem/plate_model.hpp"
 #include "gradfric/fem/simulation.hpp"
 #include "gradfric/fem/stable_step.hpp"
@@ -105,8 +105,7 @@ void printPlan(MPI_Comm comm, const FemSweep& s, long pending) {
                       s.options.ranksPerRun, s.params.nx, s.params.ny, s.params.nz));
 }
 
-void printTable(MPI_Comm comm, const FemSweep& s, const std::vector<campaign::PointStatistics>& stats,
-                const ErrorBars& bars) {
+void printTable(MPI_Comm comm, const FemSweep& s, const std::vector<campaign::PointStatistics>& stats) {
   // Per observable (physics/observables.hpp): its value and relative variation; mu_s with its bar.
   const std::vector<Observable> rows = statisticsObservables();
   std::string header = "  point sweep                   ";
@@ -134,7 +133,7 @@ void printTable(MPI_Comm comm, const FemSweep& s, const std::vector<campaign::Po
       char piece[128], bar[32] = "";
       if (rows[o].name == "mu_s") {
         std::snprintf(bar, sizeof bar, " %s", "      n/m");
-        if (std::isfinite(bars.muStatic[p])) std::snprintf(bar, sizeof bar, " %9.2f", 100 * bars.muStatic[p]);
+        if (s.bars[0][p].measured) std::snprintf(bar, sizeof bar, " %9.2f", 100 * s.bars[0][p].verdict.relative());
       }
       const double value = st.observables[o].summary.mean;
       std::snprintf(piece, sizeof piece, rows[o].unit == "1" ? "%s %10.6f%s %14s" : "%s %10.4g%s %14s", o ? "  " : "",
@@ -192,25 +191,20 @@ void runFemSweep(MPI_Comm comm, const FemSweep& s, const RunParameters& record) 
     campaign::runPending(comm, file, pending, model, plan.workPath());
   }
   const auto stats = campaign::writeStatistics(file, 1, s.sweep.reference, false);
-  const ErrorBars bars = writeErrorBars(file, s);
+  writeErrorBars(file, s);
   campaign::finishResultsFile(comm, file, plan);  // complete: renamed into place
-  printTable(comm, s, stats, bars);
+  printTable(comm, s, stats);
   GF_CALL(PetscPrintf(comm, "FEM sweep: %zu run(s) in %.2f s wall; results in %s\n", pending.size(),
                       MPI_Wtime() - wall0, plan.path().c_str()));
 }
 
-ErrorBars writeErrorBars(io::ResultsFile& file, const FemSweep& s) {
-  ErrorBars bars;
-  for (int p = 0; p < s.points(); ++p) {
-    const FemParameters q = s.pointParameters(p);
-    const Grading g = s.pointGrading(p);
-    const DiscretisationError e = discretisationError(q, g, chooseTimeStep(q, g) / stableTimeStep(q, g));
-    bars.muStatic.push_back(e.measured ? e.relative : std::numeric_limits<double>::quiet_NaN());
-    bars.muKinetic.push_back(std::numeric_limits<double>::quiet_NaN());  // no study bounds mu_k (e.kineticBasis)
+void writeErrorBars(io::ResultsFile& file, const FemSweep& s) {
+  std::vector<std::pair<std::string, std::vector<double>>> values;
+  for (int k = 0; k < 2; ++k) {
+    const auto columns = campaign::discretisationValues(k ? "mu_k" : "mu_s", s.bars[k]);
+    values.insert(values.end(), columns.begin(), columns.end());
   }
-  file.writeStatistics({{"mu_s_discretisation_error", bars.muStatic}, {"mu_k_discretisation_error", bars.muKinetic}},
-                       {});
-  return bars;
+  file.writeStatistics(values, {});
 }
 
 }  // namespace gradfric::fem

@@ -4,6 +4,7 @@
 // their values from the statistics of each point. One list for the writers (gradfric, the FEM
 // sweep) and the layout; nothing parses a column's name back.
 #include "gradfric/campaign/statistics.hpp"
+#include "gradfric/core/study_table.hpp"
 #include "gradfric/io/results_file.hpp"
 
 #include <string>
@@ -15,9 +16,14 @@ namespace gradfric::campaign {
 // finished, then per observable with statistics <name>_mean, _std, _stderr, _ci95_low, _ci95_high,
 // _relative, _relative_ci95 (real) and <name>_count (integer), then peaks_unconfirmed.
 std::vector<io::StatisticColumn> statisticsColumns();
-// A discretisation bar column of an observable: term "error" (the total, relative), "lattice" or
-// "dt" (its terms); NaN where not measured.
-io::StatisticColumn discretisationColumn(const std::string& observable, const std::string& term);
+// Each point's discretisation bar of an observable (core/study_table.hpp), both models alike, as
+// fields: <observable>_discretisation_error (U relative to the value), _order, _safety_factor,
+// _extrapolated, _half_width (NaN: not measured); the error column carries one line per point of
+// each text field: convergence, fit, ladder ("mesh:value ...") and basis (for people).
+std::vector<io::StatisticColumn> discretisationColumns(const std::string& observable,
+                                                       const std::vector<study::StudyBar>& bars);
+std::vector<std::pair<std::string, std::vector<double>>> discretisationValues(const std::string& observable,
+                                                                              const std::vector<study::StudyBar>& bars);
 // The precision target's columns (-ensemble_target): the half-width reached and whether it was met.
 std::vector<io::StatisticColumn> targetColumns();
 

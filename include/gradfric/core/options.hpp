@@ -25,6 +25,7 @@ struct ResolvedOption {
   OptionOrigin origin;
   std::string fallback = "";  // the built-in default of a real option, for blaming the option a bad run comes from
   bool path = false;          // a file to read (OptionReader::path): a scene written elsewhere makes it absolute
+  std::string defaultValue = "";  // the built-in default as text, of every kind ("": derived from other options)
 };
 
 // Every option a run resolved, in the order read.
@@ -85,7 +86,7 @@ private:
   void printHelp(const std::string& name, const std::string& current, const std::string& unit,
                  const std::string& help);
   void store(const std::string& name, const std::string& value, const std::string& unit, const std::string& help,
-             bool userSet, const std::string& fallback = "", bool isPath = false);
+             bool userSet, const std::string& fallback = "", bool isPath = false, const std::string& defaultText = "");
 
   MPI_Comm comm_;
   std::string prefix_;

@@ -5,7 +5,7 @@
 // planResultsFile, openResultsFile, runTasks, finishResultsFile, printResults.
 #include "gradfric/core/options.hpp"
 #include "gradfric/campaign/precision_target.hpp"
-#include "gradfric/ensemble/sbm_error_estimate.hpp"
+#include "gradfric/core/study_table.hpp"
 #include "gradfric/campaign/campaign.hpp"
 #include "gradfric/io/results_file.hpp"
 #include "gradfric/physics/field.hpp"
@@ -47,8 +47,10 @@ struct Scene : campaign::Campaign {
   int tasks() const { return points() * realisations; }
   // The model inputs of sweep point p (its grading: Campaign::pointGrading).
   sbm::Parameters pointParameters(int p) const;
-  // The discretisation bar of point p's mean mu_s (kinetic false) or mu_k (docs/accuracy.md).
-  SbmDiscretisation discretisation(int p, bool kinetic) const;
+  // Each point's discretisation bar of mu_s (bars[0]) and mu_k (bars[1]): the lattice ladder of
+  // the study (docs/sbm_study.tsv) holding the point's scene and N_b (core/study_table.hpp).
+  std::vector<study::StudyBar> bars[2];
+  const study::StudyBar& discretisation(int p, bool kinetic) const { return bars[kinetic ? 1 : 0][p]; }
 };
 
 // Collective: reads and checks every option (InputError on every rank alike); nullopt after -help.

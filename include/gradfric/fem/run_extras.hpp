@@ -33,6 +33,7 @@ struct RunExtras {
   const std::vector<PropertyProfile>& properties;  // the physics' values (gatherPropertyProfiles)
   std::string fieldsXdmf;                          // the snapshots' .xmf beside the file, or empty
   std::vector<io::Attribute> derived;  // what the run derived once built (its dt, the interface resolution)
+  std::string errorBasis[2];           // the mu_s and mu_k bars for people (study::describeBar)
 };
 
 // Adds /fem to an open results file that has the campaign layout (its root scales point,

@@ -9,6 +9,7 @@
 // io::OutputPlan (<output>.partial until complete), resumable with -resume.
 #include "gradfric/core/options.hpp"
 #include "gradfric/campaign/campaign.hpp"
+#include "gradfric/core/study_table.hpp"
 #include "gradfric/fem/parameters.hpp"
 #include "gradfric/io/hdf5_attributes.hpp"
 #include "gradfric/io/results_file.hpp"
@@ -39,6 +40,8 @@ SweepOptions readSweepOptions(MPI_Comm comm, RunParameters* record);
 struct FemSweep : campaign::Campaign {
   FemParameters params;  // the base run (theta of each point from the sweep)
   SweepOptions options;
+  // Each point's discretisation bar of mu_s (bars[0]) and mu_k (bars[1]): femStudyBar.
+  std::vector<study::StudyBar> bars[2];
 
   FemParameters pointParameters(int p) const;  // its grading: Campaign::pointGrading
 };
@@ -55,14 +58,15 @@ FemSweep buildFemSweep(MPI_Comm comm, const FemParameters& params, const Grading
 // file of a single run is this campaign's file plus the run's FEM extras (output.hpp).
 FemSweep oneRunCampaign(const FemParameters& params, const Grading& grading, const RunParameters& record);
 
-// Each point's discretisation error bar (relative; NaN: not measured), the same rule as a single
-// run's (error_estimate.hpp): it depends on the point's settings only, not on its run.
-struct ErrorBars {
-  std::vector<double> muStatic, muKinetic;
-};
-// Computes the bars and writes them as the statistics' mu_s and mu_k discretisation_error
-// columns: a sweep's file and a single run's (one point) alike.
-ErrorBars writeErrorBars(io::ResultsFile& file, const FemSweep& s);
+// The discretisation bar of a run's mu_s or mu_k (observable): the ladder of docs/fem_study.tsv
+// holding the run's scene (its record, with a sweep point's grading and angle) and its mesh
+// refined in every direction (core/study_table.hpp). It depends on the settings only.
+study::StudyBar femStudyBar(const RunParameters& record, const campaign::SweepPoint* point, const FemParameters& q,
+                            const std::string& observable);
+
+// Writes each point's bars as the statistics' mu_s and mu_k discretisation columns: a sweep's file
+// and a single run's (one point) alike.
+void writeErrorBars(io::ResultsFile& file, const FemSweep& s);
 
 // Collective over comm: plans the file, runs every pending point on the groups, writes the
 // statistics, renames the file into place and prints the table.

@@ -1,0 +1,62 @@
+#include "gradfric/study/scene_key.hpp"
+
+#include "gradfric/core/format.hpp"
+
+#include <algorithm>
+#include <map>
+
+namespace gradfric::study {
+
+namespace {
+
+// Options that steer a run without changing its results (prefixes end in '_').
+const char* const kSteering[] = {"-output", "-output_overwrite", "-resume", "-plot", "-plot_dir",
+                                 "-friction_observables",  // a mu_s-only run stops at the confirmed peak: the same mu_s
+                                 "-ensemble_",             // sweep lists (their values come with the point), size, seed
+                                 "-fem_sweep_", "-fem_verbose", "-fem_dry_run", "-fem_partitioner", "-fem_monitor_every",
+                                 "-fem_monitor_factor", "-fem_snapshot_times", "-fem_compare_sbm", "-fem_compare_seed",
+                                 "-sbm_snapshot_times"};
+
+bool steers(const std::string& name) {
+  return std::any_of(std::begin(kSteering), std::end(kSteering), [&](const std::string& s) {
+    return s.back() == '_' ? name.rfind(s, 0) == 0 : name == s;
+  });
+}
+
+}  // namespace
+
+SceneKey sceneKey(const RunParameters& record, const std::vector<std::string>& coordinates,
+                  const campaign::SweepPoint* point) {
+  std::map<std::string, std::string> set;  // name with its dash -> value
+  const auto atDefault = [&](const std::string& name, const std::string& value) {
+    const ResolvedOption* o = record.find(name);
+    return o && !o->defaultValue.empty() && sameSettingValue(value, o->defaultValue);
+  };
+  const auto put = [&](const std::string& name, const std::string& value) {
+    if (atDefault(name, value))
+      set.erase(name);
+    else
+      set[name] = value;
+  };
+  for (const ResolvedOption& o : record.all())
+    if (o.origin == OptionOrigin::User && !steers(o.name) &&
+        std::find(coordinates.begin(), coordinates.end(), o.name) == coordinates.end())
+      put(o.name, o.value);
+  if (point) {
+    put("-grading_delta", formatReal(point->delta));
+    put("-grading_property", point->property);
+    put("-grading_profile", point->profile);
+    put("-plate_theta", formatReal(point->theta));
+    if (record.find("-sbm_sigma_s")) put("-sbm_sigma_s", formatReal(point->sigma));
+    if (record.find("-sbm_sigma_k")) put("-sbm_sigma_k", formatReal(point->sigmaKinetic));
+    if (point->fieldSwept) set["-ensemble_field_value"] = formatReal(point->fieldValue);
+  }
+  const auto profile = set.find("-grading_profile"), delta = set.find("-grading_delta");
+  if (profile == set.end() || delta == set.end() || atDefault("-grading_delta", delta->second))
+    for (auto it = set.begin(); it != set.end();) it = it->first.rfind("-grading_", 0) == 0 ? set.erase(it) : std::next(it);
+  SceneKey key;
+  for (const auto& [name, value] : set) key.emplace_back(name.substr(1), value);
+  return key;
+}
+
+}  // namespace gradfric::study
