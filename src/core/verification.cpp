@@ -230,7 +230,8 @@ Verdict judge(const std::vector<Member>& ladder, int member, double formalOrder)
     const double md = std::accumulate(logD.begin(), logD.end(), 0.0) / logD.size();
     double sxy = 0, sxx = 0;
     for (std::size_t i = 0; i < logH.size(); ++i) sxy += (logH[i] - mh) * (logD[i] - md), sxx += (logH[i] - mh) * (logH[i] - mh);
-    v.convergence = sxy / sxx > 0 ? Convergence::Oscillatory : Convergence::OscillatoryDivergence;
+    v.order = sxy / sxx;  // the rate at which the oscillation shrinks: a fit of phi has none
+    v.convergence = v.order > 0 ? Convergence::Oscillatory : Convergence::OscillatoryDivergence;
   }
   if (!v.bounded()) return v;
   const bool inRange = v.convergence == Convergence::Monotone && v.order >= 0.5 && v.order < formalOrder;

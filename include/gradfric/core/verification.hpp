@@ -35,7 +35,7 @@ struct Verdict {
   ErrorFit fit = ErrorFit::None;
   int member = 0;            // the judged member (index into the ladder as given)
   double value = 0;          // its value
-  double order = 0;          // observed order p of the alpha h^p fit (0 where not fitted)
+  double order = 0;          // observed order p of the alpha h^p fit; oscillatory: that of |differences|
   double extrapolated = 0;   // phi_0 of the error fit (the value where fit is None)
   double fitStdDev = 0;      // U_s: the fit's standard deviation (0 for an exact fit)
   double dataRange = 0;      // Delta_phi = (max - min) / (n - 1)

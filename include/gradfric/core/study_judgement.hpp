@@ -1,0 +1,19 @@
+#pragma once
+// Every ladder of a study table judged by the one procedure (core/verification.hpp), as gradfric-study
+// -study_judge prints and writes it: the docs' tables are this output (scripts/regenerate_docs_tables.sh).
+// PETSc-free.
+#include "gradfric/core/study_table.hpp"
+
+#include <string>
+#include <vector>
+
+namespace gradfric::study {
+
+// Markdown: one row per ladder of three or more members (observable, scene, meshes, values, the
+// verdict's fields and each member's U relative to its value), then a line counting the rows that
+// make no such ladder.
+std::string judgementMarkdown(const std::vector<StudyRow>& rows);
+// Tab-separated, one line per member of every ladder (smaller ones too), with a header line.
+std::string judgementTsv(const std::vector<StudyRow>& rows);
+
+}  // namespace gradfric::study
