@@ -21,9 +21,7 @@ import re
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "python"))
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import gradfric  # noqa: E402
-from fem_study_table import load as load_study  # noqa: E402  the study table's one reader
 
 G, H, LZ, P, DMU = 10e6 / (2 * (1 + 1 / 3)), 5e-5, 5.7e-5, 1e4, 0.4
 
@@ -53,11 +51,36 @@ def fem_map(folder):
     return out
 
 
+# The filtered plates' scenes hold only these settings (docs/fem_study.tsv, column scene); the
+# defaults they leave out: D_c 2.5e-8 m, grading property E, no grading.
+FILTERED_SCENE = {"fem_pc_length", "fem_pc_speed", "friction_d_c", "grading_delta", "grading_profile",
+                  "grading_property"}
+
+
+def study_rows(path):
+    """The rows of the study table (docs/fem_study.tsv): (observable, mesh, value, {setting: value})."""
+    rows = []
+    with open(path) as f:
+        for line in f:
+            if line.startswith("#") or not line.strip():
+                continue
+            observable, mesh, value, _, _, scene = line.split()
+            settings = dict(s.split("=", 1) for s in scene.split(",")) if scene != "-" else {}
+            rows.append((observable, mesh, float(value), settings))
+    return rows
+
+
 def filtered_map(study):
-    """{dc: {(property, delta): v}} from the filtered rows (contact 'penalty,pc=...') on 200 x 200 x 5."""
-    mu = {(dc, prop, delta): value
-          for (law, dc, prop, delta, n, nz, element, dts, contact), value in load_study(study).items()
-          if "pc=" in contact and (n, nz, dts) == (200, 5, 0.6)}
+    """{dc: {(property, delta): v}} from the filtered mu_s rows (the Prakash-Clifton filter, linear
+    grading, the default step and contact) on 200 x 200 x 5."""
+    mu = {}
+    for observable, mesh, value, s in study_rows(study):
+        if (observable != "mu_s" or mesh != "200x200x5" or "fem_pc_length" not in s or not set(s) <= FILTERED_SCENE
+                or s.get("grading_profile", "linear") != "linear"):
+            continue
+        delta = float(s.get("grading_delta", 0))
+        prop = s.get("grading_property", "E") if delta != 0 else "none"
+        mu[(float(s.get("friction_d_c", 2.5e-8)), prop, delta)] = value
     plates = [(p, d) for p in ("friction", "E") for d in (-0.2, 0.2)]
     out = {}
     for (dc, prop, delta), value in mu.items():
