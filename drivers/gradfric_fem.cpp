@@ -6,6 +6,7 @@
 #include "gradfric/core/driver.hpp"
 #include "gradfric/core/input_error.hpp"
 #include "gradfric/core/options.hpp"
+#include "gradfric/core/study_judgement.hpp"
 #include "gradfric/fem/output.hpp"
 #include "gradfric/fem/parameters.hpp"
 #include "gradfric/fem/plate_model.hpp"
@@ -221,6 +222,13 @@ void compareWithSpringBlocks(MPI_Comm comm, const FemRun& run, const FemRunResul
               run.params.eq2PeakTime(), run.sbmParams.loadingTime(), wall, sbmValues[3]);
 }
 
+// -fem_dry_run: the run or sweep was checked; its bars (they depend on the settings only).
+void printSweepDryRun(MPI_Comm comm, const FemSweep& sweep) {
+  PetscPrintf(comm, "Dry run (-fem_dry_run): %d run(s) checked, nothing built, run or written\n", sweep.points());
+  PetscPrintf(comm, "Discretisation bars (docs/verification.md):\n%s",
+              study::pointBarLines(sweep.bars[0], sweep.bars[1]).c_str());
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -230,13 +238,14 @@ int main(int argc, char** argv) {
     if (!run) return;                                             // -help
     if (run->sweep.requested) {                                   // a sweep of runs over groups of ranks
       const FemSweep sweep = buildFemSweep(comm, run->params, run->grading, run->sweep, run->compare, record);
+      if (run->dryRun) return printSweepDryRun(comm, sweep);      // -fem_dry_run: checked, nothing run
       return runFemSweep(comm, sweep, record);
     }
     int ranks = 1;
     MPI_Comm_size(comm, &ranks);
     const RunEstimate estimate = estimateRun(run->params, run->grading, ranks);
     PetscPrintf(comm, "Estimate: %s\n", estimate.describe().c_str());
-    if (run->dryRun) return;                                      // -fem_dry_run: nothing built
+    if (run->dryRun) return printSweepDryRun(comm, oneRunCampaign(run->params, run->grading, record));
     OutputFiles output(comm, run->params);                        // planned before any work
     PlateModel model(comm, run->params, run->grading);
     const RunParameters scene = record;                           // the options as a sweep stores them

@@ -54,6 +54,15 @@ std::string judgementMarkdown(const std::vector<StudyRow>& rows) {
   return text;
 }
 
+std::string pointBarLines(const std::vector<StudyBar>& muStatic, const std::vector<StudyBar>& muKinetic) {
+  std::string text;
+  for (std::size_t p = 0; p < muStatic.size(); ++p)
+    for (const auto* bars : {&muStatic, &muKinetic})
+      text += "  bar point " + std::to_string(p) + (bars == &muStatic ? " mu_s: " : " mu_k: ") +
+              describeBar((*bars)[p]) + "\n";
+  return text;
+}
+
 std::string judgementTsv(const std::vector<StudyRow>& rows) {
   std::string text =
       "observable\tscene\tmesh\tvalue\tmembers\tconvergence\torder\tfit\tsafety_factor\textrapolated\tfit_std_dev\t"

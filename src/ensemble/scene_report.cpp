@@ -1,6 +1,8 @@
 // What a spring-block scene run prints (include/gradfric/ensemble/scene_report.hpp).
 #include "gradfric/ensemble/scene_report.hpp"
 
+#include "gradfric/core/study_judgement.hpp"
+
 #include "gradfric/core/format.hpp"
 #include "gradfric/core/petsc_call.hpp"
 #include "gradfric/physics/observables.hpp"
@@ -181,6 +183,8 @@ void printDryRun(MPI_Comm comm, const Scene& scene) {
   else
     GF_CALL(PetscPrintf(comm, "Dry run (-ensemble_dry_run): scene checked, %d task(s) planned, nothing run or written\n",
                         scene.tasks()));
+  GF_CALL(PetscPrintf(comm, "Discretisation bars (docs/verification.md):\n%s",
+                      study::pointBarLines(scene.bars[0], scene.bars[1]).c_str()));
 }
 
 void printResults(MPI_Comm comm, const Scene& scene, const std::vector<PointStatistics>& statistics,
