@@ -112,6 +112,8 @@ std::vector<StudyRow> parseStudyTable(const std::string& text, const std::string
       return false;
     }
     if (r.mesh.empty() || r.stdError < 0 || (r.stdError > 0 && r.samples < 2)) return false;
+    for (const StudyRow& earlier : rows)  // one result per observable, scene and mesh: no choosing between two
+      if (earlier.observable == r.observable && earlier.mesh == r.mesh && sameScene(earlier.scene, r.scene)) return false;
     rows.push_back(std::move(r));
     return true;
   });

@@ -32,6 +32,18 @@ done
 # An installed scene is usable by the installed driver (-help parses the scene, runs nothing).
 (cd "$2" && "$prefix/bin/gradfric" -options_file "$prefix/share/gradfric/input/default.opts" -help > /dev/null 2>&1) \
   || fail "installed gradfric refused the installed default scene"
+# The study tables are installed and read at run time by the installed drivers: a row added to the
+# installed table changes the bar with no rebuild (the paper's mesh 100x100x5 has no three-mesh
+# ladder until a third mesh of its shape is added).
+tables=$prefix/share/gradfric/studies
+[ -r "$tables/fem_study.tsv" ] && [ -r "$tables/sbm_study.tsv" ] || fail "the study tables are not installed in $tables"
+bar() { (cd "$2" && "$prefix/bin/gradfric-fem" -fem_nz 5 -fem_dry_run 2>&1 | grep "bar point 0 mu_s") || true; }
+before=$(bar "$prefix" "$2")
+grep -q "not measured" <<< "$before" || fail "the installed gradfric-fem bounds 100x100x5 before the new rows: $before"
+printf 'mu_s\t400x400x20\t0.9305\t0\t0\t-\n' >> "$tables/fem_study.tsv"
+after=$(bar "$prefix" "$2")
+grep -q "ladder 100x100x5:0.936322 200x200x10:0.931691 400x400x20:0.930500" <<< "$after" ||
+  fail "the installed gradfric-fem did not read the row added to the installed table: $after"
 if readelf -d "$prefix/bin/gradfric" | grep -E "R(UN)?PATH" | grep -qF "$(cd "$build" && pwd)"; then
   fail "installed gradfric keeps a run path into the build tree"
 fi

@@ -57,7 +57,8 @@ TEST(StudyTable, WhatTheStudyDidNotRunIsNotMeasuredWithTheReason) {
 
 TEST(StudyTable, ARowThatDoesNotReadIsAnErrorNamingItsLine) {
   for (const char* bad : {"mu_s\t50x50\t0.9\t0\t0\n", "mu_s\t50x50x5\t0.9\t0\t0\tgrading_delta\n",
-                          "mu_s\t50xx5\t0.9\t0\t0\t-\n", "mu_s\t50x50x5\t0.9\t1e-3\t1\t-\n", "mu_s\t50x50x5\t0.9\t0\t0\t-\textra\n"}) {
+                          "mu_s\t50xx5\t0.9\t0\t0\t-\n", "mu_s\t50x50x5\t0.9\t1e-3\t1\t-\n", "mu_s\t50x50x5\t0.9\t0\t0\t-\textra\n",
+                          "mu_s\t200x200x20\t0.93\t0\t0\t-\n" /* a second result of one mesh */}) {
     try {
       parseStudyTable(kTable + bad, "test table");
       ADD_FAILURE() << "accepted: " << bad;
