@@ -1,5 +1,5 @@
 #!/bin/bash
-# The FEM element and mesh study of docs/accuracy_fem_history.md ("Element and mesh"): mu_s, the edge
+# The FEM element and mesh study of docs/studies/fem-element-and-mesh.md: mu_s, the edge
 # pressures and the moment balance at the peak for q1 and q1i, in-plane 25/50/100 and through the
 # thickness 5/10, non-graded and linear E / friction grading Delta = +-0.2. One run at a time on
 # 2 ranks, niced; each run appends one line to the results file.

@@ -1,5 +1,5 @@
 #!/bin/bash
-# The FEM graded convergence study of docs/accuracy_fem_history.md ("Graded convergence"), and the FEM
+# The FEM graded convergence study of docs/studies/fem-graded-convergence-old-law.md, and the FEM
 # mu_s runs of docs/reproduction.md: mu_s of the paper's plate (the current defaults: q1,
 # penalty 250 G/H, dt_safety 0.6) with linear E or friction grading, Delta = +-0.2 (10 bands
 # along x, sliding along x), on 50x50x5, 100x100x5, 100x100x10, 200x200x5 and on 100x100x5 at

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """The FEM graded convergence study (scripts/fem_graded_study.sh): mu_s against the in-plane
 resolution for each grading, with the thickness and time-step refinements, and the table and
-error estimates of docs/accuracy_fem_history.md ("Graded convergence") printed as Markdown.
+error estimates of docs/studies/fem-graded-convergence-old-law.md ("Graded convergence") printed as Markdown.
 
     /usr/bin/python3 scripts/plot_fem_convergence.py results/fem_graded_study.txt docs/accuracy_fem_graded.png
 

@@ -1,4 +1,4 @@
-// The element study (docs/accuracy_fem_history.md): one FEM run to its confirmed peak with the ordinary
+// The element study (docs/studies/fem-element-and-mesh.md): one FEM run to its confirmed peak with the ordinary
 // -plate_/-grading_/-fem_/-friction_ options, printing one line: the element, the mesh, mu_s, the
 // peak time, and at the step of the peak the contact pressure on the trailing edge, the centre
 // line and the leading edge, and the moment balance sum (x - L/2) p_c A / (H F_t).

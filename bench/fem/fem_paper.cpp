@@ -1,4 +1,4 @@
-// The paper-mesh benchmark (docs/accuracy_fem_history.md, "Cost"): one FEM run at the defaults (100 x 100 x 5,
+// The paper-mesh benchmark (docs/studies/fem-cost.md): one FEM run at the defaults (100 x 100 x 5,
 // pressure step, sliding through the kinetic window) with the ordinary -plate_/-grading_/-fem_/
 // -friction_ options, printing the steps and wall time of step 1 (pressure) and step 2 (sliding),
 // the ms per step, the results (to check that a faster build gives the same numbers), the load

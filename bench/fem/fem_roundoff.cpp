@@ -1,4 +1,4 @@
-// Round-off growth of the FEM's friction history (docs/accuracy_fem_history.md, "Cost"): the same scene
+// Round-off growth of the FEM's friction history (docs/studies/fem-cost.md): the same scene
 // run with the cells taken in a shuffled order (pattern k = 1 .. runs-1; run 0 in the mesh's
 // order), with the dense and the blocked elastic kernel, and optionally again at dt/2. Every node
 // then sums its cells' forces in another order, as on another number of ranks: the forces change

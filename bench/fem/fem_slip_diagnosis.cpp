@@ -1,5 +1,5 @@
-// Node-scale diagnosis of the sliding after the peak (docs/accuracy_fem_history.md, "Steady sliding after
-// the peak"): one FEM run with the ordinary -plate_/-grading_/-fem_/-friction_ options; over a
+// Node-scale diagnosis of the sliding after the peak (docs/studies/fem-steady-sliding.md, "Steady
+// sliding after the peak"): one FEM run with the ordinary -plate_/-grading_/-fem_/-friction_ options; over a
 // window of the sliding step (-diag_from, -diag_to [s] after the confirmed peak, default the
 // kinetic window), every step, it counts the bottom nodes that stick, slip or are open, sorts the
 // nodes' tangential speeds into a histogram in units of the slider speed v, and splits the friction

@@ -1,5 +1,5 @@
 #pragma once
-// Hard cases of the FEM (docs/accuracy_fem_history.md): each case runs at its step dt and at dt/2 on a reduced mesh and
+// Hard cases of the FEM (docs/studies/fem-hard-cases.md): each case runs at its step dt and at dt/2 on a reduced mesh and
 // must show
 //  * no NaN or Inf (mu(t), normal force, mu_s, mu_k; the blow-up monitor would also stop the run);
 //  * bounded energy: kinetic + elastic energy <= the energy put in (work of the pressure, -int p dZ,
@@ -13,7 +13,7 @@
 //    return map caps every node's traction at mu(v) p_c <= mu_s p_c), and mu_k > 0;
 //  * agreement with the same case at dt/2: |mu_s(dt) / mu_s(dt/2) - 1| <= muSTolerance (1 %) and
 //    |mu_k(dt) / mu_k(dt/2) - 1| <= muKTolerance (6 %: mu_k is the window mean of an oscillating
-//    or stick-slipping mu(t), the slowest quantity to converge in dt; see docs/accuracy_fem_history.md).
+//    or stick-slipping mu(t), the slowest quantity to converge in dt; see docs/studies/fem-hard-cases.md).
 #include <petscsection.h>
 #include <petscsf.h>
 #include "gradfric/fem/simulation.hpp"
@@ -57,7 +57,7 @@ inline FemParameters hardBase(const Plate& plate = Plate{}) {
   q.monitorEvery = 5;  // dense energy samples for the balance check
   // The penalty these cases were measured with (E0/hz, the default before the penalty study):
   // they probe gradings and numerics, not the contact, and the default 250 G/H (47 x E0/hz on
-  // this 16 x 16 x 2 mesh) would make each run ~5 x longer (docs/accuracy_fem_history.md, "Contact").
+  // this 16 x 16 x 2 mesh) would make each run ~5 x longer (docs/studies/fem-contact.md).
   // A case that changes the mesh or H sets it again for its own hz.
   q.kn = q.kt = formerDefaultPenalty(q);
   return q;

@@ -9,7 +9,7 @@
 // same penalty compliance (250 G/H per unit area) and thickness modes; the loading slope is the
 // plate's shear, uniform in x and y, which the in-plane size hardly changes: 0.9947 / 0.9987 G L^2/H
 // (penalty / kinematic) here, 0.9942 / 0.9979 on 20 x 20 x 5 and 0.9909 / 0.9949 on the paper mesh
-// (docs/accuracy_fem_history.md, "Contact"): the 2 % bound holds there with 1.6 % to spare.
+// (docs/studies/fem-contact.md): the 2 % bound holds there with 1.6 % to spare.
 #include <petscsection.h>
 #include <petscsf.h>
 #include "gradfric/core/petsc_handle.hpp"

@@ -13,14 +13,15 @@ namespace {
 std::vector<HardCase> numericsCases() {
   std::vector<HardCase> cases;
   // The penalty cases keep their absolute stiffnesses as multiples of E0/hz, the default before the
-  // penalty study (docs/accuracy_fem_history.md, "Contact"; the default is now 250 G/H, 47 x E0/hz on this
+  // penalty study (docs/studies/fem-contact.md; the default is now 250 G/H, 47 x E0/hz on this
   // 16 x 16 x 2 mesh): they test extreme springs, not the default.
   // Penalties 100 x stiffer than E0/hz: the stable-step estimate (element + penalty
   // frequencies of the linear system) is not enough once the plate slides: at 0.9 of it the run
   // goes unstable after the peak (contact chatter, the plate lifts off; measured on 16 x 16 x 2:
   // k_n x10 stopped by the monitor at t - t0 = 3.4e-4 s, x30 at 2.2e-4 s, x100 at 2.1e-4 s), at 0.7
-  // it is stable (mu_s 0.9217 at 0.7 and 0.9217 at 0.5). This case runs at 0.6 (the shipped
-  // default, docs/accuracy_fem_history.md); StiffPenaltyAtNinetyPercentIsStoppedByTheMonitor keeps the 0.9 failure.
+  // it is stable (mu_s 0.9217 at 0.7 and 0.9217 at 0.5). This case runs at 0.6 (the shipped default,
+  // docs/studies/fem-old-law-time-step-and-mesh.md); StiffPenaltyAtNinetyPercentIsStoppedByTheMonitor
+  // keeps the 0.9 failure.
   cases.push_back({"penalty_stiff_x100", [](FemParameters& q, Grading&) {
                      q.kn = q.kt = 100 * formerDefaultPenalty(q);
                      q.dtSafety = 0.6;

@@ -1,5 +1,5 @@
-// The FEM's steady mu_k window (friction_history.hpp, docs/accuracy_fem_history.md "The steady kinetic
-// window") on the reduced plate (10 x 10 x 5, non-graded, Eq. 1 with mu_s 1, mu_k 0.6, v = 10 v_c):
+// The FEM's steady mu_k window (friction_history.hpp, docs/studies/fem-kinetic-window.md "The steady
+// kinetic window") on the reduced plate (10 x 10 x 5, non-graded, Eq. 1 with mu_s 1, mu_k 0.6, v = 10 v_c):
 // * at the defaults the window slides past the reload after the peak, is marked steady, and mu_k
 //   is Eq. 1's local value at v within 1 %; the run stops at the window's end. The fixed window
 //   (tolerance 0, the rule before) holds the reload and sits more than 1 % below;

@@ -1,5 +1,5 @@
 // The friction memory of Eq. 1 in the FEM contact (physics/slip_state_law.hpp,
-// -friction_law exponential -fem_slip_length; docs/accuracy_fem_history.md "Steady sliding after the peak"):
+// -friction_law exponential -fem_slip_length; docs/studies/fem-steady-sliding.md):
 // * with constant friction (mu_s = mu_k) the slip state cannot change anything: the whole run is
 //   the run without it, bit for bit;
 // * at the default (healing only: Eq. 1's weakening at once) mu_s and mu(t) up to the peak are
