@@ -1,9 +1,14 @@
 #include "gradfric/study/scene_key.hpp"
 
 #include "gradfric/core/format.hpp"
+#include "gradfric/core/petsc_call.hpp"
+
+#include <petscsys.h>
 
 #include <algorithm>
+#include <cctype>
 #include <map>
+#include <sstream>
 
 namespace gradfric::study {
 
@@ -21,6 +26,25 @@ bool steers(const std::string& name) {
   return std::any_of(std::begin(kSteering), std::end(kSteering), [&](const std::string& s) {
     return s.back() == '_' ? name.rfind(s, 0) == 0 : name == s;
   });
+}
+
+// The options PETSc's objects read under a component's prefix (the FEM's TS: -fem_ts_type, ...),
+// which no OptionReader records but which change the results all the same.
+void addObjectOptions(std::map<std::string, std::string>* set) {
+  char* all = nullptr;
+  GF_CALL(PetscOptionsGetAll(nullptr, &all));
+  std::istringstream tokens(all);
+  GF_CALL(PetscFree(all));
+  std::string token, name;
+  const auto isName = [](const std::string& t) { return t.size() > 1 && t[0] == '-' && std::isalpha(static_cast<unsigned char>(t[1])); };
+  while (tokens >> token) {
+    if (isName(token)) {
+      name = token.rfind("-fem_ts_", 0) == 0 ? token : "";
+      if (!name.empty()) (*set)[name] = "";
+    } else if (!name.empty()) {
+      (*set)[name] += ((*set)[name].empty() ? "" : " ") + token;
+    }
+  }
 }
 
 }  // namespace
@@ -42,6 +66,7 @@ SceneKey sceneKey(const RunParameters& record, const std::vector<std::string>& c
     if (o.origin == OptionOrigin::User && !steers(o.name) &&
         std::find(coordinates.begin(), coordinates.end(), o.name) == coordinates.end())
       put(o.name, o.value);
+  addObjectOptions(&set);
   if (point) {
     put("-grading_delta", formatReal(point->delta));
     put("-grading_property", point->property);

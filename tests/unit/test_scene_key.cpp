@@ -46,6 +46,13 @@ TEST(SceneKey, ATermTheStudyNeverRanPutsTheRunOutsideIt) {
   EXPECT_NE(r.bar.why.find("fem_gravity=9.81"), std::string::npos) << r.bar.why;
 }
 
+TEST(SceneKey, APetscObjectsOptionCountsThoughNoReaderRecordsIt) {
+  const ScopedOption ts("-fem_ts_type", "rk");
+  const FemRunKey r = femRun();
+  EXPECT_EQ(study::sceneText(r.key), "fem_ts_type=rk");
+  EXPECT_FALSE(r.bar.measured);
+}
+
 TEST(SceneKey, ALawParameterTheStudyNeverVariedPutsTheRunOutsideIt) {
   const ScopedOption vc("-friction_v_c", "2e-4");
   const FemRunKey r = femRun();

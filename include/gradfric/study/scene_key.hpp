@@ -2,8 +2,9 @@
 // The scene key of a run (core/study_table.hpp): the settings that must equal a study row's for the
 // row's bar to apply. Every option the user set to a value other than its default counts, except
 // the ladder's own coordinates and the options that steer a run without changing its results
-// (output, sweep lists and ensemble size, monitors, partitioner): a new option is outside every
-// study until a study varies it.
+// (output, sweep lists and ensemble size, monitors, partitioner), and with the options PETSc's
+// objects read under our prefixes (-fem_ts_*): a new option is outside every study until a study
+// varies it.
 #include "gradfric/campaign/sweep.hpp"
 #include "gradfric/core/options.hpp"
 #include "gradfric/core/study_table.hpp"
