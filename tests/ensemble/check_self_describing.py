@@ -93,10 +93,17 @@ with h5py.File(out, "r") as f:
             error = np.hypot(se / m0, mean * se0 / m0**2)
             dof = min(counts[point], counts[ref]) - 1
             assert np.isclose(st["mu_s_relative_ci95"][point], t975[dof] * error, rtol=1e-6), point
+    # The bar's fields (core/study_table.hpp): NaN where not measured, each with units, description
+    # and the procedure named; the error column's text attributes hold one line per point.
+    for field in ("error", "order", "safety_factor", "extrapolated", "half_width"):
+        column = st[f"mu_s_discretisation_{field}"]
+        assert "not a statistical interval" in column.attrs["interval"] and np.isnan(column[:]).all(), field
+    assert not any(f"{m}_discretisation_{t}" in st for m in ("mu_s", "mu_k") for t in ("lattice", "dt"))
     bar = st["mu_s_discretisation_error"]
-    assert bar.attrs["interval"].startswith("bound") and np.isnan(bar[:]).all()
+    for attribute in ("convergence", "fit", "ladder", "basis"):
+        assert len(bar.attrs[attribute].split("\n")) == len(counts), (attribute, bar.attrs[attribute])
     basis = bar.attrs["basis"].split("\n")
-    assert len(basis) == len(counts) and all(b.startswith(f"point {p}: ") and len(b) > 12 for p, b in enumerate(basis)), basis
+    assert all(b.startswith("not measured: ") and len(b) > 16 for b in basis), basis
 
     scene = {k: v for k, v in f["scene"].attrs.items()}
     p, side = float(scene["plate_p"]), float(scene["plate_L"])

@@ -195,9 +195,14 @@ single)
   run 1 -sbm_N 16 -output "$work/s.h5" >"$work/s.log"
   grep -Eq "^Result: mu_s = 0\.[0-9]+, mu_k = 0\.[0-9]+" "$work/s.log" || fail "no 'mu_s = ..., mu_k = ...' line"
   grep -q "results in $work/s.h5" "$work/s.log" || fail "where the results went is not printed"
-  # Its discretisation bar, named: N_b = 16 is outside the lattice study.
-  grep -q "^  mu_s: discretisation error not measured: N_b = 16 not in a lattice ladder" "$work/s.log" ||
-    fail "no discretisation line for the single run"
+  # Its discretisation bar: N_b = 16 is in no ladder of the lattice study: NaN stored, "not measured"
+  # with the reason, and the printed line is the stored basis.
+  basis=$(/usr/bin/python3 -c '
+import math, sys, h5py
+e = h5py.File(sys.argv[1], "r")["statistics/mu_s_discretisation_error"]
+assert math.isnan(e[0]) and e.attrs["basis"].startswith("not measured: mesh 16 "), (e[0], e.attrs["basis"])
+print(e.attrs["basis"])' "$work/s.h5") || fail "the single run's stored discretisation bar: $basis"
+  grep -qxF "  mu_s: discretisation $basis" "$work/s.log" || fail "no discretisation line for the single run"
   # The printed mu_s is the one in the file.
   printed=$(sed -n 's/^Result: mu_s = \([0-9.]*\),.*/\1/p' "$work/s.log")
   stored=$(h5dump -A 0 -m %.6f -d /statistics/mu_s_mean "$work/s.h5" | sed -n 's/.*(0): \([0-9.]*\).*/\1/p')
