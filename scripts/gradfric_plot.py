@@ -97,8 +97,8 @@ def plot_variation(ensemble, fems, png, sweeps=()):
                 theta, sigma, prop, profile = key
                 label = f"{source.model} {prop} {profile}" + (f", theta={theta:g}" if len(groups) > 1 else "")
                 line, = ax.plot(d, y, "o-" if source.model == "SBM" else "s--", label=label)
-                # FEM sweep: each point's discretisation error bar (relative bound of its own mu;
-                # NaN where no study measured it: no bar drawn there)
+                # FEM sweep: each point's discretisation bar (the relative uncertainty U / |mu| of
+                # its study ladder, core/study_table.hpp; NaN where no ladder bounds it: no bar there)
                 if source.model == "FEM" and source.has(f"{name}_discretisation_error"):
                     bar = source.statistic(f"{name}_discretisation_error")[members]
                     known = np.isfinite(bar) & np.isfinite(y)
@@ -119,8 +119,8 @@ def plot_variation(ensemble, fems, png, sweeps=()):
                               f.results.get(f"{name}_discretisation_error", np.nan)) for f in members)
                 x, y, bar = (np.array(v, dtype=float) for v in zip(*pts))
                 ax.plot(x, y, "s--", color=colour, label="FEM" + (f", theta={theta:g}" if len(angles) > 1 else ""))
-                # each run's own discretisation bar (relative bound of its mu, as for a FEM sweep;
-                # NaN where not measured, e.g. mu_k or a graded point: no bar drawn there)
+                # each run's own discretisation bar (relative uncertainty of its mu, as for a FEM
+                # sweep; NaN where not measured, e.g. a scene or mesh outside the study: no bar drawn)
                 known = np.isfinite(bar) & np.isfinite(y)
                 if known.any():
                     ax.errorbar(x[known], y[known], yerr=(100 + y[known]) * bar[known], fmt="none", capsize=3,

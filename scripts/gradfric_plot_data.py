@@ -86,7 +86,8 @@ class Ensemble:
 
 def point_run(ensemble, p):
     """(time, mu, observables, results) of the first finished run of point p: its mu(t) and its
-    observables with their discretisation bars where stored (a FEM run is one realisation)."""
+    observables with their discretisation bars where stored (<name>_discretisation_error, the
+    relative uncertainty; files of any version hold it; a FEM run is one realisation)."""
     runs = ensemble.histories(p)
     time, mu = runs[0] if runs else (np.array([]), np.array([]))
     results = {n: float(ensemble.statistic(f"{n}_mean")[p]) for n in ensemble.observables}

@@ -12,10 +12,19 @@ _PLAIN = {"history"}
 _RESULTS = {
     "mu_s": "global static friction coefficient: the peak of mu(t)",
     "mu_k": "global kinetic coefficient: mean of mu(t) over the kinetic window; NaN: not measured",
-    "mu_s_discretisation_error": "relative discretisation error bound of mu_s; NaN: not measured",
-    "mu_k_discretisation_error": "relative discretisation error bound of mu_k; NaN: not measured",
-    "mu_s_error_basis": "what the error bar of mu_s rests on",
-    "mu_k_error_basis": "what the error bar of mu_k rests on",
+    # The discretisation bar (core/study_table.hpp): /statistics columns in gradfric-fem-run files;
+    # the older history files held the error alone here.
+    **{f"{mu}_discretisation_{field}": f"{text} of {mu}; NaN: not measured"
+       for mu in ("mu_s", "mu_k") for field, text in (
+           ("error", "relative discretisation uncertainty U / |value| (study ladder, Eca-Hoekstra)"),
+           ("order", "observed order p of the study ladder's fit"),
+           ("safety_factor", "safety factor Fs of the discretisation uncertainty"),
+           ("extrapolated", "value the study ladder's error fit extrapolates to"),
+           ("half_width", "relative 95 % statistical half-width included in the discretisation uncertainty"),
+           ("lattice", "lattice term of the discretisation error (files before the study ladders)"),
+           ("dt", "time-step term of the discretisation error (files before the study ladders)"))},
+    "mu_s_error_basis": "what the error bar of mu_s rests on: the study ladder's verdict, or why not measured",
+    "mu_k_error_basis": "what the error bar of mu_k rests on: the study ladder's verdict, or why not measured",
     "peak_time": "time of the peak of mu(t)",
     "eq2_peak_time": "the peak time Eq. 2 of the paper predicts",
     "first_slip_time": "time of the first slip of a bottom node",
@@ -101,9 +110,8 @@ def read(f):
 
 
 # /fem/results of a gradfric-fem-run file: the run's scalars the campaign layout has no place for.
-_EXTRA_RESULTS = {k: v for k, v in _RESULTS.items() if k not in
-                  ("mu_s", "mu_k", "mu_s_discretisation_error", "mu_k_discretisation_error", "peak_time",
-                   "peak_confirmed", "steps", "wall_seconds")}
+_EXTRA_RESULTS = {k: v for k, v in _RESULTS.items() if "_discretisation_" not in k and k not in
+                  ("mu_s", "mu_k", "peak_time", "peak_confirmed", "steps", "wall_seconds")}
 
 
 def extras(f):

@@ -130,6 +130,15 @@ with gradfric.open(path("ens.h5")) as ds, h5py.File(path("ens.h5"), "r") as f:
     assert same(ds["mu"].sel(point=2, realisation=1)[:n], f["history/mu"][2, 1, :n])
     assert float(ds["mu_s_relative"].swap_dims(point="delta").sel(delta=0.0)) == 0.0
     assert ds.attrs["sbm_N"] == "16" and "sbm_N" in ds.attrs["scene_options"] and ds.attrs["output"].endswith("ens.h5")
+    # Each point's discretisation bar (core/study_table.hpp): five fields along point (N_b 16 is in
+    # no ladder: NaN), the verdict's text one line per point in the error column's attributes.
+    for mu in ("mu_s", "mu_k"):
+        for field in ("error", "order", "safety_factor", "extrapolated", "half_width"):
+            bar = ds[f"{mu}_discretisation_{field}"]
+            assert bar.dims == ("point",) and bar.attrs["units"] == "1" and np.isnan(bar.values).all(), (mu, field)
+        for attribute in ("convergence", "fit", "ladder", "basis"):
+            assert len(ds[f"{mu}_discretisation_error"].attrs[attribute].split("\n")) == 3, (mu, attribute)
+        assert f"{mu}_discretisation_lattice" not in ds and f"{mu}_discretisation_dt" not in ds
     check_provenance(ds, 2, scene_file)
     assert check_against_file(ds, path("ens.h5")) >= 45
     assert gradfric.options(path("ens.h5"))["plate_E"] == ("10000000", "Pa", "default")
@@ -159,6 +168,29 @@ with gradfric.open(path("ens_v2.h5")) as old:
     assert np.allclose(old["mu_s_relative_ci95"].values, half, rtol=1e-7, equal_nan=True), (old["mu_s_relative_ci95"].values, half)
     assert "mu_s_relative_error" in old and old["mu_s_relative_ci95"].attrs["interval"].startswith("95 % Student t")
 
+# 1c. A file written before the bars came from the study's ladders (the lattice and time-step terms
+# _lattice and _dt beside _error, one "point p: ..." basis line per point, no _order ... _half_width):
+# open() reads it as it is.
+shutil.copy(path("ens.h5"), path("ens_old_bars.h5"))
+with h5py.File(path("ens_old_bars.h5"), "r+") as f:
+    st = f["statistics"]
+    for mu in ("mu_s", "mu_k"):
+        for field in ("order", "safety_factor", "extrapolated", "half_width"):
+            del st[f"{mu}_discretisation_{field}"]
+        error = st[f"{mu}_discretisation_error"]
+        for attribute in ("convergence", "fit", "ladder"):
+            del error.attrs[attribute]
+        error.attrs["interval"] = "bound: lattice + dt terms"
+        error.attrs["basis"] = "\n".join(f"point {p}: not measured" for p in range(3))
+        for term in ("lattice", "dt"):
+            term_column = st.create_dataset(f"{mu}_discretisation_{term}", data=np.full(3, np.nan))
+            term_column.attrs.update(units="1", description=f"{term} term of {mu}_discretisation_error (NaN: not measured)")
+            term_column.dims[0].attach_scale(error.dims[0][0])
+with gradfric.open(path("ens_old_bars.h5")) as old:
+    assert old["mu_s_discretisation_lattice"].dims == ("point",) and old["mu_k_discretisation_dt"].dims == ("point",)
+    assert "mu_s_discretisation_order" not in old and old["mu_s_discretisation_error"].attrs["basis"].startswith("point 0: ")
+    assert check_against_file(old, path("ens_old_bars.h5")) >= 45
+
 # 2. A FEM run with a property field (/fields) and its pressure response.
 fem_out = "-output"
 run(fem, "-field_mu_profile", "step", "-field_mu_position", "3e-3", "-field_mu_delta", "0.2", "-fem_nx", "8",
@@ -183,6 +215,8 @@ with gradfric.open(path("fem.h5")) as ds, h5py.File(path("fem.h5"), "r") as f:
     assert ds["mu_s"].dims == ("point", "realisation") and float(ds["mu_s"][0, 0]) == f["realisations/mu_s"][0, 0]
     assert ds["first_slip_time"].attrs["units"] == "s" and ds["mu_s_discretisation_error"].dims == ("point",)
     assert isinstance(ds["mu_s_error_basis"].item(), str) and ds["dt"].attrs["units"] == "s"
+    assert ds["mu_s_error_basis"].item() == ds["mu_s_discretisation_error"].attrs["basis"]  # the one point's line
+    assert ds["mu_k_discretisation_order"].dims == ("point",) and "mu_s_discretisation_lattice" not in ds
     assert ds.attrs["field_mu_profile"] == "step" and ds.attrs["plate_L"] == "0.005"
     check_provenance(ds, 2)
     assert check_against_file(ds, path("fem.h5")) >= 40
