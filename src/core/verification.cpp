@@ -19,7 +19,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <numeric>
 
 namespace gradfric::verification {
@@ -254,40 +253,17 @@ Verdict judge(const std::vector<Member>& ladder, int member, double formalOrder)
 }
 
 const char* toString(Convergence c) {
-  switch (c) {
-    case Convergence::TooFewMembers: return "too few members";
-    case Convergence::NoSignal: return "no signal";
-    case Convergence::Monotone: return "monotone";
-    case Convergence::SlowConvergence: return "slow convergence (order below 0.5)";
-    case Convergence::Oscillatory: return "oscillatory";
-    case Convergence::MonotoneDivergence: return "monotone divergence";
-    case Convergence::OscillatoryDivergence: return "oscillatory divergence";
-  }
-  return "";
+  static const char* const names[] = {"too few members",        "no signal",
+                                      "monotone",               "slow convergence (order below 0.5)",
+                                      "oscillatory",            "monotone divergence",
+                                      "oscillatory divergence"};
+  return names[static_cast<int>(c)];
 }
 
 const char* toString(ErrorFit f) {
-  switch (f) {
-    case ErrorFit::ObservedOrder: return "observed order";
-    case ErrorFit::FirstOrder: return "first order";
-    case ErrorFit::SecondOrder: return "second order";
-    case ErrorFit::FirstAndSecondOrder: return "first and second order";
-    case ErrorFit::None: return "data range";
-  }
-  return "";
-}
-
-std::string describe(const Verdict& v) {
-  char text[200];
-  if (!v.bounded())
-    std::snprintf(text, sizeof text, "%.6f (not bounded: %s)", v.value, toString(v.convergence));
-  else if (v.fit == ErrorFit::ObservedOrder)
-    std::snprintf(text, sizeof text, "%.6f +- %.2g %% (%s, observed order %.2f, Fs %.3g)", v.value, 100 * v.relative(),
-                  toString(v.convergence), v.order, v.safetyFactor);
-  else
-    std::snprintf(text, sizeof text, "%.6f +- %.2g %% (%s, %s fit, Fs %.3g)", v.value, 100 * v.relative(),
-                  toString(v.convergence), toString(v.fit), v.safetyFactor);
-  return text;
+  static const char* const names[] = {"observed order", "first order", "second order", "first and second order",
+                                      "data range"};
+  return names[static_cast<int>(f)];
 }
 
 }  // namespace gradfric::verification

@@ -22,6 +22,10 @@ std::vector<Member> ladderOf(const std::vector<double>& h, double limit, double 
 
 bool contains(const Verdict& v, double limit) { return std::fabs(v.value - limit) <= v.uncertainty; }
 
+std::string describe(const Verdict& v) {
+  return std::string(toString(v.convergence)) + ", " + toString(v.fit) + ", U " + std::to_string(v.uncertainty);
+}
+
 TEST(Verification, AMonotoneLadderInTheAsymptoticRangeIsRichardsonWithSafetyFactor125) {
   // Three members at ratio 2, p = 1.5: the fit is exact, phi_0 the limit, U = 1.25 |phi - phi_0|.
   const std::vector<Member> m = ladderOf({4, 2, 1}, 0.9, 0.01, 1.5);

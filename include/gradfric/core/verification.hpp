@@ -4,7 +4,6 @@
 // behind ASME V&V 20, with the 95 % statistical half-width of ensemble means added. The one
 // procedure of gradfric: both models' bars, gradfric-study -judge and the docs' tables use it
 // (docs/verification.md gives the formulas). PETSc-free.
-#include <string>
 #include <vector>
 
 namespace gradfric::verification {
@@ -54,12 +53,9 @@ struct Verdict {
 // the asymptotic range [0.5, formalOrder).
 Verdict judge(const std::vector<Member>& ladder, int member, double formalOrder = 2.0);
 
-// Names as the results files and gradfric-study store them ("monotone", "observed order", ...).
+// Names as the results files and gradfric-study store them ("monotone", "observed order", ...); the
+// text for people is study::describeBar's.
 const char* toString(Convergence c);
 const char* toString(ErrorFit f);
-
-// One line for people: "0.937429 +- 0.77 % (monotone, observed order 1.69, Fs 1.25)" or
-// "0.911 (not bounded: monotone divergence)". Rendered from the fields, last.
-std::string describe(const Verdict& v);
 
 }  // namespace gradfric::verification
