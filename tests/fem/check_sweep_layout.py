@@ -33,15 +33,19 @@ def main(sbm_path, fem_path):
         if fem.attrs["realisations"] != 1 or fem.attrs["complete"] != 1:
             problems.append("not one complete run per point")
         a, b = datasets(sbm), datasets(fem)
-        # Both hold each point's discretisation error bar (relative, NaN: not measured); the
-        # ensemble also its two terms (lattice, time step: docs/accuracy.md).
-        bars = {"statistics/mu_s_discretisation_error", "statistics/mu_k_discretisation_error"}
+        # Both hold each point's discretisation bar, the same fields for both models (relative
+        # uncertainty, order, safety factor, extrapolated value, half-width; NaN: not measured).
+        bars = {f"statistics/{m}_discretisation_{t}" for m in ("mu_s", "mu_k")
+                for t in ("error", "order", "safety_factor", "extrapolated", "half_width")}
         if not bars <= set(b) or not bars <= set(a):
             problems.append(f"missing error bars: {sorted((bars - set(b)) | (bars - set(a)))}")
-        sbm_only = {f"statistics/{m}_discretisation_{t}" for m in ("mu_s", "mu_k") for t in ("lattice", "dt")}
-        if not sbm_only <= set(a):
-            problems.append(f"missing the ensemble's bar terms: {sorted(sbm_only - set(a))}")
-        a = {n: d for n, d in a.items() if n not in sbm_only}
+        old = {f"statistics/{m}_discretisation_{t}" for m in ("mu_s", "mu_k") for t in ("lattice", "dt")}
+        if old & (set(a) | set(b)):
+            problems.append(f"the old bar terms are still written: {sorted(old & (set(a) | set(b)))}")
+        for name in ("statistics/mu_s_discretisation_error", "statistics/mu_k_discretisation_error"):
+            for model, f in (("FEM", fem), ("ensemble", sbm)):
+                if name in f and not {"convergence", "fit", "ladder", "basis"} <= set(f[name].attrs):
+                    problems.append(f"{model} {name}: attributes {sorted(f[name].attrs)}")
         wanted = {n for n in a if not n.startswith("maps/")}
         if wanted != set(b):
             problems.append(f"datasets differ: {sorted(wanted ^ set(b))}")

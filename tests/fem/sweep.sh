@@ -15,7 +15,7 @@
 #  - a property-field parameter as the sweep axis (-ensemble_field): the ensemble's points,
 #    field values and per-point maps, paired on the value; mismatches and bad values refused.
 set -u
-driver=$1; sbm_driver=$2; source_dir=$3; scratch=$4
+driver=$1; sbm_driver=$2; source_dir=$3; scratch=$4; study_driver=${5:-$(dirname "$1")/gradfric-study}
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
 python=/usr/bin/python3
 rm -rf "$scratch"; mkdir -p "$scratch"; cd "$scratch"
@@ -54,22 +54,30 @@ timeout 300 "$sbm_driver" "${grading[@]}" -sbm_N 10 -ensemble_realisations 2 -ou
   fail "the spring-block ensemble failed: $(tail -3 sbm.out)"
 $python "$source_dir/tests/fem/check_sweep_layout.py" sbm.h5 one.h5 || fail "layout"
 
-# Each point's discretisation error bar (docs/fem_study.tsv): finite for Delta 0 and for E -0.2
-# (50x50x5 is the coarsest of their ladders refined in every direction, both converged), NaN for
-# Delta 0.5 (not studied: every linear E plate up to 0.4 has a ladder that bounds 50x50x5); NaN for
-# mu_k; printed in the table and drawn by the plotting tool.
+# Each point's discretisation bar (docs/fem_study.tsv, core/study_table.hpp): the verdict
+# gradfric-study -study_judge gives the 50x50x5 member of the ladder of the point's scene: bounded
+# for Delta 0 and for E -0.2 (50x50x5 is the coarsest of their ladders refined in every direction),
+# NaN for Delta 0.5 (no study row of that scene); printed in the table and drawn by the plotting tool.
 fem bars 1 0 -grading_profile linear -grading_property E -ensemble_delta 0,-0.2,0.5 -fem_nx 50 -fem_ny 50 \
   -fem_nz 5 -friction_observables mu_s -output bars.h5
-$python - bars.h5 <<'PY' || fail "bars: the error bars in the file are not the study's"
-import math, sys, h5py
+"$study_driver" -study_judge "$source_dir/docs/fem_study.tsv" -output judge.tsv >judge.out 2>&1 ||
+  fail "gradfric-study -study_judge: $(tail -3 judge.out)"
+$python - bars.h5 judge.tsv <<'PY' || fail "bars: the error bars in the file are not the study's"
+import csv, math, sys, h5py
 f = h5py.File(sys.argv[1], "r")
-s, k = f["statistics/mu_s_discretisation_error"][:], f["statistics/mu_k_discretisation_error"][:]
-# The 3D ladder's coarsest member alone is 2.49 % (GCI about 0.931668).
-assert math.isfinite(s[0]) and s[0] > 0.0249, f"Delta 0: {s[0]}"
-# E -0.2: the GCI of 0.810202, 0.799275, 0.798055 at its coarsest member, 1.97 %, plus dt and contact.
-assert math.isfinite(s[1]) and s[1] > 0.0197, f"E -0.2: {s[1]}"
-assert math.isnan(s[2]), f"no proven bar for Delta 0.5: {s[2]}"
-assert all(math.isnan(x) for x in k), f"mu_k has no measured bar: {k}"
+study = {(r["observable"], r["scene"], r["mesh"]): r for r in csv.DictReader(open(sys.argv[2]), delimiter="\t")}
+scenes = ["-", "grading_delta=-0.2,grading_profile=linear", "grading_delta=0.5,grading_profile=linear"]
+for mu in ("mu_s", "mu_k"):
+    stored = f[f"statistics/{mu}_discretisation_error"][:]
+    convergence = f[f"statistics/{mu}_discretisation_error"].attrs["convergence"].split("\n")
+    for p, scene in enumerate(scenes):
+        row = study.get((mu, scene, "50x50x5"))
+        want = float(row["relative_uncertainty"]) if row and int(row["members"]) >= 3 else math.nan
+        assert (math.isnan(want) and math.isnan(stored[p])) or abs(stored[p] - want) <= 1e-5 * want, \
+            f"{mu} point {p} ({scene}): stored {stored[p]}, -study_judge {want}"
+        assert not row or int(row["members"]) < 3 or convergence[p] == row["convergence"], (mu, p, convergence)
+s = f["statistics/mu_s_discretisation_error"][:]
+assert math.isfinite(s[0]) and math.isfinite(s[1]) and math.isnan(s[2]), f"mu_s bars: {s}"
 assert all(math.isfinite(x) for x in f["statistics/mu_s_mean"][:]), "a point without mu_s"
 PY
 for point in "0 +Delta=0" "1 +Delta=-0\.2"; do
