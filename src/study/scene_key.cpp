@@ -74,7 +74,8 @@ SceneKey sceneKey(const RunParameters& record, const std::vector<std::string>& c
     put("-plate_theta", formatReal(point->theta));
     if (record.find("-sbm_sigma_s")) put("-sbm_sigma_s", formatReal(point->sigma));
     if (record.find("-sbm_sigma_k")) put("-sbm_sigma_k", formatReal(point->sigmaKinetic));
-    if (point->fieldSwept) set["-ensemble_field_value"] = formatReal(point->fieldValue);
+    const ResolvedOption* field = record.find("-ensemble_field");  // the swept parameter, e.g. mu_delta
+    if (point->fieldSwept && field) put("-field_" + field->value, formatReal(point->fieldValue));
   }
   const auto profile = set.find("-grading_profile"), delta = set.find("-grading_delta");
   if (profile == set.end() || delta == set.end() || atDefault("-grading_delta", delta->second))

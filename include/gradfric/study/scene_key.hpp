@@ -14,8 +14,8 @@
 
 namespace gradfric::study {
 
-// coordinates: the ladder's options ("-fem_nx", ...). point: a sweep point, whose grading, angle and
-// dispersion replace the base values. An inactive grading (profile none or Delta 0) has no effect,
+// coordinates: the ladder's options ("-fem_nx", ...). point: a sweep point, whose grading, angle,
+// dispersion and swept field parameter (-ensemble_field X: -field_X) replace the base values. An inactive grading (profile none or Delta 0) has no effect,
 // so its settings are left out.
 SceneKey sceneKey(const RunParameters& record, const std::vector<std::string>& coordinates,
                   const campaign::SweepPoint* point = nullptr);
