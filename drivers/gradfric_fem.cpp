@@ -2,6 +2,7 @@
 #include <petscsection.h>
 #include <petscsf.h>
 
+#include "gradfric/campaign/sweep_options.hpp"
 #include "gradfric/core/collective_error.hpp"
 #include "gradfric/core/driver.hpp"
 #include "gradfric/core/input_error.hpp"
@@ -82,6 +83,7 @@ std::optional<FemRun> readFemRun(MPI_Comm comm, RunParameters* record) {
   run.params.overwrite = out.flag("output_overwrite", false, "replace an existing results file");
   run.sweep = readSweepOptions(comm, record);
   if (helpRequested()) return std::nullopt;
+  campaign::refuseOverriddenBaseOptions(*record);
   // Fields against the mesh, -fem_ts_ options, misspellings, the run length and the stable step.
   if (run.compare)
     checkFemScene(comm, scene, record, {"sbm_", "ensemble_"});
@@ -159,35 +161,58 @@ std::string otherObservables(const FrictionSummary& f) {
   return lines;
 }
 
-// The value with its discretisation bar (the study's ladder of the run's scene and mesh).
-std::string withBar(double value, const study::StudyBar& bar) {
-  return formatReal(value) + "  (discretisation " + study::describeBar(bar) + ")";
+// One quantity per line, its details on indented lines: the value, then its discretisation bar (the
+// study's ladder of the run's scene and mesh) or why it has none.
+std::string withBar(const char* name, double value, const study::StudyBar& bar, const std::string& note) {
+  char line[160];
+  std::snprintf(line, sizeof line, "  %-31s %.6f%s\n    discretisation ", name, value, note.c_str());
+  return line + study::describeBar(bar) + "\n";
+}
+
+// Whether the run ended without confirming its peak although it could have: it ran to its default
+// length (no -fem_slide_time, no -fem_stop_when_known false, no TS limit). Then mu_s is only the
+// largest mu reached: exit 5.
+bool peakMissed(const FemRun& run, const FemRunResult& r, const RunParameters& scene) {
+  const ResolvedOption* slideTime = scene.find("-fem_slide_time");
+  const bool fixedLength = !run.params.stopWhenKnown || (slideTime && slideTime->origin == OptionOrigin::User);
+  return !r.friction.peakConfirmed && !fixedLength && !r.stoppedByTS;
 }
 
 void printResults(MPI_Comm comm, const FemRun& run, const FemRunResult& r, double wall, const RunParameters& scene) {
   const double eq2 = run.params.eq2PeakTime();
   const FrictionSummary& f = r.friction;
+  const std::string kinetic = f.kineticComplete ? "" : "  (window incomplete)";
   PetscPrintf(comm,
               "Results (FEM):\n"
               "  settled normal force / (p L^2)  %.6f\n"
-              "  mu_s (global)                   %s%s\n"
+              "%s"
               "  interface resolution            %s\n"
-              "  peak time after sliding start   %.6e s   (Eq. 2: %.6e s, ratio %.4f)\n"
+              "    %s\n"
+              "  peak time after sliding start   %.6e s\n"
+              "    Eq. 2: %.6e s, ratio %.4f\n"
               "  first slip after sliding start  %.6e s\n"
-              "%s"
-              "  mu_k (kinetic window)           %s%s\n"
-              "%s"
+              "%s%s%s"
               "  steps %ld, dt %.4e s, wall %.2f s (pressure %.2f s, sliding %.2f s), %.3f ms/step\n",
-              r.settledNormalForce, withBar(f.muStatic, femStudyBar(scene, nullptr, run.params, "mu_s")).c_str(),
-              f.peakConfirmed ? "" : "  (peak not confirmed)", r.resolution.describe().c_str(), f.peakTime, eq2, f.peakTime / eq2, f.firstSlipTime,
-              otherObservables(f).c_str(), withBar(f.muKinetic, femStudyBar(scene, nullptr, run.params, "mu_k")).c_str(),
-              !run.params.measurement.kinetic ? "  (not asked: -friction_observables)"
-              : f.kineticComplete             ? ""
-                                              : "  (window incomplete)",
-              describeKineticWindow(f, run.params.measurement, eq2).c_str(), r.steps, r.dt, wall, r.wallPressure, r.wallSliding, 1e3 * wall / std::max(1L, r.steps));
+              r.settledNormalForce,
+              withBar("mu_s (global)", f.muStatic, femStudyBar(scene, nullptr, run.params, "mu_s"),
+                      f.peakConfirmed ? "" : "  (peak NOT confirmed)").c_str(),
+              r.resolution.verdict().c_str(), r.resolution.measures().c_str(), f.peakTime, eq2, f.peakTime / eq2, f.firstSlipTime,
+              otherObservables(f).c_str(),
+              run.params.measurement.kinetic
+                  ? withBar("mu_k (kinetic window)", f.muKinetic, femStudyBar(scene, nullptr, run.params, "mu_k"), kinetic).c_str()
+                  : "  mu_k (kinetic window)           not asked (-friction_observables)\n",
+              describeKineticWindow(f, run.params.measurement, eq2).c_str(), r.steps, r.dt, wall, r.wallPressure,
+              r.wallSliding, 1e3 * wall / std::max(1L, r.steps));
   if (r.stoppedByTS)
     PetscPrintf(comm, "  (the TS's limits -fem_ts_max_steps / -fem_ts_max_time ended the run %s)\n",
                 r.time.empty() ? "before the sliding step" : "before the observables were known");
+  if (!f.peakConfirmed)
+    PetscPrintf(comm,
+                "gradfric-fem: %s: the peak of mu(t) was not confirmed before the run ended at %.4e s: mu_s is the "
+                "largest mu reached, not the static coefficient (not every site had slipped: a longer -fem_slide_time may "
+                "confirm it)%s\n",
+                peakMissed(run, r, scene) ? "error" : "warning", r.time.empty() ? 0.0 : r.time.back(),
+                peakMissed(run, r, scene) ? "; exit 5" : "");
 }
 
 // -fem_compare_sbm: one SBM realisation on rank 0 (the SBM has no MPI inside), the same grading.
@@ -223,23 +248,25 @@ void compareWithSpringBlocks(MPI_Comm comm, const FemRun& run, const FemRunResul
 }
 
 // -fem_dry_run: the run or sweep was checked; its bars (they depend on the settings only).
-void printSweepDryRun(MPI_Comm comm, const FemSweep& sweep) {
+int printSweepDryRun(MPI_Comm comm, const FemSweep& sweep) {
   PetscPrintf(comm, "Dry run (-fem_dry_run): %d run(s) checked, nothing built, run or written\n", sweep.points());
   PetscPrintf(comm, "Discretisation bars (docs/verification.md):\n%s",
               study::pointBarLines(sweep.bars[0], sweep.bars[1]).c_str());
+  return 0;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  return gradfric::runDriver(argc, argv, help, [](MPI_Comm comm) {
+  return gradfric::runDriver(argc, argv, help, [](MPI_Comm comm) -> int {
     RunParameters record;
     const std::optional<FemRun> run = readFemRun(comm, &record);  // every option, checked
-    if (!run) return;                                             // -help
+    if (!run) return 0;                                           // -help
     if (run->sweep.requested) {                                   // a sweep of runs over groups of ranks
       const FemSweep sweep = buildFemSweep(comm, run->params, run->grading, run->sweep, run->compare, record);
       if (run->dryRun) return printSweepDryRun(comm, sweep);      // -fem_dry_run: checked, nothing run
-      return runFemSweep(comm, sweep, record);
+      runFemSweep(comm, sweep, record);
+      return 0;
     }
     int ranks = 1;
     MPI_Comm_size(comm, &ranks);
@@ -260,5 +287,8 @@ int main(int argc, char** argv) {
     output.finish();                                              // complete: renamed into place
     printResults(comm, *run, result, wall, scene);
     compareWithSpringBlocks(comm, *run, result, wall);
+    if (run->params.output.empty())  // every other driver writes a default file; a single run says so
+      PetscPrintf(comm, "gradfric-fem: results not stored: no -output FILE was given (printed only)\n");
+    return peakMissed(*run, result, scene) ? 5 : 0;                // a result that is not the one asked for
   });
 }

@@ -51,6 +51,19 @@ InterfaceResolution checkInterfaceResolution(const PlateModel& model, double pea
 }
 
 std::string InterfaceResolution::describe() const {
+  if (!applies) return measures();
+  return measures() + ": " + verdict();
+}
+
+std::string InterfaceResolution::verdict() const {
+  if (!applies) return "no weakening length";
+  if (violations.empty()) return "resolved";
+  std::string line = "NOT resolved:";
+  for (const std::string& v : violations) line += " " + v + ";";
+  return line;
+}
+
+std::string InterfaceResolution::measures() const {
   if (!applies) return "no weakening length (law without D_c): mu_s does not converge under refinement";
   char text[400];
   std::snprintf(text, sizeof text,
@@ -64,9 +77,6 @@ std::string InterfaceResolution::describe() const {
                   largestStaticCoefficient);
     line += text;
   }
-  if (violations.empty()) return line + ": resolved";
-  line += ": NOT resolved:";
-  for (const std::string& v : violations) line += " " + v + ";";
   return line;
 }
 

@@ -12,7 +12,8 @@
 namespace gradfric {
 
 // The body returns the driver's exit code once it has finished cleanly: 0, or an outcome of its
-// own (gradfric-design's 4: target unreachable). Errors take the codes above.
+// own (gradfric-design's 4: target unreachable; gradfric-fem's 5: peak not confirmed at the run's
+// default length). Errors take the codes above.
 int runDriver(int argc, char** argv, const char* help, const std::function<int(MPI_Comm)>& body);
 
 // A body without an outcome of its own: exit 0 when it finishes.

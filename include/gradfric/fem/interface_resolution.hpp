@@ -29,7 +29,9 @@ struct InterfaceResolution {
   ProcessZone zone;
   std::vector<std::string> violations;  // empty: resolved
 
-  std::string describe() const;  // one line: D_c, kappa, the three measures and the verdict
+  std::string describe() const;  // one line: measures() + ": " + verdict()
+  std::string measures() const;  // D_c, kappa and the three measures
+  std::string verdict() const;   // "resolved" or "NOT resolved: <each violation>;"
 };
 
 // After a run on model (collective); peakTime: of mu_s, after the start of sliding (the process
