@@ -94,4 +94,18 @@ io::SweepTable sweepColumns(const Sweep& sweep) {
   return table;
 }
 
+void refuseOverriddenBaseOptions(const RunParameters& record) {
+  const char* const pairs[][2] = {{"-ensemble_delta", "-grading_delta"},       {"-ensemble_property", "-grading_property"},
+                                  {"-ensemble_profile", "-grading_profile"},   {"-ensemble_theta", "-plate_theta"},
+                                  {"-ensemble_sigma", "-sbm_sigma_s"},         {"-ensemble_sigma", "-sbm_sigma_k"}};
+  const auto set = [&](const char* name) {
+    const ResolvedOption* o = record.find(name);
+    return o && o->origin == OptionOrigin::User ? o : nullptr;
+  };
+  for (const auto& [list, base] : pairs)
+    if (const ResolvedOption* b = set(base); b && set(list))
+      throw InputError(base, b->value, std::string("not together with ") + list + " = " + set(list)->value +
+                                           ", which sets it at every sweep point: give one of the two");
+}
+
 }  // namespace gradfric::campaign

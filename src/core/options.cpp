@@ -344,6 +344,22 @@ void OptionReader::requireAtLeast(const std::string& name, PetscInt value, Petsc
   if (value < minimum) throw InputError(fullName(name), std::to_string(value), ">= " + std::to_string(minimum));
 }
 
+namespace {
+
+// The components' prefixes and the programs that read them: an option of another program is refused
+// naming it, where PETSc would only warn at the end of the run.
+const std::pair<const char*, const char*> kReaders[] = {
+    {"fem_", "gradfric-fem (and gradfric-study -study_model fem, gradfric-design -design_verify_fem)"},
+    {"sbm_", "gradfric, gradfric-design, gradfric-calibrate, gradfric-study (and gradfric-fem -fem_compare_sbm)"},
+    {"ensemble_", "gradfric and gradfric-fem (sweeps)"},
+    {"design_", "gradfric-design"},
+    {"calibrate_", "gradfric-calibrate"},
+    {"study_", "gradfric-study"},
+    {"pressure_", "gradfric"},
+    {"field_", "gradfric, gradfric-fem and gradfric-design"}};
+
+}  // namespace
+
 void checkUnusedOptions(MPI_Comm comm, const std::vector<std::string>& strictPrefixes) {
   PetscInt count = 0;
   char** names = nullptr;
@@ -360,6 +376,13 @@ void checkUnusedOptions(MPI_Comm comm, const std::vector<std::string>& strictPre
     strict = strict || name.rfind("output", 0) == 0 || name == "resume";
     // "--sbm_N" reaches PETSc as the option "-sbm_N" (a name with a dash): one edit from sbm_N.
     const std::string suggestion = isPetscOptionName(name) ? "" : nearMiss("-" + name, known);
+    const auto reader = std::find_if(std::begin(kReaders), std::end(kReaders),
+                                     [&](const auto& r) { return name.rfind(r.first, 0) == 0; });
+    if (!strict && suggestion.empty() && reader != std::end(kReaders)) {
+      const std::string value = values[i] ? values[i] : "";
+      GF_CALL(PetscOptionsLeftRestore(nullptr, &count, &names, &values));
+      throw InputError("-" + name, value, std::string("only where it is read: ") + reader->second + ", not in this run");
+    }
     if (strict || !suggestion.empty()) {
       refused += (refused.empty() ? "-" : ", -") + name + (suggestion.empty() ? "" : " (did you mean " + suggestion + "?)");
     } else if (name != "help" && name != "options_left") {

@@ -269,6 +269,7 @@ std::optional<Scene> readScene(MPI_Comm comm, RunParameters* record) {
   s.request = sbm::readRequest(comm, record, s.parameters);
   if (helpRequested()) return std::nullopt;
   checkSweepLists(lists, s.baseGrading);
+  refuseOverriddenBaseOptions(*record);
   for (std::size_t v = 0; v < valueFields.size(); ++v) {  // every swept field on the lattice, before any work
     Grading g = s.baseGrading;
     g.fields = valueFields[v];

@@ -5,6 +5,7 @@
 #include <petscsys.h>
 
 #include <cmath>
+#include <iterator>
 #include <string>
 
 namespace gradfric {
@@ -20,6 +21,33 @@ void refuseOldNames() {
     for (const char* name : kPlateNames)
       refuseRenamedOption(std::string("-") + model + name, std::string("-plate_") + name,
                           "the plate's properties are shared by both models");
+  }
+}
+
+// Values a plate in a friction experiment can have, in SI units: a value outside is most likely in
+// another unit (-plate_E 10 meaning 10 MPa), so it is named, with the unit the option takes
+// (docs/running.md, "Physical ranges"). A warning, not a refusal: a model study may want them.
+struct PhysicalRange {
+  const char* name;
+  double low, high;
+  const char* unit;
+  const char* what;
+};
+const PhysicalRange kPhysicalRanges[] = {{"L", 1e-6, 10.0, "m", "plates from a micrometre to 10 m"},
+                                         {"H", 1e-7, 1.0, "m", "thicknesses from 0.1 um to 1 m"},
+                                         {"E", 1e3, 1.2e12, "Pa", "solids from soft gels to diamond"},
+                                         {"rho", 10.0, 2.5e4, "kg/m^3", "solids from foams to osmium"},
+                                         {"p", 1.0, 1e10, "Pa", "contact pressures up to 10 GPa"},
+                                         {"v", 1e-9, 1e3, "m/s", "sliding speeds from 1 nm/s to 1 km/s"}};
+
+void warnOutsidePhysicalRanges(MPI_Comm comm, const OptionReader& o, const Plate& p) {
+  const double values[] = {p.length, p.thickness, p.youngsModulus, p.density, p.pressure, p.velocity};
+  for (std::size_t k = 0; k < std::size(kPhysicalRanges); ++k) {
+    const PhysicalRange& r = kPhysicalRanges[k];
+    if (values[k] >= r.low && values[k] <= r.high) continue;
+    PetscPrintf(comm, "gradfric: warning: %s = %s %s lies outside %s to %s %s (%s): the option takes SI units (%s)\n",
+                o.fullName(r.name).c_str(), formatReal(values[k]).c_str(), r.unit, formatReal(r.low).c_str(),
+                formatReal(r.high).c_str(), r.unit, r.what, r.unit);
   }
 }
 
@@ -55,6 +83,9 @@ Plate readPlate(MPI_Comm comm, RunParameters* record) {
   o.requirePositive("mu_k", p.muKinetic, "");
   if (!(p.muKinetic <= p.muStatic))
     throw InputError(o.fullName("mu_k"), formatReal(p.muKinetic), "0 < mu_k <= mu_s = " + formatReal(p.muStatic));
+  static bool warned = false;  // the plate is read by each model of a run: one warning per run
+  if (!warned && !helpRequested()) warnOutsidePhysicalRanges(comm, o, p);
+  warned = true;
   return p;
 }
 

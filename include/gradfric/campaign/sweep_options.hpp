@@ -22,6 +22,10 @@ SweepLists readSweepLists(OptionReader& ensemble);
 // Delta or property sweep only with a grading profile.
 void checkSweepLists(const SweepLists& lists, const Grading& base);
 
+// A list replaces its base option at every point (-ensemble_delta sets -grading_delta): both set is
+// refused (InputError naming the base option and its list) rather than one silently winning.
+void refuseOverriddenBaseOptions(const RunParameters& record);
+
 // One PlateFields per value of -ensemble_field_values (empty without a field sweep), each the
 // scene's fields with the swept parameter set; records in `lists` the value that makes the field
 // uniform, if any (the sweep's reference). InputError if only one of the two options is set or
