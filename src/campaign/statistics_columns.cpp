@@ -61,7 +61,8 @@ std::vector<io::StatisticColumn> statisticsColumns() {
                            c.interval));
     out.push_back(column(o.name + "_count", "1", "finite values of " + o.name + " used for the statistics", true));
   }
-  out.push_back(column("peaks_unconfirmed", "1", "realisations whose peak was not confirmed before -sbm_t_max", true));
+  out.push_back(column("peaks_unconfirmed", "1",
+                       "realisations whose peak was not confirmed before the run ended (-sbm_t_max, -fem_slide_time)", true));
   return out;
 }
 

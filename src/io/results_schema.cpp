@@ -113,7 +113,7 @@ std::vector<TaskDataset> taskDatasets(const EnsembleLayout& layout) {
   out.push_back(real("realisations/end_time", {}, "s", "simulated time reached",
                      [](const TaskOutput& t, std::vector<double>& row) { row[0] = t.endTime; }));
   out.push_back(integer("realisations/peak_confirmed", Type::Int8, 0, "1",
-                        "1 if the peak was confirmed, 0 if the run stopped at -sbm_t_max first",
+                        "1 if the peak was confirmed, 0 if the run ended first (-sbm_t_max, -fem_slide_time)",
                         [](const TaskOutput& t) { return t.friction.peakConfirmed ? 1 : 0; }));
   out.push_back(integer("realisations/steps", Type::Int64, 0, "1", "time steps taken",
                         [](const TaskOutput& t) { return t.steps; }));
