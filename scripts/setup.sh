@@ -24,7 +24,7 @@ build=${1:-$here/build}
 packages=(build-essential cmake pkg-config petsc-dev openmpi-bin libopenmpi-dev libhdf5-openmpi-dev
           libmetis-dev librandom123-dev libyaml-dev libpng-dev googletest libgtest-dev libbenchmark-dev
           python3 python3-h5py python3-matplotlib python3-numpy hdf5-tools)
-test_packages=(paraview python3-paraview xvfb xauth python3-xarray python3-h5netcdf)
+test_packages=(paraview python3-paraview xvfb xauth python3-xarray python3-h5netcdf lmod)
 [ "$with_tests" = 1 ] && packages+=("${test_packages[@]}")
 # python/gradfric (gradfric.open, used by the plotting scripts) returns xarray Datasets.
 packages+=(python3-xarray)
