@@ -26,21 +26,37 @@ What open() returns, by the file's `format` (attribute Dataset.attrs["format"]):
   gradfric-calibration-curves / -scene (docs/calibration.md): the CSV of -calibrate_curve along
       time (with the .opts of the same name, its fit), or the .opts alone: lz, sigma, ...
 
+Histories (dim sample, capacity /history_capacity) are NaN past each task's /history/length
+(point, realisation): open() masks them so whatever the file holds there, `.dropna("sample")` or
+`[:length]` gives one history.
+Files before format version 3 (mu_*_relative_error) also get mu_*_relative_ci95.
+
+    ds = gradfric.run("input/sbm_fig4_reduced.opts", ranks=2, sbm_N=16)   # runs a driver, then open()
+
+run() (gradfric._run) runs a driver under mpiexec and returns its results file read by open();
+RunError carries a failed run's one-line message and exit code (2: bad input).
+
 Every variable has `units` and `description` attributes and `hdf5_path`, the dataset it came from
 (`/results@mu_s`: an attribute); strings are str. Dataset attributes: the file's root attributes, the scene's options (names
 without the dash, values as text; scene_options lists them; options() gives units and origins)
 and the provenance record (software_version, software_commit, command_line, date, ranks,
 options_files with options_files_text). Large datasets are read when used: close the Dataset
 (or use it in a `with`) to release the file.
-Needs Debian's python3-h5py, python3-numpy, python3-xarray.
+Needs Debian's python3-h5py, python3-numpy, python3-xarray. Install: docs/running.md, "Reading
+results in Python" (pip install --no-deps --no-build-isolation ./python), or use python/ in place.
 """
 import builtins
 
 import h5py
 
 from . import _calibration, _ensemble, _fem, _tables
+from ._run import RunError, driver_folders, find_driver, run
 
-__all__ = ["open", "options"]
+# The project's version (CMakeLists.txt project(gradfric VERSION ...)); pyproject.toml reads it from
+# here, test python_package checks that the two agree.
+__version__ = "0.1.0"
+
+__all__ = ["open", "options", "run", "RunError", "find_driver", "driver_folders", "__version__"]
 
 _READERS = {}
 for _formats, _reader in ((_ensemble.FORMATS, _ensemble.read), (_fem.FORMATS, _fem.read),

@@ -41,7 +41,22 @@ def read(f):
         coords.update(fem_coords)
         data.update(fem_data)
         attrs.update(fem_attrs)
+    _mask_histories(f, data, coords)
     return xr.Dataset(data, coords, attrs), scene
+
+
+def _mask_histories(f, data, coords):
+    """Each history [point, realisation, sample] (mu, force_x, force_y, time, a FEM run's
+    normal_force) NaN from sample /history/length[point, realisation] on, whatever the file holds
+    there (the writer pads with NaN): read lazily like the rest."""
+    if "history/length" not in f:
+        return
+    lengths = np.asarray(f["history/length"][()])
+    for table in (data, coords):
+        for name, var in table.items():
+            where = var.attrs.get("hdf5_path", "")
+            if var.dims == ("point", "realisation", "sample") and where in f and where != "/history/length":
+                table[name] = _h5.masked_history(var, f[where], lengths)
 
 
 def observables(f):
@@ -59,16 +74,53 @@ def _old_relative_errors(data, coords):
     t(0.975, min(n, n_0) - 1), n and n_0 the counts of the point and its reference."""
     for mu in [n[:-len("_relative_error")] for n in list(data) if n.endswith("_relative_error")]:
         old, new = data.get(f"{mu}_relative_error"), f"{mu}_relative_ci95"
-        if old is None or new in data or f"{mu}_count" not in data or "reference_point" not in coords:
+        if old is None or new in data:
             continue
-        from scipy.stats import t  # Debian's python3-scipy; only for such old files
+        attrs = dict(old.attrs, description=f"95 % confidence half-width of {mu}_relative (from {mu}_relative_error)",
+                     interval="95 % Student t half-width: the propagated standard error x t(0.975, min(n, n_0) - 1)")
+        if f"{mu}_count" not in data or "reference_point" not in coords:
+            # Without the counts (or the reference point) the factor is unknown: the name is there, NaN.
+            data[new] = old.copy(data=np.full(old.shape, np.nan))
+            data[new].attrs = dict(attrs, interval="unknown: the file has no realisation counts or reference "
+                                   f"points to turn {mu}_relative_error into a 95 % half-width")
+            continue
         count = np.asarray(data[f"{mu}_count"].values, dtype=float)
         reference = np.asarray(coords["reference_point"].values)
         dof = np.full(count.shape, np.nan)
         known = reference >= 0
         dof[known] = np.minimum(count[known], count[reference[known]]) - 1
-        factor = np.where(dof >= 1, t.ppf(0.975, np.where(dof >= 1, dof, 1)), np.nan)
-        attrs = dict(old.attrs, description=f"95 % confidence half-width of {mu}_relative (from {mu}_relative_error)",
-                     interval="95 % Student t half-width: the propagated standard error x t(0.975, min(n, n_0) - 1)")
+        factor = np.array([t_quantile_975(d) if d >= 1 else np.nan for d in dof.ravel()]).reshape(dof.shape)
         data[new] = old.copy(data=np.asarray(old.values) * factor)
         data[new].attrs = attrs
+
+
+def t_quantile_975(dof):
+    """t(0.975, dof) of Student's t with an integer number of degrees of freedom dof >= 1, without
+    scipy: P(|T| < t) = 0.95 solved by bisection in theta = atan(t / sqrt(dof)), with the closed
+    forms of Abramowitz & Stegun 26.7.3 and 26.7.4 (1e-12 relative)."""
+    dof = int(dof)
+
+    def inside(theta):  # P(|T| < sqrt(dof) tan(theta))
+        s, c = np.sin(theta), np.cos(theta)
+        if dof % 2:
+            total, term = 0.0, c
+            for k in range(1, (dof - 1) // 2 + 1):  # c, (2/3) c^3, (2 4)/(3 5) c^5, ...
+                total += term
+                term *= c * c * (2 * k) / (2 * k + 1)
+            return 2 / np.pi * (theta + s * total)
+        total, term = 0.0, 1.0
+        for k in range(1, dof // 2 + 1):  # 1, (1/2) c^2, (1 3)/(2 4) c^4, ...
+            total += term
+            term *= c * c * (2 * k - 1) / (2 * k)
+        return s * total
+
+    low, high = 0.0, np.pi / 2
+    for _ in range(200):
+        middle = (low + high) / 2
+        if inside(middle) < 0.95:
+            low = middle
+        else:
+            high = middle
+        if high - low < 1e-15:
+            break
+    return float(np.sqrt(dof) * np.tan((low + high) / 2))

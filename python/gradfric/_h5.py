@@ -127,3 +127,41 @@ def collect(root, plain_groups, fallback_dims=None, skip=()):
 
     root.visititems(visit)
     return coords, data
+
+
+class _MaskedHistory(BackendArray):
+    """A [point, realisation, sample] history read only where indexed, NaN at samples at or past
+    the task's length (lengths: int array [point, realisation])."""
+
+    def __init__(self, dataset, lengths):
+        self._dataset, self._lengths = dataset, lengths
+        self.shape, self.dtype = dataset.shape, dataset.dtype
+
+    def __getitem__(self, key):
+        return indexing.explicit_indexing_adapter(key, self.shape, indexing.IndexingSupport.BASIC, self._read)
+
+    def _read(self, key):
+        key = tuple(key) + (slice(None),) * (len(self.shape) - len(tuple(key)))
+        return mask_history(np.array(self._dataset[key]), self._lengths, key, self.shape)
+
+
+def mask_history(values, lengths, key, shape):
+    """values = history[key] with NaN where the sample index >= lengths[point, realisation]."""
+    point, realisation, sample = (np.atleast_1d(np.arange(n)[k]) for n, k in zip(shape, key))
+    past = sample[None, None, :] >= lengths[np.ix_(point, realisation)][:, :, None]
+    if past.any():
+        values = np.array(values, dtype=float)
+        values[past.reshape(values.shape)] = np.nan
+    return values
+
+
+def masked_history(variable, dataset, lengths):
+    """variable (read from dataset, dims [point, realisation, sample]) masked past each task's
+    length: the same Variable, its values NaN from sample lengths[point, realisation] on."""
+    if dataset.dtype.kind != "f" or lengths.shape != dataset.shape[:2]:
+        return variable
+    if dataset.size <= _EAGER_VALUES:
+        data = mask_history(np.asarray(variable.values), lengths, (slice(None),) * 3, dataset.shape)
+    else:
+        data = indexing.LazilyIndexedArray(_MaskedHistory(dataset, lengths))
+    return xr.Variable(variable.dims, data, variable.attrs)
