@@ -23,10 +23,12 @@ build=${1:-$here/build}
 
 packages=(build-essential cmake pkg-config petsc-dev openmpi-bin libopenmpi-dev libhdf5-openmpi-dev
           libmetis-dev librandom123-dev libyaml-dev libpng-dev googletest libgtest-dev libbenchmark-dev
-          python3 python3-h5py python3-matplotlib python3-numpy hdf5-tools)
+          python3 python3-h5py python3-matplotlib python3-numpy hdf5-tools
+          python3-setuptools python3-pip python3-venv)
 test_packages=(paraview python3-paraview xvfb xauth python3-xarray python3-h5netcdf lmod)
 [ "$with_tests" = 1 ] && packages+=("${test_packages[@]}")
-# python/gradfric (gradfric.open, used by the plotting scripts) returns xarray Datasets.
+# python/gradfric (gradfric.open, used by the plotting scripts) returns xarray Datasets;
+# python3-setuptools, -pip, -venv install it offline (pip install --no-deps --no-build-isolation ./python).
 packages+=(python3-xarray)
 missing=()
 for p in "${packages[@]}"; do
@@ -40,14 +42,23 @@ if [ ${#missing[@]} -gt 0 ]; then
   apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 fi
 
-# `import gradfric` for Debian's python3: a .pth file naming this checkout's python/ folder, so the
-# package is used in place (edits take effect, nothing to reinstall; a later setup.sh of another
-# checkout points it there). Root: the system's site folder (/usr/local/lib/python3.X/dist-packages,
-# Debian's place for local additions); otherwise the user's. A cluster install uses
-# `cmake --install` instead (share/gradfric/python, docs/cluster.md).
-site=$(/usr/bin/python3 -c 'import os, site; print(site.getsitepackages()[0] if os.geteuid() == 0 else site.getusersitepackages())')
-mkdir -p "$site" && echo "$here/python" > "$site/gradfric.pth"
-/usr/bin/python3 -c 'import gradfric' || { echo "gradfric setup: python3 cannot import gradfric ($site/gradfric.pth)" >&2; exit 1; }
+# python/gradfric is not put on any global path: the repository's scripts and tests find the
+# checkout's python/ themselves; a user installs it into a virtual environment or a prefix
+# (docs/running.md, "Reading results in Python"). A gradfric.pth an earlier setup.sh wrote into a
+# site folder (pointing `import gradfric` of every python3 at one checkout) is removed.
+/usr/bin/python3 - <<'PY'
+import os, site
+for folder in site.getsitepackages() + [site.getusersitepackages()]:
+    stale = os.path.join(folder, "gradfric.pth")
+    if os.path.isfile(stale):
+        try:
+            os.remove(stale)
+            print(f"gradfric setup: removed {stale} (a global path into one checkout)")
+        except OSError as e:
+            print(f"gradfric setup: cannot remove {stale} ({e.strerror}): remove it to stop python3 importing that checkout")
+PY
+PYTHONPATH="$here/python" /usr/bin/python3 -c 'import gradfric' ||
+  { echo "gradfric setup: python3 cannot import this checkout's python/gradfric (h5py, numpy, xarray?)" >&2; exit 1; }
 
 # Open MPI refuses to run as root without these; harmless otherwise.
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
