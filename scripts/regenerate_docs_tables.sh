@@ -7,14 +7,7 @@
 #   --check  change nothing; exit 1 naming the stale blocks (the docs test runs this).
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-build=$here/build
-check=0
-for arg in "$@"; do
-  case $arg in
-    --check) check=1 ;;
-    *) build=$arg ;;
-  esac
-done
+source "$here/scripts/generated_file_args.sh"
 judge=$build/drivers/gradfric-study
 [ -x "$judge" ] || { echo "regenerate_docs_tables: $judge not built (cmake --build $build --target gradfric_study_driver)" >&2; exit 2; }
 cd "$here"

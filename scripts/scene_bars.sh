@@ -6,14 +6,7 @@
 #   --check  change nothing; exit 1 with the diff if the golden file is stale (a ctest runs this).
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-build=$here/build
-check=0
-for arg in "$@"; do
-  case $arg in
-    --check) check=1 ;;
-    *) build=$arg ;;
-  esac
-done
+source "$here/scripts/generated_file_args.sh"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 golden=$here/tests/golden/scene_bars.txt
 out=$(mktemp)

@@ -16,6 +16,8 @@ import re
 import sys
 import tempfile
 
+import docs_check
+
 MILESTONE = re.compile(r"\b[Ss]tops? [0-9]+\b")
 LOAD = re.compile(r"\b[Ll]oad( average)? [0-9]")
 MAX_LINES = {"README.md": 200, "docs/accuracy_fem.md": 300, "docs/accuracy.md": 300}
@@ -104,29 +106,9 @@ def self_test():
     with tempfile.TemporaryDirectory() as root:
         write(root, bad)
         findings = check(root)
-    missed = [e for e in expected if not any(f.startswith(e) for f in findings)]
-    extra = [f for f in findings if not any(f.startswith(e) for e in expected)]
-    for m in missed:
-        print("self-test: not caught:", m)
-    for e in extra:
-        print("self-test: false finding:", e)
-    return 1 if status or missed or extra else 0
-
-
-def main():
-    if sys.argv[1:] == ["--self-test"]:
-        status = self_test()
-        print("self-test", "failed" if status else "passed")
-        return status
-    if len(sys.argv) != 2:
-        print(__doc__)
-        return 2
-    findings = check(sys.argv[1])
-    for f in findings:
-        print(f)
-    print(f"reference {'OK' if not findings else 'NOT OK'}: {len(findings)} finding(s)")
-    return 1 if findings else 0
+    return 1 if docs_check.compare_findings(findings, expected) or status else 0
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(docs_check.run(check, self_test, lambda findings: f"reference {'OK' if not findings else 'NOT OK'}: "
+                                                               f"{len(findings)} finding(s)", usage=__doc__))

@@ -12,6 +12,8 @@ import subprocess
 import sys
 import tempfile
 
+import docs_check
+
 # Written so that this file does not match itself.
 OUTSIDE = re.compile(r"\.\./" + "shared" + r"\b|\b" + "shared" + r"/(notes|reference)/")
 ISSUE = re.compile(r"\b[Ii]ssues?\s+#?\d+|/issues/\d+|\b(?:PR|pull request)\s+#?\d+")
@@ -86,26 +88,8 @@ def self_test():
         findings = check(root)
         expected = ["docs/outside.md:1: refers", "docs/outside.md:1: link leaves", "docs/missing.md:1: link to a missing file: nothing.md",
                     "docs/missing.md:1: link to a missing file: fig.png", "docs/issue.md:1: names an issue", "src/code.cpp:1: refers"]
-        missed = [e for e in expected if not any(f.startswith(e) for f in findings)]
-        extra = [f for f in findings if not any(f.startswith(e) for e in expected)]
-        for m in missed:
-            print("self-test: not caught:", m)
-        for e in extra:
-            print("self-test: false finding:", e)
-        return 1 if missed or extra else 0
-
-
-def main():
-    if sys.argv[1:] == ["--self-test"]:
-        status = self_test()
-        print("self-test", "failed" if status else "passed")
-        return status
-    findings = check(sys.argv[1])
-    for f in findings:
-        print(f)
-    print(f"{len(findings)} finding(s)")
-    return 1 if findings else 0
+        return docs_check.compare_findings(findings, expected)
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(docs_check.run(check, self_test))
