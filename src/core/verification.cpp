@@ -206,12 +206,12 @@ Verdict judge(const std::vector<Member>& ladder, int member, double formalOrder)
     std::vector<double> c(n, 0.0);
     c[i] = -1, c[i + 1] = 1;
     const double h = halfWidth(m, c);
-    noSignal = noSignal || (h > 0 && std::fabs(d) <= h);
+    noSignal = noSignal || std::fabs(d) <= h;  // a zero difference has no sign either
     sameSign = sameSign && d * (m[1].value - m[0].value) > 0;
     logH.push_back(std::log(m[i + 1].h));
     logD.push_back(std::log(std::fabs(d)));
   }
-  if (noSignal || high->value == low->value) {  // no sign known, or no difference at all
+  if (noSignal) {  // the sign of a difference is not known
     v.convergence = Convergence::NoSignal;
     v.safetyFactor = 3;
     v.halfWidth = 3 * rangeHalfWidth;
@@ -233,7 +233,7 @@ Verdict judge(const std::vector<Member>& ladder, int member, double formalOrder)
     v.convergence = v.order > 0 ? Convergence::Oscillatory : Convergence::OscillatoryDivergence;
   }
   if (!v.bounded()) return v;
-  const bool inRange = v.convergence == Convergence::Monotone && v.order >= 0.5 && v.order < formalOrder;
+  const bool inRange = v.convergence == Convergence::Monotone && v.order < formalOrder;
   const Fit fit = inRange ? observed : fixedOrderFit(m);
   v.fit = fitName(fit, inRange);
   v.safetyFactor = inRange ? 1.25 : 3.0;

@@ -94,6 +94,12 @@ TEST(Verification, DifferencesWithinTheNoiseGiveTheDataRangeBoundWithTheHalfWidt
   EXPECT_NEAR(v.uncertainty, 3 * (0.9001 - 0.8999) + v.halfWidth, 1e-12);
 }
 
+TEST(Verification, AZeroDifferenceHasNoSignEither) {
+  const Verdict v = judge({{4, 1.02}, {2, 1.0}, {1, 1.0}}, 2);
+  EXPECT_EQ(v.convergence, Convergence::NoSignal);
+  EXPECT_NEAR(v.uncertainty, 3 * 0.02, 1e-12);
+}
+
 TEST(Verification, TheHalfWidthOfTheMeansIsAddedToAFittedBar) {
   const std::vector<Member> exact = ladderOf({4, 2, 1}, 0.9, 0.02, 1.5);
   std::vector<Member> noisy = exact;
