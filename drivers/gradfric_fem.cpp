@@ -131,7 +131,7 @@ void printPlan(MPI_Comm comm, const FemRun& run, const PlateModel& model, RunPar
     for (const auto& line : describeFields(*run.grading.fields)) PetscPrintf(comm, "  %s\n", line.c_str());
 }
 
-// The mu_k window used and its steadiness (docs/accuracy_fem_history.md, "The steady kinetic window").
+// The mu_k window used and its steadiness (docs/accuracy_fem.md, "The defaults and why").
 std::string describeKineticWindow(const FrictionSummary& f, const FrictionMeasurement& m, double load) {
   if (!m.kinetic || !f.kineticComplete) return "";
   char text[400];

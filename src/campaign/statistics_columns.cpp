@@ -93,7 +93,7 @@ std::vector<io::StatisticColumn> discretisationColumns(const std::string& observ
                              "(docs/verification.md), not a statistical interval"));
   auto& attributes = columns.front().attributes;  // one line per point
   attributes.emplace_back("convergence", perPoint(bars, [](const study::StudyBar& b) {
-                            return b.ladder.empty() ? std::string("not in the study") : verification::toString(b.verdict.convergence);
+                            return b.judged ? verification::toString(b.verdict.convergence) : std::string("not in the study");
                           }));
   attributes.emplace_back("fit", perPoint(bars, [](const study::StudyBar& b) {
                             return b.measured ? std::string(verification::toString(b.verdict.fit)) : std::string("none");

@@ -165,10 +165,14 @@ StudyBar studyBar(const std::vector<StudyRow>& rows, const std::string& observab
   StudyBar bar;
   const StudyRow* nearest = nullptr;  // of the observable's scenes, the one differing in the fewest settings
   std::size_t fewest = SIZE_MAX;
+  std::string otherShapes;  // the meshes of the run's scene in other shapes
   for (const StudyRow& r : rows) {
     if (r.observable != observable) continue;
     if (sameScene(r.scene, scene)) {
-      if (sameShape(r.mesh, mesh)) bar.ladder.push_back(&r);
+      if (sameShape(r.mesh, mesh))
+        bar.ladder.push_back(&r);
+      else
+        otherShapes += (otherShapes.empty() ? "" : ", ") + meshText(r.mesh);
       continue;
     }
     const std::size_t differing = differences(r.scene, scene);
@@ -176,6 +180,11 @@ StudyBar studyBar(const std::vector<StudyRow>& rows, const std::string& observab
   }
   std::sort(bar.ladder.begin(), bar.ladder.end(), [](const StudyRow* a, const StudyRow* b) { return a->mesh[0] < b->mesh[0]; });
   const auto at = std::find_if(bar.ladder.begin(), bar.ladder.end(), [&](const StudyRow* r) { return r->mesh == mesh; });
+  if (bar.ladder.empty() && !otherShapes.empty()) {
+    bar.why = "the study holds no mesh of the shape of " + meshText(mesh) + " refined in every direction for this scene (" +
+              "its meshes: " + otherShapes + ")";
+    return bar;
+  }
   if (bar.ladder.empty()) {
     bar.why = "no " + observable + " row of the study has this scene (" + sceneText(scene) + ")" +
               (nearest ? "; the nearest studied scene is " + sceneText(nearest->scene) : "");
@@ -188,6 +197,7 @@ StudyBar studyBar(const std::vector<StudyRow>& rows, const std::string& observab
     return bar;
   }
   bar.verdict = judgeLadder(bar.ladder, int(at - bar.ladder.begin()));
+  bar.judged = true;
   bar.measured = bar.verdict.bounded();
   if (bar.verdict.convergence == verification::Convergence::TooFewMembers)
     bar.why = "the study's ladder of this scene holds " + std::to_string(bar.ladder.size()) + " mesh(es) (" + meshes +

@@ -95,7 +95,7 @@ FemParameters readFemParameters(MPI_Comm comm, RunParameters* record, const Plat
   q.slideDamping = o.real("slide_damping", 0.0, "1/s", "mass-proportional damping during sliding");
   q.stiffnessDamping = o.real("stiffness_damping", 0.0, "s",
                               "stiffness-proportional (Rayleigh beta) damping (0.2 H/(pi c_p): steady sliding, see "
-                              "docs/accuracy_fem_history.md)");
+                              "docs/accuracy_fem.md)");
   if (auto g = o.realIfSet("peak_damping", "1/s",
                            "mass-proportional damping towards the slider's velocity, from the confirmed peak on (0: off)",
                            "c_s/H (1/pi of critical in the thickness-shear mode)"))
@@ -173,7 +173,7 @@ FemParameters readFemParameters(MPI_Comm comm, RunParameters* record, const Plat
   o.requireRange("monitor_factor", q.monitorFactor, 1.0, 1e300, ">= 1");
 
   // The shared friction measurement, its times derived from the FEM's loading time (Eq. 2 with H)
-  // and the FEM's steady mu_k window (docs/accuracy_fem_history.md, "The steady kinetic window"),
+  // and the FEM's steady mu_k window (docs/accuracy_fem.md, "The defaults and why"),
   // then the sliding time that fits its window.
   q.measurement = readFrictionMeasurement(comm, record, q.eq2PeakTime(),
                                           MeasurementDefaults{kMukSteadyTolerance, kMukLatestDelay});

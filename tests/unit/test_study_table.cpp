@@ -40,7 +40,11 @@ TEST(StudyTable, WhatTheStudyDidNotRunIsNotMeasuredWithTheReason) {
   const auto rows = parseStudyTable(kTable, "test table");
   const StudyBar paper = studyBar(rows, "mu_s", {}, {100, 100, 5});
   EXPECT_FALSE(paper.measured);
+  EXPECT_TRUE(paper.judged);
   EXPECT_NE(paper.why.find("holds 1 mesh(es)"), std::string::npos) << paper.why;
+  const StudyBar shape = studyBar(rows, "mu_s", {}, {6, 6, 2});
+  EXPECT_FALSE(shape.judged);
+  EXPECT_NE(shape.why.find("no mesh of the shape of 6x6x2"), std::string::npos) << shape.why;
   const StudyBar graded = studyBar(rows, "mu_s", parseSceneKey("grading_delta=0.2,grading_profile=linear,grading_property=friction"),
                                    {50, 50, 5});
   EXPECT_FALSE(graded.measured);

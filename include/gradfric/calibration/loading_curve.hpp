@@ -1,7 +1,7 @@
 #pragma once
 // What a calibration compares of two mu(t) curves: the loading slope, the least-squares slope of
 // mu against t over the samples before the peak with lo mu_s <= mu <= hi mu_s (0.2-0.6 by
-// default, as docs/accuracy_fem_history.md measures the FEM's slope), and the static peak. Pure
+// default, as docs/accuracy_fem.md measures the FEM's slope), and the static peak. Pure
 // functions, no MPI.
 #include <limits>
 #include <vector>

@@ -48,9 +48,10 @@ bool sameSettingValue(const std::string& a, const std::string& b);
 bool sameScene(const SceneKey& a, const SceneKey& b);
 
 struct StudyBar {
+  bool judged = false;                  // the run's mesh is a member of its scene's ladder: verdict holds
   bool measured = false;
   std::string why;                      // not measured: the reason
-  std::vector<const StudyRow*> ladder;  // the members judged, the run's among them
+  std::vector<const StudyRow*> ladder;  // the rows of the run's scene and mesh shape
   verification::Verdict verdict;
 };
 

@@ -16,7 +16,7 @@
 
 namespace gradfric::fem {
 
-// The FEM's steady mu_k window (docs/accuracy_fem_history.md, "The steady kinetic window"): the window
+// The FEM's steady mu_k window (docs/accuracy_fem.md, "The defaults and why"): the window
 // (0.5-1.5 t_load after the peak at first) slides on until its quarters' means agree within this
 // fraction, starting at most kMukLatestDelay t_load after the peak.
 constexpr double kMukSteadyTolerance = 0.002;
@@ -42,7 +42,7 @@ struct FemMesh {
   // ratio 1, the default: the uniform mesh). The band defaults to L/10.
   EdgeGrading edge;
   ElementType element = ElementType::Trilinear;  // -fem_element q1 | q1i (docs/fem.md)
-  bool blockedKernel = true;  // -fem_kernel blocked | dense (mirror-basis kernel, docs/accuracy_fem_history.md "Cost")
+  bool blockedKernel = true;  // -fem_kernel blocked | dense (mirror-basis kernel, docs/accuracy_fem.md, "Cost")
   std::string partitioner = "metis";
 };
 
@@ -59,12 +59,12 @@ struct FemContact {
   // only over a slip D_c, so a node that stops keeps its kinetic strength: this ends Eq. 1's
   // node-scale stick-slip after the peak; slip: Ruina's slip law, weakening over D_c too. 0: the
   // law alone, a stopped node back at mu_s. Neither gives Eq. 1 a length that converges mu_s
-  // (docs/accuracy_fem_history.md): the state law does (docs/accuracy_fem.md).
+  // under refinement: the state law does (docs/accuracy_fem.md, "The friction law").
   double slipLength = 1e-8;
   bool slipHealingOnly = true;  // -fem_slip_evolution healing (true) | slip
   bool contact = true;   // false: free bottom face (-fem_contact none, testing)
   ContactMethod contactMethod = ContactMethod::Penalty;
-  // Penalty stiffnesses [Pa/m], by default penaltyFactor G/H (docs/accuracy_fem_history.md, "Contact"):
+  // Penalty stiffnesses [Pa/m], by default penaltyFactor G/H (docs/accuracy_fem.md, "The defaults and why"):
   // the tangential springs add the compliance 1/(k_t L^2) to the plate's shear compliance
   // H/(G L^2), so the loading slope carries -G/(H k_t); 250 G/H keeps it at 0.4 %. k_t: k_n.
   double kn = kNotDerived, kt = kNotDerived;
@@ -84,14 +84,14 @@ struct FemDamping {
   double slideDamping = 0;
   // Stiffness-proportional (Rayleigh beta) damping [s], off by default: it ends the ringing after
   // the first slip (a plateau with constant friction at beta = 0.2 H/(pi c_p), 0.1 of critical in
-  // the fundamental thickness mode) but moves mu_s by 4 % there (docs/accuracy_fem_history.md,
-  // "Steady sliding").
+  // the fundamental thickness mode) but moves mu_s by 4 % there (docs/accuracy_fem.md,
+  // "The defaults and why").
   double stiffnessDamping = 0;
   // Damping switched on once the static peak is confirmed (sliding_damping.hpp): mass-proportional
   // towards the slider's velocity [1/s] (default c_s/H, the pressure step's damping: 1/pi of
   // critical in the fundamental thickness-shear mode pi c_s/(2H), and no change of the stable step)
   // and stiffness-proportional [s]. Neither acts before the peak (mu_s is the undamped run's, bit
-  // for bit) nor on a plate sliding steadily (docs/accuracy_fem_history.md, "Steady sliding").
+  // for bit) nor on a plate sliding steadily (docs/accuracy_fem.md, "The defaults and why").
   double peakDamping = kNotDerived;
   double peakStiffnessDamping = 0;
   // When it starts (-fem_peak_damping_start): confirmed (the peak is confirmed), drop (mu fell
@@ -105,7 +105,7 @@ struct FemDamping {
 // Time stepping and the pressure step.
 struct FemTimeStep {
   std::optional<double> dt;  // -fem_dt; none: dtSafety x the stable step of the run's grading
-  double dtSafety = 0.6;  // docs/accuracy_fem_history.md: 0.9 gave 1 % mu_s error on the paper mesh and instability with stiffer penalties
+  double dtSafety = 0.6;  // docs/accuracy_fem.md: 0.9 gave 1 % mu_s error on the paper mesh and instability with stiffer penalties
   bool dtCheck = true;  // false (testing only): a dt above the stable step is accepted, to test the monitor
   // The integrator the caller chooses (the study's ladders: rk with scheme "4", ssp); the user's
   // -fem_ts_type (the plate's TS has the options prefix fem_) overrides it.
@@ -114,7 +114,7 @@ struct FemTimeStep {
   // -fem_pressure_step static | dynamic: step 1 as the pressed equilibrium solved directly
   // (pressed_equilibrium.hpp; penalty contact only) or as the ramp and hold in time (the
   // default: CG's sums over ranks make the static state differ between rank counts by ~1e-14,
-  // which the post-peak history amplifies past the 1 vs 2 ranks tolerance; docs/accuracy_fem_history.md "Cost").
+  // which the post-peak history amplifies past the 1 vs 2 ranks tolerance; docs/accuracy_fem.md, "Cost").
   bool staticPressureStep = false;
   double rampTime = kNotDerived;    // default 20 H/c_s
   double settleTime = kNotDerived;  // default 10 H/c_s

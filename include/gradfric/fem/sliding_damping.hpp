@@ -1,6 +1,6 @@
 #pragma once
-// Damping of the plate's vibrations once it slides (docs/accuracy_fem_history.md, "Steady sliding after
-// the peak"). The release of the stored shear at the static peak rings the plate's thickness-shear
+// Damping of the plate's vibrations once it slides (docs/accuracy_fem.md, "The defaults and
+// why"). The release of the stored shear at the static peak rings the plate's thickness-shear
 // and rocking modes (omega_1 = pi c_s / (2H)) with a bottom velocity far above the sliding speed;
 // undamped, the plate bounces (normal force +-10 %, nodes lifting off) and does not slide steadily
 // even with constant friction.

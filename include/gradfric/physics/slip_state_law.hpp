@@ -10,7 +10,7 @@
 // keeps the strength it had (no slip, no change) and heals only by slipping slowly (mu_ss -> mu_s
 // as v -> 0). Without a slip length (D_c = 0, the default of the settings) a site that stops is at
 // mu_s again at once, which makes steady sliding with a velocity-weakening law unstable at the
-// scale of one site at every mesh size (docs/accuracy_fem_history.md, "Steady sliding after the peak").
+// scale of one site at every mesh size (docs/accuracy_fem.md, "The defaults and why").
 // D_c = 0 is the underlying law itself, the same arithmetic bit for bit.
 //
 // Healing only (healingOnly = true): the strength drops to the law's value at once, as the law

@@ -2,7 +2,7 @@
 // What accuracy costs in time, for the finite-element plate: the error of the global mu_s and mu_k
 // and the wall time for ladders of settings (mesh, time-step safety factor per integrator, penalty
 // stiffnesses k_n and k_t), each against the finest rung of its ladder (the dt ladders share the
-// finest gfverlet rung). Same HDF5 layout as the SBM study (docs/accuracy_fem_history.md), so
+// finest gfverlet rung). Same HDF5 layout as the SBM study (docs/accuracy_fem.md), so
 // scripts/plot_accuracy.py draws it.
 #include "gradfric/core/options.hpp"
 
