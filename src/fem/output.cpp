@@ -1,6 +1,7 @@
 #include "gradfric/fem/output.hpp"
 
 #include "gradfric/core/collective_error.hpp"
+#include "gradfric/core/format.hpp"
 #include "gradfric/core/input_error.hpp"
 #include "gradfric/core/petsc_call.hpp"
 #include "gradfric/campaign/campaign_file.hpp"
@@ -272,6 +273,15 @@ void OutputFiles::describeFields() {
 }
 
 void OutputFiles::finish() {
+  if (!pending_.empty()) {  // snapshot times the run ended before: said, not dropped silently
+    std::string times;
+    for (double t : pending_) times += (times.empty() ? "" : ", ") + formatReal(t);
+    PetscPrintf(comm_,
+                "gradfric-fem: warning: %zu snapshot(s) not written, at %s s: the run ended before them (a run "
+                "stops once its -friction_observables are known; -fem_stop_when_known false runs to "
+                "-fem_slide_time)\n",
+                pending_.size(), times.c_str());
+  }
   if (viewer_) {
     try {
       GF_CALL(PetscViewerPopFormat(viewer_));
