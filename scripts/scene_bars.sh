@@ -25,7 +25,7 @@ trap 'rm -f "$out"' EXIT
       echo "$text" >&2
       exit 2
     fi
-    grep '^  bar point ' <<<"$text" | sed "s|^  bar|$name:|"
+    grep '^  bar point ' <<<"$text" | sed -e "s|^  bar|$name:|" -e "s|$here/|<checkout>/|g"  # any clone alike
   done
 } >"$out"
 if [ "$check" = 1 ]; then
