@@ -2,8 +2,9 @@
 # Installs what gradfric needs from Debian's packages (only what is missing) and builds it.
 # Usage: scripts/setup.sh [--tests] [--target NAME] [build-dir]   (default: build)
 #   --tests        also installs what only the test suite needs: ParaView (pvbatch) with Xvfb to
-#                  check and render the FEM's .xmf headless, and xarray + h5netcdf to read the
-#                  results files the way users do (about 150 MB to download, 800 MB installed, ~2-3 min).
+#                  check and render the FEM's .xmf headless, xarray + h5netcdf to read the results
+#                  files the way users do, and Lmod to load the installed modulefile (about 150 MB
+#                  to download, 800 MB installed, ~2-3 min).
 #   --target NAME  builds only that CMake target and what it links (run-default.sh: gradfric_driver,
 #                  the driver `gradfric`); by default everything: drivers, tests and benchmarks.
 # Environment: GRADFRIC_NATIVE=ON builds with -march=native (faster, not portable across nodes).
