@@ -3,8 +3,10 @@
 # Usage: scripts/setup.sh [--tests] [--target NAME] [build-dir]   (default: build)
 #   --tests        also installs what only the test suite needs: ParaView (pvbatch) with Xvfb to
 #                  check and render the FEM's .xmf headless, xarray + h5netcdf to read the results
-#                  files the way users do, and Lmod to load the installed modulefile (about 150 MB
-#                  to download, 800 MB installed, ~2-3 min).
+#                  files the way users do, Lmod to load the installed modulefile, and Slurm
+#                  (slurmctld, slurmd, slurm-client) with munge to run slurm/ on a one-node local
+#                  cluster (scripts/slurm_local_cluster.sh) (about 150 MB to download, 800 MB
+#                  installed, ~2-3 min).
 #   --target NAME  builds only that CMake target and what it links (run-default.sh: gradfric_driver,
 #                  the driver `gradfric`); by default everything: drivers, tests and benchmarks.
 # Environment: GRADFRIC_NATIVE=ON builds with -march=native (faster, not portable across nodes).
@@ -26,7 +28,8 @@ packages=(build-essential cmake pkg-config petsc-dev openmpi-bin libopenmpi-dev 
           libmetis-dev librandom123-dev libyaml-dev libpng-dev googletest libgtest-dev libbenchmark-dev
           python3 python3-h5py python3-matplotlib python3-numpy hdf5-tools
           python3-setuptools python3-pip python3-venv)
-test_packages=(paraview python3-paraview xvfb xauth python3-xarray python3-h5netcdf lmod)
+test_packages=(paraview python3-paraview xvfb xauth python3-xarray python3-h5netcdf lmod
+               slurmctld slurmd slurm-client munge)
 [ "$with_tests" = 1 ] && packages+=("${test_packages[@]}")
 # python/gradfric (gradfric.open, used by the plotting scripts) returns xarray Datasets;
 # python3-setuptools, -pip, -venv install it offline (pip install --no-deps --no-build-isolation ./python).

@@ -1,10 +1,15 @@
 #!/usr/bin/env bash
 # Runs slurm/sbm_ensemble.sbatch outside Slurm, with stub `srun` and `scontrol` first in PATH that
-# record their calls; the stub srun "runs" until the test lets it finish (or is terminated).
-# Cases: a run that completes; the time-limit signal (USR1) during a run that then completes
-# (exit 0, no requeue); the signal and a run that does not finish in the grace period (srun
-# stopped, requeue, exit 0); the same without requeue permission (srun's status); a failing run
-# (its status, no requeue); the rank count read from Slurm's variables.
+# record their calls. Only the cases a real one-node Slurm cannot reproduce stay here; the rest
+# (a run that completes, the time-limit signal with a run that completes or is stopped and
+# requeued, no requeue, a failing run, the MPI start-up chosen from Debian's srun, GRADFRIC_SRUN
+# honoured, a missing driver) run on a real Slurm in real_slurm_sbm.sh. Stub cases:
+#   ntasks_given, cpus_per_task: the rank count from allocations of many CPUs on several nodes
+#     ("128(x2),64", --cpus-per-task=2): the test cluster is one node with the machine's CPUs.
+#   launch_pmix_version_only: an srun whose --mpi=list shows only a pmix_vN line (the listings of
+#     Slurm versions other than the installed one).
+#   launch_no_pmix: an srun without pmix (Debian's Slurm always has it): the job refuses with one
+#     line naming GRADFRIC_SRUN and exit 2, and starts nothing.
 #   sbatch_stubs.sh <source-dir> <work-dir>
 set -uo pipefail
 source=$1
@@ -14,7 +19,8 @@ rm -rf "$work" && mkdir -p "$work/bin"
 failures=0
 fail() { echo "FAIL [$case]: $*" >&2; failures=$((failures + 1)); }
 
-cp "$source/tests/slurm/srun_stub.sh" "$work/bin/srun"  # waits for $STUB_DIR/finish or SIGTERM
+cp "$source/tests/slurm/srun_stub.sh" "$work/bin/srun"
+export STUB_WAIT=0  # srun ends at once
 cat > "$work/bin/scontrol" <<'STUB'
 #!/bin/bash
 echo "scontrol $*" >> "$STUB_DIR/calls"
@@ -23,71 +29,35 @@ printf '#!/bin/sh\nexit 0\n' > "$work/bin/gradfric-fake"
 chmod +x "$work/bin/"*
 echo "-sbm_N 4" > "$work/scene.opts"
 
-# start_case <name> [VAR=value...]: runs the sbatch script in the background with a fresh stub state.
-start_case() {
+# run_case <name> [VAR=value...]: runs the sbatch script with a fresh stub state, status in $status.
+run_case() {
   case=$1; shift
   export STUB_DIR=$work/$case
   mkdir -p "$STUB_DIR"
-  env PATH="$work/bin:$PATH" SLURM_JOB_ID=4242 SLURM_SUBMIT_DIR="$work" SLURM_JOB_NUM_NODES=2 \
+  : > "$STUB_DIR/calls"
+  env -u GRADFRIC_SRUN PATH="$work/bin:$PATH" SLURM_JOB_ID=4242 SLURM_SUBMIT_DIR="$work" SLURM_JOB_NUM_NODES=2 \
     SLURM_JOB_CPUS_PER_NODE="4(x2)" GRADFRIC="$work/bin/gradfric-fake" "$@" \
-    bash "$sbatch" "$work/scene.opts" "$STUB_DIR/out.h5" -extra_option 1 > "$STUB_DIR/log" 2>&1 &
-  script_pid=$!
-  until [ -e "$STUB_DIR/started" ]; do
-    kill -0 "$script_pid" 2>/dev/null || { fail "script ended before srun started: $(cat "$STUB_DIR/log")"; return 1; }
-    sleep 0.1
-  done
-}
-signal_case() {  # sends the time-limit signal and waits until the script has taken it
-  kill -USR1 "$script_pid"
-  until grep -q "time limit near" "$STUB_DIR/log"; do sleep 0.1; done
-}
-finish_case() {  # lets srun end (if still running), returns the script's exit status in $status
-  touch "$STUB_DIR/finish"
-  wait "$script_pid"; status=$?
+    bash "$sbatch" "$work/scene.opts" "$STUB_DIR/out.h5" -extra_option 1 > "$STUB_DIR/log" 2>&1
+  status=$?
 }
 expect_status() { [ "$status" -eq "$1" ] || fail "exit status $status, expected $1 (log: $(tr '\n' '|' < "$STUB_DIR/log"))"; }
 expect_call() { grep -qF -- "$1" "$STUB_DIR/calls" || fail "no call '$1' in: $(tr '\n' '|' < "$STUB_DIR/calls")"; }
 expect_no_call() { ! grep -qF -- "$1" "$STUB_DIR/calls" || fail "unexpected call '$1' in: $(tr '\n' '|' < "$STUB_DIR/calls")"; }
 
-start_case completes && {
-  finish_case; expect_status 0
-  expect_call "srun --ntasks=8 $work/bin/gradfric-fake -options_file $work/scene.opts -output $STUB_DIR/out.h5 -resume -ensemble_monitor -extra_option 1"
-  expect_no_call scontrol
-}
+run_case ntasks_given SLURM_NTASKS=6 SLURM_CPUS_PER_TASK=2
+expect_status 0; expect_call "srun --mpi=pmix --ntasks=6 $work/bin/gradfric-fake -options_file $work/scene.opts -output $STUB_DIR/out.h5 -resume -ensemble_monitor -extra_option 1"
 
-start_case signal_then_completes GRADFRIC_GRACE=600 && {
-  signal_case; finish_case; expect_status 0
-  expect_no_call scontrol; expect_no_call "srun terminated"
-}
+run_case cpus_per_task SLURM_JOB_CPUS_PER_NODE="128(x2),64" SLURM_CPUS_PER_TASK=2
+expect_status 0; expect_call "srun --mpi=pmix --ntasks=160 "
 
-start_case signal_interrupted GRADFRIC_GRACE=1 && {
-  signal_case; wait "$script_pid"; status=$?; expect_status 0
-  expect_call "srun terminated"; expect_call "scontrol requeue 4242"
-}
+run_case launch_pmix_version_only STUB_MPI_PLUGINS="none pmi2 pmix_v3"
+expect_status 0; expect_call "srun --mpi=pmix --ntasks=8 "
 
-start_case signal_no_requeue GRADFRIC_GRACE=1 GRADFRIC_NO_REQUEUE=1 && {
-  signal_case; wait "$script_pid"; status=$?; expect_status 143
-  expect_call "srun terminated"; expect_no_call scontrol
-}
-
-start_case run_fails STUB_STATUS=3 && {
-  finish_case; expect_status 3; expect_no_call scontrol
-}
-
-start_case ntasks_given SLURM_NTASKS=6 SLURM_CPUS_PER_TASK=2 && {
-  finish_case; expect_status 0; expect_call "srun --ntasks=6 "
-}
-
-start_case cpus_per_task SLURM_JOB_CPUS_PER_NODE="128(x2),64" SLURM_CPUS_PER_TASK=2 && {
-  finish_case; expect_status 0; expect_call "srun --ntasks=160 "
-}
-
-case=missing_driver
-mkdir -p "$work/$case"
-env PATH="$work/bin:$PATH" SLURM_SUBMIT_DIR="$work" GRADFRIC="$work/none" \
-  bash "$sbatch" "$work/scene.opts" "$work/out.h5" > "$work/$case/log" 2>&1
-status=$?
-[ "$status" -eq 2 ] || fail "exit status $status for a missing driver, expected 2"
+run_case launch_no_pmix STUB_MPI_PLUGINS="none pmi2 cray_shasta"
+expect_status 2
+[ "$(grep -c . "$STUB_DIR/log")" -eq 1 ] && grep -q "GRADFRIC_SRUN" "$STUB_DIR/log" ||
+  fail "not one line naming GRADFRIC_SRUN: $(tr '\n' '|' < "$STUB_DIR/log")"
+expect_call "srun --mpi=list"; expect_no_call "--ntasks"
 
 [ "$failures" -eq 0 ] || { echo "$failures failure(s)"; exit 1; }
 echo "sbatch script: all cases passed"
