@@ -8,6 +8,7 @@
 #include "gradfric/core/input_error.hpp"
 #include "gradfric/core/options.hpp"
 #include "gradfric/core/study_judgement.hpp"
+#include "gradfric/fem/checkpoint.hpp"
 #include "gradfric/fem/output.hpp"
 #include "gradfric/fem/parameters.hpp"
 #include "gradfric/fem/plate_model.hpp"
@@ -16,6 +17,7 @@
 #include "gradfric/fem/scene_options.hpp"
 #include "gradfric/fem/simulation.hpp"
 #include "gradfric/fem/sweep.hpp"
+#include "gradfric/fem/verlet_ts.hpp"
 #include "gradfric/physics/field_options.hpp"
 #include "gradfric/physics/grading_options.hpp"
 #include "gradfric/physics/observables.hpp"
@@ -27,6 +29,7 @@
 #include <petscsys.h>
 
 #include <algorithm>
+#include <csignal>
 #include <cmath>
 #include <optional>
 #include <cstdio>
@@ -53,8 +56,21 @@ struct FemRun {
   std::uint64_t seed = 1;
   sbm::Parameters sbmParams;
   sbm::Request sbmRequest;
-  SweepOptions sweep;  // -ensemble_ lists, -fem_sweep_*, -resume: a sweep of runs instead of one run
+  SweepOptions sweep;  // -ensemble_ lists, -fem_sweep_*: a sweep of runs instead of one run
+  CheckpointSettings checkpoints;  // a single run's (-checkpoint_*, -resume)
 };
+
+// Why a run has no checkpoints ("" if it has them).
+std::string checkpointsOff(const FemRun& run) {
+  if (run.sweep.requested) return "a sweep keeps each finished point in <-output>.partial and -resume skips them";
+  if (!run.params.snapshotTimes.empty()) return "-fem_snapshot_times: the field snapshots' file cannot be resumed";
+  char type[64] = "";
+  PetscBool set = PETSC_FALSE;
+  PetscOptionsGetString(nullptr, nullptr, "-fem_ts_type", type, sizeof type, &set);
+  const std::string integrator = set ? type : run.params.integrator;
+  if (integrator != TSGFVERLET) return "-fem_ts_type " + integrator + ": only gfverlet's state is saved";
+  return "";
+}
 
 // Reads and checks every option (InputError on every rank alike); nullopt after -help.
 std::optional<FemRun> readFemRun(MPI_Comm comm, RunParameters* record) {
@@ -82,6 +98,8 @@ std::optional<FemRun> readFemRun(MPI_Comm comm, RunParameters* record) {
                                "<name>_fields.h5 + .xmf");
   run.params.overwrite = out.flag("output_overwrite", false, "replace an existing results file");
   run.sweep = readSweepOptions(comm, record);
+  run.checkpoints = readCheckpointSettings(comm, record, run.params.output, run.sweep.resume && !run.sweep.requested,
+                                           helpRequested() ? "" : checkpointsOff(run));
   if (helpRequested()) return std::nullopt;
   campaign::refuseOverriddenBaseOptions(*record);
   // Fields against the mesh, -fem_ts_ options, misspellings, the run length and the stable step.
@@ -203,6 +221,10 @@ void printResults(MPI_Comm comm, const FemRun& run, const FemRunResult& r, doubl
                   : "  mu_k (kinetic window)           not asked (-friction_observables)\n",
               describeKineticWindow(f, run.params.measurement, eq2).c_str(), r.steps, r.dt, wall, r.wallPressure,
               r.wallSliding, 1e3 * wall / std::max(1L, r.steps));
+  if (r.checkpoints > 0 || r.resumedFromStep >= 0)
+    PetscPrintf(comm, "  checkpoints %d written by this process in %.2f s (%.2f %% of its wall time)%s\n", r.checkpoints, r.checkpointWall,
+                100.0 * r.checkpointWall / std::max(wall, 1e-9),
+                r.resumedFromStep >= 0 ? ("; resumed from step " + std::to_string(r.resumedFromStep)).c_str() : "");
   if (r.stoppedByTS)
     PetscPrintf(comm, "  (the TS's limits -fem_ts_max_steps / -fem_ts_max_time ended the run %s)\n",
                 r.time.empty() ? "before the sliding step" : "before the observables were known");
@@ -247,6 +269,33 @@ void compareWithSpringBlocks(MPI_Comm comm, const FemRun& run, const FemRunResul
               run.params.eq2PeakTime(), run.sbmParams.loadingTime(), wall, sbmValues[3]);
 }
 
+// The checkpoints of a single run, or why it has none.
+void printCheckpointPlan(MPI_Comm comm, const CheckpointPlan& plan) {
+  const CheckpointSettings& s = plan.settings;
+  if (s.path.empty()) {
+    PetscPrintf(comm, "Checkpoints: none (%s)\n", s.off.c_str());
+    return;
+  }
+  if (s.interval > 0)
+    PetscPrintf(comm, "Checkpoints: every %.4g s of wall time and on SIGINT/SIGTERM, to %s (-resume continues)\n",
+                s.interval, s.path.c_str());
+  else
+    PetscPrintf(comm, "Checkpoints: on SIGINT/SIGTERM only (-checkpoint_interval 0), to %s\n", s.path.c_str());
+  if (s.resume && !plan.resumeFrom)
+    PetscPrintf(comm, "  -resume: no checkpoint %s yet: the run starts from the beginning\n", s.path.c_str());
+}
+
+// After SIGINT/SIGTERM: the checkpoint of the last step is written; nothing else is (the results
+// file would be incomplete). Exit 128 + the signal, as a process ended by it.
+int stopAfterCheckpoint(MPI_Comm comm, const CheckpointPlan& plan, const FemRunResult& r) {
+  PetscPrintf(comm,
+              "gradfric-fem: stopped by %s at step %ld (t - t0 = %.6e s): its checkpoint is in %s; continue with "
+              "the same command and -resume\n",
+              r.interruptedBy == SIGINT ? "SIGINT" : "SIGTERM", r.steps,
+              r.time.empty() ? 0.0 : r.time.back(), plan.settings.path.c_str());
+  return 128 + r.interruptedBy;
+}
+
 // -fem_dry_run: the run or sweep was checked; its bars (they depend on the settings only).
 int printSweepDryRun(MPI_Comm comm, const FemSweep& sweep) {
   PetscPrintf(comm, "Dry run (-fem_dry_run): %d run(s) checked, nothing built, run or written\n", sweep.points());
@@ -273,18 +322,24 @@ int main(int argc, char** argv) {
     const RunEstimate estimate = estimateRun(run->params, run->grading, ranks);
     PetscPrintf(comm, "Estimate: %s\n", estimate.describe().c_str());
     if (run->dryRun) return printSweepDryRun(comm, oneRunCampaign(run->params, run->grading, record));
+    CheckpointPlan checkpoints{run->checkpoints, checkpointToResume(comm, run->checkpoints), {}};
     OutputFiles output(comm, run->params);                        // planned before any work
     PlateModel model(comm, run->params, run->grading);
     const RunParameters scene = record;                           // the options as a sweep stores them
     printPlan(comm, *run, model, &record);
+    printCheckpointPlan(comm, checkpoints);
     const double wall0 = MPI_Wtime();
-    const FemRunResult result = runPlateExperiment(model, output.snapshotObserver(model));
+    const StepObserver observer = output.snapshotObserver(model);
+    checkpoints.archiveObserver = [&output](StateArchive& a) { output.archiveObserver(a); };
+    const FemRunResult result = runPlateExperiment(model, observer, &checkpoints);
     const double wall = MPI_Wtime() - wall0;
+    if (result.interruptedBy) return stopAfterCheckpoint(comm, checkpoints, result);
     record.add({"interface resolution", result.resolution.describe(), "",
                 "D_c, kappa = G D_c/(H p (mu_s - mu_k)), and whether D_c was resolved (docs/accuracy_fem.md)",
                 OptionOrigin::Derived});
     output.writeResults(model, result, scene, record);
     output.finish();                                              // complete: renamed into place
+    removeCheckpoint(comm, run->checkpoints);                     // the results hold everything
     printResults(comm, *run, result, wall, scene);
     compareWithSpringBlocks(comm, *run, result, wall);
     if (run->params.output.empty())  // every other driver writes a default file; a single run says so

@@ -93,6 +93,11 @@ void BulkViscosity::addForce(const LayerContext& ctx, Vec X, Vec F, ContactSums&
   GF_CALL(VecAXPY(F, 1.0, fGlobal_));  // only the force slots of fGlobal are non-zero
 }
 
+void BulkViscosity::archive(StateArchive& a) {
+  a.field("bulk_viscosity.step", step_);
+  a.field("bulk_viscosity.work", work_);
+}
+
 LayerWork BulkViscosity::work() const {
   LayerWork w;
   w.rankShare = work_;

@@ -131,6 +131,20 @@ double ContactBoundary::contactWork() const {
   return sumOverRanks(comm_, total);
 }
 
+void ContactBoundary::archive(StateArchive& a) {
+  std::size_t count = nodes_.size();
+  a.field("contact.nodes.count", count);
+  if (count != nodes_.size()) throw CheckpointMismatch("the checkpoint has another number of contact nodes");
+  a.fixedField("contact.nodes", nodes_);
+  visitContactLaw(law_, [&](auto& law) { law.archive(a); });
+  a.field("contact.lastStepSlip", lastStepSlip_);
+  std::vector<double> record;  // (time, running maximum) pairs, flat
+  for (const auto& [t, slip] : slipRecord_) record.insert(record.end(), {t, slip});
+  a.field("contact.slipRecord", record);
+  slipRecord_.clear();
+  for (std::size_t i = 0; i + 1 < record.size(); i += 2) slipRecord_.emplace_back(record[i], record[i + 1]);
+}
+
 LayerWork ContactBoundary::work() const {
   LayerWork w;  // over ranks already, subtracted after the exact sums (the balance's bits)
   w.overRanks = -contactWork();

@@ -166,6 +166,13 @@ double ElasticOperator::stiffnessDampingPower(Vec X) {
   return 2.0 * beta_ * energy(velocityAsDisplacement_);
 }
 
+void ElasticOperator::archive(StateArchive& a) {
+  a.field("elastic.stiffnessPower", stiffnessPower_);
+  a.field("elastic.stiffnessWork", stiffnessWork_);
+  a.field("elastic.beta", beta_);  // the peak's stiffness damping switches it
+  if (a.restoring()) haveForce_ = false;  // the cached force is of another state
+}
+
 LayerWork ElasticOperator::work() const {
   LayerWork w;  // always reported (0 without the audit): the balance's sums as they were
   w.overRanks = stiffnessWork_;

@@ -63,6 +63,21 @@ void EnergyMonitor::check(long step, double t, Vec state) {
   if (!energyProblem.empty()) fail(step, t, energyProblem);
 }
 
+void EnergyMonitor::archive(StateArchive& a) {
+  a.field("energy.injected", injected_);
+  a.field("energy.pressureWork", pressureWork_);
+  a.field("energy.driveWork", driveWork_);
+  a.field("energy.lastZ", lastZ_);
+  a.field("energy.lastP", lastP_);
+  a.field("energy.lastPower", lastPower_);
+  a.field("energy.started", started_);
+  a.field("energy.sliding", sliding_);
+  a.field("energy.time", record_->time);
+  a.field("energy.energy", record_->energy);
+  a.field("energy.energyIn", record_->energyIn);
+  a.field("energy.dissipated", record_->dissipated);
+}
+
 void EnergyMonitor::fail(long step, double t, const std::string& quantity) {
   TSType type = nullptr;
   TSGetType(ts_, &type);

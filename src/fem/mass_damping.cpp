@@ -8,6 +8,11 @@ MassDamping::MassDamping(const FemParameters& q, PetscInt ownedBlocks)
     : settle_(q.settleDamping), slide_(q.slideDamping), peak_(q.peakDamping), step_(ownedBlocks, 0.0),
       work_(ownedBlocks, 0.0) {}
 
+void MassDamping::archive(StateArchive& a) {
+  a.fixedField("mass_damping.step", step_);
+  a.fixedField("mass_damping.work", work_);
+}
+
 LayerWork MassDamping::work() const {
   LayerWork w;
   for (double e : work_) w.rankShare.add(e);

@@ -80,6 +80,13 @@ OutputFiles::~OutputFiles() {
   }
 }
 
+void OutputFiles::archiveObserver(StateArchive& a) {
+  int recording = pressureResponse_ != nullptr;
+  a.field("output.pressureResponse", recording);
+  if (recording != (pressureResponse_ != nullptr)) throw CheckpointMismatch("the checkpoint's run had another output");
+  if (pressureResponse_) pressureResponse_->archive(a);
+}
+
 StepObserver OutputFiles::snapshotObserver(PlateModel& model) {
   if (path_.empty()) return {};
   pressureResponse_ = std::make_unique<PressureResponseRecorder>(model);

@@ -104,6 +104,15 @@ void PlateModel::accelerate(const LayerContext& ctx, Vec X, Vec F) {
   }
 }
 
+void PlateModel::archive(StateArchive& a) {
+  protocol_.archive(a);
+  std::size_t terms = owned_.size();
+  a.field("model.terms", terms);
+  if (terms != owned_.size()) throw CheckpointMismatch("the checkpoint has another set of physics terms");
+  for (auto& layer : owned_) layer->archive(a);
+  a.field("model.lastTotals", lastTotals_);
+}
+
 void PlateModel::postStep() {
   for (Layer* layer : layers_) layer->postStep(dt_);
 }

@@ -2,6 +2,8 @@
 // (pressure_response_recorder.hpp).
 #include "gradfric/fem/pressure_response_recorder.hpp"
 
+#include "gradfric/core/exact_sum.hpp"
+
 #include "gradfric/core/gather.hpp"
 #include "gradfric/core/petsc_call.hpp"
 
@@ -94,14 +96,16 @@ PressureResponseMap PressureResponseRecorder::finish(const PlateModel& model, do
   m.nodeX = mesh.axisX().nodes;
   m.nodeY = mesh.axisY().nodes;
   m.g.assign(std::size_t(nx) * ny, std::nan(""));
-  double mean = 0.0, moment = 0.0;
+  // Exact sums: the gathered nodes come in the partition's order, and the totals must have the
+  // same bits on any number of ranks.
+  ExactSum mean, moment;
   for (std::size_t k = 0; k + 3 < all.size(); k += 4) {
     m.g[static_cast<std::size_t>(all[k])] = all[k + 1];
-    mean += all[k + 2] * all[k + 1];
-    moment += all[k + 2] * all[k + 3] * all[k + 1];
+    mean.add(all[k + 2] * all[k + 1]);
+    moment.add(all[k + 2] * all[k + 3] * all[k + 1]);
   }
-  m.mean = mean / (L * L);
-  m.momentOverThickness = moment / (L * L * H);
+  m.mean = mean.value() / (L * L);
+  m.momentOverThickness = moment.value() / (L * L * H);
   // Half the edge cells beyond the edge nodes (the uniform mesh's pixel; a graded mesh's map is
   // on its node indices, its pixels unequal).
   const double hx = mesh.axisX().width(0), hy = mesh.axisY().width(0);

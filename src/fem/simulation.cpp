@@ -11,6 +11,11 @@
 //    since the start of sliding (in a plate with a 0.1 E0 band, nodes there can stay stuck for
 //    many t_load while the plate shears above them: the peak is then not confirmed, see
 //    tests/fem/test_fem_hard_grading.cpp); the first slip = the first step with a node slipping;
+//  - checkpoints (checkpoint.hpp): at the end of the post-step, every -checkpoint_interval of
+//    rank 0's wall time or after SIGINT/SIGTERM (one reduction of the flags per step on more than
+//    one rank), the state between two steps. The step's monitors have not run yet: a resumed run's
+//    TSSolve runs them first, on the restored step (TSSolve monitors its initial state), so every
+//    monitor sees every step once;
 //  - monitors (TSMonitorSet): the blow-up / energy monitor, the snapshot output (StepObserver) and
 //    the progress lines; -fem_ts_monitor and any other -fem_ts_ monitor run alongside.
 #include "gradfric/fem/simulation.hpp"
@@ -18,9 +23,14 @@
 #include "gradfric/core/petsc_call.hpp"
 #include "gradfric/fem/log_events.hpp"
 #include "gradfric/fem/pressed_equilibrium.hpp"
+#include "gradfric/fem/run_interruption.hpp"
+#include "gradfric/fem/verlet_ts.hpp"
 #include "gradfric/physics/friction_laws.hpp"
 
+#include "gradfric/core/input_error.hpp"
+
 #include <algorithm>
+#include <csignal>
 #include <cmath>
 #include <optional>
 #include <string>
@@ -31,14 +41,17 @@ namespace {
 
 class Experiment {
 public:
-  Experiment(PlateModel& model, const StepObserver& observer)
+  Experiment(PlateModel& model, const StepObserver& observer, const CheckpointPlan* checkpoints)
       : model_(model),
         observer_(observer),
         q_(model.params()),
         normal_(q_.plate.pressure * q_.plate.length * q_.plate.length),
-        history_(q_.measurement, normal_, model.timeStep()) {
+        history_(q_.measurement, normal_, model.timeStep()),
+        checkpoints_(checkpoints && !checkpoints->settings.path.empty() ? checkpoints : nullptr) {
     r_.dt = model.timeStep();
     r_.stableDt = model.stableTimeStep();
+    MPI_Comm_rank(model.comm(), &rank_);
+    MPI_Comm_size(model.comm(), &ranks_);
   }
 
   FemRunResult run() {
@@ -54,8 +67,18 @@ public:
     if (observer_) GF_CALL(TSMonitorSet(ts, snapshotMonitor, this, nullptr));
     if (q_.verbose) GF_CALL(TSMonitorSet(ts, progressMonitor, this, nullptr));
     wall0_ = MPI_Wtime();
-    if (q_.staticPressureStep) startFromPressedEquilibrium(X);
+    std::optional<RunInterruption> interruption;
+    if (checkpoints_) {
+      interruption.emplace(model_.comm(), checkpoints_->settings);
+      interruption_ = &*interruption;
+      lastCheckpoint_ = MPI_Wtime();
+    }
+    if (checkpoints_ && checkpoints_->resumeFrom)
+      resume(ts, X);
+    else if (q_.staticPressureStep)
+      startFromPressedEquilibrium(X);
     solvePlateTS(ts);
+    interruption_ = nullptr;
     if (model_.phase() == Phase::Sliding)
       r_.wallSliding = MPI_Wtime() - wall0_;
     else
@@ -97,7 +120,9 @@ private:
     return guardedCallback([&] {
       const LogEventScope timed(femLogEvents().postStep);
       GF_CALL(layersPostStep(ts));  // the layers first, then the observers
-      of(ts).afterStep(ts);
+      Experiment& e = of(ts);
+      e.afterStep(ts);
+      if (e.checkpoints_) e.checkpointIfDue(ts);
     });
   }
   static PetscErrorCode energyMonitor(TS, PetscInt step, PetscReal t, Vec X, void* ctx) {
@@ -178,6 +203,131 @@ private:
     GF_CALL(PetscPrintf(model_.comm(), "  static pressure step not used (%s): the dynamic step runs\n", why.c_str()));
   }
 
+  // Everything this rank carries from one step to the next, saved or restored in one order.
+  void archive(StateArchive& a, TS ts, Vec X) {
+    PetscInt step = 0;
+    PetscReal t = 0;
+    GF_CALL(TSGetStepNumber(ts, &step));
+    GF_CALL(TSGetTime(ts, &t));
+    a.field("ts.step", step);
+    a.field("ts.time", t);
+    model_.archive(a);
+    history_.archive(a);
+    monitor_->archive(a);
+    a.field("run.time", r_.time);
+    a.field("run.mu", r_.mu);
+    a.field("run.normalForce", r_.normalForce);
+    a.field("run.forceX", r_.forceX);
+    a.field("run.forceY", r_.forceY);
+    a.field("run.slideStart", r_.slideStart);
+    a.field("run.settledNormalForce", r_.settledNormalForce);
+    a.field("run.staticPressureStep", r_.staticPressureStep);
+    a.field("run.pressureIterations", r_.pressureIterations);
+    a.field("run.peakDampingStart", r_.peakDampingStart);
+    a.field("run.steps", r_.steps);
+    a.field("run.wallPressure", r_.wallPressure);
+    a.field("run.sample", sample_);
+    if (checkpoints_->archiveObserver) checkpoints_->archiveObserver(a);
+    archiveVec(a, "state", X);
+    Vec rhs = verletReusedRhs(ts);
+    int haveRhs = rhs != nullptr;
+    a.field("ts.haveRhs", haveRhs);
+    if (a.restoring()) {
+      GF_CALL(TSSetStepNumber(ts, step));
+      GF_CALL(TSSetTime(ts, t));
+      if (haveRhs) {
+        OwnedVec saved;
+        GF_CALL(VecDuplicate(X, saved.out()));
+        archiveVec(a, "ts.rhs", saved);
+        restoreVerletRhs(ts, saved);
+      }
+    } else if (haveRhs) {
+      archiveVec(a, "ts.rhs", rhs);
+    }
+    a.expectEnd();
+  }
+
+  static void archiveVec(StateArchive& a, const char* name, Vec v) {
+    PetscInt n = 0;
+    GF_CALL(VecGetLocalSize(v, &n));
+    std::vector<double> values(static_cast<std::size_t>(n));
+    if (!a.restoring()) {  // read only: the vector's state (PETSc's object state) stays as it was
+      const PetscScalar* x = nullptr;
+      GF_CALL(VecGetArrayRead(v, &x));
+      std::copy(x, x + n, values.begin());
+      GF_CALL(VecRestoreArrayRead(v, &x));
+      a.fixedField(name, values);
+      return;
+    }
+    a.fixedField(name, values);
+    PetscScalar* x = nullptr;
+    GF_CALL(VecGetArray(v, &x));
+    std::copy(values.begin(), values.end(), x);
+    GF_CALL(VecRestoreArray(v, &x));
+  }
+
+  // -resume: the state of the checkpoint's step; TSSolve continues from it.
+  void resume(TS ts, Vec X) {
+    const CheckpointHeader& h = *checkpoints_->resumeFrom;
+    GF_CALL(TSSetUp(ts));  // gfverlet's data exists (its reused right-hand side is restored into it)
+    StateArchive a(readCheckpointBytes(model_.comm(), checkpoints_->settings.path));
+    try {
+      archive(a, ts, X);
+    } catch (const CheckpointMismatch& e) {
+      throw InputError("-resume", checkpoints_->settings.path,
+                       std::string("a checkpoint of this build and scene (") + e.what() + ")");
+    }
+    r_.resumedFromStep = h.step;
+    if (h.tSliding >= 0)
+      GF_CALL(PetscPrintf(model_.comm(), "  resumed from the checkpoint of step %ld (t - t0 = %.6e s) in %s\n", h.step,
+                          h.tSliding, checkpoints_->settings.path.c_str()));
+    else
+      GF_CALL(PetscPrintf(model_.comm(), "  resumed from the checkpoint of step %ld (t = %.6e s, while pressing) in %s\n",
+                          h.step, h.time, checkpoints_->settings.path.c_str()));
+  }
+
+  // After the post-step: a checkpoint when one is due (rank 0's clock) or a signal came (any rank).
+  void checkpointIfDue(TS ts) {
+    const CheckpointSettings& s = checkpoints_->settings;
+    if (s.testSignal != 0) {  // testing only: the signal a scheduler would send, after a given step
+      PetscInt now = 0;
+      GF_CALL(TSGetStepNumber(ts, &now));
+      if (now == s.testStep) raise(s.testSignal);
+    }
+    TSConvergedReason reason = TS_CONVERGED_ITERATING;
+    GF_CALL(TSGetConvergedReason(ts, &reason));
+    const int signal = RunInterruption::pending();
+    int flags = (signal == SIGINT ? 2 : 0) | (signal == SIGTERM ? 4 : 0);
+    const double interval = checkpoints_->settings.interval;
+    if (rank_ == 0 && interval > 0 && MPI_Wtime() - lastCheckpoint_ >= interval) flags |= 1;
+    if (ranks_ > 1) GF_CALL_MPI(MPI_Allreduce(MPI_IN_PLACE, &flags, 1, MPI_INT, MPI_BOR, model_.comm()));
+    if (flags == 0) return;
+    const bool stopping = reason != TS_CONVERGED_ITERATING;  // the run ends at this step anyway
+    if (stopping && !(flags & 6)) return;
+    const double start = MPI_Wtime();
+    Vec X = nullptr;
+    PetscInt step = 0;
+    PetscReal t = 0;
+    GF_CALL(TSGetSolution(ts, &X));
+    GF_CALL(TSGetStepNumber(ts, &step));
+    GF_CALL(TSGetTime(ts, &t));
+    r_.checkpoints += 1;
+    StateArchive a;
+    archive(a, ts, X);
+    CheckpointHeader h;
+    h.step = step;
+    h.time = t;
+    h.tSliding = model_.phase() == Phase::Sliding ? t - r_.slideStart : -1.0;
+    h.ranks = ranks_;
+    writeCheckpoint(model_.comm(), checkpoints_->settings, h, a.bytes());
+    r_.checkpointWall += MPI_Wtime() - start;
+    lastCheckpoint_ = MPI_Wtime();
+    interruption_->kept(step, t, h.tSliding);
+    if (!(flags & 6)) return;
+    r_.interruptedBy = (flags & 2) ? SIGINT : SIGTERM;
+    GF_CALL(TSSetConvergedReason(ts, TS_CONVERGED_USER));
+  }
+
   void afterStep(TS ts) {
     PetscInt step = 0;
     PetscReal t = 0;
@@ -223,13 +373,17 @@ private:
   FrictionHistory history_;
   Sample sample_;
   double wall0_ = 0;
+  const CheckpointPlan* checkpoints_;  // null: none
+  RunInterruption* interruption_ = nullptr;
+  double lastCheckpoint_ = 0;  // wall time of the last checkpoint (or of the start)
+  int rank_ = 0, ranks_ = 1;
   bool recordOnset_ = isStateLaw(q_.frictionLaw);  // for the interface resolution check
 };
 
 }  // namespace
 
-FemRunResult runPlateExperiment(PlateModel& model, const StepObserver& observer) {
-  Experiment experiment(model, observer);
+FemRunResult runPlateExperiment(PlateModel& model, const StepObserver& observer, const CheckpointPlan* checkpoints) {
+  Experiment experiment(model, observer, checkpoints);
   return experiment.run();
 }
 

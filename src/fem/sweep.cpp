@@ -25,8 +25,15 @@ namespace {
 
 // Options that steer how a sweep runs but not its numbers: stored under /run, so a resumed or
 // re-ranked sweep of the same scene writes the same /scene (and may change them).
-const std::set<std::string> kRunControl = {"-output",             "-output_overwrite",         "-resume",
-                                           "-fem_sweep_abort_after", "-fem_sweep_ranks_per_run", "-fem_verbose"};
+const std::set<std::string> kRunControl = {"-output",
+                                           "-output_overwrite",
+                                           "-resume",
+                                           "-fem_sweep_abort_after",
+                                           "-fem_sweep_ranks_per_run",
+                                           "-fem_verbose",
+                                           "-checkpoint_interval",
+                                           "-checkpoint_file",
+                                           "-checkpoint_test_signal"};
 
 // mu(t) samples one run records at most: one at the start of sliding, then one per history
 // interval, at most one per step (an interval below the step samples every step), up to the
@@ -132,14 +139,15 @@ SweepOptions readSweepOptions(MPI_Comm comm, RunParameters* record) {
       "abort_after", 0, 0, PETSC_MAX_INT, "1",
       "testing only: every rank exits abruptly (no close) once its group finished this many runs (0: never)");
   OptionReader out(comm, "", "Results file", record);
-  s.resume = out.flag("resume", false, "continue an interrupted sweep: points finished in <-output>.partial are skipped");
+  s.resume = out.flag("resume", false,
+                      "continue an interrupted run: a sweep skips the points finished in <-output>.partial, a single "
+                      "run continues from its checkpoint (-checkpoint_file)");
   if (helpRequested()) return s;
   sw.requireAtLeast("ranks_per_run", ranks, 1);
   sw.requireAtLeast("abort_after", abortAfter, 0);
   s.ranksPerRun = static_cast<int>(ranks);
   s.abortAfter = static_cast<long>(abortAfter);
-  s.requested = campaign::anySwept(s.lists) || sw.wasSet("ranks_per_run") || out.wasSet("resume") ||
-                sw.wasSet("abort_after");
+  s.requested = campaign::anySwept(s.lists) || sw.wasSet("ranks_per_run") || sw.wasSet("abort_after");
   return s;
 }
 

@@ -14,6 +14,7 @@
 #include <petsc/private/tsimpl.h>
 
 #include <cstring>
+#include <stdexcept>
 
 // PETSc callbacks of the project's TS type.
 namespace {
@@ -21,6 +22,7 @@ namespace {
 struct VerletData {
   Vec rhs = nullptr;  // [v ; a] at the current solution
   PetscBool haveRhs = PETSC_FALSE;
+  PetscBool restored = PETSC_FALSE;  // a checkpoint's rhs: reused even though TSSolve restarts the step
 };
 
 PetscErrorCode TSSetUp_GFVerlet(TS ts) {
@@ -93,7 +95,9 @@ PetscErrorCode TSStep_GFVerlet(TS ts) {
   PetscCheck(bs >= 2 && bs % 2 == 0, PetscObjectComm((PetscObject)ts), PETSC_ERR_ARG_WRONG,
              "gfverlet needs a state of block size 2k [positions, velocities], got %" PetscInt_FMT, bs);
   if (!d->rhs) PetscCall(VecDuplicate(X, &d->rhs));
-  if (!d->haveRhs || ts->steprestart) {  // TSRestartStep: the solution or the forces changed outside
+  if (d->restored) {
+    d->restored = PETSC_FALSE;
+  } else if (!d->haveRhs || ts->steprestart) {  // TSRestartStep: the solution or the forces changed outside
     PetscCall(TSComputeRHSFunction(ts, t, X, d->rhs));
     d->haveRhs = PETSC_TRUE;
   }
@@ -122,6 +126,26 @@ PetscErrorCode TSCreate_GFVerlet(TS ts) {
 }  // namespace
 
 namespace gradfric::fem {
+
+Vec verletReusedRhs(TS ts) {
+  TSType type = nullptr;
+  GF_CALL(TSGetType(ts, &type));
+  if (!type || std::strcmp(type, TSGFVERLET) != 0) return nullptr;
+  auto* d = static_cast<VerletData*>(ts->data);
+  return d && d->haveRhs ? d->rhs : nullptr;
+}
+
+void restoreVerletRhs(TS ts, Vec rhs) {
+  TSType type = nullptr;
+  GF_CALL(TSGetType(ts, &type));
+  if (!type || std::strcmp(type, TSGFVERLET) != 0) throw std::logic_error("restoreVerletRhs: not a gfverlet TS");
+  GF_CALL(TSSetUp(ts));
+  auto* d = static_cast<VerletData*>(ts->data);
+  if (!d->rhs) GF_CALL(VecDuplicate(ts->vec_sol, &d->rhs));
+  GF_CALL(VecCopy(rhs, d->rhs));
+  d->haveRhs = PETSC_TRUE;
+  d->restored = PETSC_TRUE;
+}
 
 void registerVerletTS() {
   static bool done = false;

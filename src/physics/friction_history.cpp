@@ -124,4 +124,41 @@ FrictionSummary FrictionHistory::summary() const {
   return s;
 }
 
+void archiveSummary(StateArchive& a, FrictionSummary& s) {
+  a.field("summary.muStatic", s.muStatic);
+  a.field("summary.peakTime", s.peakTime);
+  a.field("summary.peakConfirmed", s.peakConfirmed);
+  a.field("summary.muKinetic", s.muKinetic);
+  a.field("summary.kineticComplete", s.kineticComplete);
+  a.field("summary.kineticFrom", s.kineticFrom);
+  a.field("summary.kineticTo", s.kineticTo);
+  a.field("summary.kineticSpread", s.kineticSpread);
+  a.field("summary.kineticSteadyTested", s.kineticSteadyTested);
+  a.field("summary.kineticSteady", s.kineticSteady);
+  a.field("summary.firstSlipTime", s.firstSlipTime);
+  a.field("summary.detachmentTime", s.detachmentTime);
+  a.field("summary.time", s.time);
+  a.field("summary.mu", s.mu);
+  a.field("summary.forceX", s.forceX);
+  a.field("summary.forceY", s.forceY);
+}
+
+void FrictionHistory::archive(StateArchive& a) {
+  a.field("history.maximum", maximum_);
+  a.field("history.peakTime", peakTime_);
+  a.field("history.lastTime", lastTime_);
+  a.field("history.firstSlip", firstSlip_);
+  a.field("history.detachment", detachment_);
+  a.field("history.confirmed", confirmed_);
+  a.field("history.observed", observed_);
+  a.field("history.windowDecided", windowDecided_);
+  a.field("history.windowSteady", windowSteady_);
+  a.field("history.windowFrom", windowFrom_);
+  a.field("history.nextSample", nextSample_);
+  a.field("history.sinceTime", sinceTime_);
+  a.field("history.sinceMu", sinceMu_);
+  a.field("history.prefix", prefix_);
+  archiveSummary(a, history_);
+}
+
 }  // namespace gradfric

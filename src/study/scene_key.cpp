@@ -20,7 +20,7 @@ const char* const kSteering[] = {"-output", "-output_overwrite", "-resume", "-pl
                                  "-ensemble_",             // sweep lists (their values come with the point), size, seed
                                  "-fem_sweep_", "-fem_verbose", "-fem_dry_run", "-fem_partitioner", "-fem_monitor_every",
                                  "-fem_monitor_factor", "-fem_snapshot_times", "-fem_compare_sbm", "-fem_compare_seed",
-                                 "-sbm_snapshot_times"};
+                                 "-sbm_snapshot_times", "-checkpoint_"};
 
 bool steers(const std::string& name) {
   return std::any_of(std::begin(kSteering), std::end(kSteering), [&](const std::string& s) {

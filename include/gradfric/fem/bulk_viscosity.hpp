@@ -37,6 +37,7 @@ public:
   void addForce(const LayerContext& ctx, Vec X, Vec F, ContactSums& sums) override;
   void postStep(double) override { work_ += step_; }
   LayerWork work() const override;
+  void archive(StateArchive& a) override;
   std::string describe() const override;
   void writeProperties(PropertySink& sink) const override;
 

@@ -60,6 +60,7 @@ public:
   void addForce(const LayerContext& ctx, Vec X, Vec F, ContactSums& sums) override;
   void postStep(double) override { commit(); }
   LayerWork work() const override;  // minus the work of the contact forces on the plate
+  void archive(StateArchive& a) override;  // the nodes' contact state, the law's per-node state
   std::string describe() const override;
   void writeProperties(PropertySink& sink) const override;
 

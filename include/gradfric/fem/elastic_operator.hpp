@@ -59,6 +59,7 @@ public:
   void addForce(const LayerContext& ctx, Vec X, Vec F, ContactSums& sums) override;
   void postStep(double dt) override { stiffnessWork_ += stiffnessPower_ * dt; }
   LayerWork work() const override;
+  void archive(StateArchive& a) override;
   std::string describe() const override;
   void writeProperties(PropertySink& sink) const override;
   bool setsForce() const override { return true; }

@@ -29,6 +29,8 @@ public:
   void afterStep(long step, double t, Vec state, const ContactTotals& totals, double mu);
   // The energy balance now (every monitorEvery steps and at the end of the run).
   void check(long step, double t, Vec state);
+  // Saves or restores the work counted so far and the record (checkpoints).
+  void archive(StateArchive& a);
 
 private:
   [[noreturn]] void fail(long step, double t, const std::string& quantity);

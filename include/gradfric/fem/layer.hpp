@@ -8,6 +8,7 @@
 // line in the registry src/fem/terms/terms.def (term_registry.hpp; docs/fem.md, "Adding a FEM
 // term", with the weight, src/fem/terms/gravity.cpp, as the worked example).
 #include "gradfric/core/exact_sum.hpp"
+#include "gradfric/core/state_archive.hpp"
 #include "gradfric/fem/sliding_damping.hpp"
 
 #include <petscvec.h>
@@ -73,6 +74,9 @@ public:
   // the step's work accumulated.
   virtual void postStep(double /*dt*/) {}
   virtual LayerWork work() const { return {}; }  // collective
+  // Saves or restores what the term carries from step to step on this rank (a checkpoint): its
+  // committed state and the work done since the start. A term without such state has nothing.
+  virtual void archive(StateArchive& /*a*/) {}
   // One line for the run's printout of the effects used.
   virtual std::string describe() const = 0;
   // Per-cell and per-node fields the term reads (plate_properties.hpp), for the output.

@@ -5,6 +5,7 @@
 // -fem_peak_damping_start says) the damping of the sliding plate (sliding_damping.hpp, and the
 // stiffness-proportional part). The layers read it through their LayerContext; the experiment
 // (simulation.cpp) asks it when to switch.
+#include "gradfric/core/state_archive.hpp"
 #include "gradfric/fem/parameters.hpp"
 #include "gradfric/fem/sliding_damping.hpp"
 
@@ -38,6 +39,11 @@ public:
   SlidingDamping massDamping() const;
   // The stiffness-proportional (Rayleigh beta) damping of the current phase [s].
   double stiffnessDamping() const;
+  // The phase and the damping switch saved or restored (checkpoints).
+  void archive(StateArchive& a) {
+    a.field("protocol.phase", phase_);
+    a.field("protocol.peakDampingOn", peakDampingOn_);
+  }
 
 private:
   const FemParameters& q_;

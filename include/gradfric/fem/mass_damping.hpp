@@ -23,6 +23,7 @@ public:
     for (std::size_t b = 0; b < work_.size(); ++b) work_[b] += step_[b];  // the rhs of the step saw its mid-step velocities
   }
   LayerWork work() const override;
+  void archive(StateArchive& a) override;
   std::string describe() const override;
 
   // Per owned block, the energy the damping takes over the step of the last right-hand side

@@ -40,6 +40,8 @@ public:
   // (empty without an output file). Collective.
   StepObserver snapshotObserver(PlateModel& model);
   void writeSnapshot(PlateModel& model, Vec state, double tSliding);
+  // The observer's state for a checkpoint (the pressure response's sums so far).
+  void archiveObserver(StateArchive& a);
   // Collective: the results file, complete, under its temporary name (renamed in finish()). scene:
   // the options as read (a sweep's /scene), record: with what the run derived since (/fem/derived).
   void writeResults(const PlateModel& model, const FemRunResult& result, const RunParameters& scene,

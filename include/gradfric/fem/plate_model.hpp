@@ -82,6 +82,10 @@ public:
   // friction, inelastic impacts, damping (mass-proportional, bulk viscosity, and the
   // stiffness-proportional term with params.energyAudit), and with penalties the springs' energy.
   double dissipatedEnergy() const;
+  // Saves or restores this rank's state between steps: the protocol's phase, every built term's
+  // state (active or not: a term switched on later has its own) and the totals of the last
+  // right-hand side (the start of sliding reads them before the next one).
+  void archive(StateArchive& a);
 
 private:
   // Builds a layer; it joins the list when active.

@@ -37,6 +37,15 @@ public:
   // Collective: the regression over the window of muStatic, gathered on rank 0 (other ranks: g empty).
   // Throws std::runtime_error if fewer than 3 steps fall in the window.
   PressureResponseMap finish(const PlateModel& model, double muStatic) const;
+  // Saves or restores the sums so far (checkpoints).
+  void archive(StateArchive& a) {
+    a.field("pressure_response.record", record_);
+    a.fixedField("pressure_response.count", count_);
+    a.fixedField("pressure_response.sumMu", sumMu_);
+    a.fixedField("pressure_response.sumMu2", sumMu2_);
+    a.fixedField("pressure_response.sumP", sumP_);
+    a.fixedField("pressure_response.sumMuP", sumMuP_);
+  }
 
 private:
   int bins_ = 0;

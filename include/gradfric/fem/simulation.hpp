@@ -3,6 +3,7 @@
 // top surface slides at v (step 2); mu(t) observed by the shared FrictionHistory (the rule of both
 // models: peak confirmed after a drop or a hold once every bottom node slipped or lost contact).
 // Driven by one TSSolve (see simulation.cpp for the callbacks).
+#include "gradfric/fem/checkpoint.hpp"
 #include "gradfric/fem/energy_monitor.hpp"
 #include "gradfric/fem/interface_resolution.hpp"
 #include "gradfric/fem/plate_model.hpp"
@@ -10,6 +11,7 @@
 #include "gradfric/physics/friction_history.hpp"
 
 #include <functional>
+#include <optional>
 #include <vector>
 
 namespace gradfric::fem {
@@ -44,14 +46,29 @@ struct FemRunResult {
   // Whether the law's weakening length was resolved (D_c, kappa, elastic slip, slip per step,
   // the measured process zone): printed and stored next to mu_s.
   InterfaceResolution resolution;
+  // Checkpoints (checkpoint.hpp): written by this process, their wall time [s], the step resumed from (-1:
+  // none), and the signal that stopped the run after its last checkpoint (0: it ran to its end).
+  int checkpoints = 0;
+  double checkpointWall = 0.0;
+  long resumedFromStep = -1;
+  int interruptedBy = 0;
 };
 
 // Called after each step of step 2 with the time since the start of sliding and the state.
 using StepObserver = std::function<void(double tSliding, Vec state)>;
 
+// A run's checkpoints: where and how often, the checkpoint it resumes from, and the state of its
+// observer (the output's pressure-response sums), saved and restored with the rest.
+struct CheckpointPlan {
+  CheckpointSettings settings;  // settings.path empty: none
+  std::optional<CheckpointHeader> resumeFrom;
+  std::function<void(StateArchive&)> archiveObserver;
+};
+
 // Runs the experiment on a fresh TS (createPlateTS: -fem_ts_ options apply, -fem_ts_monitor,
 // -fem_ts_view, -fem_ts_max_steps, -fem_ts_type ...). Throws NumericalInstability when the monitor sees the run go unstable (no
 // result is returned, nothing written).
-FemRunResult runPlateExperiment(PlateModel& model, const StepObserver& observer = {});
+FemRunResult runPlateExperiment(PlateModel& model, const StepObserver& observer = {},
+                                const CheckpointPlan* checkpoints = nullptr);
 
 }  // namespace gradfric::fem

@@ -19,4 +19,10 @@ void registerVerletTS();
 // The acceleration of the last step is reused as the next step's first; after the solution or the
 // forces were changed outside the integrator, call TSRestartStep (as for PETSc's FSAL methods).
 
+// For checkpoints: the right-hand side the next step will reuse (null before the first step or
+// with another TS type), and, on a set-up gfverlet TS, that vector restored: the next TSSolve's
+// first step reuses it as the interrupted run's did, instead of evaluating it again.
+Vec verletReusedRhs(TS ts);
+void restoreVerletRhs(TS ts, Vec rhs);
+
 }  // namespace gradfric::fem

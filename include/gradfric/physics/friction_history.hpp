@@ -3,6 +3,8 @@
 // mu(t) = |F(t)| / (p L^2), fed once per time step. It finds the static peak and confirms it,
 // averages the kinetic window after it, notes the first slip, keeps the sampled history and says
 // when the observables asked for are known (a run then stops). PETSc-free.
+#include "gradfric/core/state_archive.hpp"
+
 #include <cstddef>
 #include <limits>
 #include <vector>
@@ -45,6 +47,9 @@ struct FrictionSummary {
   std::vector<double> time, mu, forceX, forceY;
 };
 
+// Saves or restores a summary (checkpoints).
+void archiveSummary(StateArchive& a, FrictionSummary& summary);
+
 // The kinetic window is split into this many equal batches for its steadiness and error bar.
 constexpr int kSteadyBatches = 4;
 
@@ -65,6 +70,8 @@ public:
   // for) has been observed to its end.
   bool known() const;
   FrictionSummary summary() const;
+  // Saves or restores everything observed so far (checkpoints).
+  void archive(StateArchive& a);
 
 private:
   struct Window {

@@ -20,6 +20,7 @@
 //
 // The state is per site and is pending until commit() (a model may evaluate its forces more than
 // once per step). Pure arithmetic, no PETSc.
+#include "gradfric/core/state_archive.hpp"
 #include "gradfric/physics/friction_law.hpp"
 
 #include <cmath>
@@ -36,6 +37,12 @@ struct WithSlipLength {
   bool healingOnly = false;  // weakening at once (the law's), only healing over D_c
   std::vector<double> strength;  // per site: committed psi (starts at the site's static strength)
   std::vector<double> pending;   // per site: psi after the last evaluation
+
+  // The per-site state saved or restored (checkpoints).
+  void archive(StateArchive& a) {
+    a.fixedField("law.strength", strength);
+    a.fixedField("law.pending", pending);
+  }
 
   static WithSlipLength make(Law law, double slipLength, std::size_t siteCount, bool healingOnly = false) {
     WithSlipLength w{std::move(law), slipLength, healingOnly, {}, {}};

@@ -18,6 +18,7 @@
 // update over a step dt at the step's mean slip rate V is exact for constant V:
 //   theta' = theta e^(-v_c dt / D_c) + V (D_c / v_c) (1 - e^(-v_c dt / D_c)).
 // Pure arithmetic, no PETSc.
+#include "gradfric/core/state_archive.hpp"
 #include "gradfric/physics/friction_law.hpp"
 #include "gradfric/physics/friction_laws_settings.hpp"
 
@@ -38,6 +39,12 @@ struct StateWeakening {
   double slipLength = 0;        // D_c [m] (-friction_d_c)
   std::vector<double> state;    // per site: committed theta [m]
   std::vector<double> pending;  // per site: theta after the last evaluation [m]
+
+  // The per-site state saved or restored (checkpoints).
+  void archive(StateArchive& a) {
+    a.fixedField("law.state", state);
+    a.fixedField("law.pending", pending);
+  }
 
   static StateWeakening make(FrictionSites sites, const FrictionLawSettings& settings, std::size_t siteCount) {
     StateWeakening law{std::move(sites), settings.criticalVelocity, settings.slipLength, {}, {}};

@@ -37,6 +37,7 @@ public:
   // Minus the work of the weight: m g u_z summed (the work of a constant force along any path),
   // less half of its value at the first accepted step.
   LayerWork work() const override;
+  void archive(StateArchive& a) override;
   std::string describe() const override;
 
 private:
@@ -77,6 +78,14 @@ void Gravity::postStep(double) {
   committed_ = pending_;
   if (!started_) firstHalf_ = pendingHalf_;
   started_ = true;
+}
+
+void Gravity::archive(StateArchive& a) {
+  a.field("gravity.pending", pending_);
+  a.field("gravity.pendingHalf", pendingHalf_);
+  a.field("gravity.committed", committed_);
+  a.field("gravity.firstHalf", firstHalf_);
+  a.field("gravity.started", started_);
 }
 
 LayerWork Gravity::work() const {
