@@ -39,7 +39,8 @@ class Ensemble:
         self.axes = [a for a in ds.attrs["sweep_axes"].split(",") if a]
         self.delta = ds["delta"].values
         self.theta = ds["theta"].values
-        self.sigma = ds["sigma"].values
+        # The FEM's coefficients are not dispersed: its files (format version 4) store no sigma.
+        self.sigma = ds["sigma"].values if "sigma" in ds.coords else np.zeros(ds.sizes["point"])
         self.property = list(ds["property"].values)
         self.profile = list(ds["profile"].values)
         self.field_value = ds["field_value"].values if "field_value" in ds.coords else None
@@ -67,6 +68,10 @@ class Ensemble:
         return ", ".join(parts)
 
     def statistic(self, name):
+        """A /statistics column; a relative variation a file does not hold (a single FEM run's: no
+        reference point) is NaN, as the older files stored it."""
+        if name not in self.ds and (name.endswith("_relative") or name.endswith("_relative_ci95")):
+            return np.full(self.ds.sizes["point"], np.nan)
         return self.ds[name].values
 
     def has(self, name):

@@ -5,17 +5,24 @@
     ds["mu_s_relative"].swap_dims(point="delta").plot()
 
 What open() returns, by the file's `format` (attribute Dataset.attrs["format"]):
-  gradfric-sbm-ensemble, gradfric-fem-sweep (docs/ensemble.md): dims point, realisation, sample,
-      block_row, block_column, snapshot; the /sweep columns (delta, theta, sigma, sigma_kinetic,
-      property, profile, reference_point, field_value) are coordinates along point, `time`
-      (history sample times) along (point, realisation, sample), x and y the block centres [m].
-      /realisations, /statistics, /history and /maps keep their names (mu_s, mu_s_mean, mu,
-      first_slip_time, ...); /properties and /run are prefixed (properties_mu_s, run_wall_seconds).
-  gradfric-fem-run (docs/fem.md): one gradfric-fem run, read as the layout above (one point, one
-      realisation) plus its /fem extras: dims cell_x (fem_properties_E), node_x (fem_properties_mu_s,
-      ...: the values the physics used), cell_y (fem_fields_mu_s_map, ...), node_y
-      (pressure_response_g); normal_force along (point, realisation, sample); each /fem/results
-      attribute as a 0-d variable (first_slip_time, dt, ...); /fem/derived as attributes.
+  gradfric-sbm-ensemble (docs/ensemble.md): dims point, realisation, sample, block_row,
+      block_column, snapshot; the /sweep columns (delta, theta, sigma, sigma_kinetic, property,
+      profile, reference_point, field_value) are coordinates along point, `time` (history sample
+      times) along (point, realisation, sample), x and y the block centres [m]. /realisations,
+      /statistics, /history and /maps keep their names (mu_s, mu_s_mean, mu, first_slip_time, ...);
+      /properties and /run are prefixed (properties_mu_s, run_wall_seconds).
+  gradfric-fem-sweep (docs/fem.md): the same, for the FEM: dims point, realisation, sample and
+      the bottom cells cell_x (properties_E, ...: the column centres [m] are its coordinate) and,
+      with property fields, cell_y (properties_mu_s_map, ...); no sigma, sigma_kinetic,
+      redrawn_blocks, /maps, x or y. Files of format version 3 have block_row, block_column, x, y,
+      sigma and redrawn_blocks as the spring-block files have them, and read so.
+  gradfric-fem-run (docs/fem.md): one gradfric-fem run, read as a FEM sweep (one point, one
+      realisation, without reference_point or <name>_relative, <name>_relative_ci95: a single run
+      has no reference; files of format version 3 hold them, NaN or 0) plus its /fem extras: dims
+      cell_x (fem_properties_E), node_x (fem_properties_mu_s, ...: the values the physics used),
+      cell_y (fem_fields_mu_s_map, ...), node_y (pressure_response_g); normal_force along (point,
+      realisation, sample); each /fem/results attribute as a 0-d variable (first_slip_time, dt,
+      ...); /fem/derived as attributes.
   gradfric-fem-history (a single run before the campaign layout, format versions 1 to 4): dim
       time (mu, force_x, ...), x (properties_E), node_x, y (fields_mu_s_map, ...), node_y
       (pressure_response_g); each /results attribute as a 0-d variable (mu_s, peak_time, ...).
@@ -26,9 +33,10 @@ What open() returns, by the file's `format` (attribute Dataset.attrs["format"]):
   gradfric-calibration-curves / -scene (docs/calibration.md): the CSV of -calibrate_curve along
       time (with the .opts of the same name, its fit), or the .opts alone: lz, sigma, ...
 
-Histories (dim sample, capacity /history_capacity) are NaN past each task's /history/length
-(point, realisation): open() masks them so whatever the file holds there, `.dropna("sample")` or
-`[:length]` gives one history.
+Histories (dim sample) end at the longest /history/length of the file's tasks, and each task's
+is NaN past its own length (point, realisation): open() masks them so whatever the file holds
+there, `.dropna("sample")` or `[:length]` gives one history. A single FEM run's hold its samples
+alone, no NaN (its file stores no padding from format version 4; older files are cut here).
 Files before format version 3 (mu_*_relative_error) also get mu_*_relative_ci95.
 
     ds = gradfric.run("input/sbm_fig4_reduced.opts", ranks=2, sbm_N=16)   # runs a driver, then open()

@@ -23,12 +23,15 @@ def read(f):
         if name in data:
             coords[name] = data.pop(name)
     scene = _h5.option_record(f["scene"])
-    # Block centres [m]: column i of N covers [i, i + 1) L / N (also the FEM sweep's cell columns).
-    side = scene.get("plate_L", scene.get("sbm_L", ("nan",)))[0]
-    n = int(f.attrs["map_side"])
-    centres = (np.arange(n) + 0.5) * float(side) / n
-    coords["x"] = xr.Variable("block_column", centres, {"units": "m", "description": "centre of each block column along x (the grading axis)"})
-    coords["y"] = xr.Variable("block_row", centres, {"units": "m", "description": "centre of each block row along y"})
+    if "map_side" in f.attrs:
+        # Block centres [m]: column i of N covers [i, i + 1) L / N. FEM files of format version 3
+        # have these axes too (block_row, block_column: nx each); from version 4 their axes are the
+        # bottom cells, cell_x and cell_y, which hold the centres themselves.
+        side = scene.get("plate_L", scene.get("sbm_L", ("nan",)))[0]
+        n = int(f.attrs["map_side"])
+        centres = (np.arange(n) + 0.5) * float(side) / n
+        coords["x"] = xr.Variable("block_column", centres, {"units": "m", "description": "centre of each block column along x (the grading axis)"})
+        coords["y"] = xr.Variable("block_row", centres, {"units": "m", "description": "centre of each block row along y"})
     _old_relative_errors(data, coords)
     attrs = _h5.attributes(f)
     attrs["sweep_axes"] = _h5.text(f["sweep"].attrs.get("axes", ""))
@@ -41,22 +44,28 @@ def read(f):
         coords.update(fem_coords)
         data.update(fem_data)
         attrs.update(fem_attrs)
-    _mask_histories(f, data, coords)
-    return xr.Dataset(data, coords, attrs), scene
+    longest = _mask_histories(f, data, coords)
+    ds = xr.Dataset(data, coords, attrs)
+    if longest is not None and "sample" in ds.dims:
+        ds = ds.isel(sample=slice(0, longest))
+    return ds, scene
 
 
 def _mask_histories(f, data, coords):
     """Each history [point, realisation, sample] (mu, force_x, force_y, time, a FEM run's
     normal_force) NaN from sample /history/length[point, realisation] on, whatever the file holds
-    there (the writer pads with NaN): read lazily like the rest."""
+    there (a sweep's file pads its shorter tasks with NaN, and so did a single FEM run's before
+    format version 4): read lazily like the rest. Returns the longest length, where open() cuts the
+    sample axis (None: no histories), so a single run's arrays hold its samples alone."""
     if "history/length" not in f:
-        return
+        return None
     lengths = np.asarray(f["history/length"][()])
     for table in (data, coords):
         for name, var in table.items():
             where = var.attrs.get("hdf5_path", "")
             if var.dims == ("point", "realisation", "sample") and where in f and where != "/history/length":
                 table[name] = _h5.masked_history(var, f[where], lengths)
+    return int(lengths.max(initial=0))
 
 
 def observables(f):

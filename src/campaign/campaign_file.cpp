@@ -24,7 +24,8 @@ std::vector<PointStatistics> writeStatistics(io::ResultsFile& file, int realisat
   const std::vector<unsigned char> done(flags.begin(), flags.end());
   const auto stats = pointStatistics(realisations, reference, observableTables(file), file.readPeakConfirmed(), done,
                                      commonStreams);
-  auto [real, integer] = statisticsValues(stats);
+  // A single FEM run's file has no reference point and no relative columns (statisticsColumns).
+  auto [real, integer] = statisticsValues(stats, !file.layout().singleRun());
   if (target) {  // the half-width each point reached and whether it met the target
     std::vector<double> reached;
     std::vector<int> met;

@@ -49,7 +49,8 @@ std::string sceneDifferences(const ResumeTarget& scene, const io::ResultsFile& f
   if (l.format != want.format) add("format: file " + l.format + ", now " + want.format);
   const bool sameCount = extension || (l.points == want.points && l.realisations == want.realisations);
   if (!sameCount || l.historyCapacity != want.historyCapacity ||
-      l.mapSide != want.mapSide || l.firstSlipMap != want.firstSlipMap || l.frictionFields != want.frictionFields ||
+      l.mapSide != want.mapSide || l.cellX != want.cellX || l.cellY != want.cellY ||
+      l.firstSlipMap != want.firstSlipMap || l.frictionFields != want.frictionFields ||
       l.snapshotTimes.size() != want.snapshotTimes.size())
     add("layout (points, realisations, history capacity or maps)");
   return differences;
@@ -95,7 +96,7 @@ std::string problemWith(const ResumeTarget& target, const Extension* extension, 
     {  // A file of another format version gets its own sentence from ResultsFile (it reads the version).
       io::H5File raw(GF_H5(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT)));
       const bool sameVersion =
-          io::readScalarAttribute<int>(raw, "format_version", H5T_NATIVE_INT, 0) == io::kFormatVersion;
+          io::readScalarAttribute<int>(raw, "format_version", H5T_NATIVE_INT, 0) == io::formatVersion(target.layout.format);
       const std::string missing = sameVersion ? missingObservable(raw, extension == nullptr) : "";
       if (!missing.empty())
         return "it has no " + missing + ": it was written by an earlier gradfric, before that observable existed" +

@@ -22,6 +22,7 @@ struct Column {
   std::string (*describe)(const std::string& of);
   const char* interval;  // "" if the column is not an interval
   double (*value)(const ObservableStatistics&);
+  bool againstReference = false;  // a relative variation: none in a file without a reference point
 };
 
 const Column kColumns[] = {
@@ -39,9 +40,9 @@ const Column kColumns[] = {
      kMeanInterval, [](const ObservableStatistics& s) { return s.summary.ciHigh; }},
     {"relative", false,
      [](const std::string& of) { return "(" + of + " - " + of + "_0) / " + of + "_0 against /sweep/reference_point"; },
-     "", [](const ObservableStatistics& s) { return s.relative.value; }},
+     "", [](const ObservableStatistics& s) { return s.relative.value; }, true},
     {"relative_ci95", false, [](const std::string& of) { return "95 % confidence half-width of " + of + "_relative"; },
-     kRelativeInterval, [](const ObservableStatistics& s) { return s.relative.halfWidth; }},
+     kRelativeInterval, [](const ObservableStatistics& s) { return s.relative.halfWidth; }, true},
 };
 
 io::StatisticColumn column(std::string name, std::string units, std::string description, bool integer = false,
@@ -53,16 +54,21 @@ io::StatisticColumn column(std::string name, std::string units, std::string desc
 
 }  // namespace
 
-std::vector<io::StatisticColumn> statisticsColumns() {
+std::vector<io::StatisticColumn> statisticsColumns(StatisticsFile file) {
+  const bool relative = file != StatisticsFile::FemRun;
   std::vector<io::StatisticColumn> out{column("finished", "1", "realisations finished", true)};
   for (const Observable& o : statisticsObservables()) {
     for (const Column& c : kColumns)
-      out.push_back(column(o.name + "_" + c.suffix, c.inObservableUnit ? o.unit : "1", c.describe(o.name), false,
-                           c.interval));
+      if (relative || !c.againstReference)
+        out.push_back(column(o.name + "_" + c.suffix, c.inObservableUnit ? o.unit : "1", c.describe(o.name), false,
+                             c.interval));
     out.push_back(column(o.name + "_count", "1", "finite values of " + o.name + " used for the statistics", true));
   }
   out.push_back(column("peaks_unconfirmed", "1",
-                       "realisations whose peak was not confirmed before the run ended (-sbm_t_max, -fem_slide_time)", true));
+                       file == StatisticsFile::SpringBlock
+                           ? "realisations whose peak was not confirmed before the run ended (-sbm_t_max, -fem_slide_time)"
+                           : "realisations whose peak was not confirmed before the run ended (-fem_slide_time)",
+                       true));
   return out;
 }
 
@@ -124,7 +130,7 @@ std::vector<io::StatisticColumn> targetColumns() {
                  true)};
 }
 
-StatisticsValues statisticsValues(const std::vector<PointStatistics>& statistics) {
+StatisticsValues statisticsValues(const std::vector<PointStatistics>& statistics, bool relative) {
   StatisticsValues out;
   auto integer = [&](const std::string& name, auto get) {
     std::vector<int> v;
@@ -135,6 +141,7 @@ StatisticsValues statisticsValues(const std::vector<PointStatistics>& statistics
   const std::vector<Observable> rows = statisticsObservables();
   for (std::size_t o = 0; o < rows.size(); ++o) {
     for (const Column& c : kColumns) {
+      if (!relative && c.againstReference) continue;
       std::vector<double> v;
       for (const auto& s : statistics) v.push_back(c.value(s.observables.at(o)));
       out.real.emplace_back(rows[o].name + "_" + c.suffix, v);

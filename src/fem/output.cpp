@@ -226,7 +226,11 @@ void OutputFiles::writeResults(const PlateModel& model, const FemRunResult& r, c
   std::optional<FirstSlipMap> firstSlips;  // gathered on rank 0 (collective)
   if (params_.measurement.firstSlipMap) firstSlips = gatherFirstSlipMap(model);
   const std::vector<PropertyProfile> properties = gatherPropertyProfiles(model);  // collective
-  const FemSweep campaign = oneRunCampaign(params_, model.grading(), scene);
+  FemSweep campaign = oneRunCampaign(params_, model.grading(), scene);
+  // Written after the run: the history's capacity is its samples, none padded (a sweep's file,
+  // made before its runs, keeps room for the longest a run can take).
+  const std::size_t samples = std::min(r.friction.time.size(), r.friction.mu.size());
+  campaign.layout.historyCapacity = static_cast<int>(std::max<std::size_t>(samples, 1));
   io::ResultsFile file = io::ResultsFile::create(comm_, resultsPlan_->workPath(), campaign.layout, campaign.table,
                                                  campaign.sceneAttributes);
   file.setRun(campaign.runAttributes, provenance_);

@@ -49,16 +49,29 @@ int historyCapacity(const FemSweep& s) {
   return static_cast<int>(samples);
 }
 
-io::EnsembleLayout layoutOf(const FemSweep& s) {
+// The centres [m] of the bottom cells along one axis of the mesh (unequal on a graded mesh).
+std::vector<double> cellCentres(const MeshAxis& axis, int cells, double length) {
+  std::vector<double> out;
+  for (int i = 0; i < cells; ++i) out.push_back(axis.unitCentre(i) * length);
+  return out;
+}
+
+// A sweep's layout, or a single run's (format kFemRunFormatName: no reference point, so no
+// relative variation). With property fields, the maps' rows (cell_y).
+io::EnsembleLayout layoutOf(const FemSweep& s, const char* format, bool fieldMaps) {
   io::EnsembleLayout layout;
-  layout.format = io::kFemSweepFormatName;
+  layout.format = format;
   layout.points = s.points();
   layout.realisations = 1;  // the FEM has no random draw: one run per point
   layout.historyCapacity = historyCapacity(s);
-  layout.mapSide = s.params.nx;  // /properties: one column per hexahedron column along x
-  // The columns ensemble::writeStatistics writes (the same as the spring-block ensemble's file),
-  // and each point's discretisation bar as fields (sweep_run.cpp writes their values).
-  layout.statistics = campaign::statisticsColumns();
+  // /properties: one column per bottom cell column along x, and per row along y with field maps.
+  layout.cellX = cellCentres(meshAxisX(s.params), s.params.nx, s.params.plate.length);
+  if (fieldMaps) layout.cellY = cellCentres(meshAxisY(s.params), s.params.ny, s.params.plate.length);
+  // The columns campaign::writeStatistics writes (those of the spring-block ensemble's file; a
+  // single run's without the relative variation), and each point's discretisation bar as fields
+  // (sweep_run.cpp writes their values).
+  layout.statistics = campaign::statisticsColumns(layout.singleRun() ? campaign::StatisticsFile::FemRun
+                                                                     : campaign::StatisticsFile::FemSweep);
   for (int k = 0; k < 2; ++k) {
     const auto columns = campaign::discretisationColumns(k ? "mu_k" : "mu_s", s.bars[k]);
     layout.statistics.insert(layout.statistics.end(), columns.begin(), columns.end());
@@ -71,23 +84,23 @@ io::SweepTable tableOf(const FemSweep& s) {
   for (const auto& q : s.sweep.points)
     if (q.fieldSwept) table.fieldValue.push_back(q.fieldValue);
   const Plate& plate = s.params.plate;
-  const int n = static_cast<int>(s.params.nx);
+  const int nx = static_cast<int>(s.params.nx), ny = static_cast<int>(s.params.ny);
+  const MeshAxis columns = meshAxisX(s.params), rows = meshAxisY(s.params);
   for (int p = 0; p < s.points(); ++p) {  // the properties the run samples (as its history file has them)
     const Grading g = s.pointGrading(p);
-    const MeshAxis columns = meshAxisX(s.params);
-    const PropertySampler sampler = meshSampler(g, s.params);
-    for (int i = 0; i < n; ++i) {  // each hexahedron column's centre on the middle row
+    const PropertySampler sampler = meshSampler(g, columns, rows);
+    for (int i = 0; i < nx; ++i) {  // each bottom cell column's centre on the middle row
       const double centre = columns.unitCentre(i);
       table.modulus.push_back(plate.youngsModulus * sampler.modulus(centre, 0.5));
       table.muStatic.push_back(plate.muStatic * sampler.muStatic(centre, 0.5));
       table.muKinetic.push_back(plate.muKinetic * sampler.muKinetic(centre, 0.5));
     }
     if (!g.fields) continue;
-    // With fields, the ensemble's per-block maps (map side fem_nx): the centres of an nx x nx grid
-    // of the plate, [row][column], the bottom cells themselves when fem_ny = fem_nx.
-    for (int j = 0; j < n; ++j)
-      for (int i = 0; i < n; ++i) {
-        const double u = (i + 0.5) / n, v = (j + 0.5) / n;
+    // With fields, which may vary along y: the centre of every bottom cell, [ny][nx] (rows along y),
+    // as a single run's /fem/fields has them.
+    for (int j = 0; j < ny; ++j)
+      for (int i = 0; i < nx; ++i) {
+        const double u = columns.unitCentre(i), v = rows.unitCentre(j);
         table.blockModulus.push_back(plate.youngsModulus * sampler.modulus(u, v));
         table.blockMuStatic.push_back(plate.muStatic * sampler.muStatic(u, v));
         table.blockMuKinetic.push_back(plate.muKinetic * sampler.muKinetic(u, v));
@@ -202,8 +215,8 @@ FemSweep buildFemSweep(MPI_Comm comm, const FemParameters& params, const Grading
   for (int p = 0; p < s.points(); ++p)  // every point's step and run length, before any work
     requireFemRunLength(s.pointParameters(p), s.pointGrading(p), &record);
   findStudyBars(record, &s);
-  s.layout = layoutOf(s);
   s.table = tableOf(s);
+  s.layout = layoutOf(s, io::kFemSweepFormatName, !s.table.blockModulus.empty());
   splitRecord(record, &s);
   return s;
 }
@@ -215,9 +228,8 @@ FemSweep oneRunCampaign(const FemParameters& params, const Grading& grading, con
   s.sweep = campaign::buildSweep(campaign::SweepLists{}, basePoint(params, grading));  // no lists: one point
   s.output = params.output;
   findStudyBars(record, &s);
-  s.layout = layoutOf(s);
-  s.layout.format = io::kFemRunFormatName;
   s.table = tableOf(s);
+  s.layout = layoutOf(s, io::kFemRunFormatName, !s.table.blockModulus.empty());
   splitRecord(record, &s);
   return s;
 }

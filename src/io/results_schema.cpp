@@ -99,6 +99,8 @@ hsize_t axisSize(const EnsembleLayout& layout, const std::string& axis) {
   if (axis == "sample") return static_cast<hsize_t>(layout.historyCapacity);
   if (axis == "snapshot") return layout.snapshotTimes.size();
   if (axis == "block_row" || axis == "block_column") return static_cast<hsize_t>(layout.mapSide);
+  if (axis == "cell_x") return layout.cellX.size();
+  if (axis == "cell_y") return layout.cellY.size();
   throw std::invalid_argument("no axis " + axis + " in a results file");
 }
 
@@ -112,14 +114,19 @@ std::vector<TaskDataset> taskDatasets(const EnsembleLayout& layout) {
   }
   out.push_back(real("realisations/end_time", {}, "s", "simulated time reached",
                      [](const TaskOutput& t, std::vector<double>& row) { row[0] = t.endTime; }));
+  // Each model's words: the spring-block model's run length and slider springs, the FEM's sliding
+  // time and contact forces (a FEM file names no spring-block option or concept).
+  const bool sbm = layout.springBlock();
   out.push_back(integer("realisations/peak_confirmed", Type::Int8, 0, "1",
-                        "1 if the peak was confirmed, 0 if the run ended first (-sbm_t_max, -fem_slide_time)",
+                        sbm ? "1 if the peak was confirmed, 0 if the run ended first (-sbm_t_max, -fem_slide_time)"
+                            : "1 if the peak was confirmed, 0 if the run ended first (-fem_slide_time)",
                         [](const TaskOutput& t) { return t.friction.peakConfirmed ? 1 : 0; }));
   out.push_back(integer("realisations/steps", Type::Int64, 0, "1", "time steps taken",
                         [](const TaskOutput& t) { return t.steps; }));
-  out.push_back(integer("realisations/redrawn_blocks", Type::Int32, 0, "1",
-                        "local coefficients redrawn to keep 0 < mu_k,i <= mu_s,i",
-                        [](const TaskOutput& t) { return t.redrawnBlocks; }));
+  if (sbm)  // the FEM draws no local coefficients
+    out.push_back(integer("realisations/redrawn_blocks", Type::Int32, 0, "1",
+                          "local coefficients redrawn to keep 0 < mu_k,i <= mu_s,i",
+                          [](const TaskOutput& t) { return t.redrawnBlocks; }));
   out.push_back(integer("realisations/done", Type::Int8, 0, "1",
                         "1: the task finished and its results are stored; 0: not run (yet)",
                         [](const TaskOutput&) { return 1; }));
@@ -140,13 +147,27 @@ std::vector<TaskDataset> taskDatasets(const EnsembleLayout& layout) {
                            copyInto(t.friction.*field, row, samples(t));
                          }));
     };
-    history("history/time", "s", "time of each mu(t) sample; NaN after the last sample", &FrictionSummary::time);
-    history("history/mu", "1", "mu(t) = |sum of the slider forces| / (p L^2); NaN after the last sample",
-            &FrictionSummary::mu);
-    history("history/force_x", "N", "x component (grading axis) of the sum of the slider-spring forces on the plate",
-            &FrictionSummary::forceX);
-    history("history/force_y", "N", "y component of the sum of the slider-spring forces on the plate",
-            &FrictionSummary::forceY);
+    if (sbm) {
+      history("history/time", "s", "time of each mu(t) sample; NaN after the last sample", &FrictionSummary::time);
+      history("history/mu", "1", "mu(t) = |sum of the slider forces| / (p L^2); NaN after the last sample",
+              &FrictionSummary::mu);
+      history("history/force_x", "N", "x component (grading axis) of the sum of the slider-spring forces on the plate",
+              &FrictionSummary::forceX);
+      history("history/force_y", "N", "y component of the sum of the slider-spring forces on the plate",
+              &FrictionSummary::forceY);
+    } else {  // a single run's capacity is its length; a sweep's is the most a run can take, each run padded
+      const char* past = layout.singleRun() ? "" : "; NaN from sample /history/length on";
+      history("history/time", "s", (std::string("time of each mu(t) sample since the start of sliding") + past).c_str(),
+              &FrictionSummary::time);
+      history("history/mu", "1",
+              (std::string("mu(t) = |total tangential contact force| / (p L^2)") + past).c_str(), &FrictionSummary::mu);
+      history("history/force_x", "N",
+              (std::string("x component (grading axis) of the total tangential contact force on the plate") + past).c_str(),
+              &FrictionSummary::forceX);
+      history("history/force_y", "N",
+              (std::string("y component of the total tangential contact force on the plate") + past).c_str(),
+              &FrictionSummary::forceY);
+    }
     out.push_back(integer("history/length", Type::Int32, 0, "1", "number of samples of each task",
                           [samples](const TaskOutput& t) { return static_cast<std::int64_t>(samples(t)); }));
   }

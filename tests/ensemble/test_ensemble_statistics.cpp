@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -198,4 +199,27 @@ TEST(EnsembleStatistics, ColumnsComeFromTheObservableTable) {
   EXPECT_EQ(integer("mu_k_count"), 1);
   EXPECT_EQ(integer("finished"), 2);
   EXPECT_EQ(values.real.size() + values.integer.size(), columns.size());
+}
+
+TEST(EnsembleStatistics, ASingleFemRunHasNoRelativeColumns) {
+  // One run has no reference point: its file's columns and values lack _relative and
+  // _relative_ci95 alike, and name the FEM's run length; a FEM sweep keeps the ensemble's columns.
+  std::vector<std::string> names, values, sweep, ensemble;
+  for (const auto& c : statisticsColumns(StatisticsFile::FemRun)) names.push_back(c.name);
+  for (const auto& c : statisticsColumns(StatisticsFile::FemSweep)) sweep.push_back(c.name);
+  for (const auto& c : statisticsColumns()) ensemble.push_back(c.name);
+  EXPECT_EQ(sweep, ensemble);
+  for (const auto& name : names) EXPECT_EQ(name.find("_relative"), std::string::npos) << name;
+  EXPECT_EQ(names.size() + 2 * gradfric::statisticsObservables().size(), ensemble.size());
+  const std::vector<gradfric::Observable> rows = gradfric::statisticsObservables();
+  std::vector<std::vector<double>> tables(rows.size(), {kNaN});
+  tables[0] = {0.9};
+  const StatisticsValues written = statisticsValues(pointStatistics(1, {-1}, tables, {1}, {1}), false);
+  for (const auto& [name, v] : written.real) values.push_back(name);
+  for (const auto& [name, v] : written.integer) values.push_back(name);
+  std::sort(values.begin(), values.end());
+  std::sort(names.begin(), names.end());
+  EXPECT_EQ(values, names);
+  EXPECT_EQ(statisticsColumns(StatisticsFile::FemRun).back().description,
+            "realisations whose peak was not confirmed before the run ended (-fem_slide_time)");
 }

@@ -1,8 +1,12 @@
 #!/usr/bin/python3
-"""A FEM sweep file has the spring-block ensemble's layout: the same root attributes, the same
-datasets (but /maps, which only the spring-block model fills) with the same types, ranks, units
-and dimension scales, the same /sweep columns (the swept field values included), the same
-per-point property maps under property fields, and the FEM's own format name and one run per point.
+"""A FEM sweep file has the spring-block ensemble's layout with the FEM's own names: the same
+root attributes but the lattice's (map_side, first_slip_map, friction_fields), the same datasets
+but what only the spring-block model has (/maps, /realisations/redrawn_blocks, /sweep/sigma,
+/sweep/sigma_kinetic, the block_row and block_column axes) with the same types, ranks and units,
+the dimension scales of the ensemble with the bottom cells (cell_x, cell_y) for the lattice's
+block_column and block_row, the same /sweep columns (the swept field values included), per-point
+property maps over the bottom cells under property fields, and the FEM's own format name, format
+version 4 and one run per point.
 
     check_sweep_layout.py SBM_ENSEMBLE.h5 FEM_SWEEP.h5
 """
@@ -28,8 +32,11 @@ def main(sbm_path, fem_path):
             problems.append(f"format {fem.attrs['format']}")
         if sbm.attrs["format"] != "gradfric-sbm-ensemble":
             problems.append(f"reference format {sbm.attrs['format']}")
-        if set(fem.attrs) != set(sbm.attrs):
-            problems.append(f"root attributes differ: {sorted(set(fem.attrs) ^ set(sbm.attrs))}")
+        lattice = {"map_side", "first_slip_map", "friction_fields"}
+        if set(fem.attrs) != set(sbm.attrs) - lattice:
+            problems.append(f"root attributes differ: {sorted(set(fem.attrs) ^ (set(sbm.attrs) - lattice))}")
+        if fem.attrs["format_version"] != 4 or sbm.attrs["format_version"] != 3:
+            problems.append(f"format versions {fem.attrs['format_version']}, ensemble {sbm.attrs['format_version']}")
         if fem.attrs["realisations"] != 1 or fem.attrs["complete"] != 1:
             problems.append("not one complete run per point")
         a, b = datasets(sbm), datasets(fem)
@@ -46,17 +53,24 @@ def main(sbm_path, fem_path):
             for model, f in (("FEM", fem), ("ensemble", sbm)):
                 if name in f and not {"convergence", "fit", "ladder", "basis"} <= set(f[name].attrs):
                     problems.append(f"{model} {name}: attributes {sorted(f[name].attrs)}")
-        wanted = {n for n in a if not n.startswith("maps/")}
+        spring_block = {"realisations/redrawn_blocks", "sweep/sigma", "sweep/sigma_kinetic", "block_row", "block_column"}
+        cells = {"cell_x"} | ({"cell_y"} if "cell_y" in fem else set())
+        wanted = {n for n in a if not n.startswith("maps/") and n not in spring_block} | cells
         if wanted != set(b):
             problems.append(f"datasets differ: {sorted(wanted ^ set(b))}")
-        for name in sorted(wanted & set(b)):
+        renamed = {"/block_column": "/cell_x", "/block_row": "/cell_y"}
+        for name in sorted(wanted & set(b) - cells):
             x, y = a[name], b[name]
             if x.dtype.kind != y.dtype.kind or x.ndim != y.ndim:
                 problems.append(f"{name}: {y.dtype}/{y.ndim}D, ensemble {x.dtype}/{x.ndim}D")
             if x.attrs.get("units") != y.attrs.get("units"):
                 problems.append(f"{name}: units {y.attrs.get('units')!r}, ensemble {x.attrs.get('units')!r}")
-            if not name.startswith("run/") and scales(x) != scales(y):
-                problems.append(f"{name}: dimension scales {scales(y)}, ensemble {scales(x)}")
+            expected = [[renamed.get(s, s) for s in axis] for axis in scales(x)]
+            if not name.startswith("run/") and expected != scales(y):
+                problems.append(f"{name}: dimension scales {scales(y)}, ensemble's with the bottom cells {expected}")
+        nx, ny = int(fem["scene"].attrs["fem_nx"]), int(fem["scene"].attrs["fem_ny"])
+        if fem["cell_x"].shape != (nx,) or fem["cell_x"].attrs["units"] != "m":
+            problems.append(f"cell_x: {fem['cell_x'].shape} {fem['cell_x'].attrs['units']!r}, not fem_nx = {nx} centres in m")
         if fem["sweep"].attrs["axes"] != sbm["sweep"].attrs["axes"]:
             problems.append(f"sweep axes {fem['sweep'].attrs['axes']!r}, ensemble {sbm['sweep'].attrs['axes']!r}")
         if list(fem["sweep/delta"][:]) != list(sbm["sweep/delta"][:]):
@@ -65,9 +79,9 @@ def main(sbm_path, fem_path):
                 "field_value" in fem["sweep"] and list(fem["sweep/field_value"][:]) != list(sbm["sweep/field_value"][:])):
             problems.append("sweep/field_value differs from the ensemble's (same -ensemble_field lists)")
         for name in ("E_map", "mu_s_map", "mu_k_map", "p_map"):  # property fields: every point's maps
-            if name in sbm["properties"] and fem[f"properties/{name}"].shape != sbm[f"properties/{name}"].shape:
-                problems.append(f"properties/{name}: shape {fem[f'properties/{name}'].shape}, "
-                                f"ensemble {sbm[f'properties/{name}'].shape} (same map side)")
+            want = (fem.attrs["points"], ny, nx)
+            if name in sbm["properties"] and fem[f"properties/{name}"].shape != want:
+                problems.append(f"properties/{name}: shape {fem[f'properties/{name}'].shape}, not {want} (the bottom cells)")
         if list(fem["sweep/reference_point"][:]) != list(sbm["sweep/reference_point"][:]):
             problems.append("sweep/reference_point differs from the ensemble's")
         if not all(fem["realisations/done"][:].ravel() == 1):

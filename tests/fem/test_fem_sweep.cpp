@@ -63,7 +63,14 @@ TEST(FemSweep, PointsLayoutAndPropertiesFollowTheEnsembleConstruction) {
   EXPECT_EQ(s.layout.format, io::kFemSweepFormatName);
   EXPECT_EQ(s.layout.points, 4);
   EXPECT_EQ(s.layout.realisations, 1);
-  EXPECT_EQ(s.layout.mapSide, 6);
+  // The FEM's axes: its bottom cell columns' centres (cell_x), no lattice, no rows without field maps.
+  EXPECT_EQ(s.layout.mapSide, 0);
+  ASSERT_EQ(s.layout.cellX.size(), 6u);
+  EXPECT_DOUBLE_EQ(s.layout.cellX[0], q.plate.length / 12);
+  EXPECT_DOUBLE_EQ(s.layout.cellX[5], q.plate.length * 11 / 12);
+  EXPECT_TRUE(s.layout.cellY.empty());
+  EXPECT_FALSE(s.layout.springBlock());
+  EXPECT_FALSE(s.layout.singleRun());
   EXPECT_EQ(s.layout.historyCapacity,
             static_cast<int>(std::floor(q.slideTime / q.measurement.historyInterval)) + 4);
   // Friction graded along x: column 0 of a Delta = 0.2 point at (1 - 0.2) mu_s, E untouched.

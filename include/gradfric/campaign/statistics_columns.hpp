@@ -13,9 +13,14 @@
 
 namespace gradfric::campaign {
 
+// The file the columns are for: a spring-block ensemble's, a FEM sweep's, or a single FEM run's,
+// which has no reference point and so no relative variation (and whose descriptions name the
+// FEM's options alone).
+enum class StatisticsFile { SpringBlock, FemSweep, FemRun };
 // finished, then per observable with statistics <name>_mean, _std, _stderr, _ci95_low, _ci95_high,
-// _relative, _relative_ci95 (real) and <name>_count (integer), then peaks_unconfirmed.
-std::vector<io::StatisticColumn> statisticsColumns();
+// _relative, _relative_ci95 (real; not in a single FEM run's file) and <name>_count (integer),
+// then peaks_unconfirmed.
+std::vector<io::StatisticColumn> statisticsColumns(StatisticsFile file = StatisticsFile::SpringBlock);
 // Each point's discretisation bar of an observable (core/study_table.hpp), both models alike, as
 // fields: <observable>_discretisation_error (U relative to the value), _order, _safety_factor,
 // _extrapolated, _half_width (NaN: not measured); the error column carries one line per point of
@@ -27,11 +32,12 @@ std::vector<std::pair<std::string, std::vector<double>>> discretisationValues(co
 // The precision target's columns (-ensemble_target): the half-width reached and whether it was met.
 std::vector<io::StatisticColumn> targetColumns();
 
-// The values of statisticsColumns() for every point, as ResultsFile::writeStatistics takes them.
+// The values of statisticsColumns() for every point, as ResultsFile::writeStatistics takes them;
+// relative false: without _relative and _relative_ci95 (statisticsColumns(StatisticsFile::FemRun)).
 struct StatisticsValues {
   std::vector<std::pair<std::string, std::vector<double>>> real;
   std::vector<std::pair<std::string, std::vector<int>>> integer;
 };
-StatisticsValues statisticsValues(const std::vector<PointStatistics>& statistics);
+StatisticsValues statisticsValues(const std::vector<PointStatistics>& statistics, bool relative = true);
 
 }  // namespace gradfric::campaign

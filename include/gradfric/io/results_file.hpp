@@ -26,9 +26,15 @@
 
 namespace gradfric::io {
 
+// The root attribute format_version, per format (formatVersion below).
 // 2: units, dimension scales, forces, properties, provenance; 3: every interval a 95 % Student t
-// interval (mu_*_relative_ci95 for mu_*_relative_error), an `interval` attribute on each, discretisation bars
-inline constexpr int kFormatVersion = 3;
+// interval (mu_*_relative_ci95 for mu_*_relative_error), an `interval` attribute on each, discretisation bars.
+inline constexpr int kFormatVersion = 3;  // gradfric-sbm-ensemble
+// 4, the FEM's files only: the axes of /properties are the bottom cells (cell_x [nx], cell_y [ny],
+// their centres in m) instead of block_column, block_row and map_side; no /sweep/sigma,
+// /sweep/sigma_kinetic or /realisations/redrawn_blocks; a single run stores its samples alone
+// (history capacity = its length) and no /sweep/reference_point or relative statistics.
+inline constexpr int kFemFormatVersion = 4;  // gradfric-fem-sweep, gradfric-fem-run
 inline constexpr const char* kFormatName = "gradfric-sbm-ensemble";
 // The same layout filled by a sweep of finite-element runs (gradfric-fem, one run per point).
 inline constexpr const char* kFemSweepFormatName = "gradfric-fem-sweep";
@@ -36,6 +42,11 @@ inline constexpr const char* kFemSweepFormatName = "gradfric-fem-sweep";
 // realisation, with the run's FEM extras under /fem (docs/fem.md). Its own name: a single run is
 // not resumed or extended as a sweep.
 inline constexpr const char* kFemRunFormatName = "gradfric-fem-run";
+
+// The format version this build writes (and resumes) for a format name.
+inline int formatVersion(const std::string& format) {
+  return format == kFemSweepFormatName || format == kFemRunFormatName ? kFemFormatVersion : kFormatVersion;
+}
 
 // A per-point column of /statistics: real (float64, NaN until written) or integer (int32), with
 // its units, description and further text attributes (`interval`, `basis`).
@@ -48,17 +59,24 @@ struct StatisticColumn {
 };
 
 struct EnsembleLayout {
-  std::string format = kFormatName;  // the root attribute `format`: kFormatName or kFemSweepFormatName
+  std::string format = kFormatName;  // the root attribute `format`: kFormatName, kFemSweepFormatName or kFemRunFormatName
   int points = 0;        // P sweep points
   int realisations = 0;  // R realisations per point
-  int historyCapacity = 0;  // C: mu(t) samples kept per task (0: no histories)
-  int mapSide = 0;          // N_b: side of the first-slip and stress maps
+  int historyCapacity = 0;  // C: mu(t) samples kept per task (0: no histories; a single FEM run: its samples)
+  int mapSide = 0;          // N_b: side of the first-slip and stress maps (the spring-block lattice's)
+  // A FEM file's axes of /properties instead of the lattice's: the centres [m] of the bottom cell
+  // columns along x (cell_x, nx of them) and, with property-field maps only, of the bottom cell
+  // rows along y (cell_y, ny; empty: no map over y).
+  std::vector<double> cellX, cellY;
   bool firstSlipMap = false;
   bool frictionFields = false;  // /maps/mu_s_local, mu_k_local: each realisation's local coefficients
   std::vector<double> snapshotTimes;  // requested sigma_x/p snapshot times [s] (S of them)
   // The per-point columns of /statistics (ensemble/statistics_columns.hpp makes them); read
   // back from a file, a column has its name, type, units and description.
   std::vector<StatisticColumn> statistics;
+
+  bool springBlock() const { return format == kFormatName; }  // else a FEM sweep or run
+  bool singleRun() const { return format == kFemRunFormatName; }  // no sweep: no reference point
 };
 
 // One row per sweep point.
@@ -66,16 +84,18 @@ struct SweepTable {
   std::vector<std::string> axes;  // the swept quantities, in loop order (outermost first)
   std::vector<double> delta;
   std::vector<double> theta;  // sliding angle [degree]
-  std::vector<double> sigma;  // relative dispersion of mu_s,i (and mu_k,i unless set apart)
-  std::vector<double> sigmaKinetic;
+  std::vector<double> sigma;  // relative dispersion of mu_s,i (and mu_k,i unless set apart); 0 in the FEM
+  std::vector<double> sigmaKinetic;  // (a FEM file stores neither: its coefficients are not dispersed)
   std::vector<std::string> property;  // E, friction, both
   std::vector<std::string> profile;   // none, linear, triangular
-  std::vector<int> referencePoint;    // the non-graded point of the same (theta, sigma, ...) or -1
+  std::vector<int> referencePoint;    // the non-graded point of the same (theta, sigma, ...) or -1 (not stored by a single FEM run)
   // The property fields each point used before random dispersion, P x N_b row-major (point,
-  // block column; every row of a column is the same): E [Pa], mean mu_s and mu_k.
+  // block column; every row of a column is the same): E [Pa], mean mu_s and mu_k. A FEM file:
+  // P x nx (point, bottom cell column, on the middle row).
   std::vector<double> modulus, muStatic, muKinetic;
   // With property fields only (else empty): P x N_b x N_b (point, block row, block column): E [Pa],
-  // mean mu_s and mu_k, normal pressure p [Pa] of every block.
+  // mean mu_s and mu_k, normal pressure p [Pa] of every block. A FEM file: P x ny x nx (point,
+  // bottom cell row, bottom cell column), at the bottom cells' centres.
   std::vector<double> blockModulus, blockMuStatic, blockMuKinetic, blockPressure;
   std::vector<double> fieldValue;  // per point: the swept field parameter (-ensemble_field), else empty
 };
