@@ -1,6 +1,7 @@
 #include "gradfric/campaign/sweep.hpp"
 
 #include "gradfric/core/format.hpp"
+#include "gradfric/physics/grading.hpp"
 
 #include <sstream>
 
@@ -73,9 +74,7 @@ Sweep buildSweep(const SweepLists& lists, const SweepPoint& base) {
 
 Grading gradingOf(const SweepPoint& point, int bands) {
   Grading g;
-  g.profile = point.profile == "linear"       ? GradingProfile::Linear
-              : point.profile == "triangular" ? GradingProfile::Triangular
-                                              : GradingProfile::None;
+  g.profile = parseGradingProfile(point.profile);
   g.property = point.property == "friction" ? GradedProperty::Friction
                : point.property == "both"   ? GradedProperty::Both
                                             : GradedProperty::YoungsModulus;

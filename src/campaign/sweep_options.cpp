@@ -2,6 +2,7 @@
 #include "gradfric/campaign/sweep_options.hpp"
 
 #include "gradfric/core/input_error.hpp"
+#include "gradfric/physics/grading.hpp"
 
 #include <algorithm>
 #include <stdexcept>
@@ -18,7 +19,7 @@ SweepLists readSweepLists(OptionReader& ens) {
                              "sweep of the relative dispersion, sets sigma_s and sigma_k (empty: -sbm_sigma_s/_k)");
   lists.property = ens.choiceList("property", {}, {"E", "friction", "both"},
                                   "sweep of the graded property (empty: -grading_property alone)");
-  lists.profile = ens.choiceList("profile", {}, {"none", "linear", "triangular"},
+  lists.profile = ens.choiceList("profile", {}, gradingProfileNames(),
                                  "sweep of the grading profile (empty: -grading_profile alone)");
   lists.fieldParameter = ens.text("field", "",
                                   "sweep of one scalar parameter of a property field, <property>_<parameter>: "

@@ -1,16 +1,29 @@
 #include "gradfric/physics/grading.hpp"
 
 #include <sstream>
+#include <stdexcept>
 
 namespace gradfric {
 
-const char* toString(GradingProfile profile) {
-  switch (profile) {
-    case GradingProfile::Linear: return "linear";
-    case GradingProfile::Triangular: return "triangular";
-    default: return "none";
-  }
+const GradingProfileRow& gradingProfileRow(GradingProfile profile) {
+  for (const GradingProfileRow& row : kGradingProfiles)
+    if (row.profile == profile) return row;
+  throw std::logic_error("a grading profile without its row in kGradingProfiles");
 }
+
+GradingProfile parseGradingProfile(const std::string& name) {
+  for (const GradingProfileRow& row : kGradingProfiles)
+    if (name == row.name) return row.profile;
+  throw std::invalid_argument("unknown grading profile '" + name + "'");
+}
+
+std::vector<std::string> gradingProfileNames() {
+  std::vector<std::string> names;
+  for (const GradingProfileRow& row : kGradingProfiles) names.emplace_back(row.name);
+  return names;
+}
+
+const char* toString(GradingProfile profile) { return gradingProfileRow(profile).name; }
 
 const char* toString(GradedProperty property) {
   switch (property) {

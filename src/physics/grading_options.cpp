@@ -11,14 +11,12 @@ Grading readGrading(MPI_Comm comm, RunParameters* record) {
   OptionReader options(comm, "grading_", "Lateral grading of the plate (paper Eq. 3-5)", record);
   Grading g;
   const std::string profile =
-      options.choice("profile", "none", {"none", "linear", "triangular"}, "stepwise grading profile along x");
+      options.choice("profile", "none", gradingProfileNames(), "stepwise grading profile along x");
   const std::string property = options.choice("property", "E", {"E", "friction", "both"},
                                               "graded property: Young's modulus, local friction coefficients, or both");
   g.delta = options.real("delta", 0.0, "1", "relative variation Delta (edge for linear, centre for triangular)");
   g.bands = static_cast<int>(options.integer("bands", 10, 2, 4096, "1", "number N of homogeneous bands across the plate"));
-  g.profile = profile == "linear" ? GradingProfile::Linear
-              : profile == "triangular" ? GradingProfile::Triangular
-                                        : GradingProfile::None;
+  g.profile = parseGradingProfile(profile);
   g.property = property == "friction" ? GradedProperty::Friction
                : property == "both"   ? GradedProperty::Both
                                       : GradedProperty::YoungsModulus;

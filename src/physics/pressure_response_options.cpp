@@ -2,6 +2,7 @@
 #include "gradfric/physics/pressure_response_options.hpp"
 
 #include "gradfric/core/format.hpp"
+#include "gradfric/physics/grading.hpp"
 #include "gradfric/core/input_error.hpp"
 #include "gradfric/io/collective_file.hpp"
 #include "gradfric/io/hdf5_attributes.hpp"
@@ -68,8 +69,11 @@ ResponseGrading gradingOfFemFile(const std::string& option, const std::string& o
   }
   Grading g;
   const std::string profile = value("grading_profile"), property = value("grading_property");
-  g.profile = profile == "linear" ? GradingProfile::Linear : profile == "triangular" ? GradingProfile::Triangular
-                                                                                       : GradingProfile::None;
+  try {
+    g.profile = parseGradingProfile(profile);
+  } catch (const std::invalid_argument&) {
+    refuse("a grading profile of this build for /scene grading_profile (it is '" + profile + "')");
+  }
   g.property = property == "friction" ? GradedProperty::Friction : property == "both" ? GradedProperty::Both
                                                                                         : GradedProperty::YoungsModulus;
   g.delta = number("grading_delta");

@@ -48,3 +48,28 @@ TEST(Grading, PropertySelectionAndNoGrading) {
   Grading zero{GradingProfile::Triangular, GradedProperty::Both, 0.0, 10};
   EXPECT_FALSE(zero.active());  // Delta = 0 is the uniform plate: uniform code paths
 }
+
+// One table of profiles: every profile has its row, every name parses back to it, the options'
+// allowed values are the table's names, and an unknown name is refused (not read as triangular).
+TEST(Grading, EveryProfileIsOneRowOfTheTable) {
+  const std::vector<std::string> names = gradingProfileNames();
+  ASSERT_EQ(names.size(), std::size(kGradingProfiles));
+  EXPECT_EQ(names.front(), "none");
+  for (const GradingProfileRow& row : kGradingProfiles) {
+    EXPECT_EQ(parseGradingProfile(row.name), row.profile);
+    EXPECT_STREQ(toString(row.profile), row.name);
+  }
+  EXPECT_THROW(parseGradingProfile("parabolic"), std::invalid_argument);
+  // The band factor is the row's, at s = -1 .. 1: Eq. 4 and Eq. 5 at the ends and the centre.
+  Grading g;
+  g.delta = 0.3;
+  g.bands = 11;
+  g.profile = GradingProfile::Linear;
+  EXPECT_DOUBLE_EQ(g.bandFactor(0), 0.7);
+  EXPECT_DOUBLE_EQ(g.bandFactor(5), 1.0);
+  g.profile = GradingProfile::Triangular;
+  EXPECT_DOUBLE_EQ(g.bandFactor(0), 0.7);
+  EXPECT_DOUBLE_EQ(g.bandFactor(5), 1.3);
+  g.profile = GradingProfile::None;
+  EXPECT_DOUBLE_EQ(g.bandFactor(0), 1.0);
+}

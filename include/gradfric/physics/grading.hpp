@@ -5,11 +5,33 @@
 #include <cmath>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace gradfric {
 
 enum class GradingProfile { None, Linear, Triangular };
 enum class GradedProperty { YoungsModulus, Friction, Both };
+
+// The profiles, one row each: its name (the options' spelling) and its band factor phi_i / phi_0
+// at the band's coordinate s = -1 .. 1 across the plate. A new profile is one row here (and one
+// enumerator); every option, sweep list and file reader takes its names from this table.
+struct GradingProfileRow {
+  GradingProfile profile;
+  const char* name;
+  double (*factor)(double s, double delta);
+};
+inline constexpr GradingProfileRow kGradingProfiles[] = {
+    {GradingProfile::None, "none", [](double, double) { return 1.0; }},
+    {GradingProfile::Linear, "linear", [](double s, double delta) { return 1.0 + delta * s; }},  // Eq. 4
+    {GradingProfile::Triangular, "triangular",
+     [](double s, double delta) { return 1.0 + delta * (1.0 - 2.0 * std::fabs(s)); }},  // Eq. 5
+};
+// The row of a profile.
+const GradingProfileRow& gradingProfileRow(GradingProfile profile);
+// The profile named `name`; std::invalid_argument for a name not in the table.
+GradingProfile parseGradingProfile(const std::string& name);
+// Every name, "none" first: the allowed values of -grading_profile and -ensemble_profile.
+std::vector<std::string> gradingProfileNames();
 
 struct PlateFields;
 
@@ -26,12 +48,11 @@ struct Grading {
   bool gradesModulus() const { return active() && property != GradedProperty::Friction; }
   bool gradesFriction() const { return active() && property != GradedProperty::YoungsModulus; }
 
-  // phi_i / phi_0 for band i = 0..N-1 (Eq. 4 linear, Eq. 5 triangular).
+  // phi_i / phi_0 for band i = 0..N-1: the profile's row of kGradingProfiles.
   double bandFactor(int band) const {
     if (!active()) return 1.0;
     const double s = 2.0 * band / (bands - 1) - 1.0;  // -1 .. 1 across the plate
-    if (profile == GradingProfile::Linear) return 1.0 + delta * s;
-    return 1.0 + delta * (1.0 - 2.0 * std::fabs(s));
+    return gradingProfileRow(profile).factor(s, delta);
   }
   // The band holding the point at x/L in [0, 1] (the right edge belongs to the last band).
   int bandOf(double xOverL) const {
