@@ -1,6 +1,8 @@
 // The notice on SIGINT and SIGTERM while tasks run (include/gradfric/campaign/interruption.hpp).
 #include "gradfric/campaign/interruption.hpp"
 
+#include "gradfric/core/signal_safe_write.hpp"
+
 #include <fcntl.h>
 #include <unistd.h>
 
@@ -28,14 +30,7 @@ struct Notice {
 };
 Notice notice;
 
-void put(const char* text) {
-  for (size_t left = std::strlen(text); left > 0;) {
-    const ssize_t n = write(STDERR_FILENO, text, left);
-    if (n <= 0) return;
-    text += n;
-    left -= static_cast<size_t>(n);
-  }
-}
+void put(const char* text) { writeToStderrFromHandler(text); }
 
 void putNumber(std::uint64_t value) {
   char digits[24];

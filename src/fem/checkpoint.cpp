@@ -69,6 +69,27 @@ io::H5PropertyList parallelAccess(MPI_Comm comm) {
   return fapl;
 }
 
+// This rank's slab [offset, offset + count) of the "state" dataset, for one collective transfer
+// (a rank without bytes selects nothing but takes part).
+struct RankSlab {
+  io::H5Dataset state;
+  io::H5Space space, memory;
+  io::H5PropertyList transfer;
+  RankSlab(hid_t file, unsigned long long offset, unsigned long long size)
+      : state(GF_H5(H5Dopen2(file, "state", H5P_DEFAULT))), space(GF_H5(H5Dget_space(state))) {
+    const hsize_t start = offset, count = size;
+    memory = io::H5Space(GF_H5(H5Screate_simple(1, &count, nullptr)));
+    if (count > 0) {
+      GF_H5(H5Sselect_hyperslab(space, H5S_SELECT_SET, &start, nullptr, &count, nullptr));
+    } else {
+      GF_H5(H5Sselect_none(space));
+      GF_H5(H5Sselect_none(memory));
+    }
+    transfer = io::H5PropertyList(GF_H5(H5Pcreate(H5P_DATASET_XFER)));
+    GF_H5(H5Pset_dxpl_mpio(transfer, H5FD_MPIO_COLLECTIVE));
+  }
+};
+
 // Rank 0, serially: the header of the checkpoint at path.
 CheckpointHeader readHeader(const std::string& path) {
   return io::withoutHdf5Printing([&] {
@@ -254,19 +275,8 @@ void writeCheckpoint(MPI_Comm comm, const CheckpointSettings& settings, const Ch
     io::FileWriteScope scope(partial);
     io::H5PropertyList fapl = parallelAccess(comm);
     io::H5File file(GF_H5(H5Fopen(partial.c_str(), H5F_ACC_RDWR, fapl)));
-    io::H5Dataset state(GF_H5(H5Dopen2(file, "state", H5P_DEFAULT)));
-    io::H5Space space(GF_H5(H5Dget_space(state)));
-    const hsize_t start = offset, count = mine;
-    io::H5Space memory(GF_H5(H5Screate_simple(1, &count, nullptr)));
-    if (count > 0)
-      GF_H5(H5Sselect_hyperslab(space, H5S_SELECT_SET, &start, nullptr, &count, nullptr));
-    else {
-      GF_H5(H5Sselect_none(space));
-      GF_H5(H5Sselect_none(memory));
-    }
-    io::H5PropertyList dxpl(GF_H5(H5Pcreate(H5P_DATASET_XFER)));
-    GF_H5(H5Pset_dxpl_mpio(dxpl, H5FD_MPIO_COLLECTIVE));
-    GF_H5(H5Dwrite(state, H5T_NATIVE_UCHAR, memory, space, dxpl, bytes.data()));
+    const RankSlab slab(file, offset, mine);
+    GF_H5(H5Dwrite(slab.state, H5T_NATIVE_UCHAR, slab.memory, slab.space, slab.transfer, bytes.data()));
   } catch (const std::exception& e) {
     error = e.what();
   }
@@ -294,19 +304,8 @@ std::vector<char> readCheckpointBytes(MPI_Comm comm, const std::string& path) {
     unsigned long long offset = 0;
     for (int r = 0; r < rank; ++r) offset += sizes[r];
     bytes.resize(sizes[rank]);
-    io::H5Dataset state(GF_H5(H5Dopen2(file, "state", H5P_DEFAULT)));
-    io::H5Space space(GF_H5(H5Dget_space(state)));
-    const hsize_t start = offset, count = bytes.size();
-    io::H5Space memory(GF_H5(H5Screate_simple(1, &count, nullptr)));
-    if (count > 0)
-      GF_H5(H5Sselect_hyperslab(space, H5S_SELECT_SET, &start, nullptr, &count, nullptr));
-    else {
-      GF_H5(H5Sselect_none(space));
-      GF_H5(H5Sselect_none(memory));
-    }
-    io::H5PropertyList dxpl(GF_H5(H5Pcreate(H5P_DATASET_XFER)));
-    GF_H5(H5Pset_dxpl_mpio(dxpl, H5FD_MPIO_COLLECTIVE));
-    GF_H5(H5Dread(state, H5T_NATIVE_UCHAR, memory, space, dxpl, bytes.data()));
+    const RankSlab slab(file, offset, bytes.size());
+    GF_H5(H5Dread(slab.state, H5T_NATIVE_UCHAR, slab.memory, slab.space, slab.transfer, bytes.data()));
   } catch (const std::exception& e) {
     error = "reading the checkpoint " + path + " failed on rank " + std::to_string(rank) + ": " + e.what();
   }

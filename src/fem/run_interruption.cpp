@@ -3,6 +3,8 @@
 // beforehand and set a flag (async-signal-safe).
 #include "gradfric/fem/run_interruption.hpp"
 
+#include "gradfric/core/signal_safe_write.hpp"
+
 #include <unistd.h>
 
 #include <csignal>
@@ -23,14 +25,7 @@ struct Notice {
 };
 Notice notice;
 
-void put(const char* text) {
-  for (size_t left = std::strlen(text); left > 0;) {
-    const ssize_t n = write(STDERR_FILENO, text, left);
-    if (n <= 0) return;
-    text += n;
-    left -= static_cast<size_t>(n);
-  }
-}
+void put(const char* text) { writeToStderrFromHandler(text); }
 
 void endBySignal(int signal) {
   struct sigaction fallback {};
