@@ -9,7 +9,9 @@
 #  3. SIGKILL after step 7000, periodic checkpoints every 0.02 s of wall time: the last one;
 #  4. 2 ranks, SIGTERM: resumed on 2 ranks it equals the 1-rank run; on 1 rank it is refused;
 #  5. a real SIGTERM to mpiexec once the first periodic checkpoint exists;
-#  6. refusals.
+#  6. refusals;
+#  7. the other terms and laws with state (kinematic contact, bulk viscosity, the peak's
+#     stiffness damping, friction grading, the weight; the slip-length memory of a stateless law).
 set -u
 driver=$1; scratch=$2
 mkdir -p "$scratch"; cd "$scratch"; rm -f ./*.h5 ./*.partial ./*.log
@@ -94,6 +96,22 @@ expect negative 2 $? neg.log "invalid option -checkpoint_interval = -1"
 $driver $scene -output fresh.h5 -resume >fresh.log 2>&1
 expect fresh 0 $? fresh.log "-resume: no checkpoint fresh.checkpoint.h5 yet: the run starts from the beginning"
 same fresh fresh.h5
+
+# 7. Every other term and law that carries state from step to step.
+for variant in "-fem_contact kinematic -fem_bulk_viscosity -fem_peak_stiffness_damping 1e-9" \
+               "-grading_profile linear -grading_property friction -grading_delta 0.2 -fem_gravity 9.81" \
+               "-friction_law coulomb -fem_slip_length 1e-7 -fem_pressure_step static"; do
+  small="-fem_nx 12 -fem_ny 12 -fem_nz 2 $variant"
+  rm -f variant*.h5
+  $driver $small -checkpoint_interval 0 -output variant_ref.h5 >variant_ref.log 2>&1 || { echo "variant ($variant): reference exit $?"; fail=1; }
+  $driver $small -checkpoint_interval 0 -checkpoint_test_signal TERM@3000 -output variant.h5 >variant1.log 2>&1
+  expect "variant ($variant)" 143 $? variant1.log "stopped by SIGTERM at step 3000"
+  $driver $small -checkpoint_interval 0 -output variant.h5 -resume >variant2.log 2>&1
+  expect "variant ($variant) resume" 0 $? variant2.log "resumed from the checkpoint of step 3000 "
+  for group in $physics; do
+    h5diff -r variant_ref.h5 variant.h5 "$group" >variant.diff 2>&1 || { echo "variant ($variant): $group differs"; fail=1; }
+  done
+done
 
 [ "$fail" = 0 ] && echo "checkpoint resume OK"
 exit "$fail"
