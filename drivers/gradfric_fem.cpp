@@ -99,7 +99,7 @@ std::optional<FemRun> readFemRun(MPI_Comm comm, RunParameters* record) {
   run.params.overwrite = out.flag("output_overwrite", false, "replace an existing results file");
   run.sweep = readSweepOptions(comm, record);
   run.checkpoints = readCheckpointSettings(comm, record, run.params.output, run.sweep.resume && !run.sweep.requested,
-                                           helpRequested() ? "" : checkpointsOff(run));
+                                           run.params.overwrite, helpRequested() ? "" : checkpointsOff(run));
   if (helpRequested()) return std::nullopt;
   campaign::refuseOverriddenBaseOptions(*record);
   // Fields against the mesh, -fem_ts_ options, misspellings, the run length and the stable step.

@@ -139,7 +139,7 @@ std::string sceneText(const RunParameters& record) {
 }
 
 CheckpointSettings readCheckpointSettings(MPI_Comm comm, RunParameters* record, const std::string& output, bool resume,
-                                          const std::string& off) {
+                                          bool overwrite, const std::string& off) {
   OptionReader options(comm, "checkpoint_", "Checkpoints of a single FEM run (docs/running.md)", record);
   CheckpointSettings s;
   s.interval = options.real("interval", 300.0, "s",
@@ -161,6 +161,7 @@ CheckpointSettings readCheckpointSettings(MPI_Comm comm, RunParameters* record, 
   if (!(s.interval >= 0.0))
     throw InputError("-checkpoint_interval", formatReal(s.interval), "0 (only when interrupted) or more seconds");
   s.resume = resume;
+  s.overwrite = overwrite;
   if (output.empty())
     s.off = "no -output: a run without a results file keeps nothing";
   else
@@ -212,7 +213,17 @@ std::optional<CheckpointHeader> peekCheckpoint(MPI_Comm comm, const std::string&
 }
 
 std::optional<CheckpointHeader> checkpointToResume(MPI_Comm comm, const CheckpointSettings& settings) {
-  if (!settings.resume) return std::nullopt;
+  if (settings.path.empty()) return std::nullopt;
+  if (!settings.resume) {
+    int exists = 0;
+    if (rankOf(comm) == 0) exists = access(settings.path.c_str(), F_OK) == 0;
+    MPI_Bcast(&exists, 1, MPI_INT, 0, comm);
+    if (exists && !settings.overwrite)
+      throw InputError("-resume", "false",
+                       "-resume to continue from the checkpoint " + settings.path +
+                           " of an interrupted run, or -output_overwrite to start again and replace it");
+    return std::nullopt;
+  }
   std::optional<CheckpointHeader> h = peekCheckpoint(comm, settings.path);
   if (!h) return std::nullopt;
   int ranks = 1;

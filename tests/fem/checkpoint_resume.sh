@@ -93,6 +93,13 @@ $driver $scene -fem_snapshot_times 1e-4 -output snap.h5 -resume >snap.log 2>&1
 expect snapshots 2 $? snap.log "invalid option -resume = true: .*-fem_snapshot_times"
 $driver $scene -checkpoint_interval -1 -output neg.h5 >neg.log 2>&1
 expect negative 2 $? neg.log "invalid option -checkpoint_interval = -1"
+$driver $scene -checkpoint_interval 0 -checkpoint_test_signal TERM@6000 -output again.h5 >again1.log 2>&1
+$driver $scene -checkpoint_interval 0 -output again.h5 >again2.log 2>&1
+expect forgotten-resume 2 $? again2.log "invalid option -resume = false: allowed -resume to continue from the checkpoint again.checkpoint.h5 of an interrupted run, or -output_overwrite to start again"
+$driver $scene -checkpoint_interval 0 -output again.h5 -output_overwrite >again3.log 2>&1
+expect start-again 0 $? again3.log "Checkpoints: on SIGINT/SIGTERM only"
+same again again.h5
+[ -e again.checkpoint.h5 ] && { echo "again: the replaced checkpoint outlived the complete results"; fail=1; }
 $driver $scene -output fresh.h5 -resume >fresh.log 2>&1
 expect fresh 0 $? fresh.log "-resume: no checkpoint fresh.checkpoint.h5 yet: the run starts from the beginning"
 same fresh fresh.h5

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# gradfric-fem when the disk fills, on 2 ranks: the results file, the snapshots and the FEM
-# sweep's file each end the run with exit 1 and one message naming the file and the system's
+# gradfric-fem when the disk fills, on 2 ranks: the results file, the snapshots, the FEM
+# sweep's file and a single run's checkpoint each end the run with exit 1 and one message naming the file and the system's
 # reason, on every rank (no crash, no MPI_ABORT, no hang), leave no file under the final name and
 # no temporary, and leave an earlier result (-output_overwrite) byte for byte as it was.
 # SIGTERM to a FEM sweep says how many points the .partial keeps and how to continue; resumed, the
@@ -76,6 +76,14 @@ if [ -n "$mounted" ]; then dd if=/dev/zero of=disk/filler bs=4k 2>/dev/null; fi
 fem sweep_full "${sweep[@]}" -output disk/sweep.h5
 written sweep_full "writing .*disk/sweep.h5.partial failed on rank 0: .*$full"
 [ ! -e disk/sweep.h5 ] || fail "sweep_full: a file under the final name"
+
+# A single run's checkpoint on a full disk (written at SIGTERM): exit 1, one message, no
+# .partial, and the earlier checkpoint as it was.
+disk 64
+echo "earlier checkpoint" >disk/ck.checkpoint.h5
+fem checkpoint_full "${scene[@]}" -output disk/ck.h5 -output_overwrite -checkpoint_interval 0 -checkpoint_test_signal TERM@200
+written checkpoint_full "writing .*disk/ck.checkpoint.h5.partial failed on rank 0: .*$full"
+[ "$(cat disk/ck.checkpoint.h5)" = "earlier checkpoint" ] || fail "checkpoint_full: the earlier checkpoint was changed"
 cleanup; mounted=""; limit=""
 
 # SIGTERM to a running sweep (2 groups of 1 rank, eight points of ~1 s): the notice, then a resume

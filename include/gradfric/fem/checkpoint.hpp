@@ -22,6 +22,7 @@ struct CheckpointSettings {
   std::string path;          // "": no checkpoints
   double interval = 300.0;   // wall seconds between checkpoints [s]; 0: only when interrupted
   bool resume = false;       // -resume: continue from path if it exists
+  bool overwrite = false;    // -output_overwrite: a run started again replaces an earlier checkpoint
   std::string scene;         // the options that define the run: a checkpoint of another scene is refused
   std::string off;           // why there are none ("" when path is set)
   // Testing only (-checkpoint_test_signal TERM@5000): after this step every rank sends itself the
@@ -35,7 +36,7 @@ struct CheckpointSettings {
 // integrator and no field snapshots (their file is not resumable): otherwise they are off, and the
 // settings say why; -resume is then refused (InputError). Every rank alike.
 CheckpointSettings readCheckpointSettings(MPI_Comm comm, RunParameters* record, const std::string& output,
-                                          bool resume, const std::string& off);
+                                          bool resume, bool overwrite, const std::string& off);
 // The options that define the run, as text (the checkpoint's and -resume's test of sameness): every
 // option read but those that only steer it (checkpoints, -resume, -output_overwrite, the monitor
 // and progress lines).
@@ -54,7 +55,8 @@ struct CheckpointHeader {
 std::optional<CheckpointHeader> peekCheckpoint(MPI_Comm comm, const std::string& path);
 // Collective, before any work: with -resume, the checkpoint to continue from (nullopt: none yet,
 // the run starts from the beginning and says so); refused (InputError naming -resume) when it is of
-// another scene or number of ranks.
+// another scene or number of ranks. Without -resume, an existing checkpoint is refused unless
+// -output_overwrite (a run started again would replace it at its first checkpoint).
 std::optional<CheckpointHeader> checkpointToResume(MPI_Comm comm, const CheckpointSettings& settings);
 
 // Collective: writes every rank's bytes and the header to settings.path (through .partial). Throws
