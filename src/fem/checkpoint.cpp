@@ -14,6 +14,7 @@
 
 #include <H5FDmpio.h>
 #include <petscsys.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <csignal>
@@ -212,8 +213,24 @@ std::optional<CheckpointHeader> peekCheckpoint(MPI_Comm comm, const std::string&
   return h;
 }
 
+// Rank 0: why the checkpoint cannot be written at path ("" if it can): a directory, or a folder
+// that is missing or not writable (the first checkpoint may come hours into the run).
+static std::string unwritable(const std::string& path) {
+  struct stat info {};
+  if (stat(path.c_str(), &info) == 0 && S_ISDIR(info.st_mode)) return path + " is a directory";
+  const std::size_t slash = path.find_last_of('/');
+  const std::string folder = slash == std::string::npos ? "." : slash == 0 ? "/" : path.substr(0, slash);
+  if (stat(folder.c_str(), &info) != 0 || !S_ISDIR(info.st_mode)) return "the folder " + folder + " does not exist";
+  if (access(folder.c_str(), W_OK | X_OK) != 0) return "the folder " + folder + " is not writable";
+  return "";
+}
+
 std::optional<CheckpointHeader> checkpointToResume(MPI_Comm comm, const CheckpointSettings& settings) {
   if (settings.path.empty()) return std::nullopt;
+  std::string why;
+  if (rankOf(comm) == 0) why = unwritable(settings.path);
+  broadcast(comm, why);
+  if (!why.empty()) throw InputError("-checkpoint_file", settings.path, "a file in an existing, writable folder (" + why + ")");
   if (!settings.resume) {
     int exists = 0;
     if (rankOf(comm) == 0) exists = access(settings.path.c_str(), F_OK) == 0;

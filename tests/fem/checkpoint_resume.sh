@@ -91,6 +91,11 @@ $driver $scene -resume >nooutput.log 2>&1
 expect no-output 2 $? nooutput.log "invalid option -resume = true: allowed a single run with checkpoints \(they are off: no -output"
 $driver $scene -fem_snapshot_times 1e-4 -output snap.h5 -resume >snap.log 2>&1
 expect snapshots 2 $? snap.log "invalid option -resume = true: .*-fem_snapshot_times"
+$driver $scene -checkpoint_file no/such/folder/c.h5 -output nofolder.h5 >nofolder.log 2>&1
+expect no-folder 2 $? nofolder.log "invalid option -checkpoint_file = no/such/folder/c.h5: allowed a file in an existing, writable folder \(the folder no/such/folder does not exist\)"
+mkdir -p adir
+$driver $scene -checkpoint_file adir -output dir.h5 >dir.log 2>&1
+expect directory 2 $? dir.log "invalid option -checkpoint_file = adir: allowed a file in an existing, writable folder \(adir is a directory\)"
 $driver $scene -checkpoint_interval -1 -output neg.h5 >neg.log 2>&1
 expect negative 2 $? neg.log "invalid option -checkpoint_interval = -1"
 $driver $scene -checkpoint_interval 0 -checkpoint_test_signal TERM@6000 -output again.h5 >again1.log 2>&1
