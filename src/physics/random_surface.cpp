@@ -87,6 +87,27 @@ void checkEdges(const std::vector<double>& edges, double correlationLength, cons
   }
 }
 
+
+// Adds the integral of the cell field over [u0, u1) x [v0, v1) (in cell units) to `integral`, cell by
+// cell in increasing (i, j): each overlap area, exact in binary after quantisation, times the
+// cell's values valuesOf(i, j) (one per property), through exact products.
+template <class Values>
+void integrateCells(double u0, double u1, double v0, double v1, int properties, Values&& valuesOf,
+                    std::array<ExactSum, 3>& integral) {
+  for (auto i = static_cast<std::int64_t>(std::floor(u0)); i < u1; ++i) {
+    const double wx = std::min(u1, double(i + 1)) - std::max(u0, double(i));
+    for (auto j = static_cast<std::int64_t>(std::floor(v0)); j < v1; ++j) {
+      const double wy = std::min(v1, double(j + 1)) - std::max(v0, double(j));
+      const double area = wx * wy, areaError = std::fma(wx, wy, -area);
+      const double* z = valuesOf(i, j);
+      for (int p = 0; p < properties; ++p) {
+        addExactProduct(integral[p], z[p], area);
+        if (areaError != 0.0) addExactProduct(integral[p], z[p], areaError);
+      }
+    }
+  }
+}
+
 }  // namespace
 
 RandomSurface::RandomSurface(const SurfaceSettings& s, double plateLength, std::uint32_t realisation)
@@ -112,18 +133,11 @@ std::array<ExactSum, 3> RandomSurface::integralOver(const SurfaceRectangle& r) c
   const RandomStream stream({settings_.seed, 0, realisation_});
   const int properties = settings_.sigmaModulus > 0.0 ? 3 : 2;
   std::array<ExactSum, 3> integral;
-  for (auto i = static_cast<std::int64_t>(std::floor(u0)); i < u1; ++i) {
-    const double wx = std::min(u1, double(i + 1)) - std::max(u0, double(i));
-    for (auto j = static_cast<std::int64_t>(std::floor(v0)); j < v1; ++j) {
-      const double wy = std::min(v1, double(j + 1)) - std::max(v0, double(j));
-      const double area = wx * wy, areaError = std::fma(wx, wy, -area);
-      for (int p = 0; p < properties; ++p) {
-        const double z = stream.normalPair(packIndices(i, j), kCellPurpose[p], 0).first;
-        addExactProduct(integral[p], z, area);
-        if (areaError != 0.0) addExactProduct(integral[p], z, areaError);
-      }
-    }
-  }
+  double z[3] = {0, 0, 0};
+  integrateCells(u0, u1, v0, v1, properties, [&](std::int64_t i, std::int64_t j) {
+    for (int p = 0; p < properties; ++p) z[p] = stream.normalPair(packIndices(i, j), kCellPurpose[p], 0).first;
+    return static_cast<const double*>(z);
+  }, integral);
   return integral;
 }
 
@@ -163,18 +177,9 @@ std::vector<SurfaceDeviations> RandomSurface::averageOverLattice(const std::vect
       for (std::size_t a = 0; a < columns; ++a) {
         const double u0 = u[a], u1 = u[a + 1], v0 = v[b], v1 = v[b + 1];
         std::array<ExactSum, 3> integral;
-        for (auto i = static_cast<std::int64_t>(std::floor(u0)); i < u1; ++i) {
-          const double wx = std::min(u1, double(i + 1)) - std::max(u0, double(i));
-          for (auto j = static_cast<std::int64_t>(std::floor(v0)); j < v1; ++j) {
-            const double wy = std::min(v1, double(j + 1)) - std::max(v0, double(j));
-            const double area = wx * wy, areaError = std::fma(wx, wy, -area);
-            const double* z = &cell[(std::size_t(i - iFirst) * jCount + std::size_t(j - jFirst)) * properties];
-            for (int p = 0; p < properties; ++p) {
-              addExactProduct(integral[p], z[p], area);
-              if (areaError != 0.0) addExactProduct(integral[p], z[p], areaError);
-            }
-          }
-        }
+        integrateCells(u0, u1, v0, v1, properties, [&](std::int64_t i, std::int64_t j) {
+          return &cell[(std::size_t(i - iFirst) * jCount + std::size_t(j - jFirst)) * properties];
+        }, integral);
         const double blockArea = (u1 - u0) * (v1 - v0);
         for (int p = 0; p < properties; ++p) component(out[b * columns + a], p) = integral[p].value() / blockArea;
       }
