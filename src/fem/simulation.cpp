@@ -298,8 +298,7 @@ private:
     GF_CALL(TSGetConvergedReason(ts, &reason));
     const int signal = RunInterruption::pending();
     int flags = (signal == SIGINT ? 2 : 0) | (signal == SIGTERM ? 4 : 0);
-    const double interval = checkpoints_->settings.interval;
-    if (rank_ == 0 && interval > 0 && MPI_Wtime() - lastCheckpoint_ >= interval) flags |= 1;
+    if (rank_ == 0 && s.interval > 0 && MPI_Wtime() - lastCheckpoint_ >= s.interval) flags |= 1;
     if (ranks_ > 1) GF_CALL_MPI(MPI_Allreduce(MPI_IN_PLACE, &flags, 1, MPI_INT, MPI_BOR, model_.comm()));
     if (flags == 0) return;
     const bool stopping = reason != TS_CONVERGED_ITERATING;  // the run ends at this step anyway
@@ -319,7 +318,7 @@ private:
     h.time = t;
     h.tSliding = model_.phase() == Phase::Sliding ? t - r_.slideStart : -1.0;
     h.ranks = ranks_;
-    writeCheckpoint(model_.comm(), checkpoints_->settings, h, a.bytes());
+    writeCheckpoint(model_.comm(), s, h, a.bytes());
     r_.checkpointWall += MPI_Wtime() - start;
     lastCheckpoint_ = MPI_Wtime();
     interruption_->kept(step, t, h.tSliding);
