@@ -104,7 +104,7 @@ std::optional<FemRun> readFemRun(MPI_Comm comm, RunParameters* record) {
   campaign::refuseOverriddenBaseOptions(*record);
   // Fields against the mesh, -fem_ts_ options, misspellings, the run length and the stable step.
   if (run.compare)
-    checkFemScene(comm, scene, record, {"sbm_", "ensemble_"});
+    checkFemScene(comm, scene, record, {"sbm_", "surface_", "ensemble_"});
   else
     checkFemScene(comm, scene, record, {"ensemble_"});
   return run;

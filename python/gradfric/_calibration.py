@@ -19,7 +19,7 @@ _HEADER = [
     (r"# fitted: +l_z = %s \+- %s m, sigma = %s \+- %s" % ((_NUMBER,) * 4),
      [("lz", "m", "fitted mass-layer thickness l_z (-sbm_lz)"),
       ("lz_ci95_half_width", "m", "95 % half-width of l_z"),
-      ("sigma", "1", "fitted relative dispersion of the local coefficients (-sbm_sigma_s = -sbm_sigma_k)"),
+      ("sigma", "1", "fitted relative dispersion of the local coefficients (-surface_sigma_s = -surface_sigma_k)"),
       ("sigma_ci95_half_width", "1", "95 % half-width of sigma")]),
     (r"# residuals: slope %s %%, peak %s \(ensemble 95 %% CI \+- %s\)" % ((_NUMBER,) * 3),
      [("slope_residual_percent", "%", "SBM slope / reference slope - 1, in per cent"),

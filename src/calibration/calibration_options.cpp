@@ -23,8 +23,8 @@ bool startsWith(const std::string& s, const char* head) { return s.rfind(head, 0
 // The calibration owns l_z, sigma and the step that follows l_z: a value set for them is refused.
 void refuseOwnedOptions() {
   const char* owned[][2] = {{"-sbm_lz", "the calibration fits it (first guess: -calibrate_lz_guess)"},
-                            {"-sbm_sigma_s", "the calibration fits it (first guess: -calibrate_sigma_guess)"},
-                            {"-sbm_sigma_k", "the calibration fits it with sigma_s (one dispersion)"},
+                            {"-surface_sigma_s", "the calibration fits it (first guess: -calibrate_sigma_guess)"},
+                            {"-surface_sigma_k", "the calibration fits it with sigma_s (one dispersion)"},
                             {"-sbm_dt", "the default step, which follows l_z (tune it with -sbm_dt_safety, -sbm_dt_slip)"}};
   for (const auto& o : owned) {
     PetscBool set = PETSC_FALSE;
@@ -109,7 +109,7 @@ std::optional<Calibration> readCalibration(MPI_Comm comm, RunParameters* record)
   c.scene.realisations = static_cast<int>(realisations);
   c.scene.seed = static_cast<std::uint64_t>(seed);
   s.maxEvaluations = static_cast<int>(evaluations);
-  checkUnusedOptions(comm, {"calibrate_", "plate_", "friction_", "sbm_", "grading_", "field_"});
+  checkUnusedOptions(comm, {"calibrate_", "plate_", "surface_", "friction_", "sbm_", "grading_", "field_"});
 
   // The reference and what it measures, before any work.
   s.source.option = o.fullName("reference");

@@ -62,7 +62,7 @@ void writeScene(const std::string& work, const std::string& path, const Calibrat
   out << "# gradfric -options_file " << path << " -output run.h5 reproduces the fitted ensemble (same seed)\n";
   // A file to read is written absolute: in a scene file it would be read from the scene's folder.
   for (const auto& o : c.sceneOptions) out << o.name << " " << (o.path ? absolutePaths(o.value) : o.value) << "\n";
-  std::snprintf(line, sizeof line, "-sbm_lz %.10g\n-sbm_sigma_s %.10g\n-sbm_sigma_k %.10g\n", e.layerThickness, e.sigma,
+  std::snprintf(line, sizeof line, "-sbm_lz %.10g\n-surface_sigma_s %.10g\n-surface_sigma_k %.10g\n", e.layerThickness, e.sigma,
                 e.sigma);
   out << line << "-ensemble_realisations " << c.scene.realisations << "\n-ensemble_seed " << c.scene.seed << "\n";
   if (!out.flush()) throw std::runtime_error("cannot write " + work);

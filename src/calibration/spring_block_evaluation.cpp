@@ -39,7 +39,7 @@ Evaluation evaluateSpringBlocks(MPI_Comm comm, const SpringBlockScene& scene, do
   const double wall0 = MPI_Wtime();
   sbm::Parameters p = scene.base;
   p.layerThickness = layerThickness;
-  p.sigmaStatic = p.sigmaKinetic = sigma;
+  p.surface.sigmaStatic = p.surface.sigmaKinetic = sigma;
   p.automaticTimeStep = p.timeStep = sbm::defaultTimeStep(p, scene.grading);  // the step follows l_z
   RunParameters scratch;  // the -friction_ windows scale with the loading time, hence with l_z
   const sbm::Request request = sbm::readRequest(comm, &scratch, p, calibrationMeasurement());

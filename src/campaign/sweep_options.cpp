@@ -16,7 +16,7 @@ SweepLists readSweepLists(OptionReader& ens) {
   lists.delta = ens.realList("delta", {}, "1", "sweep of the grading amplitude Delta (empty: -grading_delta alone)");
   lists.theta = ens.realList("theta", {}, "degree", "sweep of the sliding angle (empty: -plate_theta alone)");
   lists.sigma = ens.realList("sigma", {}, "1",
-                             "sweep of the relative dispersion, sets sigma_s and sigma_k (empty: -sbm_sigma_s/_k)");
+                             "sweep of the relative dispersion, sets sigma_s and sigma_k (empty: -surface_sigma_s/_k)");
   lists.property = ens.choiceList("property", {}, {"E", "friction", "both"},
                                   "sweep of the graded property (empty: -grading_property alone)");
   lists.profile = ens.choiceList("profile", {}, gradingProfileNames(),
@@ -98,7 +98,7 @@ io::SweepTable sweepColumns(const Sweep& sweep) {
 void refuseOverriddenBaseOptions(const RunParameters& record) {
   const char* const pairs[][2] = {{"-ensemble_delta", "-grading_delta"},       {"-ensemble_property", "-grading_property"},
                                   {"-ensemble_profile", "-grading_profile"},   {"-ensemble_theta", "-plate_theta"},
-                                  {"-ensemble_sigma", "-sbm_sigma_s"},         {"-ensemble_sigma", "-sbm_sigma_k"}};
+                                  {"-ensemble_sigma", "-surface_sigma_s"},     {"-ensemble_sigma", "-surface_sigma_k"}};
   const auto set = [&](const char* name) {
     const ResolvedOption* o = record.find(name);
     return o && o->origin == OptionOrigin::User ? o : nullptr;

@@ -205,9 +205,9 @@ std::optional<Problem> readProblem(MPI_Comm comm, RunParameters* record) {
   }
   readDesignTaoOptions();  // -design_tao_*: read by TaoSetFromOptions later, checked now
   if (s.fem)
-    checkUnusedOptions(comm, {"design_", "plate_", "friction_", "sbm_", "grading_", "field_", "output", "fem_"});
+    checkUnusedOptions(comm, {"design_", "plate_", "surface_", "friction_", "sbm_", "grading_", "field_", "output", "fem_"});
   else
-    checkUnusedOptions(comm, {"design_", "plate_", "friction_", "sbm_", "grading_", "field_", "output"});
+    checkUnusedOptions(comm, {"design_", "plate_", "surface_", "friction_", "sbm_", "grading_", "field_", "output"});
   if (!o.wasSet("target"))
     throw InputError(o.fullName("target"), "(not set)", "a target mu_s (absolute) or relative variation (variation)");
   s.kind = kind == "variation" ? TargetKind::Variation : TargetKind::Absolute;

@@ -230,8 +230,8 @@ io::SweepTable tableOf(const Scene& s) {
 sbm::Parameters Scene::pointParameters(int p) const {
   sbm::Parameters q = parameters;
   q.plate.slidingAngle = sweep.points[p].theta;
-  q.sigmaStatic = sweep.points[p].sigma;
-  q.sigmaKinetic = sweep.points[p].sigmaKinetic;
+  q.surface.sigmaStatic = sweep.points[p].sigma;
+  q.surface.sigmaKinetic = sweep.points[p].sigmaKinetic;
   return q;
 }
 
@@ -275,11 +275,11 @@ std::optional<Scene> readScene(MPI_Comm comm, RunParameters* record) {
     g.fields = valueFields[v];
     checkSpringBlockFields(g, plate, s.parameters.blocksPerSide);
   }
-  checkUnusedOptions(comm, {"ensemble_", "plate_", "friction_", "sbm_", "grading_", "field_", "pressure_", "output"});
+  checkUnusedOptions(comm, {"ensemble_", "plate_", "surface_", "friction_", "sbm_", "grading_", "field_", "pressure_", "output"});
 
   base.theta = s.parameters.plate.slidingAngle;
-  base.sigma = s.parameters.sigmaStatic;
-  base.sigmaKinetic = s.parameters.sigmaKinetic;
+  base.sigma = s.parameters.surface.sigmaStatic;
+  base.sigmaKinetic = s.parameters.surface.sigmaKinetic;
   s.sweep = buildSweep(allLists, base);
   for (const SweepPoint& q : s.sweep.points)  // each point's fields (the same for all without a field sweep)
     if (q.fieldSwept) {

@@ -110,8 +110,18 @@ void integrateCells(double u0, double u1, double v0, double v1, int properties, 
 
 }  // namespace
 
-RandomSurface::RandomSurface(const SurfaceSettings& s, double plateLength, std::uint32_t realisation)
-    : settings_(s), plateLength_(plateLength), realisation_(realisation) {
+const char* surfaceKindName(SurfaceKind kind) {
+  switch (kind) {
+    case SurfaceKind::Cells: return "cells";
+    case SurfaceKind::Gaussian: return "gaussian";
+    case SurfaceKind::Blocks: return "blocks";
+  }
+  return "?";
+}
+
+RandomSurface::RandomSurface(const SurfaceSettings& s, double plateLength, std::uint32_t realisation,
+                             std::uint32_t stream)
+    : settings_(s), plateLength_(plateLength), realisation_(realisation), stream_(stream) {
   requireFinite(plateLength, plateLength > 0.0, "the plate length must be positive and finite");
   requireFinite(s.correlationLength, s.correlationLength > 0.0,
                 "the correlation length must be positive and finite");
@@ -121,7 +131,7 @@ RandomSurface::RandomSurface(const SurfaceSettings& s, double plateLength, std::
   if (!(plateLength / s.correlationLength <= kLargestPlate))
     throw std::invalid_argument("random surface: more than 2^16 correlation lengths per plate side");
   if (s.kind != SurfaceKind::Cells && s.kind != SurfaceKind::Gaussian)
-    throw std::invalid_argument("random surface: unknown kind");
+    throw std::invalid_argument("random surface: the blocks kind is the lattice's own draw, not a field");
 }
 
 std::array<ExactSum, 3> RandomSurface::integralOver(const SurfaceRectangle& r) const {
@@ -130,7 +140,7 @@ std::array<ExactSum, 3> RandomSurface::integralOver(const SurfaceRectangle& r) c
   checkEdges({r.y0, r.y1}, settings_.correlationLength, "y");
   const double u0 = quantised(r.x0 / settings_.correlationLength), u1 = quantised(r.x1 / settings_.correlationLength);
   const double v0 = quantised(r.y0 / settings_.correlationLength), v1 = quantised(r.y1 / settings_.correlationLength);
-  const RandomStream stream({settings_.seed, 0, realisation_});
+  const RandomStream stream({settings_.seed, stream_, realisation_});
   const int properties = settings_.sigmaModulus > 0.0 ? 3 : 2;
   std::array<ExactSum, 3> integral;
   double z[3] = {0, 0, 0};
@@ -152,7 +162,7 @@ std::vector<SurfaceDeviations> RandomSurface::averageOverLattice(const std::vect
   checkEdges(yEdges, lc, "y");
   const std::size_t columns = xEdges.size() - 1, rows = yEdges.size() - 1;
   const int properties = settings_.sigmaModulus > 0.0 ? 3 : 2;
-  const RandomStream stream({settings_.seed, 0, realisation_});
+  const RandomStream stream({settings_.seed, stream_, realisation_});
   std::vector<SurfaceDeviations> out(columns * rows);
   auto component = [](SurfaceDeviations& d, int p) -> double& {
     return p == 0 ? d.zStatic : p == 1 ? d.zKinetic : d.zModulus;
@@ -237,7 +247,7 @@ SurfaceDeviations RandomSurface::valueAt(double x, double y) const {
   requireFinite(u, std::fabs(u) <= kLargestCoordinate, "point beyond 2^20 correlation lengths, or not finite");
   requireFinite(v, std::fabs(v) <= kLargestCoordinate, "point beyond 2^20 correlation lengths, or not finite");
   const int properties = settings_.sigmaModulus > 0.0 ? 3 : 2;
-  const RandomStream stream({settings_.seed, 0, realisation_});
+  const RandomStream stream({settings_.seed, stream_, realisation_});
   SurfaceDeviations d;
   double* z[3] = {&d.zStatic, &d.zKinetic, &d.zModulus};
   if (settings_.kind == SurfaceKind::Cells) {

@@ -1,6 +1,7 @@
 #include "gradfric/sbm/lattice.hpp"
 
 #include "gradfric/physics/property_sampler.hpp"
+#include "gradfric/physics/random_surface.hpp"
 #include "gradfric/sbm/spring.hpp"
 
 #include <algorithm>
@@ -121,7 +122,8 @@ FrictionField buildFriction(const Parameters& p, const Grading& grading, StreamK
   const PropertySampler sampler(grading, nb, nb);
   FrictionField f;
   f.columns = nb;
-  const bool dispersed = p.sigmaStatic > 0.0 || p.sigmaKinetic > 0.0;
+  const SurfaceSettings surface = p.surfaceOf();
+  const bool dispersed = surface.sigmaStatic > 0.0 || surface.sigmaKinetic > 0.0;
   if (dispersed || sampler.frictionVariesAlongY()) {
     f.layout = SiteLayout::PerSite;
   } else if (sampler.gradesFriction()) {
@@ -149,23 +151,46 @@ FrictionField buildFriction(const Parameters& p, const Grading& grading, StreamK
       }
     return f;
   }
-  const RandomStream stream(key);
   f.staticStrength.resize(std::size_t(nb) * nb);
   f.kineticStrength.resize(std::size_t(nb) * nb);
+  if (surface.kind == SurfaceKind::Blocks) {  // one draw per block, redrawn: the model before the surface
+    const RandomStream stream(key);
+    for (int r = 0; r < nb; ++r) {
+      for (int c = 0; c < nb; ++c) {
+        const int i = r * nb + c;
+        const Mean m = meanAt(r, c);
+        double muS = 0.0, muK = 0.0;
+        for (std::uint32_t attempt = 0;; ++attempt) {
+          const auto [zs, zk] = stream.normalPair(std::uint64_t(i), 0, attempt);
+          muS = m.muS * (1.0 + surface.sigmaStatic * zs);
+          muK = m.muK * (1.0 + surface.sigmaKinetic * zk);
+          if (muK > 0.0 && muK <= muS) break;
+          if (attempt == 0) ++f.redrawnBlocks;
+        }
+        f.staticStrength[i] = muS * m.normal;
+        f.kineticStrength[i] = muK * m.normal;
+      }
+    }
+    return f;
+  }
+  // The field averaged over each block; the same surface on any lattice (the block edges L c / N_b
+  // fall on the cells' edges where they are aligned, random_surface.hpp).
+  SurfaceSettings seeded = surface;
+  seeded.seed = key.seed;
+  const RandomSurface field(seeded, p.plate.length, key.realisation, key.sweepIndex);
+  std::vector<double> edges(nb + 1);
+  for (int c = 0; c <= nb; ++c) edges[c] = p.plate.length * c / nb;
+  const std::vector<SurfaceDeviations> z = field.averageOverLattice(edges, edges);
   for (int r = 0; r < nb; ++r) {
     for (int c = 0; c < nb; ++c) {
       const int i = r * nb + c;
       const Mean m = meanAt(r, c);
-      double muS = 0.0, muK = 0.0;
-      for (std::uint32_t attempt = 0;; ++attempt) {
-        const auto [zs, zk] = stream.normalPair(std::uint64_t(i), 0, attempt);
-        muS = m.muS * (1.0 + p.sigmaStatic * zs);
-        muK = m.muK * (1.0 + p.sigmaKinetic * zk);
-        if (muK > 0.0 && muK <= muS) break;
-        if (attempt == 0) ++f.redrawnBlocks;
-      }
-      f.staticStrength[i] = muS * m.normal;
-      f.kineticStrength[i] = muK * m.normal;
+      const SurfaceCoefficients k = surfaceCoefficients(m.muS, m.muK, 1.0, surface, z[i]);
+      const double freeStatic = m.muS * (1.0 + surface.sigmaStatic * z[i].zStatic);
+      const double freeKinetic = m.muK * (1.0 + surface.sigmaKinetic * z[i].zKinetic);
+      if (k.muStatic != freeStatic || k.muKinetic != freeKinetic) ++f.redrawnBlocks;  // clipped by the field's bounds
+      f.staticStrength[i] = k.muStatic * m.normal;
+      f.kineticStrength[i] = k.muKinetic * m.normal;
     }
   }
   return f;

@@ -253,13 +253,18 @@ std::vector<std::string> activeEffects(const Parameters& p, const Grading& g, co
                                        : "uniform mean friction coefficients");
   if (g.fields)
     for (const auto& line : describeFields(*g.fields)) effects.push_back(line);
-  if (p.sigmaStatic > 0 || p.sigmaKinetic > 0) {
+  const SurfaceSettings surface = p.surfaceOf();
+  if (surface.dispersed()) {
     std::ostringstream d;
-    d << "Gaussian dispersion of local friction: sigma_s = " << p.sigmaStatic << ", sigma_k = " << p.sigmaKinetic
-      << " (per-block coefficients)";
+    d << "random surface: sigma_s = " << surface.sigmaStatic << ", sigma_k = " << surface.sigmaKinetic;
+    if (surface.kind == SurfaceKind::Blocks)
+      d << ", one draw per block (l_c = the block, redrawn until 0 < mu_k,i <= mu_s,i)";
+    else
+      d << ", " << surfaceKindName(surface.kind) << " of l_c = " << formatReal(surface.correlationLength)
+        << " m (" << formatReal(surface.correlationLength / p.spacing()) << " blocks), each block its area's average";
     effects.push_back(d.str());
   } else {
-    effects.push_back("no dispersion: no random draws, no per-block coefficients");
+    effects.push_back("no dispersion: no random surface, no per-block coefficients");
   }
   effects.push_back("friction law: " + describeFrictionLaw(p.frictionLaw));
   const bool stateLaw = isStateLaw(p.frictionLaw);

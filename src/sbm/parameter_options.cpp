@@ -9,6 +9,7 @@
 #include "gradfric/physics/stability.hpp"
 #include "gradfric/physics/friction_laws.hpp"
 #include "gradfric/physics/pressure_response_options.hpp"
+#include "gradfric/physics/surface_options.hpp"
 #include "gradfric/sbm/log_events.hpp"
 
 #include <algorithm>
@@ -27,8 +28,7 @@ Parameters readParameters(MPI_Comm comm, RunParameters* record, const Plate& pla
                      "1/3 with the spring-block model (its lattice has Poisson's ratio 1/3)");
   p.layerThickness = o.real("lz", p.layerThickness, "m",
                             "mass layer thickness l_z: block mass rho l_z l^2, slider K_s = G l^2/l_z (paper: 0.057 mm)");
-  p.sigmaStatic = o.real("sigma_s", p.sigmaStatic, "1", "relative standard deviation of the local mu_s (0: no dispersion)");
-  p.sigmaKinetic = o.real("sigma_k", p.sigmaKinetic, "1", "relative standard deviation of the local mu_k (0: no dispersion)");
+  p.surface = readSurface(comm, record, plate, SurfaceDefaults{0.028, true});  // shared with the FEM
   p.frictionLaw = readFrictionLaw(o.comm(), record, p.frictionLaw, true, plate.thickness);  // shared with the FEM
   p.blocksPerSide = static_cast<int>(o.integer("N", p.blocksPerSide, 2, 4096, "1", "blocks per side N_b"));
   const std::string integrator = o.choice("integrator", "verlet", {"rk4", "verlet"},
@@ -43,8 +43,6 @@ Parameters readParameters(MPI_Comm comm, RunParameters* record, const Plate& pla
                       "(bit for bit the stepped run; false: step every block from t = 0)");
 
   o.requirePositive("lz", p.layerThickness, "m");
-  o.requireRange("sigma_s", p.sigmaStatic, 0.0, 0.5, "0 <= sigma_s <= 0.5");
-  o.requireRange("sigma_k", p.sigmaKinetic, 0.0, 0.5, "0 <= sigma_k <= 0.5");
   o.requireAtLeast("N", p.blocksPerSide, 2);
   if (p.blocksPerSide > 4096) throw InputError(o.fullName("N"), std::to_string(p.blocksPerSide), "2 <= N <= 4096");
   checkSpringBlockFields(grading, plate, p.blocksPerSide);  // the property fields at the block centres

@@ -98,7 +98,7 @@ std::optional<Study> readStudy(MPI_Comm comm, RunParameters* record) {
     if (n < 2 || n > 4096 || n != std::floor(n)) throw InputError(o.fullName("N"), formatReal(n), "whole numbers 2 <= N <= 4096");
   for (double dt : s.dts)  // before any work: a rung of 1e-300 s would never finish
     requireRunLength(record, s.request.maxTime, dt, s.base.automaticTimeStep, o.fullName("dt"), {}, {}, "t_max");
-  checkUnusedOptions(comm, {"study_", "plate_", "friction_", "sbm_", "grading_", "output"});
+  checkUnusedOptions(comm, {"study_", "plate_", "surface_", "friction_", "sbm_", "grading_", "output"});
   std::sort(s.dts.begin(), s.dts.end());
   s.dtRealisations = int(dtRealisations);
   s.sizeRealisations = int(sizeRealisations);

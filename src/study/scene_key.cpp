@@ -72,8 +72,8 @@ SceneKey sceneKey(const RunParameters& record, const std::vector<std::string>& c
     put("-grading_property", point->property);
     put("-grading_profile", point->profile);
     put("-plate_theta", formatReal(point->theta));
-    if (record.find("-sbm_sigma_s")) put("-sbm_sigma_s", formatReal(point->sigma));
-    if (record.find("-sbm_sigma_k")) put("-sbm_sigma_k", formatReal(point->sigmaKinetic));
+    if (record.find("-surface_sigma_s")) put("-surface_sigma_s", formatReal(point->sigma));
+    if (record.find("-surface_sigma_k")) put("-surface_sigma_k", formatReal(point->sigmaKinetic));
     const ResolvedOption* field = record.find("-ensemble_field");  // the swept parameter, e.g. mu_delta
     if (point->fieldSwept && field) put("-field_" + field->value, formatReal(point->fieldValue));
   }

@@ -27,7 +27,7 @@ fit=(-sbm_N 20 -calibrate_realisations 16)
 run fit 2 0 "$calibrate" -calibrate_reference fem.h5 "${fit[@]}" -output fit.opts -calibrate_curve fit.csv
 grep -q "Calibration converged" fit.out || fail "fit: not converged: $(cat fit.out | tail -12)"
 [ -s fit.opts ] && [ -s fit.csv ] && ! ls ./*.tmp >/dev/null 2>&1 || fail "fit: files not written whole"
-grep -q "^-sbm_lz " fit.opts && grep -q "^-sbm_sigma_s " fit.opts && grep -q "^-sbm_N 20" fit.opts || fail "fit.opts: $(cat fit.opts)"
+grep -q "^-sbm_lz " fit.opts && grep -q "^-surface_sigma_s " fit.opts && grep -q "^-sbm_N 20" fit.opts || fail "fit.opts: $(cat fit.opts)"
 run one 1 0 "$calibrate" -calibrate_reference fem.h5 "${fit[@]}" -output one.opts
 diff <(grep -v "^# gradfric -options_file" fit.opts) <(grep -v "^# gradfric -options_file" one.opts) >/dev/null ||
   fail "1 and 2 ranks give different scene files: $(diff fit.opts one.opts)"
@@ -55,7 +55,7 @@ run plain 1 0 "$calibrate" -calibrate_reference plain.h5 -calibrate_reference_ti
 for f in csv plain; do
   [ "$(grep '^-sbm_lz' $f.opts)" = "$(grep '^-sbm_lz' fit.opts)" ] || fail "$f: another l_z: $(grep '^-sbm_lz' $f.opts fit.opts)"
 done
-grep -q "^-sbm_sigma_s" csv.opts || fail "csv: no sigma"
+grep -q "^-surface_sigma_s" csv.opts || fail "csv: no sigma"
 
 # Bad input: exit 2, one message naming the option, nothing written (on 2 ranks where a rank could
 # differ: the file checks, the plate against the reference).

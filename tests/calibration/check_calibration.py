@@ -46,11 +46,11 @@ def main(fem_path, sbm_path, scene_path):
         problems.append(f"FEM mu_s {peak:.6f} outside the SBM CI [{low:.6f}, {high:.6f}]")
     shear = scene["plate_E"] / (2 * (1 + scene["plate_nu"]))
     expected = shear * scene["plate_v"] / (scene["plate_p"] * reference)
-    lz, sigma = float(options["-sbm_lz"]), float(options["-sbm_sigma_s"])
+    lz, sigma = float(options["-sbm_lz"]), float(options["-surface_sigma_s"])
     if abs(lz / expected - 1) > 0.005:
         problems.append(f"l_z {lz:.6e} m, G v/(p slope) {expected:.6e} m")
-    if not 0 < sigma < 0.2 or float(options["-sbm_sigma_k"]) != sigma:
-        problems.append(f"sigma {sigma} (sigma_k {options['-sbm_sigma_k']})")
+    if not 0 < sigma < 0.2 or float(options["-surface_sigma_k"]) != sigma:
+        problems.append(f"sigma {sigma} (sigma_k {options['-surface_sigma_k']})")
     if problems:
         print("FAILED: " + "; ".join(problems))
         return 1

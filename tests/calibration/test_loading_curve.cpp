@@ -67,7 +67,7 @@ TEST(LoadingCurve, SpringBlockSlopeIsTheSliderSprings) {
   SpringBlockScene scene;
   scene.base.blocksPerSide = 20;
   scene.base.layerThickness = 4e-5;
-  scene.base.sigmaStatic = scene.base.sigmaKinetic = 0.03;
+  scene.base.surface.sigmaStatic = scene.base.surface.sigmaKinetic = 0.03;
   scene.base.damping = 0.1 * std::sqrt(scene.base.axialStiffness(scene.base.plate.youngsModulus) / scene.base.blockMass());
   scene.base.timeStep = sbm::defaultTimeStep(scene.base, scene.grading);
   sbm::Request request;

@@ -114,7 +114,8 @@ sbm)
   run 2 -sbm_dt_safety "$G" -sbm_dt_safety 0
   run 2 -sbm_dt_safety "$G" -sbm_dt_safety nan
   run 2 -friction_peak_drop "$G" -friction_peak_drop 2
-  run 2 -sbm_sigma_s "$G" -sbm_sigma_s inf
+  run 2 -surface_sigma_s "$G" -surface_sigma_s inf
+  run 2 -surface_length "$G" -surface_length nan
   # The state law on the blocks: 0 < D_c <= H, D_c only with -friction_law state.
   run 2 -friction_d_c "$G" -friction_law state -friction_d_c 0
   run 2 -friction_d_c "$G" -friction_law state -friction_d_c 1e-3

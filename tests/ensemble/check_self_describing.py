@@ -22,14 +22,25 @@ env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIR
 work = tempfile.mkdtemp(prefix="gradfric_describe_")
 out = os.path.join(work, "sweep.h5")
 scene_file = os.path.join(src, "input", "sbm_fig4_reduced.opts")
+# -surface_length: a value the file stores exactly (a derived L/120 is stored to 10 digits); 1.25
+# cells per block, so blocks straddle cells.
 r = subprocess.run(["mpiexec", "--oversubscribe", "-n", "2", driver, "-options_file", scene_file, "-sbm_N", "16",
                     "-ensemble_delta", "-0.3,0,0.3", "-ensemble_realisations", "2", "-friction_observables", "first_slip",
-                    "-ensemble_friction_fields", "true", "-output", out], env=env, capture_output=True, text=True)
+                    "-ensemble_friction_fields", "true", "-surface_length", "2.5e-4", "-output", out], env=env, capture_output=True, text=True)
 assert r.returncode == 0, r.stdout + r.stderr
 
 
+def philox_normal(key, words):
+    """RandomStream::normalPair(...).first and .second for the counter words (w0, w1)."""
+    # numpy's Philox steps its counter before each block: start one below.
+    w = Philox(key=key, counter=((words[0] | (words[1] << 64)) - 1) % 2**256).random_raw(2)
+    u0, u1 = ((w >> np.uint64(11)) + np.uint64(1)).astype(float) * 2.0**-53
+    radius = np.sqrt(-2 * np.log(u0))
+    return radius * np.cos(2 * np.pi * u1), radius * np.sin(2 * np.pi * u1)
+
+
 def local_coefficients(f, point, realisation):
-    """Each block's (mu_s,i, mu_k,i) of a realisation from the file alone (docs/ensemble.md)."""
+    """Each block's (mu_s,i, mu_k,i) of a realisation from the file alone (docs/surface.md)."""
     scene = f["scene"].attrs
     q = 0 if scene["ensemble_common_streams"] == "true" else point
     key = [int(scene["ensemble_seed"]), (q << 32) | realisation]
@@ -37,18 +48,35 @@ def local_coefficients(f, point, realisation):
     mean_s, mean_k = f["properties/mu_s"][point], f["properties/mu_k"][point]
     n = len(mean_s)
     mus, muk = np.empty((n, n)), np.empty((n, n))
+    if scene["surface_kind"] == "blocks":  # one draw per block, redrawn until 0 < mu_k <= mu_s
+        for row in range(n):
+            for column in range(n):
+                for attempt in range(1000):
+                    zs, zk = philox_normal(key, (row * n + column, attempt))
+                    s = mean_s[column] * (1 + sigma_s * zs)
+                    k = mean_k[column] * (1 + sigma_k * zk)
+                    if 0 < k <= s:
+                        break
+                mus[row, column], muk[row, column] = s, k
+        return mus, muk
+    # Cells of side l_c from the plate's corner, cell (i, j) along (x, y) holding the normals of the
+    # counters (i << 32 | j, purpose << 32), purpose 0 for mu_s and 1 for mu_k; a block takes the
+    # cells' area-weighted mean, then mu_s = max(mean_s (1 + sigma_s z_s), 0.01 mean_s) and
+    # mu_k = min(max(mean_k (1 + sigma_k z_k), 0.01 mean_k), mu_s).
+    assert scene["surface_kind"] == "cells", scene["surface_kind"]
+    cells_per_block = float(scene["plate_L"]) / n / float(scene["surface_length"])
+    edges = np.arange(n + 1) * cells_per_block  # block edges in units of l_c
+    cells = int(np.ceil(edges[-1] - 1e-9))
+    z = np.array([[[philox_normal(key, ((i << 32) | j, purpose << 32))[0] for purpose in (0, 1)]
+                   for j in range(cells)] for i in range(cells)])  # z[i, j, purpose]
+    overlap = np.clip(np.minimum(edges[1:, None], np.arange(1, cells + 1)[None, :]) -
+                      np.maximum(edges[:-1, None], np.arange(cells)[None, :]), 0, None)  # overlap[block, cell]
+    area = cells_per_block ** 2
     for row in range(n):
         for column in range(n):
-            for attempt in range(1000):
-                counter = (row * n + column) | (attempt << 64)  # words (i, attempt, 0, 0)
-                # numpy's Philox steps its counter before each block: start one below.
-                w = Philox(key=key, counter=(counter - 1) % 2**256).random_raw(2)
-                u0, u1 = ((w >> np.uint64(11)) + np.uint64(1)).astype(float) * 2.0**-53
-                radius = np.sqrt(-2 * np.log(u0))
-                s = mean_s[column] * (1 + sigma_s * radius * np.cos(2 * np.pi * u1))
-                k = mean_k[column] * (1 + sigma_k * radius * np.sin(2 * np.pi * u1))
-                if 0 < k <= s:
-                    break
+            zs, zk = np.einsum("i,j,ijp->p", overlap[column], overlap[row], z) / area
+            s = max(mean_s[column] * (1 + sigma_s * zs), 0.01 * mean_s[column])
+            k = min(max(mean_k[column] * (1 + sigma_k * zk), 0.01 * mean_k[column]), s)
             mus[row, column], muk[row, column] = s, k
     return mus, muk
 

@@ -300,7 +300,7 @@ with gradfric.open(path("fit.csv")) as ds:
     expect_dims(ds, {"time": len(table)})
     assert same(ds["time"], table["t"]) and same(ds["mu_sbm_mean"], table["mu_sbm_mean"]) and ds["time"].attrs["units"] == "s"
     assert np.isclose(float(ds["lz"]), float(options["-sbm_lz"]), rtol=1e-6) and ds["lz"].attrs["units"] == "m"
-    assert np.isclose(float(ds["sigma"]), float(options["-sbm_sigma_s"]), rtol=1e-5) and ds.attrs["status"] == "converged"
+    assert np.isclose(float(ds["sigma"]), float(options["-surface_sigma_s"]), rtol=1e-5) and ds.attrs["status"] == "converged"
     assert ds.attrs["sbm_N"] == "20" and ds.attrs["reference_kind"] == "gradfric-fem run"
 with gradfric.open(path("fit.opts")) as ds:
     assert ds.attrs["format"] == "gradfric-calibration-scene" and float(ds["reference_peak"]) > 0.5

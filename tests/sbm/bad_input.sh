@@ -47,8 +47,17 @@ expect -friction_v_c -friction_v_c -1e-4
 expect -sbm_friction_law -sbm_friction_law exponential
 expect -sbm_v_c -sbm_v_c 1e-4
 expect -plate_mu_k -plate_mu_s 0.5 -plate_mu_k 0.6
-expect -sbm_sigma_s -sbm_sigma_s -0.01
-expect -sbm_sigma_k -sbm_sigma_k -0.2
+expect -surface_sigma_s -surface_sigma_s -0.01
+expect -surface_sigma_k -surface_sigma_k -0.2
+expect "-surface_sigma_s = nan" -surface_sigma_s nan
+expect "-surface_length = 0: allowed l_c >= L/65536" -surface_length 0
+expect "-surface_length = -1e-05: allowed l_c >= L/65536" -surface_length -1e-5
+expect -surface_length -surface_length inf
+expect "-surface_length = 1e-4: allowed not with -surface_kind blocks" -surface_kind blocks -surface_length 1e-4
+expect -surface_kind -surface_kind fractal
+# The dispersion moved from the lattice to the surface: refused with the new spelling.
+expect "use -surface_sigma_s = 0.03" -sbm_sigma_s 0.03
+expect "use -surface_sigma_k = 0.03" -sbm_sigma_k 0.03
 expect -grading_profile -grading_profile parabolic
 expect -grading_property -grading_property hardness
 expect -ensemble_property -grading_profile linear -ensemble_property E,stiffness

@@ -17,7 +17,7 @@ inline Parameters paperParameters(int blocksPerSide, double sigma, const Grading
                                   double dampingFactor = 0.1) {
   Parameters p;
   p.blocksPerSide = blocksPerSide;
-  p.sigmaStatic = p.sigmaKinetic = sigma;
+  p.surface.sigmaStatic = p.surface.sigmaKinetic = sigma;
   p.damping = dampingFactor * naturalFrequency(p);
   p.timeStep = dtSafety > 0 ? dtSafety * stableTimeStep(p, grading) : defaultTimeStep(p, grading);
   return p;

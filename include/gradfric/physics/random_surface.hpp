@@ -37,7 +37,10 @@
 
 namespace gradfric {
 
-enum class SurfaceKind { Cells, Gaussian };
+// Blocks: the spring-block lattice's independent draw per block, l_c = the block (the model
+// before this surface existed; kept so that its files can be extended). Not a field: RandomSurface
+// refuses it, the lattice draws it itself (sbm/lattice.hpp).
+enum class SurfaceKind { Cells, Gaussian, Blocks };
 
 struct SurfaceSettings {
   double sigmaStatic = 0.0;        // relative dispersion of mu_s, >= 0
@@ -46,7 +49,11 @@ struct SurfaceSettings {
   double correlationLength = 0.0;  // l_c [m] > 0; the paper's block is defaultCorrelationLength(L)
   SurfaceKind kind = SurfaceKind::Cells;
   std::uint64_t seed = 0;
+  bool dispersed() const { return sigmaStatic > 0.0 || sigmaKinetic > 0.0 || sigmaModulus > 0.0; }
 };
+
+// -surface_kind's names, in SurfaceKind's order.
+const char* surfaceKindName(SurfaceKind kind);
 
 // L / 120: the paper's block, so the paper's scenes (N_b = 120) keep their statistics.
 inline double defaultCorrelationLength(double plateLength) { return plateLength / 120.0; }
@@ -67,8 +74,11 @@ struct SurfaceRectangle {
 class RandomSurface {
 public:
   // Throws std::invalid_argument on bad settings: non-finite or non-positive l_c or plate length,
-  // negative or non-finite dispersions, more than 2^16 correlation lengths per plate side.
-  RandomSurface(const SurfaceSettings& settings, double plateLength, std::uint32_t realisation);
+  // negative or non-finite dispersions, more than 2^16 correlation lengths per plate side, the
+  // Blocks kind. `stream` is 0 for the one surface of a campaign; a sweep point's index gives each
+  // point its own surface (-ensemble_common_streams false).
+  RandomSurface(const SurfaceSettings& settings, double plateLength, std::uint32_t realisation,
+                std::uint32_t stream = 0);
 
   // The deviations averaged exactly over one rectangle (std::invalid_argument if it is empty,
   // non-finite or beyond 2^20 l_c of the corner).
@@ -92,6 +102,7 @@ private:
   SurfaceSettings settings_;
   double plateLength_;
   std::uint32_t realisation_;
+  std::uint32_t stream_;
 };
 
 // Coefficients of a region from its deviations (a property of the field, never a redraw):

@@ -54,13 +54,17 @@ LatticeStiffness buildStiffness(const Parameters& parameters, const Grading& gra
 // mu_s,i F_n and kinetic strength mu_k,i F_n [N], stored as one value, one per column or one per
 // block (SiteLayout), whichever the scene needs.
 struct FrictionField : FrictionSites {
-  int redrawnBlocks = 0;  // blocks whose draw was repeated to keep 0 < mu_k,i <= mu_s,i
+  // Blocks whose draw was repeated (-surface_kind blocks) or whose field value was clipped
+  // (cells, gaussian: random_surface.hpp) to keep 0 < mu_k,i <= mu_s,i.
+  int redrawnBlocks = 0;
   double staticAt(int row, int column) const { return staticStrength[slot(row, column)]; }
   double kineticAt(int row, int column) const { return kineticStrength[slot(row, column)]; }
 };
 
-// Means from the grading; Gaussian dispersion (relative sigma) drawn from the stream, redrawn
-// until 0 < mu_k,i <= mu_s,i. With sigma = 0 nothing is drawn.
+// Means from the grading, times the random surface (Parameters::surface) averaged over each
+// block: realisation key.realisation of seed key.seed, the sweep point's own surface if
+// key.sweepIndex > 0. The blocks kind draws per block instead, redrawn until 0 < mu_k,i <= mu_s,i.
+// With sigma = 0 nothing is drawn.
 FrictionField buildFriction(const Parameters& parameters, const Grading& grading, StreamKey key);
 
 // The property fields of a grading before random dispersion, one value per block column (every

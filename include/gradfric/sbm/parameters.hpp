@@ -7,6 +7,7 @@
 #include "gradfric/physics/grading.hpp"
 #include "gradfric/physics/plate.hpp"
 #include "gradfric/physics/pressure_response.hpp"
+#include "gradfric/physics/random_surface.hpp"
 
 #include <string>
 #include <vector>
@@ -20,9 +21,10 @@ struct Parameters {
   // 1/3 (axial k, diagonal k/2); plate.thickness H is not used: the mass layer is l_z.
   Plate plate;
   double layerThickness = 5.7e-5;  // l_z [m]: block mass rho l_z l^2, slider K_s = G l^2 / l_z
-  // Relative dispersion of the local friction around the plate's (graded) means
-  double sigmaStatic = 0.028;   // relative standard deviation of mu_s,i
-  double sigmaKinetic = 0.028;  // relative standard deviation of mu_k,i
+  // The random surface (-surface_ options, shared with the FEM): the local friction's dispersion
+  // around the plate's (graded) means, 2.8 % by default, over cells of side l_c; a block takes the
+  // field averaged over its area. correlationLength 0: l_c = L/120 (surfaceOf()).
+  SurfaceSettings surface = {0.028, 0.028, 0.0, 0.0, SurfaceKind::Cells, 0};
   // The friction law of every block (-friction_law, -friction_v_c): Coulomb, the paper's SBM, or
   // the paper's Eq. 1, the FEM's law (physics/friction_laws.hpp).
   FrictionLawSettings frictionLaw;
@@ -49,6 +51,12 @@ struct Parameters {
   PressureResponse pressureResponse;
 
   double spacing() const { return plate.length / blocksPerSide; }
+  // The surface with its length resolved (L/120 where unset).
+  SurfaceSettings surfaceOf() const {
+    SurfaceSettings s = surface;
+    if (s.correlationLength == 0.0) s.correlationLength = defaultCorrelationLength(plate.length);
+    return s;
+  }
   double blockMass() const { return plate.density * layerThickness * spacing() * spacing(); }
   double axialStiffness(double modulus) const { return 0.75 * modulus * layerThickness; }  // K_int
   double shearModulus(double modulus) const { return plate.shearModulus(modulus); }
