@@ -182,6 +182,26 @@ BENCHMARK(BM_RealisationExponential)->Unit(benchmark::kSecond)->Iterations(2);
 BENCHMARK(BM_RealisationState)->Unit(benchmark::kSecond)->Iterations(2);
 BENCHMARK(BM_RealisationStateReference)->Unit(benchmark::kSecond)->Iterations(2);
 
+// The random surface's share of a realisation: the lattice's friction built from each kind of
+// surface (the per-block draws of the model before it, the cells, the Gaussian field), against the
+// full realisation of the same plate above (BM_RealisationFullSkipIdle); the ratios are printed.
+template <SurfaceKind Kind>
+void BM_BuildFriction(benchmark::State& state) {
+  Grading grading;
+  grading.profile = GradingProfile::Linear;
+  grading.property = GradedProperty::Friction;
+  grading.delta = 0.2;
+  grading.bands = 10;
+  Parameters p;
+  p.blocksPerSide = blocksPerSide;
+  p.surface.kind = Kind;
+  std::uint32_t realisation = 0;
+  for (auto _ : state) benchmark::DoNotOptimize(buildFriction(p, grading, StreamKey{1, 0, realisation++}));
+}
+BENCHMARK(BM_BuildFriction<SurfaceKind::Blocks>)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_BuildFriction<SurfaceKind::Cells>)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_BuildFriction<SurfaceKind::Gaussian>)->Unit(benchmark::kMillisecond);
+
 // Keeps each benchmark's ns per block-step to print the ratio at the end.
 class RatioReporter : public benchmark::ConsoleReporter {
 public:
@@ -220,6 +240,14 @@ int main(int argc, char** argv) {
   };
   ratio("mu_s-only", "BM_RealisationMuStaticStepped/iterations:2", "BM_RealisationMuStaticSkipIdle/iterations:2");
   ratio("full", "BM_RealisationFullStepped/iterations:2", "BM_RealisationFullSkipIdle/iterations:2");
+  const auto full = t.find("BM_RealisationFullSkipIdle/iterations:2");
+  if (full != t.end() && full->second > 0)
+    for (const char* kind : {"Blocks", "Cells", "Gaussian"}) {
+      const auto it = t.find(std::string("BM_BuildFriction<SurfaceKind::") + kind + ">");
+      if (it != t.end())
+        std::printf("N_b = %d: friction from the %s surface %.2f ms, %.2f %% of a full realisation (%.2f s)\n",
+                    blocksPerSide, kind, 1e3 * it->second, 100 * it->second / full->second, full->second);
+    }
   const double active = reporter.nsPerBlockStep["BM_FastLatticeVerletSkipIdle"];
   if (verlet > 0 && active > 0)
     std::printf("N_b = %d: velocity Verlet, sliding plate: full sweep %.1f ns, active set %.1f ns per block per step\n",

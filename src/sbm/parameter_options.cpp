@@ -62,19 +62,20 @@ Parameters readParameters(MPI_Comm comm, RunParameters* record, const Plate& pla
   const double stable = stableTimeStep(p, grading);
   p.timeStepSafety = o.real("dt_safety", p.timeStepSafety, "1", "default dt: at most this fraction of the integrator's stability limit");
   o.requireRange("dt_safety", p.timeStepSafety, 1e-6, 1.0, "0 < dt_safety <= 1");
-  p.timeStepSlip = o.real("dt_slip", p.timeStepSlip, "1", "default dt: at most this fraction of the slip time sqrt(m/K_s)");
+  p.timeStepSlip = o.real("dt_slip", p.timeStepSlip, "1", "default dt: at most this fraction of the slip time sqrt(m/K_s), times min(1, l/l_c) on blocks finer than the surface's cells");
   o.requirePositive("dt_slip", p.timeStepSlip, "");
   p.automaticTimeStep = defaultTimeStep(p, grading);
   const bool check = o.flag("dt_check", true, "refuse a dt above the stability limit (false: only to test the instability monitor)");
   const std::string scheme = p.integrator == Integrator::VelocityVerlet ? "velocity Verlet" : "RK4";
   const TimeStepPolicy policy{o.fullName("dt"), "the " + scheme + " stability limit of this lattice", stable, check};
   const auto requested = o.realIfSet("dt", "s", "time step (refused above the integrator's stability limit)",
-                                     "min(dt_safety x stable step, dt_slip x slip time)");
+                                     "min(dt_safety x stable step, dt_slip x slip time x min(1, l/l_c))");
   p.timeStep = policy.choose(requested, defaultTimeStep(p, grading));
   if (!requested)
     o.recordDerived("dt", p.timeStep, "s",
                     "time step = min(dt_safety x " + scheme + " stability limit " + formatReal(stable) +
-                        " s, dt_slip x slip time " + formatReal(slipTime(p, grading)) + " s)");
+                        " s, dt_slip x slip time " + formatReal(slipTime(p, grading)) + " s x min(1, l/l_c) " +
+                        formatReal(surfaceStepFactor(p)) + ")");
   return p;
 }
 

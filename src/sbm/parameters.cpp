@@ -34,8 +34,14 @@ double slipTime(const Parameters& p, const Grading& grading) {
   return std::sqrt(p.blockMass() / stiffest);
 }
 
+double surfaceStepFactor(const Parameters& p) {
+  if (p.surface.kind == SurfaceKind::Blocks) return 1.0;  // l_c is the block: nothing finer to resolve
+  return std::min(1.0, p.spacing() / p.surfaceOf().correlationLength);
+}
+
 double defaultTimeStep(const Parameters& p, const Grading& grading) {
-  return std::min(p.timeStepSafety * stableTimeStep(p, grading), p.timeStepSlip * slipTime(p, grading));
+  return std::min(p.timeStepSafety * stableTimeStep(p, grading),
+                  p.timeStepSlip * slipTime(p, grading) * surfaceStepFactor(p));
 }
 
 }  // namespace gradfric::sbm

@@ -88,7 +88,14 @@ double stableTimeStep(const Parameters& parameters, const Grading& grading);
 // dt, docs/accuracy.md). It does not depend on N_b.
 double slipTime(const Parameters& parameters, const Grading& grading);
 
-// The shipped default step: min(timeStepSafety x stable step, timeStepSlip x slip time).
+// Blocks finer than the surface's cells resolve it more finely: the slip-time bound of the step
+// shrinks with the block, min(1, l / l_c), so a lattice ladder at a fixed surface refines space
+// and time together and the verification's bar covers both (docs/verification.md). 1 for the
+// blocks kind, where l_c is the block.
+double surfaceStepFactor(const Parameters& parameters);
+
+// The shipped default step: min(timeStepSafety x stable step, timeStepSlip x slip time x
+// surfaceStepFactor).
 double defaultTimeStep(const Parameters& parameters, const Grading& grading);
 
 }  // namespace gradfric::sbm
