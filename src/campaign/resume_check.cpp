@@ -11,6 +11,7 @@
 #include "gradfric/io/hdf5_datasets.hpp"
 #include "gradfric/physics/observables.hpp"
 
+#include <algorithm>
 #include <csignal>
 #include <cstdio>
 #include <cstring>
@@ -22,12 +23,38 @@ namespace gradfric::campaign {
 
 namespace {
 
+// Options renamed or added since a file was written: the file's attribute `before` reads as
+// `now`, with its value or, for an option added since, the value `valueBefore` its scene had. A
+// spring-block file from before the random surface is the scene -surface_kind blocks.
+struct RenamedOption {
+  const char* before;
+  const char* now;
+  const char* valueBefore;  // for an added option: the file's scene had this
+};
+const RenamedOption kRenamedOptions[] = {{"sbm_sigma_s", "surface_sigma_s", nullptr},
+                                         {"sbm_sigma_k", "surface_sigma_k", nullptr},
+                                         {"sbm_sigma_s", "surface_kind", "blocks"}};
+
 // "" if the scene and layout match; else the differences, "; "-separated. An extension may
 // change the options it names and grow the sweep and the count.
 std::string sceneDifferences(const ResumeTarget& scene, const io::ResultsFile& file, const Extension* extension) {
   std::string differences;
   auto add = [&](const std::string& text) { differences += (differences.empty() ? "" : "; ") + text; };
-  const std::vector<io::Attribute> stored = file.sceneAttributes();
+  auto has = [](const std::vector<io::Attribute>& list, const std::string& name) {
+    return std::any_of(list.begin(), list.end(), [&](const io::Attribute& a) { return a.name == name; });
+  };
+  // An older file's spelling, read as today's.
+  const std::vector<io::Attribute> written = file.sceneAttributes();
+  std::vector<io::Attribute> stored;
+  for (const io::Attribute& a : written) {
+    bool renamed = false;
+    for (const RenamedOption& r : kRenamedOptions)
+      if (a.name == r.before && !has(written, r.now) && !has(scene.sceneAttributes, r.before)) {
+        renamed = true;
+        stored.push_back({r.now, r.valueBefore ? r.valueBefore : a.value, a.unit, a.origin});
+      }
+    if (!renamed) stored.push_back(a);
+  }
   auto findStored = [&](const std::string& name) -> const io::Attribute* {
     for (const auto& a : stored)
       if (a.name == name) return &a;

@@ -131,6 +131,29 @@ extend)
     -output "$work/t.h5" >"$work/t.log"
   grep -Eq "[1-9][0-9]* task\(s\) kept" "$work/t.log" || fail "the target extension kept nothing"
   "$python" "$src/tests/ensemble/check_target.py" "$work/t.h5" 0.003 absolute || fail "tighter target not met"
+  # A file from before the random surface (-sbm_sigma_s, -sbm_sigma_k in /scene, no -surface_kind)
+  # extends with its model and streams, -surface_kind blocks -ensemble_common_streams false, into
+  # the file of the scene asked for from the start; without them it is refused.
+  before=(-surface_kind blocks -ensemble_common_streams false -ensemble_delta 0,0.3)
+  run 2 "${scene[@]}" "${before[@]}" -ensemble_realisations 2 -output "$work/old.h5" >/dev/null
+  run 2 "${scene[@]}" "${before[@]}" -ensemble_realisations 3 -output "$work/old_full.h5" >/dev/null
+  "$python" - "$work/old.h5" <<'PYTHON'
+import sys
+import h5py
+with h5py.File(sys.argv[1], "r+") as f:  # the /scene of a file written before the surface
+    for group in (f["scene"], f["scene/origin"], f["scene/units"]):
+        for now, before in (("surface_sigma_s", "sbm_sigma_s"), ("surface_sigma_k", "sbm_sigma_k")):
+            group.attrs[before] = group.attrs[now]
+            del group.attrs[now]
+        del group.attrs["surface_kind"]
+PYTHON
+  status=0
+  run 2 "${scene[@]}" -ensemble_delta 0,0.3 -ensemble_realisations 3 -ensemble_extend -output "$work/old.h5" \
+    >"$work/bad.log" 2>&1 || status=$?
+  [ "$status" -eq 2 ] && grep -q "surface_kind: file blocks, now cells" "$work/bad.log" ||
+    { cat "$work/bad.log" >&2; fail "an old file extended with the random surface was not refused"; }
+  run 2 "${scene[@]}" "${before[@]}" -ensemble_realisations 3 -ensemble_extend -output "$work/old.h5" >/dev/null
+  same "$work/old_full.h5" "$work/old.h5"
   ;;
 *)
   fail "unknown check $check"
