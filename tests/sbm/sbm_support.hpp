@@ -18,6 +18,7 @@ inline Parameters paperParameters(int blocksPerSide, double sigma, const Grading
   Parameters p;
   p.blocksPerSide = blocksPerSide;
   p.surface.sigmaStatic = p.surface.sigmaKinetic = sigma;
+  p.surface.correlationLength = p.spacing();  // one cell per block: the tests' small plates keep their disorder
   p.damping = dampingFactor * naturalFrequency(p);
   p.timeStep = dtSafety > 0 ? dtSafety * stableTimeStep(p, grading) : defaultTimeStep(p, grading);
   return p;
