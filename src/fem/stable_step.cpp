@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 
 namespace gradfric::fem {
@@ -17,13 +18,22 @@ namespace gradfric::fem {
 namespace {
 
 // The largest local static coefficient of the contact: mu_s times the largest friction factor of
-// the grading or field over the bottom faces.
+// the grading or field over the bottom faces, times the random surface's largest node factor when
+// it is dispersed (the product of the two largest bounds every node's).
 double largestStaticFriction(const FemParameters& q, const Grading& grading) {
   const MeshAxis x = meshAxisX(q), y = meshAxisY(q);
   const PropertySampler sampler = meshSampler(grading, x, y);
   double factor = 0;
   for (int j = 0; j < q.ny; ++j)
     for (int i = 0; i < q.nx; ++i) factor = std::max(factor, sampler.muStatic(x.unitCentre(i), y.unitCentre(j)));
+  if (q.surface.sigmaStatic > 0) {
+    const RandomSurface surface = femSurface(q.surface, q.plate.length);
+    double largestZ = -std::numeric_limits<double>::infinity();
+    for (int j = 0; j <= q.ny; ++j)  // a row at a time: the memory of one row of nodes
+      for (const SurfaceDeviations& z : tributarySurface(surface, x, y, 0, q.nx, j, j))
+        largestZ = std::max(largestZ, z.zStatic);
+    factor *= std::max(1.0 + q.surface.sigmaStatic * largestZ, kSurfaceFloorFraction);
+  }
   return q.plate.muStatic * factor;
 }
 
