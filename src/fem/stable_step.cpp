@@ -29,8 +29,11 @@ double largestStaticFriction(const FemParameters& q, const Grading& grading) {
   if (q.surface.sigmaStatic > 0) {
     const RandomSurface surface = femSurface(q.surface, q.plate.length);
     double largestZ = -std::numeric_limits<double>::infinity();
-    for (int j = 0; j <= q.ny; ++j)  // a row at a time: the memory of one row of nodes
-      for (const SurfaceDeviations& z : tributarySurface(surface, x, y, 0, q.nx, j, j))
+    // Bands of rows of about 2^20 nodes: a bounded memory, and few queries (each one draws the
+    // Gaussian field's noise over its band).
+    const int rows = std::max(1, (1 << 20) / (q.nx + 1));
+    for (int j = 0; j <= q.ny; j += rows)
+      for (const SurfaceDeviations& z : tributarySurface(surface, x, y, 0, q.nx, j, std::min(j + rows - 1, q.ny)))
         largestZ = std::max(largestZ, z.zStatic);
     factor *= std::max(1.0 + q.surface.sigmaStatic * largestZ, kSurfaceFloorFraction);
   }

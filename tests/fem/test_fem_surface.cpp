@@ -5,6 +5,7 @@
 #include "gradfric/core/gather.hpp"
 #include "gradfric/fem/mesh_sites.hpp"
 #include "gradfric/fem/plate_model.hpp"
+#include "gradfric/fem/stable_step.hpp"
 #include "gradfric/sbm/lattice.hpp"
 #include "fem_test_util.hpp"
 
@@ -137,4 +138,23 @@ TEST(FemSurface, NoDispersionLeavesTheMeans) {
   PlateModel b(PETSC_COMM_WORLD, other, test::linear(GradedProperty::Friction, 0.2));
   EXPECT_TRUE(bottomCoefficients(a) == bottomCoefficients(b));
   EXPECT_FALSE(q.surface.dispersed());
+}
+
+TEST(FemSurface, TheLargestStepAccountsForTheLargestNodeMuS) {
+  // Friction's coupling sqrt(1 + mu^2) with the surface's largest node mu_s: a shorter largest
+  // step than the flat plate's, the same stable step (the springs alone).
+  const FemParameters flat = test::coarse(8, 8, 2);
+  FemParameters rough = flat;
+  rough.surface = dispersed(SurfaceKind::Cells, flat.plate.length / 6);
+  rough.surface.sigmaStatic = 0.3;
+  EXPECT_EQ(stableTimeStep(rough, Grading{}), stableTimeStep(flat, Grading{}));
+  EXPECT_LT(largestTimeStep(rough, Grading{}), largestTimeStep(flat, Grading{}));
+  // A bound: a flat plate whose mu_s is the largest node's allows at least the rough plate's step.
+  PlateModel model(PETSC_COMM_WORLD, rough, test::noGrading());
+  double largest = 0;
+  for (const auto& [ij, mu] : bottomCoefficients(model)) largest = std::max(largest, mu.first);
+  ASSERT_GT(largest, flat.plate.muStatic);
+  Plate atLargest = flat.plate;
+  atLargest.muStatic = largest;
+  EXPECT_GE(largestTimeStep(test::coarse(8, 8, 2, atLargest), Grading{}), largestTimeStep(rough, Grading{}));
 }
