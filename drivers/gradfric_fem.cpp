@@ -53,7 +53,6 @@ struct FemRun {
   FemParameters params;
   bool compare = false;  // also one SBM realisation on the same grading
   bool dryRun = false;   // print the plan and the estimate, build nothing
-  std::uint64_t seed = 1;
   sbm::Parameters sbmParams;
   sbm::Request sbmRequest;
   SweepOptions sweep;  // -ensemble_ lists, -fem_sweep_*: a sweep of runs instead of one run
@@ -82,13 +81,19 @@ std::optional<FemRun> readFemRun(MPI_Comm comm, RunParameters* record) {
   OptionReader driverOptions(comm, "fem_", "gradfric-fem: both models", record);
   run.compare = driverOptions.flag(
       "compare_sbm", false, "also run one spring-block realisation (-sbm_ options) on the same grading, side by side");
-  const PetscInt seed = driverOptions.integer("compare_seed", 1, 0, PETSC_MAX_INT, "1", "random stream of that SBM realisation");
-  driverOptions.requireAtLeast("compare_seed", seed, 0);
+  refuseRenamedOption("-fem_compare_seed", "-fem_seed",
+                      "the compared spring-block realisation samples the FEM's random surface, of the FEM's seed");
   run.dryRun = driverOptions.flag("dry_run", false,
                                   "print the mesh size, memory, steps and estimated wall time, then stop (nothing built)");
-  run.seed = static_cast<std::uint64_t>(seed);
   if (run.compare || helpRequested()) {
+    // Each model keeps its own default dispersion (the spring blocks 2.8 %, the FEM none) on the
+    // one surface of -fem_seed; the results file holds the FEM's run, so the record keeps the
+    // FEM's reading of the -surface_ options.
+    std::vector<ResolvedOption> surface;
+    for (const ResolvedOption& o : record->all())
+      if (o.name.rfind("-surface_", 0) == 0) surface.push_back(o);
     run.sbmParams = sbm::readParameters(comm, record, plate, run.grading);
+    for (const ResolvedOption& o : surface) record->add(o);
     run.sbmRequest = sbm::readRequest(comm, record, run.sbmParams);
   }
   // The results file, named as in every driver (-resume with the sweep's options).
@@ -104,7 +109,7 @@ std::optional<FemRun> readFemRun(MPI_Comm comm, RunParameters* record) {
   campaign::refuseOverriddenBaseOptions(*record);
   // Fields against the mesh, -fem_ts_ options, misspellings, the run length and the stable step.
   if (run.compare)
-    checkFemScene(comm, scene, record, {"sbm_", "surface_", "ensemble_"});
+    checkFemScene(comm, scene, record, {"sbm_", "ensemble_"});
   else
     checkFemScene(comm, scene, record, {"ensemble_"});
   return run;
@@ -147,6 +152,8 @@ void printPlan(MPI_Comm comm, const FemRun& run, const PlateModel& model, RunPar
     PetscPrintf(comm, "  layer %s: %s\n", layer->name(), layer->describe().c_str());
   if (run.grading.fields)
     for (const auto& line : describeFields(*run.grading.fields)) PetscPrintf(comm, "  %s\n", line.c_str());
+  if (params.surface.dispersed())
+    PetscPrintf(comm, "  %s\n", describeSurface(params.surface, model.mesh().hx()).c_str());
 }
 
 // The mu_k window used and its steadiness (docs/accuracy_fem.md, "The defaults and why").
@@ -246,7 +253,7 @@ void compareWithSpringBlocks(MPI_Comm comm, const FemRun& run, const FemRunResul
   std::string failure;  // on rank 0 only: agreed before the next collective call
   if (rank == 0) {
     try {
-      const sbm::Result s = sbm::simulate(run.sbmParams, run.grading, run.sbmRequest, StreamKey{run.seed, 0, 0});
+      const sbm::Result s = sbm::simulate(run.sbmParams, run.grading, run.sbmRequest, StreamKey{run.params.surface.seed, 0, 0});
       sbmValues[0] = s.friction.muStatic;
       sbmValues[1] = s.friction.muKinetic;
       sbmValues[2] = s.friction.peakTime;
@@ -263,10 +270,13 @@ void compareWithSpringBlocks(MPI_Comm comm, const FemRun& run, const FemRunResul
               "  mu_s        %12.6f   %12.6f\n"
               "  mu_k        %12.6f   %12.6f\n"
               "  peak time   %12.4e   %12.4e s   (FEM Eq. 2: %.4e s, SBM loading time: %.4e s)\n"
-              "  wall        %12.2f   %12.2f s\n",
+              "  wall        %12.2f   %12.2f s\n"
+              "  sigma_s     %12.4g   %12.4g     (the random surface of seed %llu, realisation 0; l_c %.4g m)\n",
               describe(run.grading).c_str(), r.friction.muStatic, sbmValues[0], r.friction.muKinetic, sbmValues[1],
               r.friction.peakTime, sbmValues[2],
-              run.params.eq2PeakTime(), run.sbmParams.loadingTime(), wall, sbmValues[3]);
+              run.params.eq2PeakTime(), run.sbmParams.loadingTime(), wall, sbmValues[3], run.params.surface.sigmaStatic,
+              run.sbmParams.surface.sigmaStatic, static_cast<unsigned long long>(run.params.surface.seed),
+              run.params.surface.correlationLength);
 }
 
 // The checkpoints of a single run, or why it has none.

@@ -351,7 +351,7 @@ namespace {
 const std::pair<const char*, const char*> kReaders[] = {
     {"fem_", "gradfric-fem (and gradfric-study -study_model fem, gradfric-design -design_verify_fem)"},
     {"sbm_", "gradfric, gradfric-design, gradfric-calibrate, gradfric-study (and gradfric-fem -fem_compare_sbm)"},
-    {"surface_", "gradfric, gradfric-design, gradfric-calibrate, gradfric-study (and gradfric-fem -fem_compare_sbm)"},
+    {"surface_", "gradfric, gradfric-fem, gradfric-design, gradfric-calibrate, gradfric-study"},
     {"ensemble_", "gradfric and gradfric-fem (sweeps)"},
     {"design_", "gradfric-design"},
     {"calibrate_", "gradfric-calibrate"},

@@ -15,7 +15,7 @@
 namespace gradfric::fem {
 
 ContactBoundary::ContactBoundary(const PlateProperties& properties, MPI_Comm comm, const ContactSettings& settings)
-    : comm_(comm), settings_(settings), stiffness_(settings.stiffness) {
+    : comm_(comm), settings_(settings), stiffness_(settings.stiffness), randomSurface_(properties.surface().dispersed()) {
   FrictionSites sites;
   sites.layout = SiteLayout::PerSite;
   for (const BottomNode& b : properties.bottomNodes()) {
@@ -173,9 +173,10 @@ void ContactBoundary::writeProperties(PropertySink& sink) const {
       muK.push_back(sites.kineticAt(slot));
     }
   });
-  const char* how = "of the bottom node: the area-weighted mean of its faces' factors";
-  sink.nodeField("mu_s", "1", std::string("local static coefficient ") + how, blocks, muS);
-  sink.nodeField("mu_k", "1", std::string("local kinetic coefficient ") + how, blocks, muK);
+  const std::string how = std::string("of the bottom node: the area-weighted mean of its faces' factors") +
+                          (randomSurface_ ? ", times the random surface averaged over its tributary rectangle" : "");
+  sink.nodeField("mu_s", "1", "local static coefficient " + how, blocks, muS);
+  sink.nodeField("mu_k", "1", "local kinetic coefficient " + how, blocks, muK);
 }
 
 double ContactBoundary::largestStaticCoefficient() const {

@@ -40,6 +40,26 @@ PropertySampler meshSampler(const Grading& grading, const FemParameters& q) {
 
 SiteGrid meshSiteGrid(const FemParameters& q) { return siteGrid(meshAxisX(q), meshAxisY(q)); }
 
+std::vector<double> tributaryEdges(const MeshAxis& axis) {
+  const std::vector<double>& n = axis.nodes;
+  std::vector<double> edges = {n.front()};
+  for (std::size_t k = 1; k < n.size(); ++k) edges.push_back(0.5 * (n[k - 1] + n[k]));
+  edges.push_back(n.back());
+  return edges;
+}
+
+std::vector<SurfaceDeviations> tributarySurface(const RandomSurface& surface, const MeshAxis& x, const MeshAxis& y,
+                                                int i0, int i1, int j0, int j1) {
+  const std::vector<double> xAll = tributaryEdges(x), yAll = tributaryEdges(y);
+  const std::vector<double> xEdges(xAll.begin() + i0, xAll.begin() + i1 + 2);
+  const std::vector<double> yEdges(yAll.begin() + j0, yAll.begin() + j1 + 2);
+  return surface.averageOverLattice(xEdges, yEdges);
+}
+
+RandomSurface femSurface(const SurfaceSettings& settings, double plateLength) {
+  return RandomSurface(settings, plateLength, 0, 0);
+}
+
 void checkMeshFields(const Grading& grading, const FemParameters& q) {
   if (!grading.fields) return;
   checkPlateFields(grading, q.plate, meshSampler(grading, q), meshSiteGrid(q));

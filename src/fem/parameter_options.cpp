@@ -5,6 +5,7 @@
 #include "gradfric/physics/friction_law_options.hpp"
 #include "gradfric/physics/friction_laws.hpp"
 #include "gradfric/physics/friction_options.hpp"
+#include "gradfric/physics/surface_options.hpp"
 
 #include <string>
 
@@ -65,6 +66,12 @@ FemParameters readFemParameters(MPI_Comm comm, RunParameters* record, const Plat
                "step 1: static (the pressed equilibrium solved by CG, then sliding from rest; penalty contact, "
                "else dynamic) or dynamic (pressure ramp and hold in time)") == "static";
   q.frictionLaw = readFrictionLaw(comm, record, q.frictionLaw, true, plate.thickness);  // shared with the SBM
+  // The SBM's surface with the paper's 3D default, no dispersion (then nothing is drawn); no
+  // blocks kind: a node has no block of its own.
+  q.surface = readSurface(comm, record, plate, SurfaceDefaults{0.0, false});
+  const PetscInt seed = o.integer("seed", 1, 0, PETSC_MAX_INT, "1", "realisation 0 of the random surface of this seed");
+  o.requireAtLeast("seed", seed, 0);
+  q.surface.seed = static_cast<std::uint64_t>(seed);
   q.slipLength = o.real("slip_length", q.slipLength, "m",
                         "with -friction_law exponential or coulomb: slip length of the friction memory, a node's "
                         "strength follows the law's value over this slip (-fem_slip_evolution); 0: the law alone");

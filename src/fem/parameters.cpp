@@ -1,10 +1,12 @@
 #include "gradfric/fem/parameters.hpp"
 
+#include "gradfric/core/format.hpp"
 #include "gradfric/physics/friction_laws.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <sstream>
 
 namespace gradfric::fem {
 
@@ -28,6 +30,16 @@ std::string describeNormalFilter(const FemParameters& q) {
   return text;
 }
 }  // namespace
+
+std::string describeSurface(const SurfaceSettings& s, double elementSize) {
+  if (!s.dispersed()) return "no dispersion: no random surface";
+  std::ostringstream d;
+  d << "random surface: sigma_s = " << s.sigmaStatic << ", sigma_k = " << s.sigmaKinetic << ", "
+    << surfaceKindName(s.kind) << " of l_c = " << formatReal(s.correlationLength) << " m ("
+    << formatReal(s.correlationLength / elementSize) << " elements), each node its tributary area's average "
+    << "(seed " << s.seed << ", realisation 0)";
+  return d.str();
+}
 
 std::string describeContact(const FemParameters& q) {
   if (!q.contact) return "none (free bottom face)";
@@ -107,6 +119,8 @@ FemParameters::FemParameters(const Plate& given) : plate(given) {
   kn = defaultPenaltyStiffness(plate);
   kt = kn;
   edge.band = plate.length / kGradingBands;
+  surface.correlationLength = defaultCorrelationLength(plate.length);
+  surface.seed = 1;
   const double cs = shearWaveSpeed();
   settleDamping = cs / H;
   peakDamping = cs / H;

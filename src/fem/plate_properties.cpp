@@ -2,10 +2,14 @@
 
 #include "gradfric/fem/mesh_sites.hpp"
 
+#include <algorithm>
+
 namespace gradfric::fem {
 
 // One sampler for every property; the rules are the ones each layer used before (bit for bit).
-PlateProperties::PlateProperties(const PlateMesh& mesh, const Plate& plate, const Grading& grading) : plate_(plate) {
+PlateProperties::PlateProperties(const PlateMesh& mesh, const Plate& plate, const Grading& grading,
+                                 const SurfaceSettings& surface)
+    : plate_(plate), surface_(surface) {
   const double length = mesh.size().length;
   const PropertySampler sampler = meshSampler(grading, mesh);
   cellModulus_.resize(mesh.localCells());
@@ -22,11 +26,35 @@ PlateProperties::PlateProperties(const PlateMesh& mesh, const Plate& plate, cons
       ownKinetic ? mesh.sumOverFaces(FaceSet::Bottom,
                                      [&](double x, double y) { return sampler.muKinetic(x / length, y / length); })
                  : graded;
+  // The random surface on top: one lattice of tributary rectangles over this rank's span of
+  // bottom nodes (a node's bits depend on its rectangle alone). Without dispersion nothing is drawn.
+  const MeshAxis& axisX = mesh.axisX();
+  const MeshAxis& axisY = mesh.axisY();
+  int i0 = axisX.cells(), i1 = 0, j0 = axisY.cells(), j1 = 0;
+  for (const OwnedVertex& v : mesh.ownedVertices())
+    if (area[v.block] > 0) {
+      const int i = axisX.nearestNode(v.x), j = axisY.nearestNode(v.y);
+      i0 = std::min(i0, i);
+      i1 = std::max(i1, i);
+      j0 = std::min(j0, j);
+      j1 = std::max(j1, j);
+    }
+  const bool dispersed = surface.dispersed() && i0 <= i1;
+  const std::vector<SurfaceDeviations> z =
+      dispersed ? tributarySurface(femSurface(surface, length), axisX, axisY, i0, i1, j0, j1)
+                : std::vector<SurfaceDeviations>{};
   for (const OwnedVertex& v : mesh.ownedVertices()) {
     if (!(area[v.block] > 0)) continue;
     const double factor = graded[v.block] / area[v.block];  // area-weighted face factor
-    bottom_.push_back({v.block, v.x, v.y, area[v.block], plate.muStatic * factor,
-                       plate.muKinetic * (gradedKinetic[v.block] / area[v.block])});
+    double muStatic = plate.muStatic * factor;
+    double muKinetic = plate.muKinetic * (gradedKinetic[v.block] / area[v.block]);
+    if (dispersed) {
+      const std::size_t node = std::size_t(axisY.nearestNode(v.y) - j0) * (i1 - i0 + 1) + (axisX.nearestNode(v.x) - i0);
+      const SurfaceCoefficients c = surfaceCoefficients(muStatic, muKinetic, 1.0, surface, z[node]);
+      muStatic = c.muStatic;
+      muKinetic = c.muKinetic;
+    }
+    bottom_.push_back({v.block, v.x, v.y, area[v.block], muStatic, muKinetic});
   }
   // The top faces: a static pressure field (-field_p_*) weighs each face's share.
   const bool shaped = grading.fields && grading.fields->pressure;

@@ -25,7 +25,7 @@ void checkFemScene(MPI_Comm comm, const FemScene& scene, RunParameters* record,
   checkMeshFields(scene.grading, scene.params);
   readPlateTSOptions(comm, scene.params);
   readPlateMeshOptions();  // -dm_view, -dm_plex_check_all: applied to the mesh once built  // the -fem_ts_ options: checked here, used by the run's TS
-  std::vector<std::string> prefixes = {"plate_", "friction_", "fem_", "grading_", "field_"};
+  std::vector<std::string> prefixes = {"plate_", "surface_", "friction_", "fem_", "grading_", "field_"};
   prefixes.insert(prefixes.end(), extraPrefixes.begin(), extraPrefixes.end());
   checkUnusedOptions(comm, prefixes);
   requireFemRunLength(scene.params, scene.grading, record);  // refuses a dt above the stable step, an endless run

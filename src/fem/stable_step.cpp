@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 
 namespace gradfric::fem {
@@ -17,13 +18,25 @@ namespace gradfric::fem {
 namespace {
 
 // The largest local static coefficient of the contact: mu_s times the largest friction factor of
-// the grading or field over the bottom faces.
+// the grading or field over the bottom faces, times the random surface's largest node factor when
+// it is dispersed (the product of the two largest bounds every node's).
 double largestStaticFriction(const FemParameters& q, const Grading& grading) {
   const MeshAxis x = meshAxisX(q), y = meshAxisY(q);
   const PropertySampler sampler = meshSampler(grading, x, y);
   double factor = 0;
   for (int j = 0; j < q.ny; ++j)
     for (int i = 0; i < q.nx; ++i) factor = std::max(factor, sampler.muStatic(x.unitCentre(i), y.unitCentre(j)));
+  if (q.surface.sigmaStatic > 0) {
+    const RandomSurface surface = femSurface(q.surface, q.plate.length);
+    double largestZ = -std::numeric_limits<double>::infinity();
+    // Bands of rows of about 2^20 nodes: a bounded memory, and few queries (each one draws the
+    // Gaussian field's noise over its band).
+    const int rows = std::max(1, (1 << 20) / (q.nx + 1));
+    for (int j = 0; j <= q.ny; j += rows)
+      for (const SurfaceDeviations& z : tributarySurface(surface, x, y, 0, q.nx, j, std::min(j + rows - 1, q.ny)))
+        largestZ = std::max(largestZ, z.zStatic);
+    factor *= std::max(1.0 + q.surface.sigmaStatic * largestZ, kSurfaceFloorFraction);
+  }
   return q.plate.muStatic * factor;
 }
 

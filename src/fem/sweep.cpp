@@ -117,6 +117,8 @@ campaign::SweepPoint basePoint(const FemParameters& params, const Grading& gradi
   base.property = toString(grading.property);
   base.profile = toString(grading.profile);
   base.theta = params.plate.slidingAngle;
+  base.sigma = params.surface.sigmaStatic;  // the study's scene key names the run's surface
+  base.sigmaKinetic = params.surface.sigmaKinetic;
   return base;
 }
 
@@ -181,7 +183,7 @@ FemSweep buildFemSweep(MPI_Comm comm, const FemParameters& params, const Grading
   s.options = options;
   if (!options.lists.sigma.empty())
     throw InputError("-ensemble_sigma", "(a list)",
-                     "no sigma sweep in the FEM: its local coefficients are not dispersed (sweep sigma with gradfric)");
+                     "no sigma sweep in the FEM: one surface per FEM sweep, -surface_sigma_s and -surface_sigma_k (sweep sigma with gradfric)");
   campaign::checkSweepLists(options.lists, grading);
   int size = 1;
   GF_CALL_MPI(MPI_Comm_size(comm, &size));

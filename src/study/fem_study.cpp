@@ -98,7 +98,7 @@ std::optional<Study> readStudy(MPI_Comm comm, RunParameters* record) {
   o.requireRange("penalty_dt_safety", s.penaltySafety, 1e-6, 1.0, "0 < safety <= 1");
   o.requireRange("mesh_dt_safety", s.meshSafety, 1e-6, 1.0, "0 < safety <= 1");
   if (s.base.dt) throw InputError("-fem_dt", "(set)", "unset: the study sets the step as a fraction of the stable step");
-  checkUnusedOptions(comm, {"study_", "plate_", "fem_", "grading_", "output"});
+  checkUnusedOptions(comm, {"study_", "plate_", "surface_", "fem_", "grading_", "output"});
   for (auto* list : {&s.safeties, &s.safetiesOther, &s.factors, &s.fineSafeties}) std::sort(list->begin(), list->end());
   s.base.verbose = false;
   return s;

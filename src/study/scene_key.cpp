@@ -19,7 +19,7 @@ const char* const kSteering[] = {"-output", "-output_overwrite", "-resume", "-pl
                                  "-friction_observables",  // a mu_s-only run stops at the confirmed peak: the same mu_s
                                  "-ensemble_",             // sweep lists (their values come with the point), size, seed
                                  "-fem_sweep_", "-fem_verbose", "-fem_dry_run", "-fem_partitioner", "-fem_monitor_every",
-                                 "-fem_monitor_factor", "-fem_snapshot_times", "-fem_compare_sbm", "-fem_compare_seed",
+                                 "-fem_monitor_factor", "-fem_snapshot_times", "-fem_compare_sbm",
                                  "-sbm_snapshot_times", "-checkpoint_"};
 
 bool steers(const std::string& name) {

@@ -250,7 +250,8 @@ fem)
   run 2 "did you mean -plate_L" "$F" -plat_L 0.1
   run 2 -grading_profile "$F" -grading_delta 0.2
   run 2 -grading_bands "$F" -grading_profile linear -grading_delta 0.1 -grading_bands 0
-  run 2 -fem_compare_seed "$F" -fem_compare_seed -1
+  run 2 -fem_seed "$F" -fem_seed -1
+  run 2 "-fem_compare_seed = 1: .*; use -fem_seed = 1" "$F" -fem_compare_seed 1
   run 2 "-fem_nxx" "$F" -fem_nxx 3
   run 2 "did you mean -output\\?" "$F" -outptu x.h5
   run 2 "-output_overwrit \\(did you mean -output_overwrite" "$F" -output_overwrit

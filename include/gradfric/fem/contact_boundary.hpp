@@ -107,6 +107,7 @@ private:
   PenaltyStiffness stiffness_;
   std::vector<Node> nodes_;
   ContactLaw law_;  // one site per node: its local coefficients (area-weighted over its faces' bands)
+  bool randomSurface_ = false;  // the coefficients carry the random surface (for the stored fields' description)
   double lastStepSlip_ = 0;  // this rank's largest slip of a node in the last committed step
   std::vector<std::pair<double, double>> slipRecord_;  // (time, running maximum) where it grew
   // Adds the evaluation's force on node n (at displacement xb) to its block's right-hand side fb and

@@ -26,6 +26,7 @@ struct InterfaceResolution {
   double largestStepSlip = 0;
   double largestStaticCoefficient = 0;  // over the contact nodes: above 1 the sliding interface flutters
   bool filtered = false;                 // the Prakash-Clifton filter is on: it bounds that flutter
+  bool randomSurface = false;            // the nodes' mu_s carry a dispersed random surface
   ProcessZone zone;
   std::vector<std::string> violations;  // empty: resolved
 

@@ -8,6 +8,7 @@
 #include "gradfric/physics/friction_history.hpp"
 #include "gradfric/physics/friction_laws_settings.hpp"
 #include "gradfric/physics/plate.hpp"
+#include "gradfric/physics/random_surface.hpp"
 
 #include <limits>
 #include <optional>
@@ -72,6 +73,11 @@ struct FemContact {
   // The Prakash-Clifton filter of the pressure the strength multiplies (normal_stress_filter.hpp;
   // -fem_pc_length, -fem_pc_speed): off by default (docs/accuracy_fem.md, "Local mu_s above 1").
   NormalStressFilter normalFilter;
+  // The random surface (-surface_ options, shared with the spring-block model) on the local mu_s,
+  // mu_k: each bottom node takes realisation 0 of seed -fem_seed averaged over its tributary
+  // rectangle (plate_properties.hpp). No dispersion by default: the paper's deterministic 3D model.
+  // The constructor sets l_c = L/120 and the seed 1.
+  SurfaceSettings surface;
 };
 
 // Damping: bulk viscosity, mass- and stiffness-proportional, in each phase.
@@ -175,5 +181,7 @@ double defaultSlideTime(double loadingTime, const FrictionMeasurement& m);
 std::string describeContact(const FemParameters& q);
 std::string describeDamping(const FemParameters& q);
 std::string describeFrictionState(const FemParameters& q);  // the law's state (D_c, or -fem_slip_length) in words
+// The random surface in one line, l_c also in elements of this size.
+std::string describeSurface(const SurfaceSettings& s, double elementSize);
 
 }  // namespace gradfric::fem

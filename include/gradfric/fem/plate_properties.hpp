@@ -4,13 +4,15 @@
 // file stores the values the physics used:
 //  - per local cell: E at the cell centre (the elastic operator, the bulk viscosity's wave speed);
 //  - per owned bottom node: its area and mu_s, mu_k, the area-weighted mean of the factors at the
-//    centres of its bottom faces (the contact's friction sites);
+//    centres of its bottom faces (the contact's friction sites), times the random surface averaged
+//    over the node's tributary rectangle when it is dispersed (mesh_sites.hpp, surfaceCoefficients);
 //  - per owned top node: its area and the load p pushes on, the area times the pressure field's
 //    factor at its faces' centres (area-weighted the same way).
 // PropertySink is how layers hand these to the output (Layer::writeProperties).
 #include "gradfric/fem/plate_mesh.hpp"
 #include "gradfric/physics/grading.hpp"
 #include "gradfric/physics/plate.hpp"
+#include "gradfric/physics/random_surface.hpp"
 
 #include <string>
 #include <vector>
@@ -32,15 +34,18 @@ struct TopNode {
 
 class PlateProperties {
 public:
-  PlateProperties(const PlateMesh& mesh, const Plate& plate, const Grading& grading);
+  // surface: dispersed or not, its seed and l_c set (FemParameters::surface).
+  PlateProperties(const PlateMesh& mesh, const Plate& plate, const Grading& grading, const SurfaceSettings& surface);
 
   const Plate& plate() const { return plate_; }
+  const SurfaceSettings& surface() const { return surface_; }
   const std::vector<double>& cellModulus() const { return cellModulus_; }  // [Pa] per local cell
   const std::vector<BottomNode>& bottomNodes() const { return bottom_; }
   const std::vector<TopNode>& topNodes() const { return top_; }
 
 private:
   Plate plate_;
+  SurfaceSettings surface_;
   std::vector<double> cellModulus_;
   std::vector<BottomNode> bottom_;
   std::vector<TopNode> top_;
