@@ -23,10 +23,12 @@ work = tempfile.mkdtemp(prefix="gradfric_describe_")
 out = os.path.join(work, "sweep.h5")
 scene_file = os.path.join(src, "input", "sbm_fig4_reduced.opts")
 # -surface_length: a value the file stores exactly (a derived L/120 is stored to 10 digits); 1.25
-# cells per block, so blocks straddle cells.
+# cells per block, so blocks straddle cells. Independent streams: each point its own surface, and
+# the relative variations' propagated error.
 r = subprocess.run(["mpiexec", "--oversubscribe", "-n", "2", driver, "-options_file", scene_file, "-sbm_N", "16",
                     "-ensemble_delta", "-0.3,0,0.3", "-ensemble_realisations", "2", "-friction_observables", "first_slip",
-                    "-ensemble_friction_fields", "true", "-surface_length", "2.5e-4", "-output", out], env=env, capture_output=True, text=True)
+                    "-ensemble_friction_fields", "true", "-surface_length", "2.5e-4",
+                    "-ensemble_common_streams", "false", "-output", out], env=env, capture_output=True, text=True)
 assert r.returncode == 0, r.stdout + r.stderr
 
 
