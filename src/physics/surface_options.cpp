@@ -43,10 +43,14 @@ SurfaceSettings readSurface(MPI_Comm comm, RunParameters* record, const Plate& p
   // At most 2^16 cells per side (the surface's counter); any l_c above that is a field.
   if (auto length = o.realIfSet("length", "m", "correlation length l_c of the disorder", "L/120, the paper's block")) {
     s.correlationLength = *length;
-    const double smallest = plate.length / 65536.0;
+    // Every realisation draws the whole plate's cells (Gaussian: noise nodes at l_c/4): at most
+    // 2^26 draws per property, some seconds, instead of a run that never starts.
+    const double perSide = s.kind == SurfaceKind::Gaussian ? 2048.0 : 8192.0;
+    const double smallest = plate.length / perSide;
     if (!(s.correlationLength >= smallest))
       throw InputError(o.fullName("length"), formatReal(s.correlationLength),
-                       "l_c >= L/65536 = " + formatReal(smallest) + " m for this plate [m]");
+                       "l_c >= L/" + formatReal(perSide) + " = " + formatReal(smallest) + " m for this plate and -surface_kind " +
+                           kind + " (at most 2^26 random draws per realisation) [m]");
   } else {
     s.correlationLength = defaultCorrelationLength(plate.length);
     o.recordDerived("length", s.correlationLength, "m", "correlation length l_c = L/120, the paper's block");

@@ -136,9 +136,10 @@ extend)
   # A file from before the random surface (-sbm_sigma_s, -sbm_sigma_k in /scene, no -surface_kind)
   # extends with its model and streams, -surface_kind blocks -ensemble_common_streams false, into
   # the file of the scene asked for from the start; without them it is refused.
-  before=(-surface_kind blocks -ensemble_common_streams false -ensemble_delta 0,0.3)
-  run 2 "${scene[@]}" "${before[@]}" -ensemble_realisations 2 -output "$work/old.h5" >/dev/null
-  run 2 "${scene[@]}" "${before[@]}" -ensemble_realisations 3 -output "$work/old_full.h5" >/dev/null
+  before=(-options_file "$src/input/sbm_fig4_reduced.opts" -sbm_N 16 -ensemble_monitor false
+    -surface_kind blocks -ensemble_common_streams false -ensemble_delta 0,0.3)
+  run 2 "${before[@]}" -ensemble_realisations 2 -output "$work/old.h5" >/dev/null
+  run 2 "${before[@]}" -ensemble_realisations 3 -output "$work/old_full.h5" >/dev/null
   "$python" - "$work/old.h5" <<'PYTHON'
 import sys
 import h5py
@@ -150,11 +151,11 @@ with h5py.File(sys.argv[1], "r+") as f:  # the /scene of a file written before t
         del group.attrs["surface_kind"]
 PYTHON
   status=0
-  run 2 "${scene[@]}" -ensemble_delta 0,0.3 -ensemble_realisations 3 -ensemble_extend -output "$work/old.h5" \
+  run 2 "${before[@]:0:6}" -ensemble_delta 0,0.3 -ensemble_realisations 3 -ensemble_extend -output "$work/old.h5" \
     >"$work/bad.log" 2>&1 || status=$?
   [ "$status" -eq 2 ] && grep -q "surface_kind: file blocks, now cells" "$work/bad.log" ||
     { cat "$work/bad.log" >&2; fail "an old file extended with the random surface was not refused"; }
-  run 2 "${scene[@]}" "${before[@]}" -ensemble_realisations 3 -ensemble_extend -output "$work/old.h5" >/dev/null
+  run 2 "${before[@]}" -ensemble_realisations 3 -ensemble_extend -output "$work/old.h5" >/dev/null
   same "$work/old_full.h5" "$work/old.h5"
   ;;
 *)

@@ -63,7 +63,7 @@ bad() {
   if grep -q 'Estimate:' bad.log || [ -e bad.h5 ]; then echo "$what: work done before the refusal"; fail=1; fi
 }
 bad "2 ranks" "invalid option -surface_sigma_k = 0.6: allowed 0 <= sigma_k <= 0.5" -surface_sigma_k 0.6
-bad "length 0" "invalid option -surface_length = 0: allowed l_c >= L/65536" -surface_length 0
+bad "length 0" "invalid option -surface_length = 0: allowed l_c >= L/8192" -surface_length 0
 bad "length nan" "invalid option -surface_length = nan" -surface_length nan
 bad "sigma_s < 0" "invalid option -surface_sigma_s = -0.1: allowed 0 <= sigma_s <= 0.5" -surface_sigma_s -0.1
 bad "blocks" "invalid option -surface_kind = blocks: allowed" -surface_kind blocks

@@ -50,8 +50,9 @@ expect -plate_mu_k -plate_mu_s 0.5 -plate_mu_k 0.6
 expect -surface_sigma_s -surface_sigma_s -0.01
 expect -surface_sigma_k -surface_sigma_k -0.2
 expect "-surface_sigma_s = nan" -surface_sigma_s nan
-expect "-surface_length = 0: allowed l_c >= L/65536" -surface_length 0
-expect "-surface_length = -1e-05: allowed l_c >= L/65536" -surface_length -1e-5
+expect "-surface_length = 0: allowed l_c >= L/8192" -surface_length 0
+expect "-surface_length = -1e-05: allowed l_c >= L/8192" -surface_length -1e-5
+expect "-surface_length = 1e-06: allowed l_c >= L/2048" -surface_kind gaussian -surface_length 1e-6
 expect -surface_length -surface_length inf
 expect "-surface_length = 1e-4: allowed not with -surface_kind blocks" -surface_kind blocks -surface_length 1e-4
 expect -surface_kind -surface_kind fractal

@@ -93,7 +93,9 @@ TEST(HardCases, LargeGradingAmplitudeBothModelsOfGrading) {
       for (double delta : {0.9, -0.9}) {
         HardCase c{std::string(toString(property)) + " " + toString(profile) + " Delta=" + std::to_string(delta),
                    sbm::testing::grading(profile, property, delta)};
-        checkHardCase(c, 0.01, 0.02);
+        // 2 %: at |Delta| = 0.9 the order of slip events scatters mu_s with the step; measured on
+        // E linear +0.9 at 1, 1/2, 1/4, 1/8 of the step: 0.6591, 0.6695, 0.6657, 0.6607.
+        checkHardCase(c, 0.02, 0.02);
       }
 }
 
