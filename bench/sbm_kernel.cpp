@@ -132,13 +132,19 @@ BENCHMARK(BM_FastLatticeVerletStateSkipIdle)->Unit(benchmark::kMillisecond);
 // new one): mu_s only (stops at the confirmed peak), and full (through the mu_k window).
 // The laws' realisations: the same plate under the exponential and the state law (Verlet, idle
 // work skipped, through the mu_k window), on the kernel asked for.
-template <bool Kinetic, bool SkipIdle>
-void benchmarkRealisation(benchmark::State& state, const char* law = "coulomb", Kernel kernel = Kernel::Fast) {
+// The default scene's graded plate: friction, linear, Delta = 0.2, 10 bands.
+Grading defaultSceneGrading() {
   Grading grading;
   grading.profile = GradingProfile::Linear;
   grading.property = GradedProperty::Friction;
   grading.delta = 0.2;
   grading.bands = 10;
+  return grading;
+}
+
+template <bool Kinetic, bool SkipIdle>
+void benchmarkRealisation(benchmark::State& state, const char* law = "coulomb", Kernel kernel = Kernel::Fast) {
+  const Grading grading = defaultSceneGrading();
   Parameters p;
   p.blocksPerSide = blocksPerSide;
   p.damping = 0.1 * std::sqrt(p.axialStiffness(p.plate.youngsModulus) / p.blockMass());
@@ -187,11 +193,7 @@ BENCHMARK(BM_RealisationStateReference)->Unit(benchmark::kSecond)->Iterations(2)
 // full realisation of the same plate above (BM_RealisationFullSkipIdle); the ratios are printed.
 template <SurfaceKind Kind>
 void BM_BuildFriction(benchmark::State& state) {
-  Grading grading;
-  grading.profile = GradingProfile::Linear;
-  grading.property = GradedProperty::Friction;
-  grading.delta = 0.2;
-  grading.bands = 10;
+  const Grading grading = defaultSceneGrading();
   Parameters p;
   p.blocksPerSide = blocksPerSide;
   p.surface.kind = Kind;
