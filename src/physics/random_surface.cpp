@@ -279,11 +279,14 @@ SurfaceCoefficients surfaceCoefficients(double meanStatic, double meanKinetic, d
   requireFinite(meanKinetic, meanKinetic > 0.0 && meanKinetic <= meanStatic,
                 "the mean kinetic coefficient must be positive, finite and at most the static one");
   requireFinite(meanModulus, meanModulus > 0.0, "the mean modulus must be positive and finite");
+  const double linearStatic = meanStatic * (1.0 + s.sigmaStatic * z.zStatic);
+  const double linearKinetic = meanKinetic * (1.0 + s.sigmaKinetic * z.zKinetic);
+  const double linearModulus = meanModulus * (1.0 + s.sigmaModulus * z.zModulus);
   SurfaceCoefficients c;
-  c.muStatic = std::max(meanStatic * (1.0 + s.sigmaStatic * z.zStatic), kSurfaceFloorFraction * meanStatic);
-  c.muKinetic = std::min(std::max(meanKinetic * (1.0 + s.sigmaKinetic * z.zKinetic), kSurfaceFloorFraction * meanKinetic),
-                         c.muStatic);
-  c.youngsModulus = std::max(meanModulus * (1.0 + s.sigmaModulus * z.zModulus), kSurfaceFloorFraction * meanModulus);
+  c.muStatic = std::max(linearStatic, kSurfaceFloorFraction * meanStatic);
+  c.muKinetic = std::min(std::max(linearKinetic, kSurfaceFloorFraction * meanKinetic), c.muStatic);
+  c.youngsModulus = std::max(linearModulus, kSurfaceFloorFraction * meanModulus);
+  c.clipped = c.muStatic != linearStatic || c.muKinetic != linearKinetic || c.youngsModulus != linearModulus;
   return c;
 }
 

@@ -186,9 +186,7 @@ FrictionField buildFriction(const Parameters& p, const Grading& grading, StreamK
       const int i = r * nb + c;
       const Mean m = meanAt(r, c);
       const SurfaceCoefficients k = surfaceCoefficients(m.muS, m.muK, 1.0, surface, z[i]);
-      const double freeStatic = m.muS * (1.0 + surface.sigmaStatic * z[i].zStatic);
-      const double freeKinetic = m.muK * (1.0 + surface.sigmaKinetic * z[i].zKinetic);
-      if (k.muStatic != freeStatic || k.muKinetic != freeKinetic) ++f.redrawnBlocks;  // clipped by the field's bounds
+      if (k.clipped) ++f.redrawnBlocks;
       f.staticStrength[i] = k.muStatic * m.normal;
       f.kineticStrength[i] = k.muKinetic * m.normal;
     }

@@ -282,12 +282,17 @@ TEST(RandomSurface, CoefficientsKeepKineticBelowStaticAndPositive) {
       EXPECT_LE(c.muKinetic, c.muStatic);
       EXPECT_GE(c.muStatic, kSurfaceFloorFraction * 1.0);
       EXPECT_GE(c.youngsModulus, kSurfaceFloorFraction * 1e7);
+      // Reported as clipped exactly when a bound replaced the linear value.
+      const bool floorOrCap = 1.0 + 3.0 * zs < kSurfaceFloorFraction || 1.0 + 3.0 * zk < kSurfaceFloorFraction ||
+                              0.6 * (1.0 + 3.0 * zk) > c.muStatic;
+      EXPECT_EQ(c.clipped, floorOrCap) << zs << " " << zk;
     }
   // Away from the floor and the cap the rule is the linear map.
   const auto linear = surfaceCoefficients(1.0, 0.6, 1e7, s, {0.1, -0.05, 0.2});
   EXPECT_DOUBLE_EQ(linear.muStatic, 1.3);
   EXPECT_DOUBLE_EQ(linear.muKinetic, 0.6 * 0.85);
   EXPECT_DOUBLE_EQ(linear.youngsModulus, 1.6e7);
+  EXPECT_FALSE(linear.clipped);
   // Zero dispersion: the means, whatever the deviations.
   const SurfaceSettings none = settings(SurfaceKind::Gaussian);
   SurfaceSettings zero = none;

@@ -115,6 +115,7 @@ private:
 constexpr double kSurfaceFloorFraction = 0.01;
 struct SurfaceCoefficients {
   double muStatic, muKinetic, youngsModulus;
+  bool clipped = false;  // a bound (the floor, or mu_k <= mu_s) replaced the linear value
 };
 SurfaceCoefficients surfaceCoefficients(double meanStatic, double meanKinetic, double meanModulus,
                                         const SurfaceSettings& settings, const SurfaceDeviations& z);
