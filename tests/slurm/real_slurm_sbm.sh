@@ -34,11 +34,11 @@ real_slurm_work=$work
 t0=$SECONDS
 real_slurm_start "$source" "$cluster"
 
-# The default scene reduced: 2 points x 160 realisations of 60 x 60 blocks (about 45 s on 2
-# idle cores: longer than the signal's latest arrival, 30 s after the start, plus the grace
-# period, so that the first run is always stopped); the chain's scene 2 x 40 realisations of
-# 40 x 40 blocks (a few seconds).
-scene=(-sbm_N 60 -ensemble_realisations 160 -ensemble_history false -plot false)
+# The default scene reduced: 2 points x 320 realisations of 60 x 60 blocks (about 50 s on 2
+# idle cores, 0.15 s a task: longer than the signal's latest arrival, 30 s after the start, plus
+# the grace period, so that the first run is always stopped; 160 took 25 s and once finished
+# before the signal); the chain's scene 2 x 40 realisations of 40 x 40 blocks (a few seconds).
+scene=(-sbm_N 60 -ensemble_realisations 320 -ensemble_history false -plot false)
 chain_scene=(-sbm_N 40 -ensemble_realisations 40 -ensemble_history false -plot false)
 default=$source/input/default.opts
 submit() { sbatch --parsable "$@"; }
@@ -85,7 +85,7 @@ grep -q "MPI start-up: srun options '--mpi=pmix' (srun --mpi=list offers pmix)" 
   fail "reference: the MPI start-up was not chosen from srun --mpi=list"
 grep -q "time limit near" "$(log "$reference")" || fail "reference: the signal was not taken"
 ! grep -q "stopping the run" "$(log "$reference")" || fail "reference: stopped within its grace period"
-"$python" "$source/tests/slurm/check_complete.py" reference.h5 320 || fail "reference incomplete"
+"$python" "$source/tests/slurm/check_complete.py" reference.h5 640 || fail "reference incomplete"
 
 # requeue: stopped at the time limit, requeued, resumed, complete, the reference's numbers.
 expect_job "$requeue" COMPLETED 0:0
@@ -99,10 +99,10 @@ grep -qE "requeued job $requeue; it resumes from requeue.h5.partial|JOB $requeue
   fail "requeue: no requeue"
 grep -q "job $requeue (restart $restarts)" "$requeue_log" || fail "requeue: restart $restarts did not start"
 grep -q "^Resuming requeue.h5.partial" "$requeue_log" || fail "requeue: the restart did not resume"
-grep -qE "^[1-9][0-9]* of 320 tasks already finished" "$requeue_log" || fail "requeue: no finished task kept for the restart"
+grep -qE "^[1-9][0-9]* of 640 tasks already finished" "$requeue_log" || fail "requeue: no finished task kept for the restart"
 ! grep -q "CANCELLED AT .* DUE TO TIME LIMIT" "$requeue_log" || fail "requeue: killed by the time limit instead of requeued"
 [ ! -e requeue.h5.partial ] || fail "requeue: the partial file is left"
-"$python" "$source/tests/slurm/check_complete.py" requeue.h5 320 || fail "requeue incomplete"
+"$python" "$source/tests/slurm/check_complete.py" requeue.h5 640 || fail "requeue incomplete"
 "$python" "$source/tests/ensemble/compare_bytes.py" reference.h5 requeue.h5 || fail "requeue: numbers differ from the uninterrupted run"
 echo "requeue: $restarts restart(s), complete, identical to the uninterrupted run"
 
