@@ -7,6 +7,7 @@
 // option with its default and unit. See README.md and docs/ensemble.md.
 #include "gradfric/core/driver.hpp"
 #include "gradfric/core/options.hpp"
+#include "gradfric/campaign/campaign_file.hpp"
 #include "gradfric/campaign/interruption.hpp"
 #include "gradfric/ensemble/scene.hpp"
 #include "gradfric/ensemble/scene_file.hpp"
@@ -63,9 +64,9 @@ int main(int argc, char** argv) {
     if (!scene) return;                                           // -help
     printScene(comm, *scene, record);
     if (scene->dryRun) return printDryRun(comm, *scene);
-    const io::OutputPlan plan = planResultsFile(comm, *scene);    // before any work
+    const io::OutputPlan plan = campaign::planCampaignFile(comm, *scene);  // before any work
     std::optional<campaign::InterruptionNotice> notice(std::in_place, comm, plan.workPath(), scene->resume);  // Ctrl-C, SIGTERM
-    io::ResultsFile file = openResultsFile(comm, *scene, plan);
+    io::ResultsFile file = campaign::openCampaignFile(comm, *scene, plan, "tasks");
     notice->watch(file, plan.workPath(), "tasks", "-resume");
     const TaskTally tally = runTasks(comm, *scene, file, plan.workPath());
     const std::vector<campaign::PointStatistics> statistics = writeStatistics(file, *scene);

@@ -308,7 +308,7 @@ int stopAfterCheckpoint(MPI_Comm comm, const CheckpointPlan& plan, const FemRunR
 
 // -fem_dry_run: the run or sweep was checked; its bars (they depend on the settings only).
 int printSweepDryRun(MPI_Comm comm, const FemSweep& sweep) {
-  PetscPrintf(comm, "Dry run (-fem_dry_run): %d run(s) checked, nothing built, run or written\n", sweep.points());
+  PetscPrintf(comm, "Dry run (-fem_dry_run): %d run(s) checked, nothing built, run or written\n", sweep.tasks());
   PetscPrintf(comm, "Discretisation bars (docs/verification.md):\n%s",
               study::pointBarLines(sweep.bars[0], sweep.bars[1]).c_str());
   return 0;

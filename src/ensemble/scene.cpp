@@ -5,6 +5,7 @@
 
 #include "gradfric/core/input_error.hpp"
 #include "gradfric/core/petsc_call.hpp"
+#include "gradfric/campaign/realisation_options.hpp"
 #include "gradfric/campaign/statistics_columns.hpp"
 #include "gradfric/campaign/sweep_options.hpp"
 #include "gradfric/physics/field_options.hpp"
@@ -65,56 +66,12 @@ int historyCapacity(const sbm::Parameters& p, const sbm::Request& q) {
   return static_cast<int>(samples) + 2;
 }
 
-// -ensemble_target and its companions: a precision instead of a count.
-void checkTarget(const OptionReader& ens, double target, const std::string& type, PetscInt first, PetscInt cap,
-                 PetscInt realisations, Scene* s) {
-  if (!(target >= 0.0 && target < 1.0))
-    throw InputError(ens.fullName("target"), formatReal(target),
-                     "0 (no target) or a half-width 0 < target < 1 (a fraction for relative and variation)");
-  if (target == 0.0) {
-    for (const char* name : {"target_type", "target_min", "target_max"})
-      if (ens.wasSet(name))
-        throw InputError(ens.fullName(name), "(set)", "only together with -ensemble_target > 0");
-    return;
-  }
-  // A scene's count becomes the first batch of a target run (so a target can be added to it).
-  if (ens.wasSet("realisations")) {
-    if (ens.wasSet("target_min"))
-      throw InputError(ens.fullName("target_min"), std::to_string(first),
-                       "not together with -ensemble_realisations under -ensemble_target (both set the first batch)");
-    if (realisations < 2)
-      throw InputError(ens.fullName("realisations"), std::to_string(realisations),
-                       "at least 2 under -ensemble_target (it is the first batch)");
-    first = realisations;
-  }
-  if (first > cap)
-    throw InputError(ens.fullName(ens.wasSet("realisations") ? "realisations" : "target_min"), std::to_string(first),
-                     "at most -ensemble_target_max = " + std::to_string(cap) + " (the first batch)");
-  s->target.kind = targetKindOf(type);
-  s->target.halfWidth = target;
-  s->target.first = static_cast<int>(first);
-  s->target.cap = static_cast<int>(cap);
-}
-
 // -ensemble_* and -output*: read in the order -help lists them.
 SweepLists readEnsembleOptions(MPI_Comm comm, RunParameters* record, Scene* s) {
   OptionReader ens(comm, "ensemble_", "Ensemble of spring-block realisations", record);
-  const PetscInt realisations =
-      ens.integer("realisations", 1, 1, 10000000, "1", "realisations R per sweep point (new local friction draws each)");
-  const double target = ens.real(
-      "target", 0.0, "1",
-      "precision on demand: run batches until the 95 % CI half-width of every point's -ensemble_target_type "
-      "quantity is at most this (0: a fixed count, -ensemble_realisations)");
-  const std::string targetType = ens.choice(
-      "target_type", "absolute", {"absolute", "relative", "variation"},
-      "what -ensemble_target bounds: the CI of mean mu_s, that CI over |mean mu_s|, or the CI of the relative "
-      "variation (mu_s - mu_s,0) / mu_s,0 against the non-graded point");
-  const PetscInt targetMin =
-      ens.integer("target_min", 8, 2, 10000000, "1",
-                  "with -ensemble_target: realisations per point of the first batch (-ensemble_realisations if set)");
-  const PetscInt targetMax =
-      ens.integer("target_max", 200, 2, 10000000, "1",
-                  "with -ensemble_target: at most this many realisations per point");
+  const RealisationPlan plan = readRealisationOptions(ens, "a new random surface each");  // a count or a target
+  s->realisations = plan.realisations;
+  s->target = plan.target;
   const PetscInt seed = ens.integer("seed", 1, 0, PETSC_MAX_INT, "1", "scene seed: a task's random stream is (seed, point, realisation)");
   SweepLists lists = readSweepLists(ens);  // shared with the FEM sweep (the field sweep too)
   // The same surface at every point, measured: the CI of the default scene's variation at
@@ -149,12 +106,8 @@ SweepLists readEnsembleOptions(MPI_Comm comm, RunParameters* record, Scene* s) {
   s->overwrite = out.flag("output_overwrite", false, "replace an existing results file");
   s->resume = out.flag("resume", false, "continue an interrupted run of the same scene (skips finished tasks)");
   if (helpRequested()) return lists;
-  ens.requireAtLeast("realisations", realisations, 1);
   ens.requireAtLeast("seed", seed, 0);
   ens.requireAtLeast("abort_after", abortAfter, 0);
-  checkTarget(ens, target, targetType, targetMin, targetMax, realisations, s);
-  s->realisations = static_cast<int>(realisations);
-  if (s->target.active()) s->realisations = s->target.cap;  // the file holds up to the cap
   s->seed = static_cast<std::uint64_t>(seed);
   s->abortAfter = static_cast<long>(abortAfter);
   return lists;
@@ -293,14 +246,7 @@ std::optional<Scene> readScene(MPI_Comm comm, RunParameters* record) {
   for (int p = 0; p < s.points(); ++p)  // -pressure_response_select grading: a g for every point
     (void)selectedFor(s.parameters.pressureResponse, s.pointGrading(p), s.pointParameters(p).plate.slidingAngle,
                       "sweep point " + std::to_string(p));
-  if (static_cast<double>(s.points()) * s.realisations > 2e9)
-    throw InputError("too many tasks: sweep points x realisations > 2e9");
-  if (s.target.active() && s.target.kind == TargetKind::Variation)
-    for (int p = 0; p < s.points(); ++p)
-      if (s.sweep.reference[p] < 0)
-        throw InputError("-ensemble_target_type", "variation",
-                         "sweeps with a non-graded point for every graded one (point " + std::to_string(p) +
-                             " has none: add 0 to -ensemble_delta)");
+  checkRealisationPlan(s);
   for (int p = 0; p < s.points(); ++p) {  // the study's bar of each point (its scene and N_b)
     const study::SceneKey key = study::sceneKey(*record, {"-sbm_N"}, &s.sweep.points[p]);
     for (int k = 0; k < 2; ++k)

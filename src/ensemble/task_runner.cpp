@@ -1,6 +1,8 @@
 // Running the tasks of a scene (include/gradfric/ensemble/task_runner.hpp).
 #include "gradfric/ensemble/task_runner.hpp"
 
+#include "gradfric/campaign/campaign_batches.hpp"
+
 #include "gradfric/core/collective_error.hpp"
 #include "gradfric/core/random_stream.hpp"
 #include "gradfric/campaign/log_events.hpp"
@@ -133,55 +135,16 @@ void runBatch(MPI_Comm comm, const Scene& scene, io::ResultsFile& file, const st
   *secondsHere += count.seconds;
 }
 
-// A precision target: batches until every point meets it or reaches the cap. The plan is replayed
-// from the first batch on the file's values (a resumed run takes the same decisions), and each
-// batch runs only what the file does not hold yet.
-void runToTarget(MPI_Comm comm, const Scene& scene, io::ResultsFile& file, const std::string& resultsPath,
-                 TaskTally* tally, long* ranHere, double* secondsHere) {
-  const int points = scene.points();
-  std::vector<int> counts(points, std::min(scene.target.first, scene.target.cap));
-  long ranBefore = 0;
-  for (int batch = 0;;) {
-    const auto flags = file.finishedTasks();
-    const std::vector<unsigned char> done(flags.begin(), flags.end());
-    const std::vector<Task> tasks = pendingTasks(scene.sweep, scene.realisations, done, counts);
-    if (!tasks.empty()) {
-      long planned = 0;
-      for (int c : counts) planned += c;
-      std::string perPoint;
-      for (int c : counts) perPoint += " " + std::to_string(c);
-      GF_CALL(PetscPrintf(comm, "Target batch %d: %zu task(s) to run; realisations per point:%s\n", batch,
-                          tasks.size(), perPoint.c_str()));
-      runBatch(comm, scene, file, tasks, resultsPath, ranBefore, planned, tally, ranHere, secondsHere);
-      ranBefore += static_cast<long>(tasks.size());
-      ++batch;
-      continue;  // the same batch again: now complete, its statistics decide the next
-    }
-    const auto statistics =
-        statisticsOfCounts(counts, scene.realisations, scene.sweep.reference, observableTables(file),
-                           file.readPeakConfirmed(), done, scene.commonStreams);
-    const std::vector<int> next = planNextBatch(scene.target, counts, statistics, scene.sweep.reference);
-    if (next == counts) return;
-    counts = next;
-  }
-}
-
 }  // namespace
 
 TaskTally runTasks(MPI_Comm comm, const Scene& scene, io::ResultsFile& file, const std::string& resultsPath) {
-  const auto flags = file.finishedTasks();
   TaskTally tally;
   long ranHere = 0;
   double secondsHere = 0.0;
-  if (scene.target.active()) {
-    for (auto f : flags) tally.alreadyDone += f ? 1 : 0;
-    runToTarget(comm, scene, file, resultsPath, &tally, &ranHere, &secondsHere);
-  } else {
-    const std::vector<Task> tasks =
-        pendingTasks(scene.sweep, scene.realisations, std::vector<unsigned char>(flags.begin(), flags.end()));
-    tally.alreadyDone = static_cast<long>(scene.tasks()) - static_cast<long>(tasks.size());
-    runBatch(comm, scene, file, tasks, resultsPath, 0, scene.tasks(), &tally, &ranHere, &secondsHere);
-  }
+  for (auto flag : file.finishedTasks()) tally.alreadyDone += flag ? 1 : 0;  // the progress lines count them
+  runCampaignBatches(comm, scene, file, [&](const std::vector<Task>& tasks, long before, long planned) {
+    runBatch(comm, scene, file, tasks, resultsPath, before, planned, &tally, &ranHere, &secondsHere);
+  });
   GF_CALL_MPI(MPI_Allreduce(&ranHere, &tally.ran, 1, MPI_LONG, MPI_SUM, comm));
   GF_CALL_MPI(MPI_Allreduce(&secondsHere, &tally.taskSeconds, 1, MPI_DOUBLE, MPI_SUM, comm));
   return tally;

@@ -56,8 +56,8 @@ std::vector<SurfaceDeviations> tributarySurface(const RandomSurface& surface, co
   return surface.averageOverLattice(xEdges, yEdges);
 }
 
-RandomSurface femSurface(const SurfaceSettings& settings, double plateLength) {
-  return RandomSurface(settings, plateLength, 0, 0);
+RandomSurface femSurface(const SurfaceSettings& settings, double plateLength, std::uint32_t realisation) {
+  return RandomSurface(settings, plateLength, realisation, 0);
 }
 
 void checkMeshFields(const Grading& grading, const FemParameters& q) {

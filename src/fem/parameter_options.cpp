@@ -69,7 +69,7 @@ FemParameters readFemParameters(MPI_Comm comm, RunParameters* record, const Plat
   // The SBM's surface with the paper's 3D default, no dispersion (then nothing is drawn); no
   // blocks kind: a node has no block of its own.
   q.surface = readSurface(comm, record, plate, SurfaceDefaults{0.0, false});
-  const PetscInt seed = o.integer("seed", 1, 0, PETSC_MAX_INT, "1", "realisation 0 of the random surface of this seed");
+  const PetscInt seed = o.integer("seed", 1, 0, PETSC_MAX_INT, "1", "seed of the random surface: a single run takes its realisation 0, realisation r of an ensemble (-ensemble_realisations) its realisation r");
   o.requireAtLeast("seed", seed, 0);
   q.surface.seed = static_cast<std::uint64_t>(seed);
   q.slipLength = o.real("slip_length", q.slipLength, "m",

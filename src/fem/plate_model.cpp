@@ -29,7 +29,7 @@ PlateModel::PlateModel(MPI_Comm comm, const FemParameters& params, const Grading
       grading_(grading),
       mesh_(comm, meshSize(params_), params_.partitioner),
       mass_(mesh_, params_.plate.density),
-      properties_(mesh_, params_.plate, grading_, params_.surface),
+      properties_(mesh_, params_.plate, grading_, params_.surface, params_.surfaceRealisation),
       protocol_(params_) {
   const FemParameters& q = params_;
   elastic_ = add<ElasticOperator>(true, mesh_, properties_, elasticSettings(q));

@@ -8,7 +8,7 @@ namespace gradfric::fem {
 
 // One sampler for every property; the rules are the ones each layer used before (bit for bit).
 PlateProperties::PlateProperties(const PlateMesh& mesh, const Plate& plate, const Grading& grading,
-                                 const SurfaceSettings& surface)
+                                 const SurfaceSettings& surface, std::uint32_t realisation)
     : plate_(plate), surface_(surface) {
   const double length = mesh.size().length;
   const PropertySampler sampler = meshSampler(grading, mesh);
@@ -41,7 +41,7 @@ PlateProperties::PlateProperties(const PlateMesh& mesh, const Plate& plate, cons
     }
   const bool dispersed = surface.dispersed() && i0 <= i1;
   const std::vector<SurfaceDeviations> z =
-      dispersed ? tributarySurface(femSurface(surface, length), axisX, axisY, i0, i1, j0, j1)
+      dispersed ? tributarySurface(femSurface(surface, length, realisation), axisX, axisY, i0, i1, j0, j1)
                 : std::vector<SurfaceDeviations>{};
   for (const OwnedVertex& v : mesh.ownedVertices()) {
     if (!(area[v.block] > 0)) continue;

@@ -27,7 +27,7 @@ double largestStaticFriction(const FemParameters& q, const Grading& grading) {
   for (int j = 0; j < q.ny; ++j)
     for (int i = 0; i < q.nx; ++i) factor = std::max(factor, sampler.muStatic(x.unitCentre(i), y.unitCentre(j)));
   if (q.surface.sigmaStatic > 0) {
-    const RandomSurface surface = femSurface(q.surface, q.plate.length);
+    const RandomSurface surface = femSurface(q.surface, q.plate.length, q.surfaceRealisation);
     double largestZ = -std::numeric_limits<double>::infinity();
     // Bands of rows of about 2^20 nodes: a bounded memory, and few queries (each one draws the
     // Gaussian field's noise over its band).

@@ -33,7 +33,8 @@ const std::set<std::string> kRunControl = {"-output",
                                            "-fem_verbose",
                                            "-checkpoint_interval",
                                            "-checkpoint_file",
-                                           "-checkpoint_test_signal"};
+                                           "-checkpoint_test_signal",
+                                           "-ensemble_extend"};
 
 // mu(t) samples one run records at most: one at the start of sliding, then one per history
 // interval, at most one per step (an interval below the step samples every step), up to the
@@ -62,7 +63,7 @@ io::EnsembleLayout layoutOf(const FemSweep& s, const char* format, bool fieldMap
   io::EnsembleLayout layout;
   layout.format = format;
   layout.points = s.points();
-  layout.realisations = 1;  // the FEM has no random draw: one run per point
+  layout.realisations = s.realisations;  // one run per point without a random surface
   layout.historyCapacity = historyCapacity(s);
   // /properties: one column per bottom cell column along x, and per row along y with field maps.
   layout.cellX = cellCentres(meshAxisX(s.params), s.params.nx, s.params.plate.length);
@@ -76,11 +77,17 @@ io::EnsembleLayout layoutOf(const FemSweep& s, const char* format, bool fieldMap
     const auto columns = campaign::discretisationColumns(k ? "mu_k" : "mu_s", s.bars[k]);
     layout.statistics.insert(layout.statistics.end(), columns.begin(), columns.end());
   }
+  if (s.target.active()) {  // what the target asked and what each point reached
+    const auto target = campaign::targetColumns();
+    layout.statistics.insert(layout.statistics.end(), target.begin(), target.end());
+  }
   return layout;
 }
 
 io::SweepTable tableOf(const FemSweep& s) {
   io::SweepTable table = campaign::sweepColumns(s.sweep);  // the ensemble's /sweep columns
+  table.sigma.clear();  // but no sigma: the FEM sweep's one surface is in /scene (-surface_sigma_*)
+  table.sigmaKinetic.clear();
   for (const auto& q : s.sweep.points)
     if (q.fieldSwept) table.fieldValue.push_back(q.fieldValue);
   const Plate& plate = s.params.plate;
@@ -130,9 +137,14 @@ void findStudyBars(const RunParameters& record, FemSweep* s) {
 }
 
 // The options into /scene (they define the results) and /run (they steer this run only).
+// The target's options are not stored while it is off, nor -ensemble_extend unless set, so that
+// the files of runs without them stay as they were.
 void splitRecord(const RunParameters& record, FemSweep* s) {
-  for (const io::Attribute& a : io::optionAttributes(record))
+  for (const io::Attribute& a : io::optionAttributes(record)) {
+    if (a.name.rfind("ensemble_target", 0) == 0 && !s->target.active()) continue;
+    if (a.name == "ensemble_extend" && !s->extend) continue;
     (kRunControl.count("-" + a.name) ? s->runAttributes : s->sceneAttributes).push_back(a);
+  }
 }
 
 }  // namespace
@@ -145,8 +157,12 @@ study::StudyBar femStudyBar(const RunParameters& record, const campaign::SweepPo
 
 SweepOptions readSweepOptions(MPI_Comm comm, RunParameters* record) {
   SweepOptions s;
-  OptionReader ens(comm, "ensemble_", "FEM sweep: the ensemble's sweep lists, one FEM run per point", record);
+  OptionReader ens(comm, "ensemble_", "FEM sweep: the ensemble's sweep lists and realisations", record);
+  s.realisations = campaign::readRealisationOptions(ens, "realisation r: the surface r of -fem_seed, at every point");
   s.lists = campaign::readSweepLists(ens);
+  s.extend = ens.flag("extend", false,
+                      "extend the finished -output file: more realisations or appended sweep points (or a tighter "
+                      "target); what it holds is kept, not run again");
   OptionReader sw(comm, "fem_sweep_", "FEM sweep over groups of ranks (docs/fem.md)", record);
   const PetscInt ranks = sw.integer("ranks_per_run", 1, 1, 1000000, "1",
                                     "ranks of each run's sub-communicator; must divide the number of ranks");
@@ -162,7 +178,8 @@ SweepOptions readSweepOptions(MPI_Comm comm, RunParameters* record) {
   sw.requireAtLeast("abort_after", abortAfter, 0);
   s.ranksPerRun = static_cast<int>(ranks);
   s.abortAfter = static_cast<long>(abortAfter);
-  s.requested = campaign::anySwept(s.lists) || sw.wasSet("ranks_per_run") || sw.wasSet("abort_after");
+  s.requested = campaign::anySwept(s.lists) || sw.wasSet("ranks_per_run") || sw.wasSet("abort_after") ||
+                ens.wasSet("realisations") || ens.wasSet("target") || s.extend;
   return s;
 }
 
@@ -175,12 +192,33 @@ FemParameters FemSweep::pointParameters(int p) const {
   return q;
 }
 
+FemParameters FemSweep::taskParameters(const campaign::Task& task) const {
+  FemParameters q = pointParameters(task.point);
+  q.surfaceRealisation = static_cast<std::uint32_t>(task.realisation);
+  return q;
+}
+
 FemSweep buildFemSweep(MPI_Comm comm, const FemParameters& params, const Grading& grading,
                        const SweepOptions& options, bool compareSbm, const RunParameters& record) {
   FemSweep s;
   s.params = params;
   s.baseGrading = grading;
   s.options = options;
+  s.realisations = options.realisations.realisations;
+  s.target = options.realisations.target;
+  // Realisation r is the surface r at every point: paired relative variations, as the spring
+  // blocks' common streams. Without a surface every realisation would be the same run.
+  s.commonStreams = params.surface.dispersed();
+  if (!s.commonStreams && (s.realisations > 1 || s.target.active()))
+    throw InputError(s.target.active() ? "-ensemble_target" : "-ensemble_realisations",
+                     s.target.active() ? formatReal(s.target.halfWidth) : std::to_string(s.realisations),
+                     s.target.active() ? "0 without a random surface (every realisation would be the same run: set "
+                                         "-surface_sigma_s or -surface_sigma_k)"
+                                       : "1 without a random surface (every realisation would be the same run: set "
+                                         "-surface_sigma_s or -surface_sigma_k)");
+  s.resume = options.resume;
+  s.extend = options.extend;
+  s.overwrite = params.overwrite;
   if (!options.lists.sigma.empty())
     throw InputError("-ensemble_sigma", "(a list)",
                      "no sigma sweep in the FEM: one surface per FEM sweep, -surface_sigma_s and -surface_sigma_k (sweep sigma with gradfric)");
@@ -214,8 +252,12 @@ FemSweep buildFemSweep(MPI_Comm comm, const FemParameters& params, const Grading
       s.pointFields.push_back(valueFields[at - lists.fieldValues.begin()]);
     }
   if (s.points() > 1000000) throw InputError("too many FEM sweep points: " + std::to_string(s.points()) + " > 1e6");
-  for (int p = 0; p < s.points(); ++p)  // every point's step and run length, before any work
-    requireFemRunLength(s.pointParameters(p), s.pointGrading(p), &record);
+  campaign::checkRealisationPlan(s);
+  for (int p = 0; p < s.points(); ++p)  // every task's step and run length, before any work
+    for (int r = 0; r < s.realisations; ++r) {
+      requireFemRunLength(s.taskParameters({p, r}), s.pointGrading(p), &record);
+      if (!s.commonStreams) break;  // one surface: every realisation alike
+    }
   findStudyBars(record, &s);
   s.table = tableOf(s);
   s.layout = layoutOf(s, io::kFemSweepFormatName, !s.table.blockModulus.empty());

@@ -284,9 +284,11 @@ void readLayout(hid_t root, EnsembleLayout* layout, SweepTable* sweep) {
     };
     sweep->delta = real("delta");
     sweep->theta = real("theta");
-    const bool dispersed = H5Lexists(group, "sigma", H5P_DEFAULT) > 0;  // a FEM file has no dispersion: 0
-    sweep->sigma = dispersed ? real("sigma") : std::vector<double>(sweep->delta.size(), 0.0);
-    sweep->sigmaKinetic = dispersed ? real("sigma_kinetic") : std::vector<double>(sweep->delta.size(), 0.0);
+    // A FEM file has no sigma columns (its one surface is in /scene): left empty.
+    if (H5Lexists(group, "sigma", H5P_DEFAULT) > 0) {
+      sweep->sigma = real("sigma");
+      sweep->sigmaKinetic = real("sigma_kinetic");
+    }
     H5Dataset property(GF_H5(H5Dopen2(group, "property", H5P_DEFAULT)));
     sweep->property = readStrings(property);
     H5Dataset profile(GF_H5(H5Dopen2(group, "profile", H5P_DEFAULT)));

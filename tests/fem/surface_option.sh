@@ -73,6 +73,6 @@ bad "compare seed" "invalid option -fem_compare_seed = 2: .*; use -fem_seed = 2"
 "$driver" -help surface >help.log 2>&1
 grep -q -- '-surface_sigma_s <0> \[1\]' help.log || { echo "help: no -surface_sigma_s line with default 0"; fail=1; }
 "$driver" -help fem_seed >help.log 2>&1
-grep -q -- '-fem_seed <1> \[1\]: realisation 0 of the random surface of this seed' help.log || { echo "help: no -fem_seed line"; fail=1; }
+grep -q -- '-fem_seed <1> \[1\]: seed of the random surface: a single run takes its realisation 0, realisation r of an ensemble (-ensemble_realisations) its realisation r' help.log || { echo "help: no -fem_seed line"; fail=1; }
 
 [ $fail -eq 0 ] && echo "surface option OK"

@@ -84,20 +84,24 @@ TEST(FemSurface, EachNodeTakesItsTributaryRectanglesAverage) {
   EXPECT_GT(highest, 1.03 * q.plate.muStatic);
 }
 
-TEST(FemSurface, NodesAtTheBlockCentresEqualTheSpringBlocksBitForBit) {
-  // l_c = L/N: SBM block (r, c) is one cell; the FEM mesh 2N x 2N puts node (2c + 1, 2r + 1) at the
-  // block's centre, its tributary rectangle inside that cell. Realisation 0 of one seed in both.
+namespace {
+
+// l_c = L/N: SBM block (r, c) is one cell; the FEM mesh 2N x 2N puts node (2c + 1, 2r + 1) at the
+// block's centre, its tributary rectangle inside that cell. One realisation of one seed in both:
+// the FEM sweep's realisation r and the spring blocks' realisation r under common streams.
+void expectNodesEqualBlocks(std::uint32_t realisation) {
   constexpr int kBlocks = 8;
   FemParameters q = test::coarse(2 * kBlocks, 2 * kBlocks, 2);
   const double L = q.plate.length;
   q.surface = dispersed(SurfaceKind::Cells, L / kBlocks);
+  q.surfaceRealisation = realisation;
   PlateModel model(PETSC_COMM_WORLD, q, test::noGrading());
 
   sbm::Parameters p;
   p.plate = q.plate;
   p.blocksPerSide = kBlocks;
   p.surface = q.surface;
-  const sbm::FrictionField blocks = sbm::buildFriction(p, Grading{}, StreamKey{q.surface.seed, 0, 0});
+  const sbm::FrictionField blocks = sbm::buildFriction(p, Grading{}, StreamKey{q.surface.seed, 0, realisation});
   const double normal = p.normalForcePerBlock();
 
   const auto nodes = bottomCoefficients(model);
@@ -113,6 +117,21 @@ TEST(FemSurface, NodesAtTheBlockCentresEqualTheSpringBlocksBitForBit) {
     }
   EXPECT_EQ(compared, kBlocks * kBlocks);
   EXPECT_GT(distinct, kBlocks * kBlocks / 2);  // a field, not one value
+}
+
+}  // namespace
+
+TEST(FemSurface, NodesAtTheBlockCentresEqualTheSpringBlocksBitForBit) { expectNodesEqualBlocks(0); }
+
+TEST(FemSurface, AnEnsemblesRealisationIsTheSpringBlocksRealisation) {
+  expectNodesEqualBlocks(3);
+  // ... and another surface than realisation 0.
+  FemParameters q = test::coarse(8, 8, 2);
+  q.surface = dispersed(SurfaceKind::Cells, q.plate.length / 4);
+  const PlateModel first(PETSC_COMM_WORLD, q, test::noGrading());
+  q.surfaceRealisation = 3;
+  const PlateModel fourth(PETSC_COMM_WORLD, q, test::noGrading());
+  EXPECT_NE(bottomCoefficients(first), bottomCoefficients(fourth));
 }
 
 TEST(FemSurface, TheSameCoefficientsOnAnyNumberOfRanks) {

@@ -25,26 +25,19 @@ namespace gradfric::ensemble {
 // The campaign's record (sweep, grading, results file) plus the spring-block model's options.
 // The -field_* property fields are baseGrading.fields (null: none), every point's unless swept.
 struct Scene : campaign::Campaign {
-  // -ensemble_* and -output* options.
-  int realisations = 1;          // per point; with a target, the cap (-ensemble_target_max)
-  campaign::PrecisionTarget target;  // -ensemble_target*: inactive (halfWidth 0) for a fixed count
-  bool extend = false;           // -ensemble_extend: add realisations or points to a finished file
-  std::uint64_t seed = 1;
-  bool commonStreams = false;  // realisation r of every point draws from the stream (seed, 0, r)
+  // -ensemble_* and -output* options (the count, the target, resume and extension: the campaign's).
+  std::uint64_t seed = 1;  // with commonStreams, realisation r of every point draws from (seed, 0, r)
   bool history = true;         // store the mu(t) histories
   bool frictionFields = false;  // store every realisation's local mu_s,i, mu_k,i
   bool monitor = false;        // a progress line per finished task
-  bool resume = false;
   std::string schedule = "dynamic";
   bool dryRun = false;
   long abortAfter = 0;  // testing only: every rank exits abruptly after this many tasks
-  bool overwrite = false;
   // -sbm_* options: one time step for the whole sweep, from its stiffest point.
   sbm::Parameters parameters;
   sbm::Request request;
   double stiffestFactor = 1.0;  // the largest modulus factor of any point
 
-  int tasks() const { return points() * realisations; }
   // The model inputs of sweep point p (its grading: Campaign::pointGrading).
   sbm::Parameters pointParameters(int p) const;
   // Each point's discretisation bar of mu_s (bars[0]) and mu_k (bars[1]): the lattice ladder of

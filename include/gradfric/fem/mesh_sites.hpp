@@ -32,12 +32,14 @@ SiteGrid meshSiteGrid(const FemParameters& q);
 // alone (random_surface.hpp): the same on any number of ranks.
 // The n + 2 edges of an axis's tributary intervals: node k spans [edges[k], edges[k + 1]].
 std::vector<double> tributaryEdges(const MeshAxis& axis);
-// The nodes i0..i1 x j0..j1 (inclusive) of realisation 0 of the surface (dispersed, its seed and
+// The nodes i0..i1 x j0..j1 (inclusive) of the surface (dispersed, its seed and
 // l_c set), row-major with i fastest, as one lattice (the cost of one query per row, not per node).
 std::vector<SurfaceDeviations> tributarySurface(const RandomSurface& surface, const MeshAxis& x, const MeshAxis& y,
                                                 int i0, int i1, int j0, int j1);
-// The FEM's surface: realisation 0 of the settings' seed, one surface for every sweep point.
-RandomSurface femSurface(const SurfaceSettings& settings, double plateLength);
+// The FEM's surface: a realisation of the settings' seed, the same at every sweep point (stream
+// 0): realisation r is the spring blocks' realisation r of the same seed under
+// -ensemble_common_streams.
+RandomSurface femSurface(const SurfaceSettings& settings, double plateLength, std::uint32_t realisation);
 
 // Refuses a property field out of range at a cell of this mesh (checkPlateFields at the cells the
 // run samples: on an edge-graded mesh, not the uniform grid's centres).

@@ -74,10 +74,12 @@ struct FemContact {
   // -fem_pc_length, -fem_pc_speed): off by default (docs/accuracy_fem.md, "Local mu_s above 1").
   NormalStressFilter normalFilter;
   // The random surface (-surface_ options, shared with the spring-block model) on the local mu_s,
-  // mu_k: each bottom node takes realisation 0 of seed -fem_seed averaged over its tributary
-  // rectangle (plate_properties.hpp). No dispersion by default: the paper's deterministic 3D model.
-  // The constructor sets l_c = L/120 and the seed 1.
+  // mu_k: each bottom node takes realisation surfaceRealisation of seed -fem_seed averaged over
+  // its tributary rectangle (plate_properties.hpp). No dispersion by default: the paper's
+  // deterministic 3D model. The constructor sets l_c = L/120 and the seed 1. A single run is
+  // realisation 0; a sweep's realisation r (-ensemble_realisations) is r.
   SurfaceSettings surface;
+  std::uint32_t surfaceRealisation = 0;
 };
 
 // Damping: bulk viscosity, mass- and stiffness-proportional, in each phase.

@@ -34,8 +34,10 @@ struct TopNode {
 
 class PlateProperties {
 public:
-  // surface: dispersed or not, its seed and l_c set (FemParameters::surface).
-  PlateProperties(const PlateMesh& mesh, const Plate& plate, const Grading& grading, const SurfaceSettings& surface);
+  // surface: dispersed or not, its seed and l_c set (FemParameters::surface); realisation: which
+  // of the seed's surfaces (FemParameters::surfaceRealisation).
+  PlateProperties(const PlateMesh& mesh, const Plate& plate, const Grading& grading, const SurfaceSettings& surface,
+                  std::uint32_t realisation);
 
   const Plate& plate() const { return plate_; }
   const SurfaceSettings& surface() const { return surface_; }

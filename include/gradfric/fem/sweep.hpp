@@ -1,14 +1,17 @@
 #pragma once
 // A sweep of FEM runs in one command (gradfric-fem with -ensemble_delta, _theta, _property,
-// _profile, _field: the ensemble's lists and its sweep construction, campaign::buildSweep). The ranks are
+// _profile, _field: the ensemble's lists and its sweep construction, campaign::buildSweep), and
+// its realisations of the random surface (-ensemble_realisations or -ensemble_target, the same
+// surface r at every point, as the spring blocks' common streams). The ranks are
 // split into groups of -fem_sweep_ranks_per_run (MPI_Comm_split); each run has a group's
 // sub-communicator to itself. The pending points are handed out round robin over the groups in
-// the ensemble's fixed order (campaign::pendingTasks), so which group runs a point never changes
+// the ensemble's fixed order (campaign::pendingTasks), so which group runs a task never changes
 // a number in the file. Every run lands in one parallel HDF5 file with the ensemble's layout
-// (io::ResultsFile, format gradfric-fem-sweep, one realisation per point), planned through
-// io::OutputPlan (<output>.partial until complete), resumable with -resume.
+// (io::ResultsFile, format gradfric-fem-sweep), planned through io::OutputPlan (<output>.partial
+// until complete), resumable with -resume and extensible with -ensemble_extend.
 #include "gradfric/core/options.hpp"
 #include "gradfric/campaign/campaign.hpp"
+#include "gradfric/campaign/realisation_options.hpp"
 #include "gradfric/core/study_table.hpp"
 #include "gradfric/fem/parameters.hpp"
 #include "gradfric/io/hdf5_attributes.hpp"
@@ -26,6 +29,8 @@ namespace gradfric::fem {
 // The -ensemble_ lists and the -fem_sweep_ options of a gradfric-fem command line.
 struct SweepOptions {
   campaign::SweepLists lists;
+  campaign::RealisationPlan realisations;  // -ensemble_realisations or -ensemble_target*
+  bool extend = false;                     // -ensemble_extend
   bool requested = false;  // a list or a -fem_sweep_ option was given: run the sweep
   int ranksPerRun = 1;
   bool resume = false;
@@ -44,12 +49,13 @@ struct FemSweep : campaign::Campaign {
   std::vector<study::StudyBar> bars[2];
 
   FemParameters pointParameters(int p) const;  // its grading: Campaign::pointGrading
+  FemParameters taskParameters(const campaign::Task& task) const;  // the point's, on the task's surface
 };
 
 // Collective: builds the sweep and refuses (InputError naming the option, on every rank) what
-// cannot run: -ensemble_sigma (the FEM has no random dispersion), snapshots or -fem_compare_sbm
-// in a sweep, a group size that does not divide the ranks, any point whose time step or run
-// length is refused.
+// cannot run: -ensemble_sigma (one surface per FEM sweep), realisations without a dispersed
+// surface, snapshots or -fem_compare_sbm in a sweep, a group size that does not divide the ranks,
+// any task whose time step or run length is refused.
 FemSweep buildFemSweep(MPI_Comm comm, const FemParameters& params, const Grading& grading,
                        const SweepOptions& options, bool compareSbm, const RunParameters& record);
 

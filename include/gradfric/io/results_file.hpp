@@ -84,8 +84,8 @@ struct SweepTable {
   std::vector<std::string> axes;  // the swept quantities, in loop order (outermost first)
   std::vector<double> delta;
   std::vector<double> theta;  // sliding angle [degree]
-  std::vector<double> sigma;  // relative dispersion of mu_s,i (and mu_k,i unless set apart); 0 in the FEM
-  std::vector<double> sigmaKinetic;  // (a FEM file stores neither: its coefficients are not dispersed)
+  std::vector<double> sigma;  // relative dispersion of mu_s,i (and mu_k,i unless set apart); empty in the FEM
+  std::vector<double> sigmaKinetic;  // (a FEM file stores neither: its one surface is /scene's -surface_sigma_*)
   std::vector<std::string> property;  // E, friction, both
   std::vector<std::string> profile;   // none, linear, triangular
   std::vector<int> referencePoint;    // the non-graded point of the same (theta, sigma, ...) or -1 (not stored by a single FEM run)
