@@ -33,12 +33,8 @@ std::string describeNormalFilter(const FemParameters& q) {
 
 std::string describeSurface(const SurfaceSettings& s, double elementSize) {
   if (!s.dispersed()) return "no dispersion: no random surface";
-  std::ostringstream d;
-  d << "random surface: sigma_s = " << s.sigmaStatic << ", sigma_k = " << s.sigmaKinetic << ", "
-    << surfaceKindName(s.kind) << " of l_c = " << formatReal(s.correlationLength) << " m ("
-    << formatReal(s.correlationLength / elementSize) << " elements), each node its tributary area's average "
-    << "(seed " << s.seed << ", realisation 0)";
-  return d.str();
+  return describeSurfaceField(s, elementSize, "elements") + ", each node its tributary area's average (seed " +
+         std::to_string(s.seed) + ", realisation 0)";
 }
 
 std::string describeContact(const FemParameters& q) {

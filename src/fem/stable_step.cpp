@@ -35,7 +35,7 @@ double largestStaticFriction(const FemParameters& q, const Grading& grading) {
     for (int j = 0; j <= q.ny; j += rows)
       for (const SurfaceDeviations& z : tributarySurface(surface, x, y, 0, q.nx, j, std::min(j + rows - 1, q.ny)))
         largestZ = std::max(largestZ, z.zStatic);
-    factor *= std::max(1.0 + q.surface.sigmaStatic * largestZ, kSurfaceFloorFraction);
+    factor *= surfaceCoefficients(1.0, 1.0, 1.0, q.surface, SurfaceDeviations{largestZ, 0.0, 0.0}).muStatic;
   }
   return q.plate.muStatic * factor;
 }

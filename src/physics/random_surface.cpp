@@ -1,9 +1,11 @@
 #include "gradfric/physics/random_surface.hpp"
 
+#include "gradfric/core/format.hpp"
 #include "gradfric/core/random_stream.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -109,6 +111,14 @@ void integrateCells(double u0, double u1, double v0, double v1, int properties, 
 }
 
 }  // namespace
+
+std::string describeSurfaceField(const SurfaceSettings& s, double siteSpacing, const std::string& sites) {
+  std::ostringstream d;
+  d << "random surface: sigma_s = " << s.sigmaStatic << ", sigma_k = " << s.sigmaKinetic << ", "
+    << surfaceKindName(s.kind) << " of l_c = " << formatReal(s.correlationLength) << " m ("
+    << formatReal(s.correlationLength / siteSpacing) << " " << sites << ")";
+  return d.str();
+}
 
 const char* surfaceKindName(SurfaceKind kind) {
   switch (kind) {

@@ -255,14 +255,14 @@ std::vector<std::string> activeEffects(const Parameters& p, const Grading& g, co
     for (const auto& line : describeFields(*g.fields)) effects.push_back(line);
   const SurfaceSettings surface = p.surfaceOf();
   if (surface.dispersed()) {
-    std::ostringstream d;
-    d << "random surface: sigma_s = " << surface.sigmaStatic << ", sigma_k = " << surface.sigmaKinetic;
-    if (surface.kind == SurfaceKind::Blocks)
-      d << ", one draw per block (l_c = the block, redrawn until 0 < mu_k,i <= mu_s,i)";
-    else
-      d << ", " << surfaceKindName(surface.kind) << " of l_c = " << formatReal(surface.correlationLength)
-        << " m (" << formatReal(surface.correlationLength / p.spacing()) << " blocks), each block its area's average";
-    effects.push_back(d.str());
+    if (surface.kind == SurfaceKind::Blocks) {
+      std::ostringstream d;
+      d << "random surface: sigma_s = " << surface.sigmaStatic << ", sigma_k = " << surface.sigmaKinetic
+        << ", one draw per block (l_c = the block, redrawn until 0 < mu_k,i <= mu_s,i)";
+      effects.push_back(d.str());
+    } else {
+      effects.push_back(describeSurfaceField(surface, p.spacing(), "blocks") + ", each block its area's average");
+    }
   } else {
     effects.push_back("no dispersion: no random surface, no per-block coefficients");
   }

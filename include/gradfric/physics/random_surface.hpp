@@ -33,6 +33,7 @@
 
 #include <array>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace gradfric {
@@ -54,6 +55,11 @@ struct SurfaceSettings {
 
 // -surface_kind's names, in SurfaceKind's order.
 const char* surfaceKindName(SurfaceKind kind);
+
+// The effects line both models print for a dispersed field (not the Blocks kind): "random
+// surface: sigma_s = ..., sigma_k = ..., <kind> of l_c = ... m (<l_c / spacing> <sites>)"; each
+// model adds how its sites sample the field.
+std::string describeSurfaceField(const SurfaceSettings& settings, double siteSpacing, const std::string& sites);
 
 // L / 120: the paper's block, so the paper's scenes (N_b = 120) keep their statistics.
 inline double defaultCorrelationLength(double plateLength) { return plateLength / 120.0; }
