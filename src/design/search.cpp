@@ -14,6 +14,7 @@ const char* toString(Status status) {
   switch (status) {
     case Status::Found: return "found";
     case Status::Unreachable: return "unreachable";
+    case Status::NotVerified: return "not_verified";
     default: return "not_converged";
   }
 }
@@ -22,8 +23,18 @@ int exitCode(Status status) {
   switch (status) {
     case Status::Found: return 0;
     case Status::Unreachable: return 4;
+    case Status::NotVerified: return 6;
     default: return 5;
   }
+}
+
+SearchResult settleOnVerification(SearchResult result, const std::optional<Evaluation>& verification, double target) {
+  if (result.status != Status::Found || !verification || verification->side(target) == 0) return result;
+  result.status = Status::NotVerified;
+  result.note = "the search held the target in its CI, but the verification's CI (fresh streams) misses it: "
+                "the design's interval understates its uncertainty here (more realisations: a smaller "
+                "-design_tolerance)";
+  return result;
 }
 
 const Evaluation& SearchLog::add(const Evaluation& e) {

@@ -57,6 +57,18 @@ known_answer)
   "$python" "$src/scripts/plot_design.py" "$work/d.h5" --out "$work/plots" >/dev/null || fail "plot of a one-parameter search"
   [ -s "$work/plots/d_search.png" ] || fail "no search plot"
   ;;
+missed)
+  # A found search whose verification (fresh streams) misses the target: its own outcome, exit 6,
+  # the design file written with that status (the tutorial's scene, seed 1: measured to miss).
+  run 6 2 "$work/m.log" -options_file "$src/input/design_friction_delta.opts" -sbm_N 40 -design_seed 1 -output "$work/m.h5"
+  grep -q "Design (root, not_verified)" "$work/m.log" || fail "not reported not_verified"
+  grep -q "the verification's CI misses it" "$work/m.log" || fail "no verification line"
+  "$python" "$checker" status "$work/m.h5" not_verified || fail "status"
+  # The same search with the verification off ends found (nothing to contradict it).
+  run 0 2 "$work/m0.log" -options_file "$src/input/design_friction_delta.opts" -sbm_N 40 -design_seed 1 -design_verify false \
+    -output "$work/m0.h5"
+  "$python" "$checker" status "$work/m0.h5" found || fail "status without verification"
+  ;;
 unreachable)
   # Above the non-graded plate's mu_s: no Delta in [-0.4, 0] reaches it; the closest is Delta = 0.
   run 4 2 "$work/u.log" "${scene[@]}" -design_target 0.99 -design_scan_points 1 -output "$work/u.h5"

@@ -123,5 +123,24 @@ TEST(RootFinder, TheEvaluationBudgetIsKept) {
   EXPECT_LE(tried, 3);
 }
 
+TEST(RootFinder, FoundNeedsTheVerificationToHoldTheTarget) {
+  SearchResult found;
+  found.status = Status::Found;
+  Evaluation verification;
+  verification.ciLow = 0.8010;  // misses 0.8 from above
+  verification.ciHigh = 0.8048;
+  const SearchResult missed = settleOnVerification(found, verification, 0.8);
+  EXPECT_EQ(missed.status, Status::NotVerified);
+  EXPECT_EQ(exitCode(missed.status), 6);
+  EXPECT_STREQ(toString(missed.status), "not_verified");
+  verification.ciLow = 0.7990;  // holds it
+  EXPECT_EQ(settleOnVerification(found, verification, 0.8).status, Status::Found);
+  EXPECT_EQ(settleOnVerification(found, std::nullopt, 0.8).status, Status::Found);  // -design_verify false
+  SearchResult unreachable;
+  unreachable.status = Status::Unreachable;
+  verification.ciLow = 0.8010;
+  EXPECT_EQ(settleOnVerification(unreachable, verification, 0.8).status, Status::Unreachable);
+}
+
 }  // namespace
 }  // namespace gradfric::design

@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -16,9 +17,10 @@ enum class Status {
   Found,         // the target lies in the design's 95 % CI, whose half-width is within the tolerance
   Unreachable,   // the family does not reach the target within the bounds: `design` is the closest
   NotConverged,  // the evaluation budget or the realisation cap ran out first: `design` is the best
+  NotVerified,   // found by the search, but the verification ensemble's 95 % CI misses the target
 };
 const char* toString(Status status);
-// The driver's exit status: 0 found, 4 unreachable, 5 not converged (docs/design.md).
+// The driver's exit status: 0 found, 4 unreachable, 5 not converged, 6 not verified (docs/design.md).
 int exitCode(Status status);
 
 struct SearchResult {
@@ -32,6 +34,11 @@ struct SearchResult {
   double parameterLow() const { return design.x[0] - design.halfWidth() / std::fabs(slope); }
   double parameterHigh() const { return design.x[0] + design.halfWidth() / std::fabs(slope); }
 };
+
+// The outcome once the design is verified with fresh streams: a found design whose verification's
+// CI misses the target becomes NotVerified (the search's CI held it on its own streams only);
+// every other outcome, and a run without verification, is the search's.
+SearchResult settleOnVerification(SearchResult result, const std::optional<Evaluation>& verification, double target);
 
 class SearchLog {
 public:
