@@ -48,7 +48,9 @@ def main(png, tsv, paths):
         for r in sorted(rows):
             out.write("%s\t%.6g\t%.4g\t%.3g\t%.6f\t%.6f\t%.6f\t%.6f\n" % r)
     fig, (a, b) = plt.subplots(1, 2, figsize=(11, 4.2))
-    styles = {"SBM": ("o", "-"), "FEM": ("s", "--")}
+    styles = {"SBM": ("o", "-"), "FEM": ("s", "--")}  # the model by marker and line, sigma by colour
+    sigmas = sorted({r[2] for r in rows})
+    colour = {s: f"C{i}" for i, s in enumerate(sigmas)}
     for model in ("SBM", "FEM"):
         for sigma in sorted({r[2] for r in rows if r[0] == model}):
             for delta in sorted({r[3] for r in rows if r[0] == model and r[2] == sigma}):
@@ -58,10 +60,10 @@ def main(png, tsv, paths):
                 label = f"{model}, sigma {sigma:g}"
                 if delta == 0.0:
                     a.errorbar(x, [r[4] for r in sel], yerr=[r[5] for r in sel], marker=marker, ls=line, capsize=3,
-                               label=label)
+                               color=colour[sigma], label=label)
                 else:
                     b.errorbar(x, [100 * r[6] for r in sel], yerr=[100 * r[7] for r in sel], marker=marker, ls=line,
-                               capsize=3, label=f"{label}, Delta {delta:g}")
+                               capsize=3, color=colour[sigma], label=f"{label}, Delta {delta:g}")
     for ax in (a, b):
         ax.set_xscale("log")
         ax.set_xlabel("correlation length l_c / L")

@@ -23,14 +23,7 @@ fail() { echo "FAILED: $*" >&2; exit 1; }
 grading=(-grading_profile linear -grading_property friction -ensemble_delta 0,0.2,-0.2)
 # The penalty before the penalty study (E0/hz on nz = 2): a softer contact, a larger step, a shorter test.
 sweep=("${grading[@]}" -fem_nx 10 -fem_ny 10 -fem_nz 2 -fem_kn 4e11)
-fem() {  # name, ranks, expected exit, options...
-  local name=$1 ranks=$2 code=$3; shift 3
-  timeout 300 mpiexec -n "$ranks" "$driver" "$@" >"$name.out" 2>"$name.err"
-  local rc=$?
-  [ $rc -ne 124 ] || fail "$name: no exit within 300 s (a hang)"
-  [ $rc -eq "$code" ] || { tail -5 "$name.err" >&2; fail "$name: exit $rc, expected $code"; }
-}
-same() { h5diff --exclude-path /run "$1" "$2" >/dev/null || fail "$1 and $2 differ: $(h5diff --exclude-path /run "$1" "$2" | head -5)"; }
+source "$source_dir/tests/common/driver_runs.sh"  # fem, same
 
 # Determinism over rank counts.
 fem one 1 0 "${sweep[@]}" -output one.h5
