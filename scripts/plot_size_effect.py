@@ -64,11 +64,11 @@ def main(png, tsv, paths):
                 else:
                     b.errorbar(x, [100 * r[6] for r in sel], yerr=[100 * r[7] for r in sel], marker=marker, ls=line,
                                capsize=3, color=colour[sigma], label=f"{label}, Delta {delta:g}")
-    for ax in (a, b):
+    for ax, where in ((a, "center right"), (b, "upper left")):
         ax.set_xscale("log")
         ax.set_xlabel("correlation length l_c / L")
         ax.grid(alpha=0.3)
-        ax.legend(fontsize=7)
+        ax.legend(fontsize=7, loc=where)
     a.set_ylabel("mu_s, non-graded plate (95 % CI)")
     b.set_ylabel("relative variation of mu_s [%] (95 % CI)")
     a.set_title("(a) non-graded plate")
