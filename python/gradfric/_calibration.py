@@ -25,6 +25,16 @@ _HEADER = [
      [("slope_residual_percent", "%", "SBM slope / reference slope - 1, in per cent"),
       ("peak_residual", "1", "SBM peak - reference peak"),
       ("peak_ci95_half_width", "1", "95 % half-width of the ensemble's peak")]),
+    # -calibrate_fit lz: l_z alone, sigma the surface's, the peak reported and not fitted
+    (r"# fitted: +l_z = %s \+- %s m \(95 %%\); surface sigma_s %s, sigma_k %s" % ((_NUMBER,) * 4),
+     [("lz", "m", "fitted mass-layer thickness l_z (-sbm_lz)"),
+      ("lz_ci95_half_width", "m", "95 % half-width of l_z"),
+      ("sigma", "1", "the surface's relative dispersion of the local mu_s (-surface_sigma_s), not fitted"),
+      ("sigma_k", "1", "the surface's relative dispersion of the local mu_k (-surface_sigma_k), not fitted")]),
+    (r"# residuals: slope %s %%; peak %s \(not fitted; ensemble 95 %% CI \+- %s\)" % ((_NUMBER,) * 3),
+     [("slope_residual_percent", "%", "SBM slope / reference slope - 1, in per cent"),
+      ("peak_residual", "1", "SBM peak - reference peak: what the two models differ by on this surface"),
+      ("peak_ci95_half_width", "1", "95 % half-width of the ensemble's peak")]),
 ]
 
 
@@ -44,6 +54,7 @@ def read_scene(path):
     source = re.match(r"# gradfric-calibrate: .* fitted to (.*) \((.*)\)$", lines[0])
     if source:
         attrs["reference_file"], attrs["reference_kind"] = source.groups()
+    attrs["fit"] = "lz" if "sigma the surface's" in lines[0] else "lz_sigma"
     for line in lines:
         for pattern, fields in _HEADER:
             m = re.match(pattern, line)

@@ -13,6 +13,8 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <utility>
+#include <vector>
 
 namespace gradfric::calibration {
 
@@ -20,26 +22,36 @@ namespace {
 
 bool startsWith(const std::string& s, const char* head) { return s.rfind(head, 0) == 0; }
 
-// The calibration owns l_z, sigma and the step that follows l_z: a value set for them is refused.
-void refuseOwnedOptions() {
-  const char* owned[][2] = {{"-sbm_lz", "the calibration fits it (first guess: -calibrate_lz_guess)"},
-                            {"-surface_sigma_s", "the calibration fits it (first guess: -calibrate_sigma_guess)"},
-                            {"-surface_sigma_k", "the calibration fits it with sigma_s (one dispersion)"},
-                            {"-sbm_dt", "the default step, which follows l_z (tune it with -sbm_dt_safety, -sbm_dt_slip)"}};
+// The calibration owns l_z, the step that follows it, and sigma when it fits sigma: a value set
+// for them is refused. Fitting l_z alone, the sigma guess and step have no effect: refused too.
+void refuseOwnedOptions(Fit fit) {
+  std::vector<std::pair<const char*, const char*>> owned = {
+      {"-sbm_lz", "the calibration fits it (first guess: -calibrate_lz_guess)"},
+      {"-sbm_dt", "the default step, which follows l_z (tune it with -sbm_dt_safety, -sbm_dt_slip)"}};
+  if (fit == Fit::LayerAndSigma) {
+    owned.push_back({"-surface_sigma_s", "-calibrate_fit lz_sigma fits it (first guess: -calibrate_sigma_guess)"});
+    owned.push_back({"-surface_sigma_k", "-calibrate_fit lz_sigma fits it with sigma_s (one dispersion)"});
+  } else {
+    owned.push_back({"-calibrate_sigma_guess", "only with -calibrate_fit lz_sigma (l_z alone is fitted: sigma is the surface's)"});
+    owned.push_back({"-calibrate_sigma_step", "only with -calibrate_fit lz_sigma (l_z alone is fitted: sigma is the surface's)"});
+    owned.push_back({"-calibrate_peak_tolerance", "only with -calibrate_fit lz_sigma (fitting l_z alone, the peak is reported, not fitted)"});
+  }
   for (const auto& o : owned) {
     PetscBool set = PETSC_FALSE;
     char value[256] = "";
-    GF_CALL(PetscOptionsGetString(nullptr, nullptr, o[0], value, sizeof value, &set));
-    if (set) throw InputError(o[0], value, std::string("not set in a calibration: ") + o[1]);
+    GF_CALL(PetscOptionsGetString(nullptr, nullptr, o.first, value, sizeof value, &set));
+    if (set) throw InputError(o.first, value, std::string("not set in a calibration: ") + o.second);
   }
 }
 
-// With a gradfric-fem reference: the SBM scene describes the same plate, grading and fields.
-void requireSamePlate(const ReferenceCurve& reference, const RunParameters& record, const std::string& path) {
+// With a gradfric-fem reference: the SBM scene describes the same plate, grading and fields, and,
+// fitting l_z alone, the same surface (sigma is then the surface's, not a fitted constant).
+void requireSamePlate(const ReferenceCurve& reference, const RunParameters& record, const std::string& path, Fit fit) {
   if (reference.scene.empty()) return;
   for (const auto& o : record.all()) {
     const std::string key = o.name.substr(1);
-    if (!(startsWith(key, "plate_") || startsWith(key, "grading_") || startsWith(key, "field_"))) continue;
+    const bool surface = fit == Fit::Layer && startsWith(key, "surface_");
+    if (!(startsWith(key, "plate_") || startsWith(key, "grading_") || startsWith(key, "field_") || surface)) continue;
     if (key == "plate_nu" || key == "plate_H") continue;  // the lattice's nu is 1/3; H is the FEM's alone
     const auto it = reference.scene.find(key);
     if (it == reference.scene.end()) continue;
@@ -50,7 +62,8 @@ void requireSamePlate(const ReferenceCurve& reference, const RunParameters& reco
     const bool same = numbers ? std::fabs(a - b) <= 1e-9 * std::max(std::fabs(a), std::fabs(b)) : o.value == it->second;
     if (!same)
       throw InputError(o.name, o.value,
-                       "the reference's value " + it->second + " (" + path + "): calibrate the plate the FEM ran");
+                       "the reference's value " + it->second + " (" + path + "): calibrate the " +
+                           (surface ? "surface" : "plate") + " the FEM ran");
   }
 }
 
@@ -59,7 +72,12 @@ void requireSamePlate(const ReferenceCurve& reference, const RunParameters& reco
 std::optional<Calibration> readCalibration(MPI_Comm comm, RunParameters* record) {
   Calibration c;
   CalibrationSettings& s = c.settings;
-  OptionReader o(comm, "calibrate_", "Calibration of the spring-block l_z and sigma (docs/calibration.md)", record);
+  OptionReader o(comm, "calibrate_", "Calibration of the spring-block l_z (and sigma) (docs/calibration.md)", record);
+  s.fit = o.choice("fit", "lz", {"lz", "lz_sigma"},
+                   "lz: l_z alone matches the loading slope, sigma is the surface's (-surface_*, the FEM reference's); "
+                   "lz_sigma: l_z and sigma (sigma_s = sigma_k) match the slope and the static peak") == "lz"
+              ? Fit::Layer
+              : Fit::LayerAndSigma;
   s.source.path = o.path("reference", "",
                          "the reference mu(t): a gradfric-fem results file (.h5), any HDF5 file with the datasets below, or a "
                          "CSV file (.csv) with columns t [s], mu");
@@ -70,11 +88,12 @@ std::optional<Calibration> readCalibration(MPI_Comm comm, RunParameters* record)
   const PetscInt realisations = o.integer("realisations", 16, 2, 100000, "1", "realisations per evaluation (an ensemble)");
   const PetscInt seed = o.integer("seed", 1, 0, PETSC_MAX_INT, "1", "realisation r draws from the stream (seed, 0, r) in every evaluation");
   s.layerGuess = o.real("lz_guess", 0.0, "m", "first l_z (0: G v / (p slope) from the reference's slope)");
-  s.sigmaGuess = o.real("sigma_guess", s.sigmaGuess, "1", "first sigma (sigma_s = sigma_k)");
-  s.sigmaStep = o.real("sigma_step", s.sigmaStep, "1", "the second evaluation's sigma differs by this (towards the reference's peak)");
+  s.sigmaGuess = o.real("sigma_guess", s.sigmaGuess, "1", "lz_sigma: first sigma (sigma_s = sigma_k)");
+  s.sigmaStep = o.real("sigma_step", s.sigmaStep, "1",
+                       "lz_sigma: the second evaluation's sigma differs by this (towards the reference's peak)");
   s.slopeTolerance = o.real("slope_tolerance", s.slopeTolerance, "1", "converged when |slope / reference slope - 1| <= this");
   s.peakTolerance = o.real("peak_tolerance", s.peakTolerance, "1",
-                           "... and |peak - reference peak| <= this x the 95 % CI half-width of the SBM's mean peak");
+                           "lz_sigma: ... and |peak - reference peak| <= this x the 95 % CI half-width of the SBM's mean peak");
   const PetscInt evaluations = o.integer("max_evaluations", s.maxEvaluations, 2, 50, "1", "at most this many ensembles");
   s.curveOutput = o.text("curve", "", "optional CSV of the curves: t, reference mu, the calibrated ensemble's mean mu");
   OptionReader out(comm, "", "Scene file written", record);
@@ -84,7 +103,7 @@ std::optional<Calibration> readCalibration(MPI_Comm comm, RunParameters* record)
   c.scene.grading = readGrading(comm, record);
   const Plate plate = readPlate(comm, record);
   c.scene.grading.fields = readPlateFields(comm, record, plate, c.scene.grading);
-  if (!helpRequested()) refuseOwnedOptions();
+  if (!helpRequested()) refuseOwnedOptions(s.fit);
   c.scene.base = sbm::readParameters(comm, record, plate, c.scene.grading);
   // -help lists them; each evaluation re-derives them
   (void)sbm::readRequest(comm, record, c.scene.base, calibrationMeasurement());
@@ -120,7 +139,7 @@ std::optional<Calibration> readCalibration(MPI_Comm comm, RunParameters* record)
                      "a curve that rises through " + formatReal(window[0]) + "-" + formatReal(window[1]) +
                          " of its peak before it (" + std::to_string(c.target.samples) + " samples there, peak " +
                          formatReal(c.target.peak) + ")");
-  requireSamePlate(c.reference, *record, s.source.path);
+  requireSamePlate(c.reference, *record, s.source.path, s.fit);
   const double guess = s.layerGuess > 0 ? s.layerGuess : layerThicknessForSlope(c.scene, c.target.slope);
   if (!(guess > 1e-9 && guess < 1.0))
     throw InputError(o.fullName(s.layerGuess > 0 ? "lz_guess" : "reference"),
@@ -134,9 +153,12 @@ std::optional<Calibration> readCalibration(MPI_Comm comm, RunParameters* record)
   // The user's options of the SBM scene, for the scene file (the fitted ones are added to them).
   for (const auto& r : record->all()) {
     const std::string key = r.name;
-    if (r.origin != OptionOrigin::User || key == "-friction_observables") continue;
+    // (sigma_s and sigma_k are written after them, fitted or the surface's)
+    if (r.origin != OptionOrigin::User || key == "-friction_observables" || key == "-surface_sigma_s" ||
+        key == "-surface_sigma_k")
+      continue;
     if (startsWith(key, "-plate_") || startsWith(key, "-grading_") || startsWith(key, "-field_") ||
-        startsWith(key, "-sbm_") || startsWith(key, "-friction_"))
+        startsWith(key, "-sbm_") || startsWith(key, "-friction_") || startsWith(key, "-surface_"))
       c.sceneOptions.push_back(r);
   }
   // The files, planned before any work: complete or not at all.

@@ -49,21 +49,31 @@ void writeScene(const std::string& work, const std::string& path, const Calibrat
   std::ofstream out(work);
   const Evaluation& e = r.fitted();
   char line[512];
-  out << "# gradfric-calibrate: spring-block l_z and sigma fitted to " << c.settings.source.path << " ("
-      << c.reference.kind << ")\n";
+  const bool layer = c.settings.fit == Fit::Layer;
+  out << "# gradfric-calibrate: spring-block " << (layer ? "l_z fitted (sigma the surface's)" : "l_z and sigma fitted")
+      << " to " << c.settings.source.path << " (" << c.reference.kind << ")\n";
   std::snprintf(line, sizeof line,
-                "# reference: loading slope %.6e 1/s (over %.2g-%.2g mu_s), peak mu_s %.6f\n"
-                "# fitted:    l_z = %.6e +- %.2e m, sigma = %.6f +- %.6f (95 %%)\n"
-                "# residuals: slope %+.4f %%, peak %+.6f (ensemble 95 %% CI +- %.6f); %s after %zu evaluations\n",
-                c.target.slope, c.scene.window.low, c.scene.window.high, c.target.peak, e.layerThickness, r.layerError,
-                e.sigma, r.sigmaError, 100 * (e.slope.mean / c.target.slope - 1), e.peak.mean - c.target.peak,
-                halfWidth(e.peak), "converged", r.evaluations.size());
+                "# reference: loading slope %.6e 1/s (over %.2g-%.2g mu_s), peak mu_s %.6f\n", c.target.slope,
+                c.scene.window.low, c.scene.window.high, c.target.peak);
+  out << line;
+  if (layer)
+    std::snprintf(line, sizeof line,
+                  "# fitted:    l_z = %.6e +- %.2e m (95 %%); surface sigma_s %.6g, sigma_k %.6g\n"
+                  "# residuals: slope %+.4f %%; peak %+.6f (not fitted; ensemble 95 %% CI +- %.6f); converged after %zu evaluations\n",
+                  e.layerThickness, r.layerError, e.sigma, e.sigmaKinetic, 100 * (e.slope.mean / c.target.slope - 1),
+                  e.peak.mean - c.target.peak, halfWidth(e.peak), r.evaluations.size());
+  else
+    std::snprintf(line, sizeof line,
+                  "# fitted:    l_z = %.6e +- %.2e m, sigma = %.6f +- %.6f (95 %%)\n"
+                  "# residuals: slope %+.4f %%, peak %+.6f (ensemble 95 %% CI +- %.6f); converged after %zu evaluations\n",
+                  e.layerThickness, r.layerError, e.sigma, r.sigmaError, 100 * (e.slope.mean / c.target.slope - 1),
+                  e.peak.mean - c.target.peak, halfWidth(e.peak), r.evaluations.size());
   out << line;
   out << "# gradfric -options_file " << path << " -output run.h5 reproduces the fitted ensemble (same seed)\n";
   // A file to read is written absolute: in a scene file it would be read from the scene's folder.
   for (const auto& o : c.sceneOptions) out << o.name << " " << (o.path ? absolutePaths(o.value) : o.value) << "\n";
   std::snprintf(line, sizeof line, "-sbm_lz %.10g\n-surface_sigma_s %.10g\n-surface_sigma_k %.10g\n", e.layerThickness, e.sigma,
-                e.sigma);
+                e.sigmaKinetic);
   out << line << "-ensemble_realisations " << c.scene.realisations << "\n-ensemble_seed " << c.scene.seed << "\n";
   if (!out.flush()) throw std::runtime_error("cannot write " + work);
 }
@@ -97,22 +107,36 @@ void writeCalibration(MPI_Comm comm, const Calibration& c, const CalibrationResu
   char text[96] = "";
   if (highest > lowest * 1.001) std::snprintf(text, sizeof text, ", d(peak)/d l_z = %.4e 1/m", r.jacobian[1][0]);
   const std::string coupling = text;
+  const bool layer = c.settings.fit == Fit::Layer;
+  const double peakResidual = e.peak.mean - c.target.peak;
+  const char* inside = std::fabs(peakResidual) <= halfWidth(e.peak) ? "inside" : "outside";
+  GF_CALL(PetscPrintf(comm,
+                      "Calibration %s after %zu evaluation(s) (%ld realisations, %.2f s wall):\n"
+                      "  l_z   = %.6e m +- %.2e m (95 %%)   [paper: %.3g m, %+.1f %%]\n",
+                      r.converged ? "converged" : "did NOT converge (best evaluation reported)", r.evaluations.size(),
+                      r.realisations, r.wallSeconds, e.layerThickness, r.layerError, paperLayer,
+                      100 * (e.layerThickness / paperLayer - 1)));
+  if (layer)
+    GF_CALL(PetscPrintf(comm, "  sigma_s = %.6f, sigma_k = %.6f: the surface's (-surface_sigma_s/_k), not fitted\n", e.sigma,
+                        e.sigmaKinetic));
+  else
+    GF_CALL(PetscPrintf(comm, "  sigma = %.6f +- %.6f (95 %%)       [paper: %.3g, %+.1f %%]\n", e.sigma, r.sigmaError,
+                        paperSigma, 100 * (e.sigma / paperSigma - 1)));
   GF_CALL(PetscPrintf(
       comm,
-      "Calibration %s after %zu evaluation(s) (%ld realisations, %.2f s wall):\n"
-      "  l_z   = %.6e m +- %.2e m (95 %%)   [paper: %.3g m, %+.1f %%]\n"
-      "  sigma = %.6f +- %.6f (95 %%)       [paper: %.3g, %+.1f %%]\n"
       "  slope: SBM %.6e +- %.2e 1/s, reference %.6e +- %.2e 1/s (95 %%): residual %+.4f %%\n"
-      "  peak:  SBM %.6f +- %.6f (95 %% CI), reference %.6f: residual %+.6f (%s the CI)\n"
-      "  mean mu(t) - reference up to the peak: RMS %.6f over %d samples\n"
-      "  d(slope ratio)/d l_z = %.4e 1/m, d(peak)/d sigma = %.4f (secant)%s\n",
-      r.converged ? "converged" : "did NOT converge (best evaluation reported)", r.evaluations.size(), r.realisations,
-      r.wallSeconds, e.layerThickness, r.layerError, paperLayer, 100 * (e.layerThickness / paperLayer - 1), e.sigma,
-      r.sigmaError, paperSigma, 100 * (e.sigma / paperSigma - 1), e.slope.mean, halfWidth(e.slope), c.target.slope,
+      "  peak:  SBM %.6f +- %.6f (95 %% CI), reference %.6f: residual %+.6f (%+.2f %%, %s the CI)%s\n"
+      "  mean mu(t) - reference up to the peak: RMS %.6f over %d samples\n",
+      e.slope.mean, halfWidth(e.slope), c.target.slope,
       (std::isfinite(c.target.slopeHalfWidth) ? c.target.slopeHalfWidth : 0.0), 100 * (e.slope.mean / c.target.slope - 1),
-      e.peak.mean, halfWidth(e.peak), c.target.peak, e.peak.mean - c.target.peak,
-      std::fabs(e.peak.mean - c.target.peak) <= halfWidth(e.peak) ? "inside" : "outside", rms, samples, r.jacobian[0][0],
-      r.jacobian[1][1], coupling.c_str()));
+      e.peak.mean, halfWidth(e.peak), c.target.peak, peakResidual, 100 * peakResidual / c.target.peak, inside,
+      layer ? ": what the two models differ by on this surface (not fitted)" : "", rms, samples));
+  if (layer)
+    GF_CALL(PetscPrintf(comm, "  d(slope ratio)/d l_z = %.4e 1/m (%s)%s\n", r.jacobian[0][0],
+                        r.evaluations.size() > 1 ? "secant" : "the 1/l_z law", coupling.c_str()));
+  else
+    GF_CALL(PetscPrintf(comm, "  d(slope ratio)/d l_z = %.4e 1/m, d(peak)/d sigma = %.4f (secant)%s\n", r.jacobian[0][0],
+                        r.jacobian[1][1], coupling.c_str()));
   if (!r.converged)  // a scene that does not reproduce the reference is not written
     throw CollectiveError("the calibration did not converge in " + std::to_string(r.evaluations.size()) +
                           " evaluations (-calibrate_max_evaluations; the best is printed above): nothing written");

@@ -8,6 +8,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
+#include <utility>
 
 namespace gradfric::calibration {
 
@@ -24,9 +26,10 @@ Residual residualOf(const Calibration& c, const Evaluation& e) {
 
 double halfWidth(const campaign::Summary& s) { return s.ciHalfWidth(); }
 
-// How far an evaluation is from convergence: <= 1 when both residuals are within tolerance.
+// How far an evaluation is from convergence: <= 1 when the fitted residuals are within tolerance.
 double misfit(const Calibration& c, const Evaluation& e) {
   const Residual r = residualOf(c, e);
+  if (c.settings.fit == Fit::Layer) return std::fabs(r.slope) / c.settings.slopeTolerance;
   // (an ensemble without dispersion has no CI: then 1e-4 of mu)
   const double peakTolerance = c.settings.peakTolerance * std::max(halfWidth(e.peak), 1e-4);
   return std::max(std::fabs(r.slope) / c.settings.slopeTolerance, std::fabs(r.peak) / peakTolerance);
@@ -40,11 +43,56 @@ void printEvaluation(MPI_Comm comm, const Calibration& c, int k, const Evaluatio
                       e.unconfirmed ? "  (peaks unconfirmed)" : "", e.wallSeconds));
 }
 
+// The slope's 95 % half-width relative to the reference's slope: the SBM ensemble's and the
+// reference fit's, in quadrature.
+double relativeSlopeHalfWidth(const Calibration& c, const Evaluation& e) {
+  return std::hypot(halfWidth(e.slope), (std::isfinite(c.target.slopeHalfWidth) ? c.target.slopeHalfWidth : 0.0)) /
+         c.target.slope;
+}
+
+// l_z alone, on the scene's surface: Newton steps on slope ~ 1/l_z (exact while every block
+// sticks through the window), with the secant of the last two evaluations as the derivative.
+CalibrationResult calibrateLayer(MPI_Comm comm, const Calibration& c, CalibrationResult out, double wall0) {
+  const CalibrationSettings& s = c.settings;
+  const double lz0 = s.layerGuess;
+  auto evaluate = [&](double a) {
+    out.evaluations.push_back(evaluateSpringBlocks(comm, c.scene, a * lz0, std::nullopt, c.grid));
+    out.realisations += c.scene.realisations;
+    printEvaluation(comm, c, static_cast<int>(out.evaluations.size()) - 1, out.evaluations.back());
+    return residualOf(c, out.evaluations.back());
+  };
+  double x = 1.0;
+  Residual f = evaluate(x);
+  double slopeDerivative = -(1.0 + f.slope) / x, peakDerivative = 0.0;  // d/da of (slope ratio, peak)
+  while (misfit(c, out.evaluations.back()) > 1.0 && static_cast<int>(out.evaluations.size()) < s.maxEvaluations) {
+    const double a = std::clamp(x * (1.0 + f.slope), 0.25, 4.0);
+    if (std::fabs(a - x) < 1e-12) break;  // pinned at a bound
+    const Residual g = evaluate(a);
+    slopeDerivative = (g.slope - f.slope) / (a - x);
+    peakDerivative = (g.peak - f.peak) / (a - x);
+    x = a;
+    f = g;
+  }
+  out.best = 0;
+  for (int k = 1; k < static_cast<int>(out.evaluations.size()); ++k)
+    if (misfit(c, out.evaluations[k]) < misfit(c, out.evaluations[out.best])) out.best = k;
+  const Evaluation& e = out.fitted();
+  out.converged = misfit(c, e) <= 1.0;
+  out.jacobian[0][0] = slopeDerivative / lz0;
+  out.jacobian[1][0] = peakDerivative / lz0;
+  if (std::fabs(out.jacobian[0][0]) > 0) out.layerError = relativeSlopeHalfWidth(c, e) / std::fabs(out.jacobian[0][0]);
+  out.wallSeconds = MPI_Wtime() - wall0;
+  return out;
+}
+
 }  // namespace
 
 CalibrationResult calibrate(MPI_Comm comm, const Calibration& c) {
   CalibrationResult out;
   const double wall0 = MPI_Wtime();
+  GF_CALL(PetscPrintf(comm, "Evaluations (%d realisations each; residuals against the reference):\n",
+                      c.scene.realisations));
+  if (c.settings.fit == Fit::Layer) return calibrateLayer(comm, c, std::move(out), wall0);
   const CalibrationSettings& s = c.settings;
   const double lz0 = s.layerGuess;
   // Variables scaled to order one: a = l_z / l_z0, b = sigma / sigma_step.
@@ -54,8 +102,6 @@ CalibrationResult calibrate(MPI_Comm comm, const Calibration& c) {
     printEvaluation(comm, c, static_cast<int>(out.evaluations.size()) - 1, out.evaluations.back());
     return residualOf(c, out.evaluations.back());
   };
-  GF_CALL(PetscPrintf(comm, "Evaluations (%d realisations each; residuals against the reference):\n",
-                      c.scene.realisations));
   double x[2] = {1.0, s.sigmaGuess / s.sigmaStep};
   Residual f = evaluate(x[0], x[1]);
   // The Jacobian of (slope ratio - 1, peak) in (a, b): the sticking slope goes as 1/l_z; the peak's
@@ -116,8 +162,7 @@ CalibrationResult calibrate(MPI_Comm comm, const Calibration& c) {
   }
   // The 95 % half-widths of the two measured quantities (SBM ensemble and reference fit), through
   // the inverse Jacobian, added in quadrature.
-  const double slopeHalf = std::hypot(halfWidth(e.slope), (std::isfinite(c.target.slopeHalfWidth) ? c.target.slopeHalfWidth : 0.0)) /
-                           c.target.slope;
+  const double slopeHalf = relativeSlopeHalfWidth(c, e);
   const double peakHalf = halfWidth(e.peak);
   const double (&P)[2][2] = out.jacobian;
   const double det = P[0][0] * P[1][1] - P[0][1] * P[1][0];

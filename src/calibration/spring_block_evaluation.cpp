@@ -34,12 +34,12 @@ double layerThicknessForSlope(const SpringBlockScene& scene, double slope) {
   return stickingSlope(scene, 1.0) / slope;
 }
 
-Evaluation evaluateSpringBlocks(MPI_Comm comm, const SpringBlockScene& scene, double layerThickness, double sigma,
-                                const std::vector<double>& grid) {
+Evaluation evaluateSpringBlocks(MPI_Comm comm, const SpringBlockScene& scene, double layerThickness,
+                                std::optional<double> sigma, const std::vector<double>& grid) {
   const double wall0 = MPI_Wtime();
   sbm::Parameters p = scene.base;
   p.layerThickness = layerThickness;
-  p.surface.sigmaStatic = p.surface.sigmaKinetic = sigma;
+  if (sigma) p.surface.sigmaStatic = p.surface.sigmaKinetic = *sigma;
   p.automaticTimeStep = p.timeStep = sbm::defaultTimeStep(p, scene.grading);  // the step follows l_z
   RunParameters scratch;  // the -friction_ windows scale with the loading time, hence with l_z
   const sbm::Request request = sbm::readRequest(comm, &scratch, p, calibrationMeasurement());
@@ -66,7 +66,8 @@ Evaluation evaluateSpringBlocks(MPI_Comm comm, const SpringBlockScene& scene, do
 
   Evaluation e;
   e.layerThickness = layerThickness;
-  e.sigma = sigma;
+  e.sigma = p.surface.sigmaStatic;
+  e.sigmaKinetic = p.surface.sigmaKinetic;
   e.timeStep = p.timeStep;
   std::vector<double> peaks(R), slopes(R);
   e.meanCurve.assign(G, 0.0);

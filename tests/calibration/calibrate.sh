@@ -1,10 +1,12 @@
 #!/usr/bin/env bash
 # gradfric-calibrate against our own FEM (docs/calibration.md), on a reduced plate:
 #  - the reference: gradfric-fem's non-graded plate on 10 x 10 x 5 (mu_s only, a few seconds);
-#  - the fit on 2 ranks (20 x 20 blocks, 16 realisations): converged, and gradfric run on the
-#    written scene file reproduces the reference's loading slope within 1 % and has the FEM's peak
-#    inside its 95 % CI (check_calibration.py, from the ensemble file alone); l_z agrees with
-#    G v / (p slope) of the FEM curve; the same scene file on 1 rank;
+#  - l_z and sigma fitted on 2 ranks (20 x 20 blocks, 16 realisations): converged, and gradfric
+#    run on the written scene file reproduces the reference's loading slope within 1 % and has the
+#    FEM's peak inside its 95 % CI (check_calibration.py, from the ensemble file alone); l_z agrees
+#    with G v / (p slope) of the FEM curve; the same scene file on 1 rank;
+#  - l_z alone on the FEM's undispersed surface: the same l_z, sigma 0 in the scene file, the peak
+#    reported, not fitted (the undispersed SBM's is the local mu_s); the default surface refused;
 #  - the same curve as CSV and as HDF5 datasets gives the same l_z and sigma;
 #  - bad input: exit 2, one message naming the option, nothing written, an earlier file kept;
 #  - a peak no sigma reaches, or no convergence in the evaluations allowed: exit 1, nothing written.
@@ -23,7 +25,7 @@ run() {  # name, ranks, expected exit, command...
 }
 
 run fem 1 0 "$fem" -fem_nx 10 -fem_ny 10 -fem_nz 5 -friction_observables mu_s -output fem.h5
-fit=(-sbm_N 20 -calibrate_realisations 16)
+fit=(-calibrate_fit lz_sigma -sbm_N 20 -calibrate_realisations 16)
 run fit 2 0 "$calibrate" -calibrate_reference fem.h5 "${fit[@]}" -output fit.opts -calibrate_curve fit.csv
 grep -q "Calibration converged" fit.out || fail "fit: not converged: $(cat fit.out | tail -12)"
 [ -s fit.opts ] && [ -s fit.csv ] && ! ls ./*.tmp >/dev/null 2>&1 || fail "fit: files not written whole"
@@ -35,6 +37,15 @@ diff <(grep -v "^# gradfric -options_file" fit.opts) <(grep -v "^# gradfric -opt
 # The scene file, run by gradfric, reproduces the reference.
 run verify 2 0 "$sbm" -options_file fit.opts -output verify.h5
 $python "$source_dir/tests/calibration/check_calibration.py" fem.h5 verify.h5 fit.opts || fail "the calibrated scene"
+
+# l_z alone (the default) on the surface the FEM ran: sigma 0, not fitted.
+run layer 2 0 "$calibrate" -calibrate_reference fem.h5 -sbm_N 20 -calibrate_realisations 2 -surface_sigma_s 0 \
+  -surface_sigma_k 0 -output layer.opts
+grep -q "sigma_s = 0.000000, sigma_k = 0.000000: the surface's" layer.out && grep -q "what the two models differ by" layer.out ||
+  fail "layer: $(tail -8 layer.out)"
+[ "$(grep '^-sbm_lz' layer.opts)" = "$(grep '^-sbm_lz' fit.opts)" ] || fail "layer: another l_z: $(grep '^-sbm_lz' layer.opts fit.opts)"
+run layer_verify 1 0 "$sbm" -options_file layer.opts -output layer.h5
+$python "$source_dir/tests/calibration/check_calibration.py" fem.h5 layer.h5 layer.opts || fail "the l_z-only scene"
 
 # The same curve as CSV and as plain HDF5 datasets.
 $python - <<'PY' || fail "could not write the CSV and HDF5 references"
@@ -74,6 +85,14 @@ bad flat 1 "invalid option -calibrate_reference = flat.csv: allowed a curve that
 bad lz 2 "invalid option -sbm_lz = 5e-5: allowed not set in a calibration: the calibration fits it" -calibrate_reference fem.h5 -sbm_lz 5e-5
 bad window 1 "invalid option -calibrate_window = \(2 values\): allowed lo,hi with 0 < lo < hi < 1" -calibrate_reference fem.h5 -calibrate_window 0.6,0.2
 bad realisations 1 "invalid option -calibrate_realisations = 1" -calibrate_reference fem.h5 -calibrate_realisations 1
+# Fitting l_z alone, the surface is the FEM's (its sigma 0, not the spring blocks' default 2.8 %), and
+# the options of the sigma fit have no effect.
+bad surface 2 "invalid option -surface_sigma_s = 0.028: allowed the reference's value 0 \(fem.h5\): calibrate the surface the FEM ran" \
+  -calibrate_reference fem.h5 -sbm_N 20
+bad sigma_guess 1 "invalid option -calibrate_sigma_guess = 0.02: allowed not set in a calibration: only with -calibrate_fit lz_sigma" \
+  -calibrate_reference fem.h5 -calibrate_sigma_guess 0.02
+bad sigma_fitted 2 "invalid option -surface_sigma_s = 0.02: allowed not set in a calibration: -calibrate_fit lz_sigma fits it" \
+  -calibrate_reference fem.h5 -calibrate_fit lz_sigma -surface_sigma_s 0.02
 # A per-grading g must exist for the calibrated grading: checked before the first evaluation.
 bad pressure 2 "invalid option -pressure_response_file = .*E_\+0.2.h5: allowed a g measured under the grading of every run .*the calibrated scene \(non-graded" \
   -calibrate_reference fem.h5 -pressure_response fem -pressure_response_select grading \

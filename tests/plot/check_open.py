@@ -292,8 +292,8 @@ for group, dim in (("evaluations", "evaluation"), ("design", "row"), ("verificat
 
 # 6. A calibration against a small FEM reference: the curves (with the scene beside them) and the scene.
 run(fem, "-fem_nx", "10", "-fem_ny", "10", "-fem_nz", "5", "-friction_observables", "mu_s", fem_out, path("ref.h5"), ranks=1)
-run(calibrate, "-calibrate_reference", path("ref.h5"), "-sbm_N", "20", "-calibrate_realisations", "16",
-    "-output", path("fit.opts"), "-calibrate_curve", path("fit.csv"))
+run(calibrate, "-calibrate_reference", path("ref.h5"), "-calibrate_fit", "lz_sigma", "-sbm_N", "20",
+    "-calibrate_realisations", "16", "-output", path("fit.opts"), "-calibrate_curve", path("fit.csv"))
 table = np.genfromtxt(path("fit.csv"), delimiter=",", names=True)
 options = dict(line.split(" ", 1) for line in open(path("fit.opts")).read().splitlines() if line.startswith("-"))
 with gradfric.open(path("fit.csv")) as ds:
@@ -305,6 +305,16 @@ with gradfric.open(path("fit.csv")) as ds:
 with gradfric.open(path("fit.opts")) as ds:
     assert ds.attrs["format"] == "gradfric-calibration-scene" and float(ds["reference_peak"]) > 0.5
     assert ds.attrs["ensemble_realisations"] == "16" and ds["lz_ci95_half_width"].attrs["units"] == "m"
+    assert ds.attrs["fit"] == "lz_sigma"
+# l_z alone on the FEM's undispersed surface: sigma 0 is the surface's, the peak residual is reported.
+run(calibrate, "-calibrate_reference", path("ref.h5"), "-sbm_N", "20", "-calibrate_realisations", "2",
+    "-surface_sigma_s", "0", "-surface_sigma_k", "0", "-output", path("layer.opts"))
+options = dict(line.split(" ", 1) for line in open(path("layer.opts")).read().splitlines() if line.startswith("-"))
+with gradfric.open(path("layer.opts")) as ds:
+    assert ds.attrs["fit"] == "lz" and ds.attrs["status"] == "converged", ds.attrs
+    assert float(ds["sigma"]) == 0 and float(ds["sigma_k"]) == 0
+    assert np.isclose(float(ds["lz"]), float(options["-sbm_lz"]), rtol=1e-6)
+    assert np.isclose(float(ds["reference_peak"]) + float(ds["peak_residual"]), 1.0, atol=0.005)  # the undispersed SBM peaks at 1
 
 # Anything else is refused with the file named.
 with open(path("bogus.h5"), "w") as text:

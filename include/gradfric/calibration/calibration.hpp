@@ -1,12 +1,15 @@
 #pragma once
 // Calibration of the spring-block model against a reference mu(t) (gradfric-calibrate,
-// docs/calibration.md): l_z and sigma (sigma_s = sigma_k) such that the SBM's ensemble matches
-// the reference's loading slope and static peak. The slope of the SBM's sticking start is
-// G v/(p l_z) (docs/model.md: slider springs K_s = G l^2/l_z), which gives the first l_z; sigma
-// then moves the peak. The 2 x 2 problem is solved by secant (Broyden) steps on ensembles with
-// common random numbers; the fitted values carry the ensembles' confidence intervals through
-// the final Jacobian. Steps: readCalibration (every option, the reference, the output files,
-// before any work), calibrate, writeCalibration.
+// docs/calibration.md). The slope of the SBM's sticking start is G v/(p l_z) (docs/model.md:
+// slider springs K_s = G l^2/l_z), which gives the first l_z.
+//  - fit lz (the default): l_z alone matches the reference's loading slope. sigma is the
+//    surface's (-surface_*, the reference's with an FEM file); the peak's residual is what the
+//    two models differ by on that surface, reported, not fitted away.
+//  - fit lz_sigma: l_z and sigma (sigma_s = sigma_k) match the slope and the static peak, the
+//    2 x 2 problem solved by secant (Broyden) steps.
+// Ensembles use common random numbers; the fitted values carry the ensembles' confidence
+// intervals through the final Jacobian. Steps: readCalibration (every option, the reference, the
+// output files, before any work), calibrate, writeCalibration.
 #include "gradfric/calibration/reference_curve.hpp"
 #include "gradfric/calibration/spring_block_evaluation.hpp"
 #include "gradfric/core/options.hpp"
@@ -20,8 +23,11 @@
 
 namespace gradfric::calibration {
 
+enum class Fit { Layer, LayerAndSigma };
+
 struct CalibrationSettings {
   ReferenceSource source;
+  Fit fit = Fit::Layer;
   double layerGuess = 0.0;    // first l_z [m]; 0: from the reference's slope
   double sigmaGuess = 0.028;  // first sigma
   double sigmaStep = 0.01;    // the second sigma is sigmaGuess +- this (towards the reference's peak)
@@ -49,7 +55,7 @@ std::optional<Calibration> readCalibration(MPI_Comm comm, RunParameters* record)
 struct CalibrationResult {
   std::vector<Evaluation> evaluations;
   int best = -1;            // the evaluation reported
-  bool converged = false;   // both residuals within their tolerances
+  bool converged = false;   // the fitted residuals within their tolerances
   double layerError = 0.0;  // 95 % half-widths of the fitted l_z [m] and sigma
   double sigmaError = 0.0;
   double jacobian[2][2] = {{0, 0}, {0, 0}};  // d(slope ratio, peak)/d(l_z [m], sigma) at the end
@@ -58,8 +64,8 @@ struct CalibrationResult {
   const Evaluation& fitted() const { return evaluations[best]; }
 };
 
-// Collective: the evaluations, one line each; CollectiveError if no sigma in [0, 0.5] can reach
-// the reference's peak (the closest attainable value named).
+// Collective: the evaluations, one line each. Fit::LayerAndSigma: CollectiveError if no sigma in
+// [0, 0.5] can reach the reference's peak (the closest attainable value named).
 CalibrationResult calibrate(MPI_Comm comm, const Calibration& calibration);
 
 // Collective: the report, the scene file (and the curve file), each complete or not at all.

@@ -1,6 +1,6 @@
 #pragma once
-// One evaluation of a calibration: an ensemble of spring-block realisations at a trial l_z and
-// sigma (sigma_s = sigma_k), over the ranks of a communicator, and what it measures: the mean
+// One evaluation of a calibration: an ensemble of spring-block realisations at a trial l_z (and,
+// when sigma is fitted, a trial sigma = sigma_s = sigma_k; else the scene's surface), over the ranks of a communicator, and what it measures: the mean
 // static peak and loading slope with their 95 % confidence intervals, and the mean mu(t). Every
 // evaluation draws realisation r from the stream (seed, 0, r) (common random numbers): the
 // measured quantities then move smoothly with l_z and sigma, which the secant steps need, and the
@@ -14,6 +14,7 @@
 #include <mpi.h>
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace gradfric::calibration {
@@ -28,7 +29,8 @@ struct SpringBlockScene {
 
 struct Evaluation {
   double layerThickness = 0.0;  // l_z [m]
-  double sigma = 0.0;           // sigma_s = sigma_k
+  double sigma = 0.0;           // sigma_s of the surface evaluated
+  double sigmaKinetic = 0.0;    // its sigma_k
   double timeStep = 0.0;        // dt [s] (the shipped default for this l_z)
   campaign::Summary peak;       // mu_s over the realisations
   campaign::Summary slope;      // each realisation's loading slope [1/s]
@@ -41,8 +43,9 @@ struct Evaluation {
 // Collective: realisation r runs on rank r % size (campaign/realisation_pool.hpp, static); the
 // records are gathered whole, so every number is the same on any number of ranks, and a failing
 // realisation ends every rank with the same error.
-Evaluation evaluateSpringBlocks(MPI_Comm comm, const SpringBlockScene& scene, double layerThickness, double sigma,
-                                const std::vector<double>& grid);
+// sigma: nullopt keeps the scene's surface.
+Evaluation evaluateSpringBlocks(MPI_Comm comm, const SpringBlockScene& scene, double layerThickness,
+                                std::optional<double> sigma, const std::vector<double>& grid);
 
 // The loading slope of the SBM's uniform start, G_mean v / (p l_z) [1/s] (every block sticks and
 // its slider spring K_s = G l^2/l_z is the only compliance), and l_z from a measured slope.
