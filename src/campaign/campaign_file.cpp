@@ -55,12 +55,6 @@ std::string extensionMismatch(const Campaign& c, const io::ResultsFile& file) {
   return "";
 }
 
-long finishedCount(const io::ResultsFile& file) {
-  long finished = 0;
-  for (auto flag : file.finishedTasks()) finished += flag ? 1 : 0;
-  return finished;
-}
-
 }  // namespace
 
 io::OutputPlan planCampaignFile(MPI_Comm comm, const Campaign& c) {
@@ -89,7 +83,7 @@ io::ResultsFile openCampaignFile(MPI_Comm comm, const Campaign& c, const io::Out
                           plan.path().c_str(), plan.workPath().c_str(), unit.c_str()));
       io::ResultsFile extended = io::ResultsFile::create(comm, plan.workPath(), c.layout, c.table, c.sceneAttributes);
       extended.copyTasksFrom(plan.path());
-      GF_CALL(PetscPrintf(comm, "%ld %s kept from %s\n", finishedCount(extended), unit.c_str(), plan.path().c_str()));
+      GF_CALL(PetscPrintf(comm, "%ld %s kept from %s\n", extended.finishedCount(), unit.c_str(), plan.path().c_str()));
       return extended;
     }
     if (plan.start() == io::OutputStart::Fresh) {
@@ -100,7 +94,7 @@ io::ResultsFile openCampaignFile(MPI_Comm comm, const Campaign& c, const io::Out
     checkResumable(comm, target, plan.workPath());
     GF_CALL(PetscPrintf(comm, "Resuming %s\n", plan.workPath().c_str()));
     io::ResultsFile resumed = io::ResultsFile::open(comm, plan.workPath());
-    const long finished = finishedCount(resumed);
+    const long finished = resumed.finishedCount();
     GF_CALL(PetscPrintf(comm, "%ld of %d %s already finished; running the other %ld\n", finished, c.tasks(),
                         unit.c_str(), c.tasks() - finished));
     return resumed;

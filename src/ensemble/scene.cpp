@@ -35,14 +35,6 @@ const std::set<std::string> kRunControl = {"-output",          "-output_overwrit
                                            "-ensemble_monitor", "-ensemble_schedule",   "-ensemble_abort_after",
                                            "-ensemble_dry_run", "-ensemble_extend"};
 
-// Options that did not exist before precision on demand and file extension: not stored at all
-// while they are off, so that the files of scenes without them stay as they were, byte for byte.
-bool storedOption(const std::string& name, const Scene& s) {
-  if (name.rfind("-ensemble_target", 0) == 0) return s.target.active();
-  if (name == "-ensemble_extend") return s.extend;
-  return true;
-}
-
 // The largest modulus factor a grading reaches: the stiffest band sets the stable time step.
 double stiffestFactorOf(const Grading& g) {
   double largest = 1.0;
@@ -254,10 +246,7 @@ std::optional<Scene> readScene(MPI_Comm comm, RunParameters* record) {
   }
   s.layout = layoutOf(s);
   s.table = tableOf(s);
-  for (const io::Attribute& a : io::optionAttributes(*record)) {
-    if (!storedOption("-" + a.name, s)) continue;
-    (kRunControl.count("-" + a.name) ? s.runAttributes : s.sceneAttributes).push_back(a);
-  }
+  s.recordOptions(*record, kRunControl);
   return s;
 }
 

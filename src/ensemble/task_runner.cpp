@@ -141,7 +141,7 @@ TaskTally runTasks(MPI_Comm comm, const Scene& scene, io::ResultsFile& file, con
   TaskTally tally;
   long ranHere = 0;
   double secondsHere = 0.0;
-  for (auto flag : file.finishedTasks()) tally.alreadyDone += flag ? 1 : 0;  // the progress lines count them
+  tally.alreadyDone += file.finishedCount();  // the progress lines count them
   runCampaignBatches(comm, scene, file, [&](const std::vector<Task>& tasks, long before, long planned) {
     runBatch(comm, scene, file, tasks, resultsPath, before, planned, &tally, &ranHere, &secondsHere);
   });

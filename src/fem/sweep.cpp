@@ -139,14 +139,6 @@ void findStudyBars(const RunParameters& record, FemSweep* s) {
 // The options into /scene (they define the results) and /run (they steer this run only).
 // The target's options are not stored while it is off, nor -ensemble_extend unless set, so that
 // the files of runs without them stay as they were.
-void splitRecord(const RunParameters& record, FemSweep* s) {
-  for (const io::Attribute& a : io::optionAttributes(record)) {
-    if (a.name.rfind("ensemble_target", 0) == 0 && !s->target.active()) continue;
-    if (a.name == "ensemble_extend" && !s->extend) continue;
-    (kRunControl.count("-" + a.name) ? s->runAttributes : s->sceneAttributes).push_back(a);
-  }
-}
-
 }  // namespace
 
 study::StudyBar femStudyBar(const RunParameters& record, const campaign::SweepPoint* point, const FemParameters& q,
@@ -209,13 +201,14 @@ FemSweep buildFemSweep(MPI_Comm comm, const FemParameters& params, const Grading
   // Realisation r is the surface r at every point: paired relative variations, as the spring
   // blocks' common streams. Without a surface every realisation would be the same run.
   s.commonStreams = params.surface.dispersed();
-  if (!s.commonStreams && (s.realisations > 1 || s.target.active()))
-    throw InputError(s.target.active() ? "-ensemble_target" : "-ensemble_realisations",
-                     s.target.active() ? formatReal(s.target.halfWidth) : std::to_string(s.realisations),
-                     s.target.active() ? "0 without a random surface (every realisation would be the same run: set "
-                                         "-surface_sigma_s or -surface_sigma_k)"
-                                       : "1 without a random surface (every realisation would be the same run: set "
-                                         "-surface_sigma_s or -surface_sigma_k)");
+  if (!s.commonStreams && (s.realisations > 1 || s.target.active())) {
+    const bool target = s.target.active();
+    throw InputError(target ? "-ensemble_target" : "-ensemble_realisations",
+                     target ? formatReal(s.target.halfWidth) : std::to_string(s.realisations),
+                     std::string(target ? "0" : "1") +
+                         " without a random surface (every realisation would be the same run: set -surface_sigma_s or "
+                         "-surface_sigma_k)");
+  }
   s.resume = options.resume;
   s.extend = options.extend;
   s.overwrite = params.overwrite;
@@ -261,7 +254,7 @@ FemSweep buildFemSweep(MPI_Comm comm, const FemParameters& params, const Grading
   findStudyBars(record, &s);
   s.table = tableOf(s);
   s.layout = layoutOf(s, io::kFemSweepFormatName, !s.table.blockModulus.empty());
-  splitRecord(record, &s);
+  s.recordOptions(record, kRunControl);
   return s;
 }
 
@@ -274,7 +267,7 @@ FemSweep oneRunCampaign(const FemParameters& params, const Grading& grading, con
   findStudyBars(record, &s);
   s.table = tableOf(s);
   s.layout = layoutOf(s, io::kFemRunFormatName, !s.table.blockModulus.empty());
-  splitRecord(record, &s);
+  s.recordOptions(record, kRunControl);
   return s;
 }
 

@@ -153,9 +153,7 @@ void runFemSweep(MPI_Comm comm, const FemSweep& s, const RunParameters& record) 
   const std::string unit = s.realisations > 1 ? "runs" : "points";
   io::ResultsFile file = campaign::openCampaignFile(comm, s, plan, unit);  // a file to continue is checked first
   record.print(comm, "gradfric-fem: resolved parameters (FEM sweep)");
-  long finished = 0;
-  for (auto flag : file.finishedTasks()) finished += flag ? 1 : 0;
-  printPlan(comm, s, finished);
+  printPlan(comm, s, file.finishedCount());
   const double wall0 = MPI_Wtime();
   // Round robin over the groups in the fixed order of pendingTasks (the static schedule): the same
   // tasks run on the same groups whatever the timing, and no number in the file depends on which

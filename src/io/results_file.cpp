@@ -246,6 +246,12 @@ std::vector<std::uint8_t> ResultsFile::finishedTasks() const {
   return std::vector<std::uint8_t>(flags.begin(), flags.end());
 }
 
+long ResultsFile::finishedCount() const {
+  long finished = 0;
+  for (auto flag : finishedTasks()) finished += flag ? 1 : 0;
+  return finished;
+}
+
 std::vector<double> ResultsFile::readRealisationReal(const std::string& name) const {
   H5Dataset d(GF_H5(H5Dopen2(file_, ("realisations/" + name).c_str(), H5P_DEFAULT)));
   return readAll<double>(d, H5T_NATIVE_DOUBLE);

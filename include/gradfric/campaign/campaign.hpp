@@ -10,6 +10,7 @@
 #include "gradfric/physics/grading.hpp"
 
 #include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -38,6 +39,10 @@ struct Campaign {
   int tasks() const { return points() * realisations; }
   // The grading of sweep point p: its profile, property and amplitude, and its property fields.
   Grading pointGrading(int p) const;
+  // Fills sceneAttributes and runAttributes from the run's options: those in runControl (they
+  // steer this run, not its results) go under /run. The target's and -ensemble_extend are not
+  // stored while off, so that the files of scenes without them stay as they were, byte for byte.
+  void recordOptions(const RunParameters& record, const std::set<std::string>& runControl);
 };
 
 }  // namespace gradfric::campaign

@@ -150,6 +150,7 @@ public:
 
   // Every rank reads the whole P x R table (small scalars only).
   std::vector<std::uint8_t> finishedTasks() const;
+  long finishedCount() const;  // how many of them are done
   std::vector<double> readRealisationReal(const std::string& name) const;  // mu_s, mu_k, peak_time, ...
   std::vector<std::int8_t> readPeakConfirmed() const;
   std::vector<double> readStatistic(const std::string& name) const;
