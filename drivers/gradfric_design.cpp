@@ -18,9 +18,11 @@
 #include "gradfric/design/problem.hpp"
 #include "gradfric/design/root_finder.hpp"
 #include "gradfric/design/tao_search.hpp"
+#include "gradfric/design/uncertainty.hpp"
 
 #include <petscsys.h>
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <optional>
@@ -50,12 +52,18 @@ int main(int argc, char** argv) {
     if (problem->verify)  // independent streams (seed, 1, r), to the tolerance
       verification = evaluator.evaluate(search.design.x, problem->tolerance, "verify", 1);
     const SearchResult result = settleOnVerification(search, verification, problem->target);  // "found" needs it
-    std::optional<FemVerification> fem;
-    if (problem->fem) fem = runFemCheck(comm, *problem->fem, problem->gradingAt(result.design.x));
+    std::optional<FemVerification> fem;  // a variation target: against the FEM's own non-graded plate
+    const Grading uniform = problem->referenceGrading();
+    if (problem->fem)
+      fem = runFemCheck(comm, *problem->fem, problem->gradingAt(result.design.x),
+                        problem->kind == TargetKind::Variation ? &uniform : nullptr);
+    const DesignUncertainty uncertainty =
+        designUncertainty(*problem, result, fem ? femTargetValue(*problem, *fem) : NAN,
+                          designStudyBar(*problem, record, result.design.x));
     double wall = MPI_Wtime() - start;
     MPI_Bcast(&wall, 1, MPI_DOUBLE, 0, comm);
-    saveDesignFile(comm, plan, *problem, record, log, result, verification, fem, evaluator.realisationsRun());
-    printDesign(comm, *problem, result, verification, fem, evaluator.realisationsRun(), wall, plan.path());
+    saveDesignFile(comm, plan, *problem, record, log, result, verification, fem, uncertainty, evaluator.realisationsRun());
+    printDesign(comm, *problem, result, verification, fem, uncertainty, evaluator.realisationsRun(), wall, plan.path());
     int rank = 0;
     MPI_Comm_rank(comm, &rank);
     if (problem->plot && rank == 0) {

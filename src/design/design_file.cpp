@@ -10,6 +10,7 @@
 #include <petscsys.h>
 
 #include <cmath>
+#include <cstdio>
 #include <optional>
 
 namespace gradfric::design {
@@ -47,6 +48,14 @@ std::pair<std::string, std::string> columnMeaning(const std::string& column, con
   if (column == "x_ci95_low") return {x, "lower end of the design's CI mapped onto the parameter through the slope"};
   if (column == "x_ci95_high") return {x, "upper end of the design's CI mapped onto the parameter through the slope"};
   if (column == "peak_confirmed") return {"1", "1 if the FEM run confirmed its peak"};
+  if (column == "reference_mu_s") return {"1", "the FEM's non-graded plate's mu_s (the reference of its variation)"};
+  if (column == "reference_peak_confirmed") return {"1", "1 if the FEM's non-graded run confirmed its peak"};
+  if (column == "fem_value") return {"1", "the FEM's " + value + " at the design (NaN: not run)"};
+  for (const char* source : {"statistical", "discretisation", "model_form", "combined"})
+    for (const char* end : {"low", "high"})
+      if (column == std::string(source) + "_" + end)
+        return {x, std::string(end) + " end of the parameter's interval from the " + source +
+                       " uncertainty (95 %; NaN: not measured; docs/design.md)"};
   if (column == "cells") return {"1", "hexahedra of the FEM mesh"};
   return {"", column};
 }
@@ -99,6 +108,23 @@ study::LadderTable tableOf(const std::string& name, const Problem& problem, cons
   return t;
 }
 
+// The parameter's interval from each source, and their combination (one parameter), or each
+// source in words.
+void printUncertainty(MPI_Comm comm, const Problem& problem, const DesignUncertainty& u) {
+  const std::string name = problem.dimension() == 1 ? problem.free[0].name : "the parameters";
+  GF_CALL(PetscPrintf(comm, "  Uncertainty of %s (95 %%), source by source:\n", name.c_str()));
+  auto line = [&](const char* source, const ParameterInterval& i, const std::string& note) {
+    if (i.known())
+      GF_CALL(PetscPrintf(comm, "    %-15s [%.6g, %.6g]  %s\n", source, i.low, i.high, note.c_str()));
+    else
+      GF_CALL(PetscPrintf(comm, "    %-15s %s\n", source, note.c_str()));
+  };
+  line("statistical", u.statistical, u.statistical.known() ? "the design's CI through the local slope" : "the design's CI above (no slope)");
+  line("discretisation", u.discretisation, u.discretisationNote);
+  line("model form", u.modelForm, u.modelFormNote);
+  line("combined", u.combined, u.combinedNote);
+}
+
 }  // namespace
 
 io::OutputPlan planDesignFile(MPI_Comm comm, const Problem& problem) {
@@ -109,7 +135,8 @@ io::OutputPlan planDesignFile(MPI_Comm comm, const Problem& problem) {
 
 void saveDesignFile(MPI_Comm comm, const io::OutputPlan& plan, const Problem& problem, const RunParameters& record,
                     const SearchLog& log, const SearchResult& result, const std::optional<Evaluation>& verification,
-                    const std::optional<FemVerification>& fem, long realisationsRun) {
+                    const std::optional<FemVerification>& fem, const DesignUncertainty& uncertainty,
+                    long realisationsRun) {
   if (!runProvenance) runProvenance = io::collectProvenance(comm);
   study::StudyFile file;
   std::string names;
@@ -129,6 +156,21 @@ void saveDesignFile(MPI_Comm comm, const io::OutputPlan& plan, const Problem& pr
                                        {{"slope", {result.slope}},
                                         {"x_ci95_low", {result.parameterLow()}},
                                         {"x_ci95_high", {result.parameterHigh()}}});
+  {
+    study::LadderTable& design = file.ladders.back();
+    const DesignUncertainty& u = uncertainty;
+    for (const auto& [name, interval] : {std::pair<const char*, ParameterInterval>{"statistical", u.statistical},
+                                         {"discretisation", u.discretisation},
+                                         {"model_form", u.modelForm},
+                                         {"combined", u.combined}}) {
+      design.columns.push_back({std::string(name) + "_low", {interval.low}});
+      design.columns.push_back({std::string(name) + "_high", {interval.high}});
+    }
+    design.columns.push_back({"fem_value", {u.femValue}});
+    design.texts.emplace_back("discretisation_note", u.discretisationNote);
+    design.texts.emplace_back("model_form_note", u.modelFormNote);
+    design.texts.emplace_back("combined_note", u.combinedNote);
+  }
   if (verification) file.ladders.push_back(tableOf("verification", problem, {*verification}));
   if (fem) {
     study::LadderTable t;
@@ -136,6 +178,10 @@ void saveDesignFile(MPI_Comm comm, const io::OutputPlan& plan, const Problem& pr
     for (const auto& option : io::optionAttributes(problem.fem->record)) t.texts.emplace_back(option.name, option.value);
     t.columns = {{"mu_s", {fem->muStatic}}, {"peak_confirmed", {fem->peakConfirmed ? 1.0 : 0.0}},
                  {"cells", {double(fem->cells)}}};
+    if (problem.kind == TargetKind::Variation)
+      t.columns.insert(t.columns.end(), {{"reference_mu_s", {fem->referenceMuStatic}},
+                                         {"reference_peak_confirmed", {fem->referenceConfirmed ? 1.0 : 0.0}}});
+    t.columns.push_back({"value", {uncertainty.femValue}});
     file.ladders.push_back(t);
   }
   // The conventions of the other results files (io/hdf5_attributes.hpp): UTF-8 string attributes,
@@ -156,7 +202,7 @@ void saveDesignFile(MPI_Comm comm, const io::OutputPlan& plan, const Problem& pr
 
 void printDesign(MPI_Comm comm, const Problem& problem, const SearchResult& result,
                  const std::optional<Evaluation>& verification, const std::optional<FemVerification>& fem,
-                 long realisationsRun, double wallSeconds,
+                 const DesignUncertainty& uncertainty, long realisationsRun, double wallSeconds,
                  const std::string& path) {
   const char* quantity = problem.kind == TargetKind::Variation ? "relative variation" : "mu_s";
   const Evaluation& d = result.design;
@@ -172,13 +218,21 @@ void printDesign(MPI_Comm comm, const Problem& problem, const SearchResult& resu
     GF_CALL(PetscPrintf(comm, "  %s in [%.6g, %.6g] (the design's CI through the local slope %.4g)\n",
                         problem.free[0].name.c_str(), result.parameterLow(), result.parameterHigh(), result.slope));
   if (verification) row("verification", *verification);
-  if (fem)
-    GF_CALL(PetscPrintf(comm, "  %-13s %4s %12s %26s %12.6f%s   (%d hexahedra, %.1f s)\n", "FEM", "1", "", "", fem->muStatic,
-                        fem->peakConfirmed ? "" : " (peak not confirmed)", fem->cells, fem->wallSeconds));
+  if (fem) {
+    char femValue[32] = "";
+    if (std::isfinite(uncertainty.femValue)) std::snprintf(femValue, sizeof femValue, "%.6f", uncertainty.femValue);
+    GF_CALL(PetscPrintf(comm, "  %-13s %4s %12s %26s %12.6f%s   (%d hexahedra, %.1f s)\n", "FEM", "1", femValue, "",
+                        fem->muStatic, fem->peakConfirmed ? "" : " (peak not confirmed)", fem->cells, fem->wallSeconds));
+    if (problem.kind == TargetKind::Variation)
+      GF_CALL(PetscPrintf(comm, "  %-13s %4s %12s %26s %12.6f%s   (the FEM's non-graded plate, %.1f s)\n", "FEM, uniform", "1",
+                          "", "", fem->referenceMuStatic, fem->referenceConfirmed ? "" : " (peak not confirmed)",
+                          fem->referenceWallSeconds));
+  }
   GF_CALL(PetscPrintf(comm, "  target %s = %g +- %g%s\n", quantity, problem.target, problem.tolerance,
                       verification ? (verification->side(problem.target) == 0 ? "; the verification's CI holds it"
                                                                                : "; the verification's CI misses it")
                                    : ""));
+  printUncertainty(comm, problem, uncertainty);
   GF_CALL(PetscPrintf(comm, "  %ld realisations run (the verification and any reference plate included), %.1f s wall\n",
                       realisationsRun, wallSeconds));
   GF_CALL(PetscPrintf(comm, "design file: %s\n", path.c_str()));

@@ -158,7 +158,8 @@ std::optional<Problem> readProblem(MPI_Comm comm, RunParameters* record) {
   s.verify = o.flag("verify", true, "a fresh verification ensemble with independent streams at the design");
   const bool verifyFem = o.flag("verify_fem", false,
                                 "also run the design's surface in the finite-element model (-fem_* options: mesh, "
-                                "penalties; a reduced mesh such as -fem_nx 20 -fem_ny 20 -fem_nz 2 is allowed), side by side");
+                                "penalties; a reduced mesh such as -fem_nx 20 -fem_ny 20 -fem_nz 2 is allowed; a variation "
+                                "target: its non-graded plate too): the design's model-form interval");
   s.monitor = o.flag("monitor", true, "print a line per evaluation");
   s.plot = o.flag("plot", false, "draw the search with scripts/plot_design.py when the design completes");
   OptionReader out(comm, "", "Results file", record);
@@ -201,6 +202,7 @@ std::optional<Problem> readProblem(MPI_Comm comm, RunParameters* record) {
   if (s.fem) {
     std::vector<Grading> all;
     for (const auto& c : corners(s.free)) all.push_back(s.gradingAt(c));
+    if (s.kind == TargetKind::Variation) all.push_back(s.referenceGrading());  // the FEM's own reference run
     checkFemCheck(*s.fem, all);
   }
   readDesignTaoOptions();  // -design_tao_*: read by TaoSetFromOptions later, checked now

@@ -76,7 +76,8 @@ def main(argv):
                 if n.startswith("provenance"):  # the ranks, date and command line differ by design
                     continue
                 if isinstance(a[n], h5py.Dataset):
-                    assert np.array_equal(a[n][()], b[n][()]), n
+                    nan = a[n].dtype.kind == "f"  # a source not measured is NaN in both
+                    assert np.array_equal(a[n][()], b[n][()], equal_nan=nan), n
                     assert [d.keys() for d in a[n].dims] == [d.keys() for d in b[n].dims], n
                 assert {k: v for k, v in a[n].attrs.items() if k not in scales} == \
                     {k: v for k, v in b[n].attrs.items() if k not in scales}, n
@@ -84,6 +85,36 @@ def main(argv):
             ka = {k: text(v) for k, v in a.attrs.items() if k not in skip}
             kb = {k: text(v) for k, v in b.attrs.items() if k not in skip}
             assert ka == kb, set(ka.items()) ^ set(kb.items())
+    elif check == "uncertainty":
+        # Each source's interval of the parameter recomputed from the file's own numbers
+        # (docs/design.md, "The whole uncertainty of a design").
+        close = lambda a, b: abs(a - b) <= 1e-12 * max(1.0, abs(a), abs(b))
+        with h5py.File(argv[2], "r") as f:
+            d = design_row(f)
+            x = next(v for k, v in d.items() if k.startswith("x_") and k not in ("x_ci95_low", "x_ci95_high"))
+            slope, value = d["slope"], d["value"]
+            stat = 0.5 * (d["ci95_high"] - d["ci95_low"]) / abs(slope)
+            assert close(d["statistical_low"], x - stat) and close(d["statistical_high"], x + stat), d
+            if "fem_verification" in f:
+                fv = design_row(f, "fem_verification")
+                variation = text(f.attrs["target_type"]) == "variation"
+                expected = fv["mu_s"] / fv["reference_mu_s"] - 1 if variation else fv["mu_s"]
+                assert close(d["fem_value"], expected) and close(fv["value"], expected), (d, fv)
+                x_fem = x - (d["fem_value"] - value) / slope
+                assert close(d["model_form_low"], min(x, x_fem)) and close(d["model_form_high"], max(x, x_fem)), d
+                core = (d["model_form_low"], d["model_form_high"])
+            else:
+                assert np.isnan(d["fem_value"]) and np.isnan(d["model_form_low"]), d
+                assert "-design_verify_fem" in text(f["design"].attrs["model_form_note"])
+                core = (x, x)
+            disc = 0.0
+            if np.isnan(d["discretisation_low"]):
+                assert text(f["design"].attrs["discretisation_note"]).startswith("not measured"), d
+            else:
+                disc = 0.5 * (d["discretisation_high"] - d["discretisation_low"])
+            assert close(d["combined_low"], core[0] - stat - disc) and close(d["combined_high"], core[1] + stat + disc), d
+            print(f"x {x:.6f}: statistical +-{stat:.6f}, model form [{d['model_form_low']:.6f}, "
+                  f"{d['model_form_high']:.6f}], combined [{d['combined_low']:.6f}, {d['combined_high']:.6f}]")
     else:
         raise SystemExit(f"unknown check {check}")
 

@@ -53,6 +53,7 @@ known_answer)
   grep -q "Design (root, found)" "$work/d.log" || fail "no design line"
   "$python" "$checker" status "$work/d.h5" found || fail "status"
   "$python" "$checker" meets "$work/d.h5" "$target" 0.002 || fail "the design does not meet the target"
+  "$python" "$checker" uncertainty "$work/d.h5" || fail "the sources' intervals"
   "$python" "$checker" known "$work/d.h5" "$work/sweep.h5" "$target" || fail "known answer"
   "$python" "$src/scripts/plot_design.py" "$work/d.h5" --out "$work/plots" >/dev/null || fail "plot of a one-parameter search"
   [ -s "$work/plots/d_search.png" ] || fail "no search plot"
@@ -118,6 +119,21 @@ uniform = float(sys.argv[2])
 print(f"FEM mu_s: design {mu:.4f}, uniform plate {uniform:.4f}")
 assert math.isfinite(mu) and confirmed == 1, (mu, confirmed)
 assert mu < uniform - 0.01, "the graded design does not lower the FEM's mu_s"
+PY
+  "$python" "$checker" uncertainty "$work/f.h5" || fail "the model-form interval"
+  # A variation target: the FEM's variation is against its own non-graded plate, the same run as
+  # gradfric-fem's uniform one, bit for bit.
+  run 0 1 "$work/v.log" "${scene[@]}" -sbm_N 12 -design_target_type variation -design_target -0.15 -design_verify_fem \
+    -fem_nx 8 -fem_ny 8 -fem_nz 1 -output "$work/v.h5"
+  grep -q "^  FEM, uniform " "$work/v.log" && grep -q "^    model form      \[" "$work/v.log" || { cat "$work/v.log" >&2; fail "no uniform FEM or model form line"; }
+  "$python" "$checker" uncertainty "$work/v.h5" || fail "the model-form interval of a variation"
+  "$python" - "$work/v.h5" "$work/u.h5" <<'PY' || fail "the FEM's reference plate"
+import sys, h5py
+with h5py.File(sys.argv[1], "r") as f, h5py.File(sys.argv[2], "r") as u:
+    reference, uniform = f["fem_verification/reference_mu_s"][0], u["realisations/mu_s"][0, 0]
+    assert f["fem_verification/reference_peak_confirmed"][0] == 1
+print(f"FEM non-graded: design's reference {reference!r}, gradfric-fem {uniform!r}")
+assert reference == uniform, "the design's FEM reference is not gradfric-fem's uniform plate"
 PY
   ;;
 refuse)

@@ -7,11 +7,16 @@
 //   /evaluations every evaluation in order: index, x_<parameter> ..., realisations, value,
 //                ci95_low, ci95_high, mu_s, mu_s_ci95_low, mu_s_ci95_high; attribute phases
 //   /design      the design (one row, same columns; one parameter: slope, x_ci95_low, x_ci95_high,
-//                its CI mapped onto the parameter through the local slope)
+//                its CI mapped onto the parameter through the local slope, and each source's
+//                interval of the parameter, NaN where not measured: statistical_, discretisation_,
+//                model_form_, combined_ low/high; fem_value; attributes *_note say why)
 //   /verification  the fresh ensemble at the design (one row; absent with -design_verify false)
-//   /fem_verification  with -design_verify_fem: mu_s, peak_confirmed, cells; attributes: the -fem_* options
+//   /fem_verification  with -design_verify_fem: mu_s, peak_confirmed, cells (a variation target:
+//                reference_mu_s, reference_peak_confirmed of the FEM's non-graded plate); value (the
+//                target's quantity); attributes: the -fem_* options
 #include "gradfric/design/fem_check.hpp"
 #include "gradfric/design/search.hpp"
+#include "gradfric/design/uncertainty.hpp"
 #include "gradfric/io/output_plan.hpp"
 
 #include <mpi.h>
@@ -26,12 +31,13 @@ io::OutputPlan planDesignFile(MPI_Comm comm, const Problem& problem);
 // Collective: writes and commits the file.
 void saveDesignFile(MPI_Comm comm, const io::OutputPlan& plan, const Problem& problem, const RunParameters& record,
                     const SearchLog& log, const SearchResult& result, const std::optional<Evaluation>& verification,
-                    const std::optional<FemVerification>& fem, long realisationsRun);
+                    const std::optional<FemVerification>& fem, const DesignUncertainty& uncertainty,
+                    long realisationsRun);
 
 // Rank 0 prints the design, its verification and how the search went.
 void printDesign(MPI_Comm comm, const Problem& problem, const SearchResult& result,
                  const std::optional<Evaluation>& verification, const std::optional<FemVerification>& fem,
-                 long realisationsRun, double wallSeconds,
+                 const DesignUncertainty& uncertainty, long realisationsRun, double wallSeconds,
                  const std::string& path);
 
 }  // namespace gradfric::design

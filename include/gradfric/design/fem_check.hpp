@@ -8,6 +8,7 @@
 
 #include <mpi.h>
 
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -30,9 +31,14 @@ struct FemVerification {
   bool peakConfirmed = false;
   double wallSeconds = 0.0;
   int cells = 0;
+  // The FEM's own non-graded plate, the reference of a variation target (else not run: NaN).
+  double referenceMuStatic = std::numeric_limits<double>::quiet_NaN();
+  bool referenceConfirmed = false;
+  double referenceWallSeconds = 0.0;
 };
 
-// Collective over comm.
-FemVerification runFemCheck(MPI_Comm comm, const FemCheck& check, const Grading& grading);
+// Collective over comm. reference: the non-graded plate, run too when given (a variation target).
+FemVerification runFemCheck(MPI_Comm comm, const FemCheck& check, const Grading& grading,
+                            const Grading* reference = nullptr);
 
 }  // namespace gradfric::design

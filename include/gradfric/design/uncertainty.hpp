@@ -1,0 +1,57 @@
+#pragma once
+// The design's parameter interval from each source of uncertainty, named, and their combination
+// (docs/design.md, "The whole uncertainty of a design"). One free parameter, through the local
+// slope s = d value / d x of the search:
+//  - statistical: the design's 95 % CI, +- h / |s|;
+//  - discretisation: the spring blocks' study bar of mu_s at the design's scene and lattice
+//    (study::studyBar), +- U / |s|; not measured where no ladder covers the design point;
+//  - model form: the FEM at the design point (-design_verify_fem; for a variation target against
+//    the FEM's own non-graded plate). At the spring blocks' slope, the FEM reaches the same value
+//    at x_F = x - (v_FEM - v_SBM) / s; the interval runs from x to x_F.
+// Combined: the hull of the model-form interval widened by the statistical and discretisation
+// half-widths, added, not in quadrature: a bound whenever each part is one. Several free
+// parameters have no slope: each source is then reported in the target's quantity only.
+#include "gradfric/core/study_table.hpp"
+#include "gradfric/design/fem_check.hpp"
+#include "gradfric/design/search.hpp"
+
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace gradfric::design {
+
+struct ParameterInterval {
+  double low = std::numeric_limits<double>::quiet_NaN();
+  double high = std::numeric_limits<double>::quiet_NaN();
+  bool known() const { return std::isfinite(low) && std::isfinite(high); }
+};
+
+struct DesignUncertainty {
+  ParameterInterval statistical;
+  ParameterInterval discretisation;
+  std::string discretisationNote;  // the bar and its ladder, or why it is not measured
+  ParameterInterval modelForm;
+  std::string modelFormNote;       // the FEM's value against the spring blocks', or why not measured
+  double femValue = std::numeric_limits<double>::quiet_NaN();  // the FEM's target quantity at the design
+  ParameterInterval combined;
+  std::string combinedNote;        // which sources it holds
+};
+
+// femValue: the FEM's mu_s or variation at the design (NaN: not run). bar: the spring blocks'
+// study bar of mu_s at the design point (absolute uncertainty in its verdict).
+DesignUncertainty designUncertainty(const Problem& problem, const SearchResult& result, double femValue,
+                                    const study::StudyBar& bar);
+
+// Collective-free: the spring blocks' study bar of mu_s at the design point x (sbm_study.tsv, the
+// scene's options with the design's grading amplitude, the lattice N_b). A field parameter's
+// design point is not looked up: not measured, said so.
+study::StudyBar designStudyBar(const Problem& problem, const RunParameters& record, const std::vector<double>& x);
+
+// The FEM's value of the target's quantity: mu_s, or (mu_s - mu_s,0) / mu_s,0 against its own
+// non-graded run; NaN when a run did not confirm its peak.
+double femTargetValue(const Problem& problem, const FemVerification& fem);
+
+}  // namespace gradfric::design

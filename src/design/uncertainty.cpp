@@ -1,0 +1,111 @@
+// The design's uncertainty, source by source (include/gradfric/design/uncertainty.hpp).
+#include "gradfric/design/uncertainty.hpp"
+
+#include "gradfric/study/scene_key.hpp"
+
+#include <algorithm>
+#include <cstdio>
+
+namespace gradfric::design {
+
+namespace {
+
+std::string number(const char* format, double value) {
+  char text[64];
+  std::snprintf(text, sizeof text, format, value);
+  return text;
+}
+
+}  // namespace
+
+study::StudyBar designStudyBar(const Problem& problem, const RunParameters& record, const std::vector<double>& x) {
+  for (const FreeParameter& f : problem.free)
+    if (f.name != "grading_delta") {
+      study::StudyBar bar;
+      bar.why = "the free parameter " + f.name + " is a field's, whose design point the study tables are not searched for";
+      return bar;
+    }
+  const Grading g = problem.gradingAt(x);
+  campaign::SweepPoint point;
+  point.delta = g.delta;
+  point.property = toString(g.property);
+  point.profile = toString(g.profile);
+  point.theta = problem.parameters.plate.slidingAngle;
+  point.sigma = problem.parameters.surface.sigmaStatic;
+  point.sigmaKinetic = problem.parameters.surface.sigmaKinetic;
+  study::SceneKey key = study::sceneKey(record, {"-sbm_N"}, &point);
+  // The design's own options choose where to look, not what a run at x computes.
+  key.erase(std::remove_if(key.begin(), key.end(), [](const auto& kv) { return kv.first.rfind("design_", 0) == 0; }),
+            key.end());
+  return study::studyBar("sbm_study.tsv", "mu_s", key, {problem.parameters.blocksPerSide});
+}
+
+double femTargetValue(const Problem& problem, const FemVerification& fem) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  if (!fem.peakConfirmed) return nan;
+  if (problem.kind == TargetKind::Absolute) return fem.muStatic;
+  if (!fem.referenceConfirmed || !(fem.referenceMuStatic > 0)) return nan;
+  return fem.muStatic / fem.referenceMuStatic - 1.0;
+}
+
+DesignUncertainty designUncertainty(const Problem& problem, const SearchResult& result, double femValue,
+                                    const study::StudyBar& bar) {
+  DesignUncertainty u;
+  const Evaluation& d = result.design;
+  const bool slope = problem.dimension() == 1 && std::isfinite(result.slope) && result.slope != 0.0;
+  const double x = d.x[0];
+  double statistical = 0.0, discretisation = 0.0;
+  if (slope) {
+    statistical = d.halfWidth() / std::fabs(result.slope);
+    u.statistical = {x - statistical, x + statistical};
+  }
+
+  // Discretisation: the study's bar of the spring blocks' mu_s (a variation's ladder is not judged).
+  if (problem.kind == TargetKind::Variation)
+    u.discretisationNote = "not measured: the study tables bar mu_s, not its relative variation";
+  else if (!bar.measured || !bar.verdict.bounded())
+    u.discretisationNote = "not measured: " + (bar.why.empty() ? std::string("the ladder shows no convergence") : bar.why);
+  else if (!slope)
+    u.discretisationNote = "+- " + number("%.3g", bar.verdict.uncertainty) + " on mu_s (no slope to map it: several parameters)";
+  else {
+    discretisation = bar.verdict.uncertainty / std::fabs(result.slope);
+    u.discretisation = {x - discretisation, x + discretisation};
+    u.discretisationNote = "+- " + number("%.3g", bar.verdict.uncertainty) + " on mu_s, the spring blocks' study bar";
+  }
+
+  // Model form: where the FEM would reach the spring blocks' value, at their slope.
+  u.femValue = femValue;
+  if (!problem.fem)
+    u.modelFormNote = "not measured: run with -design_verify_fem (one FEM run at the design";
+  else if (!std::isfinite(femValue))
+    u.modelFormNote = "not measured: the FEM did not confirm its peak";
+  if (!problem.fem && problem.kind == TargetKind::Variation) u.modelFormNote += " and one of the non-graded plate)";
+  else if (!problem.fem) u.modelFormNote += ")";
+  if (std::isfinite(femValue)) {
+    const double gap = femValue - d.value;
+    u.modelFormNote = "the FEM at the design: " + number("%.6f", femValue) + " against the spring blocks' " +
+                      number("%.6f", d.value) + " (" + number("%+.6f", gap) + ")";
+    if (slope) {
+      const double femX = x - gap / result.slope;
+      u.modelForm = {std::min(x, femX), std::max(x, femX)};
+      u.modelFormNote += "; at the spring blocks' slope the FEM reaches it at " + number("%.6g", femX);
+    }
+  }
+
+  // Combined: the model-form interval (or the design) widened by the other half-widths, added.
+  if (slope) {
+    const ParameterInterval core = u.modelForm.known() ? u.modelForm : ParameterInterval{x, x};
+    u.combined = {core.low - statistical - discretisation, core.high + statistical + discretisation};
+    u.combinedNote = std::string("statistical") + (u.discretisation.known() ? " + discretisation" : "") +
+                     (u.modelForm.known() ? " + model form" : "") + ", added";
+    std::string missing;
+    if (!u.discretisation.known()) missing += "discretisation";
+    if (!u.modelForm.known()) missing += std::string(missing.empty() ? "" : " and ") + "model form";
+    if (!missing.empty()) u.combinedNote += "; without " + missing + " (not measured)";
+  } else {
+    u.combinedNote = "not formed: several parameters have no slope to map the sources onto";
+  }
+  return u;
+}
+
+}  // namespace gradfric::design
