@@ -7,14 +7,17 @@
 //   mpiexec -n 2 gradfric-design -options_file input/design_stripes_tao.opts -design_tao_type pounders
 //   python3 scripts/plot_design.py design.h5
 //
-// One free parameter: a stochastic root finder; several: PETSc TAO. Then a fresh verification
-// ensemble with independent streams, and with -design_verify_fem the surface in the FEM. Exit status: 0 design found
+// One free parameter: a stochastic root finder; several: PETSc TAO. Each evaluation is a
+// spring-block ensemble, or with -design_model fem one FEM run. Then a fresh verification
+// ensemble with independent streams (spring blocks), the other model at the design, and the
+// parameter's interval from each source of uncertainty. Exit status: 0 design found
 // (and verified), 4 target unreachable within the bounds, 5 not converged, 6 found but the verification misses the
 // target, 2 bad input (docs/design.md).
 #include "gradfric/core/driver.hpp"
 #include "gradfric/core/options.hpp"
 #include "gradfric/design/design_file.hpp"
 #include "gradfric/design/evaluator.hpp"
+#include "gradfric/design/fem_evaluator.hpp"
 #include "gradfric/design/problem.hpp"
 #include "gradfric/design/root_finder.hpp"
 #include "gradfric/design/tao_search.hpp"
@@ -41,29 +44,42 @@ int main(int argc, char** argv) {
     if (!problem) return 0;                                               // -help
     const io::OutputPlan plan = planDesignFile(comm, *problem);         // before any work
     record.print(comm, "gradfric-design parameters");
-    PetscPrintf(comm, "Every realisation measures mu_s only and stops at its confirmed peak (%d x %d blocks, dt %.4g s).\n",
-                problem->parameters.blocksPerSide, problem->parameters.blocksPerSide, problem->parameters.timeStep);
+    if (problem->model == "fem")
+      PetscPrintf(comm, "Every evaluation is one FEM run to its confirmed peak (%d x %d x %d hexahedra).\n",
+                  problem->fem->parameters.nx, problem->fem->parameters.ny, problem->fem->parameters.nz);
+    else
+      PetscPrintf(comm, "Every realisation measures mu_s only and stops at its confirmed peak (%d x %d blocks, dt %.4g s).\n",
+                  problem->parameters.blocksPerSide, problem->parameters.blocksPerSide, problem->parameters.timeStep);
     const double start = MPI_Wtime();
-    Evaluator evaluator(comm, *problem);
+    Evaluator springBlocks(comm, *problem);
+    FemEvaluator femRuns(comm, *problem);
+    DesignModel& model = problem->model == "fem" ? static_cast<DesignModel&>(femRuns) : springBlocks;
     SearchLog log(comm, *problem);
-    const SearchResult search = problem->method == "root" ? findRoot(evaluator, *problem, log)
-                                                          : searchWithTao(comm, evaluator, *problem, log);
+    const SearchResult search = problem->method == "root" ? findRoot(model, *problem, log)
+                                                          : searchWithTao(comm, model, *problem, log);
     std::optional<Evaluation> verification;
     if (problem->verify)  // independent streams (seed, 1, r), to the tolerance
-      verification = evaluator.evaluate(search.design.x, problem->tolerance, "verify", 1);
+      verification = springBlocks.evaluate(search.design.x, problem->tolerance, "verify", 1);
     const SearchResult result = settleOnVerification(search, verification, problem->target);  // "found" needs it
-    std::optional<FemVerification> fem;  // a variation target: against the FEM's own non-graded plate
+    // The other model at the design: the FEM (a variation target: against its own non-graded
+    // plate), or with the FEM as the design's model, a spring-block ensemble.
+    std::optional<FemVerification> fem;
+    std::optional<Evaluation> otherSpringBlocks;
     const Grading uniform = problem->referenceGrading();
-    if (problem->fem)
+    if (problem->model == "fem")
+      otherSpringBlocks = springBlocks.evaluate(result.design.x, problem->tolerance, "model_form");
+    else if (problem->fem)
       fem = runFemCheck(comm, *problem->fem, problem->gradingAt(result.design.x),
                         problem->kind == TargetKind::Variation ? &uniform : nullptr);
+    const double otherValue = fem ? femTargetValue(*problem, *fem) : otherSpringBlocks ? otherSpringBlocks->value : NAN;
     const DesignUncertainty uncertainty =
-        designUncertainty(*problem, result, fem ? femTargetValue(*problem, *fem) : NAN,
-                          designStudyBar(*problem, record, result.design.x));
+        designUncertainty(*problem, result, otherValue, designStudyBar(*problem, record, result.design.x));
+    RunCounts runs{springBlocks.realisationsRun(), femRuns.realisationsRun()};
+    if (fem) runs.femRuns += problem->kind == TargetKind::Variation ? 2 : 1;  // -design_verify_fem's runs
     double wall = MPI_Wtime() - start;
     MPI_Bcast(&wall, 1, MPI_DOUBLE, 0, comm);
-    saveDesignFile(comm, plan, *problem, record, log, result, verification, fem, uncertainty, evaluator.realisationsRun());
-    printDesign(comm, *problem, result, verification, fem, uncertainty, evaluator.realisationsRun(), wall, plan.path());
+    saveDesignFile(comm, plan, *problem, record, log, result, verification, fem, otherSpringBlocks, uncertainty, runs);
+    printDesign(comm, *problem, result, verification, fem, otherSpringBlocks, uncertainty, runs, wall, plan.path());
     int rank = 0;
     MPI_Comm_rank(comm, &rank);
     if (problem->plot && rank == 0) {

@@ -50,7 +50,8 @@ std::pair<std::string, std::string> columnMeaning(const std::string& column, con
   if (column == "peak_confirmed") return {"1", "1 if the FEM run confirmed its peak"};
   if (column == "reference_mu_s") return {"1", "the FEM's non-graded plate's mu_s (the reference of its variation)"};
   if (column == "reference_peak_confirmed") return {"1", "1 if the FEM's non-graded run confirmed its peak"};
-  if (column == "fem_value") return {"1", "the FEM's " + value + " at the design (NaN: not run)"};
+  if (column == "other_model_value")
+    return {"1", "the other model's " + value + " at the design (the FEM's, or with -design_model fem the spring blocks'; NaN: not run)"};
   for (const char* source : {"statistical", "discretisation", "model_form", "combined"})
     for (const char* end : {"low", "high"})
       if (column == std::string(source) + "_" + end)
@@ -119,7 +120,10 @@ void printUncertainty(MPI_Comm comm, const Problem& problem, const DesignUncerta
     else
       GF_CALL(PetscPrintf(comm, "    %-15s %s\n", source, note.c_str()));
   };
-  line("statistical", u.statistical, u.statistical.known() ? "the design's CI through the local slope" : "the design's CI above (no slope)");
+  const char* statistical = problem.model == "fem" ? "none: a FEM run has no sampling error (its CI is its value)"
+                            : u.statistical.known() ? "the design's CI through the local slope"
+                                                    : "the design's CI above (no slope to map it)";
+  line("statistical", u.statistical, statistical);
   line("discretisation", u.discretisation, u.discretisationNote);
   line("model form", u.modelForm, u.modelFormNote);
   line("combined", u.combined, u.combinedNote);
@@ -135,8 +139,8 @@ io::OutputPlan planDesignFile(MPI_Comm comm, const Problem& problem) {
 
 void saveDesignFile(MPI_Comm comm, const io::OutputPlan& plan, const Problem& problem, const RunParameters& record,
                     const SearchLog& log, const SearchResult& result, const std::optional<Evaluation>& verification,
-                    const std::optional<FemVerification>& fem, const DesignUncertainty& uncertainty,
-                    long realisationsRun) {
+                    const std::optional<FemVerification>& fem, const std::optional<Evaluation>& springBlocks,
+                    const DesignUncertainty& uncertainty, const RunCounts& runs) {
   if (!runProvenance) runProvenance = io::collectProvenance(comm);
   study::StudyFile file;
   std::string names;
@@ -147,7 +151,9 @@ void saveDesignFile(MPI_Comm comm, const io::OutputPlan& plan, const Problem& pr
                      {"note", result.note},
                      {"target_type", toString(problem.kind)},
                      {"free_parameters", names},
-                     {"realisations_run", std::to_string(realisationsRun)}};
+                     {"model", problem.model},
+                     {"realisations_run", std::to_string(runs.realisations)},
+                     {"fem_runs", std::to_string(runs.femRuns)}};
   for (const auto& option : io::optionAttributes(record)) file.attributes.emplace_back(option.name, option.value);
   file.ladders.push_back(tableOf("evaluations", problem, log.all()));
   file.ladders.push_back(tableOf("design", problem, {result.design}));
@@ -166,12 +172,13 @@ void saveDesignFile(MPI_Comm comm, const io::OutputPlan& plan, const Problem& pr
       design.columns.push_back({std::string(name) + "_low", {interval.low}});
       design.columns.push_back({std::string(name) + "_high", {interval.high}});
     }
-    design.columns.push_back({"fem_value", {u.femValue}});
+    design.columns.push_back({"other_model_value", {u.otherValue}});
     design.texts.emplace_back("discretisation_note", u.discretisationNote);
     design.texts.emplace_back("model_form_note", u.modelFormNote);
     design.texts.emplace_back("combined_note", u.combinedNote);
   }
   if (verification) file.ladders.push_back(tableOf("verification", problem, {*verification}));
+  if (springBlocks) file.ladders.push_back(tableOf("model_form", problem, {*springBlocks}));
   if (fem) {
     study::LadderTable t;
     t.name = "fem_verification";
@@ -181,7 +188,7 @@ void saveDesignFile(MPI_Comm comm, const io::OutputPlan& plan, const Problem& pr
     if (problem.kind == TargetKind::Variation)
       t.columns.insert(t.columns.end(), {{"reference_mu_s", {fem->referenceMuStatic}},
                                          {"reference_peak_confirmed", {fem->referenceConfirmed ? 1.0 : 0.0}}});
-    t.columns.push_back({"value", {uncertainty.femValue}});
+    t.columns.push_back({"value", {uncertainty.otherValue}});
     file.ladders.push_back(t);
   }
   // The conventions of the other results files (io/hdf5_attributes.hpp): UTF-8 string attributes,
@@ -191,7 +198,8 @@ void saveDesignFile(MPI_Comm comm, const io::OutputPlan& plan, const Problem& pr
     for (const auto& [name, value] : file.attributes) io::writeStringAttribute(out, name, value);
     const io::H5Dataset evaluation =
         io::createIndexScale(out, "evaluation", file.ladders.front().columns.front().second.size(), "evaluation index (row of /evaluations)");
-    const io::H5Dataset row = io::createIndexScale(out, "row", 1, "the one row of /design, /verification and /fem_verification");
+    const io::H5Dataset row =
+        io::createIndexScale(out, "row", 1, "the one row of /design, /verification, /model_form and /fem_verification");
     for (const auto& t : file.ladders) writeTable(out, t, t.name == "evaluations" ? evaluation.get() : row.get(), problem, record);
     io::H5Group provenance = io::createGroup(out, "provenance");
     io::writeProvenance(provenance, *runProvenance);
@@ -202,7 +210,8 @@ void saveDesignFile(MPI_Comm comm, const io::OutputPlan& plan, const Problem& pr
 
 void printDesign(MPI_Comm comm, const Problem& problem, const SearchResult& result,
                  const std::optional<Evaluation>& verification, const std::optional<FemVerification>& fem,
-                 const DesignUncertainty& uncertainty, long realisationsRun, double wallSeconds,
+                 const std::optional<Evaluation>& springBlocks, const DesignUncertainty& uncertainty,
+                 const RunCounts& runs, double wallSeconds,
                  const std::string& path) {
   const char* quantity = problem.kind == TargetKind::Variation ? "relative variation" : "mu_s";
   const Evaluation& d = result.design;
@@ -213,14 +222,17 @@ void printDesign(MPI_Comm comm, const Problem& problem, const SearchResult& resu
     GF_CALL(PetscPrintf(comm, "  %-13s %4d %12.6f      [%9.6f, %9.6f] %12.6f      [%9.6f, %9.6f]\n", name, e.realisations,
                         e.value, e.ciLow, e.ciHigh, e.muStatic, e.muStaticCiLow, e.muStaticCiHigh));
   };
-  row("search", d);
+  row(problem.model == "fem" ? "search (FEM)" : "search", d);
   if (std::isfinite(result.slope))
     GF_CALL(PetscPrintf(comm, "  %s in [%.6g, %.6g] (the design's CI through the local slope %.4g)\n",
                         problem.free[0].name.c_str(), result.parameterLow(), result.parameterHigh(), result.slope));
   if (verification) row("verification", *verification);
+  if (springBlocks) row("spring blocks", *springBlocks);
+  if (problem.model == "fem")
+    GF_CALL(PetscPrintf(comm, "  no verification ensemble: a FEM run is deterministic (the same run gives the same number)\n"));
   if (fem) {
     char femValue[32] = "";
-    if (std::isfinite(uncertainty.femValue)) std::snprintf(femValue, sizeof femValue, "%.6f", uncertainty.femValue);
+    if (std::isfinite(uncertainty.otherValue)) std::snprintf(femValue, sizeof femValue, "%.6f", uncertainty.otherValue);
     GF_CALL(PetscPrintf(comm, "  %-13s %4s %12s %26s %12.6f%s   (%d hexahedra, %.1f s)\n", "FEM", "1", femValue, "",
                         fem->muStatic, fem->peakConfirmed ? "" : " (peak not confirmed)", fem->cells, fem->wallSeconds));
     if (problem.kind == TargetKind::Variation)
@@ -233,8 +245,12 @@ void printDesign(MPI_Comm comm, const Problem& problem, const SearchResult& resu
                                                                                : "; the verification's CI misses it")
                                    : ""));
   printUncertainty(comm, problem, uncertainty);
-  GF_CALL(PetscPrintf(comm, "  %ld realisations run (the verification and any reference plate included), %.1f s wall\n",
-                      realisationsRun, wallSeconds));
+  if (runs.femRuns > 0)
+    GF_CALL(PetscPrintf(comm, "  %ld FEM runs (any non-graded plate included) and %ld spring-block realisations, %.1f s wall\n",
+                        runs.femRuns, runs.realisations, wallSeconds));
+  else
+    GF_CALL(PetscPrintf(comm, "  %ld realisations run (the verification and any reference plate included), %.1f s wall\n",
+                        runs.realisations, wallSeconds));
   GF_CALL(PetscPrintf(comm, "design file: %s\n", path.c_str()));
 }
 

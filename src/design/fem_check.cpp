@@ -17,6 +17,9 @@ std::shared_ptr<FemCheck> readFemCheck(MPI_Comm comm, const Plate& plate) {
   // mu_s only, as the spring-block evaluations: the run stops at the confirmed peak.
   check->parameters.measurement.kinetic = false;
   check->parameters.measurement.firstSlipMap = false;
+  // One line per evaluation is the design's progress; a run's own lines only when asked for.
+  const ResolvedOption* verbose = check->record.find("-fem_verbose");
+  if (!verbose || verbose->origin != OptionOrigin::User) check->parameters.verbose = false;
   fem::readPlateTSOptions(comm, check->parameters);
   fem::readPlateMeshOptions();
   return check;

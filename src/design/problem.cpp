@@ -155,7 +155,11 @@ std::optional<Problem> readProblem(MPI_Comm comm, RunParameters* record) {
   const PetscInt seed = o.integer("seed", 1, 0, PETSC_MAX_INT, "1",
                                   "seed: realisation r of every evaluation draws from stream (seed, 0, r), the "
                                   "verification from (seed, 1, r)");
-  s.verify = o.flag("verify", true, "a fresh verification ensemble with independent streams at the design");
+  const std::string model = o.choice("model", "sbm", {"sbm", "fem"},
+                                     "what each evaluation runs: sbm (a spring-block ensemble) or fem (one gradfric-fem run "
+                                     "on the -fem_* mesh, an undispersed surface; the spring blocks then give the "
+                                     "model-form interval)");
+  s.verify = o.flag("verify", true, "a fresh verification ensemble with independent streams at the design (sbm)");
   const bool verifyFem = o.flag("verify_fem", false,
                                 "also run the design's surface in the finite-element model (-fem_* options: mesh, "
                                 "penalties; a reduced mesh such as -fem_nx 20 -fem_ny 20 -fem_nz 2 is allowed; a variation "
@@ -185,8 +189,23 @@ std::optional<Problem> readProblem(MPI_Comm comm, RunParameters* record) {
   }
   s.parameters = sbm::readParameters(comm, record, plate, stiffest);
   s.request = sbm::readRequest(comm, record, s.parameters);
-  if (verifyFem || helpRequested()) s.fem = readFemCheck(comm, plate);
+  s.model = model;
+  if (verifyFem || model == "fem" || helpRequested()) s.fem = readFemCheck(comm, plate);
   if (helpRequested()) return std::nullopt;
+  if (model == "fem") {
+    if (verifyFem)
+      throw InputError(o.fullName("verify_fem"), "true",
+                       "false with -design_model fem (the design is the FEM's; the spring blocks give its model-form check)");
+    if (o.wasSet("verify"))
+      throw InputError(o.fullName("verify"), s.verify ? "true" : "false",
+                       "not set with -design_model fem (a FEM run is deterministic: rerun, it gives the same number)");
+    if (s.fem->parameters.surface.dispersed())
+      throw InputError("-surface_sigma_s", formatReal(s.fem->parameters.surface.sigmaStatic),
+                       "0 (and -surface_sigma_k 0) with -design_model fem: one deterministic run per evaluation");
+    s.verify = false;
+    // The spring blocks' model-form check stands on the FEM's surface.
+    s.parameters.surface = s.fem->parameters.surface;
+  }
   // Every evaluation moves the grading continuously: no measured g can match them all.
   if (s.parameters.pressureResponse.perGrading)
     throw InputError("-pressure_response_select", "grading",
@@ -202,7 +221,7 @@ std::optional<Problem> readProblem(MPI_Comm comm, RunParameters* record) {
   if (s.fem) {
     std::vector<Grading> all;
     for (const auto& c : corners(s.free)) all.push_back(s.gradingAt(c));
-    if (s.kind == TargetKind::Variation) all.push_back(s.referenceGrading());  // the FEM's own reference run
+    if (kind == "variation") all.push_back(s.referenceGrading());  // the FEM's own reference run
     checkFemCheck(*s.fem, all);
   }
   readDesignTaoOptions();  // -design_tao_*: read by TaoSetFromOptions later, checked now

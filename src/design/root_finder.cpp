@@ -140,9 +140,9 @@ SearchResult findRoot(const EvaluateFunction& evaluate, const Problem& problem, 
   return RootSearch(evaluate, problem, log).run();
 }
 
-SearchResult findRoot(Evaluator& evaluator, const Problem& problem, SearchLog& log) {
+SearchResult findRoot(DesignModel& model, const Problem& problem, SearchLog& log) {
   const EvaluateFunction evaluate = [&](const std::vector<double>& x, double halfWidth, const std::string& phase) {
-    return evaluator.evaluate(x, halfWidth, phase);
+    return model.evaluate(x, halfWidth, phase);
   };
   return findRoot(evaluate, problem, log);
 }

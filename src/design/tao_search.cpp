@@ -22,7 +22,7 @@ using OwnedTao = PetscHandle<Tao, TaoDestroy>;
 
 struct Context {
   MPI_Comm comm;
-  Evaluator* evaluator;
+  DesignModel* evaluator;
   const Problem* problem;
   SearchLog* log;
   std::optional<Evaluation> found;
@@ -118,7 +118,7 @@ void readDesignTaoOptions() {
   GF_CALL(code);
 }
 
-SearchResult searchWithTao(MPI_Comm comm, Evaluator& evaluator, const Problem& problem, SearchLog& log) {
+SearchResult searchWithTao(MPI_Comm comm, DesignModel& evaluator, const Problem& problem, SearchLog& log) {
   const int d = problem.dimension();
   Context c{comm, &evaluator, &problem, &log, std::nullopt, 0, nullptr};
   OwnedVec u = sequentialVector(d, 0.5), lower = sequentialVector(d, 0.0), upper = sequentialVector(d, 1.0);

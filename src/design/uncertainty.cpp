@@ -1,6 +1,7 @@
 // The design's uncertainty, source by source (include/gradfric/design/uncertainty.hpp).
 #include "gradfric/design/uncertainty.hpp"
 
+#include "gradfric/fem/parameters.hpp"
 #include "gradfric/study/scene_key.hpp"
 
 #include <algorithm>
@@ -34,10 +35,21 @@ study::StudyBar designStudyBar(const Problem& problem, const RunParameters& reco
   point.sigma = problem.parameters.surface.sigmaStatic;
   point.sigmaKinetic = problem.parameters.surface.sigmaKinetic;
   study::SceneKey key = study::sceneKey(record, {"-sbm_N"}, &point);
-  // The design's own options choose where to look, not what a run at x computes.
-  key.erase(std::remove_if(key.begin(), key.end(), [](const auto& kv) { return kv.first.rfind("design_", 0) == 0; }),
+  const bool fem = problem.model == "fem";
+  // The design's own options choose where to look, not what a run at x computes; with the FEM,
+  // the spring blocks' options do not enter its run, and its own (-fem_*) come from its record.
+  key.erase(std::remove_if(key.begin(), key.end(),
+                           [&](const auto& kv) {
+                             return kv.first.rfind("design_", 0) == 0 ||
+                                    (fem && (kv.first.rfind("sbm_", 0) == 0 || kv.first.rfind("surface_", 0) == 0));
+                           }),
             key.end());
-  return study::studyBar("sbm_study.tsv", "mu_s", key, {problem.parameters.blocksPerSide});
+  if (!fem) return study::studyBar("sbm_study.tsv", "mu_s", key, {problem.parameters.blocksPerSide});
+  const fem::FemParameters& q = problem.fem->parameters;
+  for (const auto& kv : study::sceneKey(problem.fem->record, {"-fem_nx", "-fem_ny", "-fem_nz"}))
+    if (kv.first.rfind("fem_", 0) == 0 || kv.first.rfind("surface_", 0) == 0) key.push_back(kv);
+  std::sort(key.begin(), key.end());
+  return study::studyBar("fem_study.tsv", "mu_s", key, {q.nx, q.ny, q.nz});
 }
 
 double femTargetValue(const Problem& problem, const FemVerification& fem) {
@@ -48,7 +60,7 @@ double femTargetValue(const Problem& problem, const FemVerification& fem) {
   return fem.muStatic / fem.referenceMuStatic - 1.0;
 }
 
-DesignUncertainty designUncertainty(const Problem& problem, const SearchResult& result, double femValue,
+DesignUncertainty designUncertainty(const Problem& problem, const SearchResult& result, double otherValue,
                                     const study::StudyBar& bar) {
   DesignUncertainty u;
   const Evaluation& d = result.design;
@@ -60,7 +72,9 @@ DesignUncertainty designUncertainty(const Problem& problem, const SearchResult& 
     u.statistical = {x - statistical, x + statistical};
   }
 
-  // Discretisation: the study's bar of the spring blocks' mu_s (a variation's ladder is not judged).
+  const bool fem = problem.model == "fem";
+  const std::string other = fem ? "the spring blocks" : "the FEM";
+  // Discretisation: the study's bar of the design model's mu_s (a variation's ladder is not judged).
   if (problem.kind == TargetKind::Variation)
     u.discretisationNote = "not measured: the study tables bar mu_s, not its relative variation";
   else if (!bar.measured || !bar.verdict.bounded())
@@ -70,25 +84,27 @@ DesignUncertainty designUncertainty(const Problem& problem, const SearchResult& 
   else {
     discretisation = bar.verdict.uncertainty / std::fabs(result.slope);
     u.discretisation = {x - discretisation, x + discretisation};
-    u.discretisationNote = "+- " + number("%.3g", bar.verdict.uncertainty) + " on mu_s, the spring blocks' study bar";
+    if (!fem) u.discretisationNote = "+- " + number("%.3g", bar.verdict.uncertainty) + " on mu_s, the spring blocks' study bar";
+    else u.discretisationNote = "+- " + number("%.3g", bar.verdict.uncertainty) + " on mu_s, the FEM's study bar";
   }
 
-  // Model form: where the FEM would reach the spring blocks' value, at their slope.
-  u.femValue = femValue;
-  if (!problem.fem)
-    u.modelFormNote = "not measured: run with -design_verify_fem (one FEM run at the design";
-  else if (!std::isfinite(femValue))
-    u.modelFormNote = "not measured: the FEM did not confirm its peak";
-  if (!problem.fem && problem.kind == TargetKind::Variation) u.modelFormNote += " and one of the non-graded plate)";
-  else if (!problem.fem) u.modelFormNote += ")";
-  if (std::isfinite(femValue)) {
-    const double gap = femValue - d.value;
-    u.modelFormNote = "the FEM at the design: " + number("%.6f", femValue) + " against the spring blocks' " +
-                      number("%.6f", d.value) + " (" + number("%+.6f", gap) + ")";
+  // Model form: where the other model would reach the design's value, at the design model's slope.
+  u.otherValue = otherValue;
+  if (!fem && !problem.fem)
+    u.modelFormNote = std::string("not measured: run with -design_verify_fem (one FEM run at the design") +
+                      (problem.kind == TargetKind::Variation ? " and one of the non-graded plate)" : ")");
+  else if (!std::isfinite(otherValue))
+    u.modelFormNote = "not measured: " + other + " did not confirm its peak";
+  if (std::isfinite(otherValue)) {
+    const double gap = otherValue - d.value;
+    u.modelFormNote = other + " at the design: " + number("%.6f", otherValue) + " against " +
+                      (fem ? std::string("the FEM's ") : std::string("the spring blocks' ")) + number("%.6f", d.value) +
+                      " (" + number("%+.6f", gap) + ")";
     if (slope) {
-      const double femX = x - gap / result.slope;
-      u.modelForm = {std::min(x, femX), std::max(x, femX)};
-      u.modelFormNote += "; at the spring blocks' slope the FEM reaches it at " + number("%.6g", femX);
+      const double otherX = x - gap / result.slope;
+      u.modelForm = {std::min(x, otherX), std::max(x, otherX)};
+      u.modelFormNote += "; at " + (fem ? std::string("the FEM's") : std::string("the spring blocks'")) + " slope " +
+                         other + (fem ? " reach" : " reaches") + " it at " + number("%.6g", otherX);
     }
   }
 
@@ -103,7 +119,8 @@ DesignUncertainty designUncertainty(const Problem& problem, const SearchResult& 
     if (!u.modelForm.known()) missing += std::string(missing.empty() ? "" : " and ") + "model form";
     if (!missing.empty()) u.combinedNote += "; without " + missing + " (not measured)";
   } else {
-    u.combinedNote = "not formed: several parameters have no slope to map the sources onto";
+    u.combinedNote = problem.dimension() == 1 ? "not formed: no local slope (the search ended without a bracket)"
+                                              : "not formed: several parameters have no slope to map the sources onto";
   }
   return u;
 }

@@ -93,18 +93,23 @@ def main(argv):
             d = design_row(f)
             x = next(v for k, v in d.items() if k.startswith("x_") and k not in ("x_ci95_low", "x_ci95_high"))
             slope, value = d["slope"], d["value"]
-            stat = 0.5 * (d["ci95_high"] - d["ci95_low"]) / abs(slope)
+            stat = 0.5 * (d["ci95_high"] - d["ci95_low"]) / abs(slope)  # 0 for the FEM's deterministic runs
             assert close(d["statistical_low"], x - stat) and close(d["statistical_high"], x + stat), d
-            if "fem_verification" in f:
-                fv = design_row(f, "fem_verification")
-                variation = text(f.attrs["target_type"]) == "variation"
-                expected = fv["mu_s"] / fv["reference_mu_s"] - 1 if variation else fv["mu_s"]
-                assert close(d["fem_value"], expected) and close(fv["value"], expected), (d, fv)
-                x_fem = x - (d["fem_value"] - value) / slope
+            if "fem_verification" in f or "model_form" in f:
+                if "fem_verification" in f:  # the spring blocks' design, checked in the FEM
+                    fv = design_row(f, "fem_verification")
+                    variation = text(f.attrs["target_type"]) == "variation"
+                    expected = fv["mu_s"] / fv["reference_mu_s"] - 1 if variation else fv["mu_s"]
+                    assert close(fv["value"], expected), fv
+                else:  # the FEM's design, checked by a spring-block ensemble
+                    assert text(f.attrs["model"]) == "fem"
+                    expected = design_row(f, "model_form")["value"]
+                assert close(d["other_model_value"], expected), (d, expected)
+                x_fem = x - (d["other_model_value"] - value) / slope
                 assert close(d["model_form_low"], min(x, x_fem)) and close(d["model_form_high"], max(x, x_fem)), d
                 core = (d["model_form_low"], d["model_form_high"])
             else:
-                assert np.isnan(d["fem_value"]) and np.isnan(d["model_form_low"]), d
+                assert np.isnan(d["other_model_value"]) and np.isnan(d["model_form_low"]), d
                 assert "-design_verify_fem" in text(f["design"].attrs["model_form_note"])
                 core = (x, x)
             disc = 0.0

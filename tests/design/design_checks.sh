@@ -136,6 +136,45 @@ print(f"FEM non-graded: design's reference {reference!r}, gradfric-fem {uniform!
 assert reference == uniform, "the design's FEM reference is not gradfric-fem's uniform plate"
 PY
   ;;
+fem_model)
+  # -design_model fem: every evaluation one gradfric-fem run (8 x 8 x 1). The root finder meets the
+  # target within the tolerance; the design's mu_s is gradfric-fem's at that Delta, bit for bit;
+  # 1 and 2 ranks write the same file; the spring blocks give the model-form interval.
+  fem_args=(-design_model fem -fem_nx 8 -fem_ny 8 -fem_nz 1)
+  run 0 2 "$work/m.log" "${scene[@]}" -sbm_N 12 "${fem_args[@]}" -design_target 0.86 -output "$work/m.h5"
+  grep -q "Design (root, found)" "$work/m.log" && grep -q "^  no verification ensemble: a FEM run is deterministic" "$work/m.log" ||
+    { cat "$work/m.log" >&2; fail "no FEM design"; }
+  "$python" "$checker" status "$work/m.h5" found || fail "status"
+  "$python" "$checker" uncertainty "$work/m.h5" || fail "the FEM design's intervals"
+  delta=$("$python" -c "import h5py,sys; print(repr(float(h5py.File(sys.argv[1])['design/x_grading_delta'][0])))" "$work/m.h5")
+  "$fem" -fem_nx 8 -fem_ny 8 -fem_nz 1 -grading_profile linear -grading_property friction -grading_bands 10 \
+    -grading_delta "$delta" -friction_observables mu_s -output "$work/g.h5" >"$work/g.log" 2>&1 || { cat "$work/g.log" >&2; fail "gradfric-fem at the design"; }
+  "$python" - "$work/m.h5" "$work/g.h5" <<'PY' || fail "the FEM design against gradfric-fem"
+import sys, h5py
+with h5py.File(sys.argv[1], "r") as m, h5py.File(sys.argv[2], "r") as g:
+    design, run = m["design/mu_s"][0], g["realisations/mu_s"][0, 0]
+    assert m["design/realisations"][0] == 1 and m["design/ci95_low"][0] == m["design/ci95_high"][0]
+print(f"FEM design: mu_s {design!r}, gradfric-fem at its Delta {run!r}")
+assert design == run, "the design's FEM value is not gradfric-fem's"
+assert abs(design - 0.86) <= 0.002, "not within the tolerance of the target"
+PY
+  run 0 1 "$work/m1.log" "${scene[@]}" -sbm_N 12 "${fem_args[@]}" -design_target 0.86 -output "$work/m1.h5"
+  "$python" "$checker" same "$work/m1.h5" "$work/m.h5" || fail "FEM design: 1 and 2 ranks differ"
+  # Beyond the family (the 8 x 8 x 1 plate reaches 0.81 at Delta -0.4): unreachable, exit 4.
+  run 4 1 "$work/u4.log" "${scene[@]}" -sbm_N 12 "${fem_args[@]}" -design_target 0.7 -output "$work/u4.h5"
+  "$python" "$checker" unreachable "$work/u4.h5" 0.7 -0.4 || fail "FEM design: the closest value"
+  # Two parameters with TAO (pounders).
+  run 0 2 "$work/t.log" -options_file "$src/input/design_E_mu_tao.opts" -sbm_N 12 "${fem_args[@]}" -design_tao_type pounders \
+    -output "$work/t.h5"
+  grep -q "Design (tao pounders, found)" "$work/t.log" || { cat "$work/t.log" >&2; fail "no FEM TAO design"; }
+  "$python" -c "import h5py,sys; v=h5py.File(sys.argv[1])['design/value'][0]; sys.exit(int(abs(v-0.85) > 0.003))" "$work/t.h5" ||
+    fail "the FEM TAO design is not within the tolerance of 0.85"
+  # Refused before any work: the FEM checking itself, a dispersed surface, a verification that
+  # would repeat the same run.
+  refused 1 -design_verify_fem "${fem_args[@]}" -design_target 0.86 -design_verify_fem
+  refused 1 -surface_sigma_s "${fem_args[@]}" -design_target 0.86 -surface_sigma_s 0.02
+  refused 1 -design_verify "${fem_args[@]}" -design_target 0.86 -design_verify false
+  ;;
 refuse)
   refused 1 -design_parameters -design_parameters ""
   refused 1 -design_parameters -design_parameters mu_width

@@ -30,12 +30,31 @@ struct Evaluation {
   double value = 0.0;         // the target's quantity: mean mu_s, or the relative variation
   double ciLow = 0.0, ciHigh = 0.0;  // its 95 % CI
   double muStatic = 0.0, muStaticCiLow = 0.0, muStaticCiHigh = 0.0;  // mean mu_s and its CI
+  // A deterministic run (the FEM on an undispersed surface): no sampling error, its CI is the
+  // value; it holds the target when within `acceptance` (the design's tolerance) of it.
+  bool exact = false;
+  double acceptance = 0.0;
   double halfWidth() const { return 0.5 * (ciHigh - ciLow); }
   // Where the target lies: +1 below the CI (the value is above it), -1 above it, 0 inside.
-  int side(double target) const { return ciLow > target ? 1 : ciHigh < target ? -1 : 0; }
+  int side(double target) const {
+    const double low = exact ? value - acceptance : ciLow, high = exact ? value + acceptance : ciHigh;
+    return low > target ? 1 : high < target ? -1 : 0;
+  }
 };
 
-class Evaluator {
+// What a search evaluates: the spring blocks' ensembles (Evaluator) or the FEM's runs
+// (FemEvaluator). Collective over the model's communicator.
+class DesignModel {
+public:
+  virtual ~DesignModel() = default;
+  // The target's quantity at x, to a CI half-width `halfWidth` where the model samples (see
+  // Evaluator::evaluate); a deterministic model ignores halfWidth, stream and atLeast.
+  virtual Evaluation evaluate(const std::vector<double>& x, double halfWidth, const std::string& phase,
+                              std::uint32_t stream = 0, int atLeast = 0) = 0;
+  virtual long realisationsRun() const = 0;  // spring-block realisations, or FEM runs
+};
+
+class Evaluator : public DesignModel {
 public:
   Evaluator(MPI_Comm comm, const Problem& problem);
 
@@ -44,9 +63,9 @@ public:
   // `atLeast` realisations (a search that compares evaluations at one count, whose common streams
   // then make the value a smooth function of x).
   Evaluation evaluate(const std::vector<double>& x, double halfWidth, const std::string& phase,
-                      std::uint32_t stream = 0, int atLeast = 0);
+                      std::uint32_t stream = 0, int atLeast = 0) override;
 
-  long realisationsRun() const { return realisations_; }  // over all ranks, the reference included
+  long realisationsRun() const override { return realisations_; }  // over all ranks, the reference included
   double taskSeconds() const { return taskSeconds_; }     // summed over the ranks
 
 private:

@@ -44,9 +44,10 @@ struct Problem {
   int maxEvaluations = 20;
   int scanPoints = 3;        // interior points tried when the bounds do not bracket the target
   std::string method = "root";  // root (one parameter) or tao
+  std::string model = "sbm";    // what each evaluation runs: sbm (ensembles) or fem (one run, fem below)
   std::uint64_t seed = 1;
   bool verify = true;
-  std::shared_ptr<FemCheck> fem;  // -design_verify_fem: the FEM's options (null: no FEM run)
+  std::shared_ptr<FemCheck> fem;  // -design_model fem or -design_verify_fem: the FEM's options (null: no FEM run)
   bool monitor = true;
   bool plot = false;
   std::string output;

@@ -21,6 +21,6 @@ using EvaluateFunction = std::function<Evaluation(const std::vector<double>& x, 
 
 // Collective (through the evaluations).
 SearchResult findRoot(const EvaluateFunction& evaluate, const Problem& problem, SearchLog& log);
-SearchResult findRoot(Evaluator& evaluator, const Problem& problem, SearchLog& log);
+SearchResult findRoot(DesignModel& model, const Problem& problem, SearchLog& log);
 
 }  // namespace gradfric::design

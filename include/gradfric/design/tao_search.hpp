@@ -27,6 +27,6 @@ inline constexpr const char* kDesignTaoPrefix = "design_";
 void readDesignTaoOptions();
 
 // Collective over comm.
-SearchResult searchWithTao(MPI_Comm comm, Evaluator& evaluator, const Problem& problem, SearchLog& log);
+SearchResult searchWithTao(MPI_Comm comm, DesignModel& evaluator, const Problem& problem, SearchLog& log);
 
 }  // namespace gradfric::design

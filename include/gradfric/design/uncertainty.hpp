@@ -5,9 +5,10 @@
 //  - statistical: the design's 95 % CI, +- h / |s|;
 //  - discretisation: the spring blocks' study bar of mu_s at the design's scene and lattice
 //    (study::studyBar), +- U / |s|; not measured where no ladder covers the design point;
-//  - model form: the FEM at the design point (-design_verify_fem; for a variation target against
-//    the FEM's own non-graded plate). At the spring blocks' slope, the FEM reaches the same value
-//    at x_F = x - (v_FEM - v_SBM) / s; the interval runs from x to x_F.
+//  - model form: the other model at the design point: with the spring blocks, the FEM
+//    (-design_verify_fem; for a variation target against the FEM's own non-graded plate); with
+//    -design_model fem, a spring-block ensemble. At the design model's slope, the other reaches
+//    the same value at x_O = x - (v_other - v_design) / s; the interval runs from x to x_O.
 // Combined: the hull of the model-form interval widened by the statistical and discretisation
 // half-widths, added, not in quadrature: a bound whenever each part is one. Several free
 // parameters have no slope: each source is then reported in the target's quantity only.
@@ -34,20 +35,20 @@ struct DesignUncertainty {
   ParameterInterval discretisation;
   std::string discretisationNote;  // the bar and its ladder, or why it is not measured
   ParameterInterval modelForm;
-  std::string modelFormNote;       // the FEM's value against the spring blocks', or why not measured
-  double femValue = std::numeric_limits<double>::quiet_NaN();  // the FEM's target quantity at the design
+  std::string modelFormNote;       // the other model's value against the design's, or why not measured
+  double otherValue = std::numeric_limits<double>::quiet_NaN();  // the other model's target quantity at the design
   ParameterInterval combined;
   std::string combinedNote;        // which sources it holds
 };
 
-// femValue: the FEM's mu_s or variation at the design (NaN: not run). bar: the spring blocks'
-// study bar of mu_s at the design point (absolute uncertainty in its verdict).
-DesignUncertainty designUncertainty(const Problem& problem, const SearchResult& result, double femValue,
+// otherValue: the other model's mu_s or variation at the design (NaN: not run). bar: the design
+// model's study bar of mu_s at the design point (absolute uncertainty in its verdict).
+DesignUncertainty designUncertainty(const Problem& problem, const SearchResult& result, double otherValue,
                                     const study::StudyBar& bar);
 
-// Collective-free: the spring blocks' study bar of mu_s at the design point x (sbm_study.tsv, the
-// scene's options with the design's grading amplitude, the lattice N_b). A field parameter's
-// design point is not looked up: not measured, said so.
+// The design model's study bar of mu_s at the design point x (sbm_study.tsv at the lattice N_b, or
+// fem_study.tsv at the -fem_* mesh; the scene's options with the design's grading amplitude). A
+// field parameter's design point is not looked up: not measured, said so.
 study::StudyBar designStudyBar(const Problem& problem, const RunParameters& record, const std::vector<double>& x);
 
 // The FEM's value of the target's quantity: mu_s, or (mu_s - mu_s,0) / mu_s,0 against its own

@@ -1,0 +1,41 @@
+#pragma once
+// The FEM as a design's model (-design_model fem, docs/design.md): each evaluation is one
+// gradfric-fem run of the family's plate at x on the -fem_* mesh, to its confirmed static peak,
+// over all ranks. On an undispersed surface a run is deterministic: it has no sampling error (an
+// exact Evaluation that holds the target within the tolerance). A variation target is against
+// the FEM's own non-graded plate, run once and kept; a parameter value already run is not run
+// again.
+#include "gradfric/design/evaluator.hpp"
+
+#include <mpi.h>
+
+#include <limits>
+#include <map>
+#include <optional>
+#include <vector>
+
+namespace gradfric::design {
+
+class FemEvaluator : public DesignModel {
+public:
+  FemEvaluator(MPI_Comm comm, const Problem& problem) : comm_(comm), problem_(problem) {}
+
+  // Collective. CollectiveError if the run does not confirm its peak.
+  Evaluation evaluate(const std::vector<double>& x, double halfWidth, const std::string& phase,
+                      std::uint32_t stream = 0, int atLeast = 0) override;
+  long realisationsRun() const override { return runs_; }
+  // The non-graded plate's mu_s (a variation target's reference; NaN before it ran).
+  double referenceMuStatic() const { return reference_ ? *reference_ : std::numeric_limits<double>::quiet_NaN(); }
+
+private:
+  double run(const Grading& grading, const std::string& what);
+
+  MPI_Comm comm_;
+  const Problem& problem_;
+  std::map<std::vector<double>, double> muStatic_;  // per x
+  std::optional<double> reference_;
+  int count_ = 0;
+  long runs_ = 0;
+};
+
+}  // namespace gradfric::design
