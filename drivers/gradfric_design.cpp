@@ -18,6 +18,7 @@
 #include "gradfric/design/design_file.hpp"
 #include "gradfric/design/evaluator.hpp"
 #include "gradfric/design/fem_evaluator.hpp"
+#include "gradfric/design/mesh_refinement.hpp"
 #include "gradfric/design/problem.hpp"
 #include "gradfric/design/root_finder.hpp"
 #include "gradfric/design/tao_search.hpp"
@@ -44,7 +45,12 @@ int main(int argc, char** argv) {
     if (!problem) return 0;                                               // -help
     const io::OutputPlan plan = planDesignFile(comm, *problem);         // before any work
     record.print(comm, "gradfric-design parameters");
-    if (problem->model == "fem")
+    if (problem->coarseFem)
+      PetscPrintf(comm, "Every evaluation is one FEM run to its confirmed peak: the search on %d x %d x %d hexahedra, "
+                  "then at most %d run(s) on %d x %d x %d.\n", problem->coarseFem->parameters.nx,
+                  problem->coarseFem->parameters.ny, problem->coarseFem->parameters.nz, problem->fineEvaluations,
+                  problem->fem->parameters.nx, problem->fem->parameters.ny, problem->fem->parameters.nz);
+    else if (problem->model == "fem")
       PetscPrintf(comm, "Every evaluation is one FEM run to its confirmed peak (%d x %d x %d hexahedra).\n",
                   problem->fem->parameters.nx, problem->fem->parameters.ny, problem->fem->parameters.nz);
     else
@@ -52,11 +58,16 @@ int main(int argc, char** argv) {
                   problem->parameters.blocksPerSide, problem->parameters.blocksPerSide, problem->parameters.timeStep);
     const double start = MPI_Wtime();
     Evaluator springBlocks(comm, *problem);
-    FemEvaluator femRuns(comm, *problem);
-    DesignModel& model = problem->model == "fem" ? static_cast<DesignModel&>(femRuns) : springBlocks;
+    std::optional<FemEvaluator> femRuns, coarseRuns;  // the FEM on the -fem_* mesh, and on the coarse one
+    if (problem->fem) femRuns.emplace(comm, *problem, *problem->fem, problem->tolerance);
+    if (problem->coarseFem) coarseRuns.emplace(comm, *problem, *problem->coarseFem, problem->coarse);
+    DesignModel& model = problem->model != "fem" ? static_cast<DesignModel&>(springBlocks)
+                         : coarseRuns           ? static_cast<DesignModel&>(*coarseRuns)
+                                                : static_cast<DesignModel&>(*femRuns);
     SearchLog log(comm, *problem);
-    const SearchResult search = problem->method == "root" ? findRoot(model, *problem, log)
-                                                          : searchWithTao(comm, model, *problem, log);
+    SearchResult search = problem->method == "root" ? findRoot(model, *problem, log)
+                                                    : searchWithTao(comm, model, *problem, log);
+    if (coarseRuns) search = refineOnFineMesh(*femRuns, *problem, log, search);  // confirmed on the -fem_* mesh
     std::optional<Evaluation> verification;
     if (problem->verify)  // independent streams (seed, 1, r), to the tolerance
       verification = springBlocks.evaluate(search.design.x, problem->tolerance, "verify", 1);
@@ -74,7 +85,8 @@ int main(int argc, char** argv) {
     const double otherValue = fem ? femTargetValue(*problem, *fem) : otherSpringBlocks ? otherSpringBlocks->value : NAN;
     const DesignUncertainty uncertainty =
         designUncertainty(*problem, result, otherValue, designStudyBar(*problem, record, result.design.x));
-    RunCounts runs{springBlocks.realisationsRun(), femRuns.realisationsRun()};
+    RunCounts runs{springBlocks.realisationsRun(), 0};
+    if (problem->model == "fem") runs.femRuns = femRuns->realisationsRun() + (coarseRuns ? coarseRuns->realisationsRun() : 0);
     if (fem) runs.femRuns += problem->kind == TargetKind::Variation ? 2 : 1;  // -design_verify_fem's runs
     double wall = MPI_Wtime() - start;
     MPI_Bcast(&wall, 1, MPI_DOUBLE, 0, comm);

@@ -7,7 +7,7 @@
 namespace gradfric::design {
 
 double FemEvaluator::run(const Grading& grading, const std::string& what) {
-  const FemVerification r = runFemCheck(comm_, *problem_.fem, grading);
+  const FemVerification r = runFemCheck(comm_, mesh_, grading);
   ++runs_;
   if (!r.peakConfirmed)  // every rank ran the same run: the same decision everywhere
     throw CollectiveError("the FEM run at " + what + " did not confirm its static peak (mu_s " + formatReal(r.muStatic) +
@@ -26,7 +26,7 @@ Evaluation FemEvaluator::evaluate(const std::vector<double>& x, double, const st
   e.x = x;
   e.realisations = 1;
   e.exact = true;
-  e.acceptance = problem_.tolerance;
+  e.acceptance = acceptance_;
   e.muStatic = e.muStaticCiLow = e.muStaticCiHigh = known->second;
   e.value = variation ? known->second / *reference_ - 1.0 : known->second;
   e.ciLow = e.ciHigh = e.value;

@@ -159,6 +159,13 @@ std::optional<Problem> readProblem(MPI_Comm comm, RunParameters* record) {
                                      "what each evaluation runs: sbm (a spring-block ensemble) or fem (one gradfric-fem run "
                                      "on the -fem_* mesh, an undispersed surface; the spring blocks then give the "
                                      "model-form interval)");
+  const std::vector<double> coarseMesh =
+      o.realList("coarse_mesh", {}, "1",
+                 "fem: nx,ny,nz of a coarse mesh the root finder searches on first; the design is then confirmed and "
+                 "refined on the -fem_* mesh (empty: search on the -fem_* mesh)");
+  const PetscInt fine = o.integer("fine_evaluations", 4, 1, 1000, "1",
+                                  "fem with -design_coarse_mesh: at most this many runs on the -fem_* mesh (secant steps "
+                                  "from the coarse design)");
   s.verify = o.flag("verify", true, "a fresh verification ensemble with independent streams at the design (sbm)");
   const bool verifyFem = o.flag("verify_fem", false,
                                 "also run the design's surface in the finite-element model (-fem_* options: mesh, "
@@ -192,6 +199,9 @@ std::optional<Problem> readProblem(MPI_Comm comm, RunParameters* record) {
   s.model = model;
   if (verifyFem || model == "fem" || helpRequested()) s.fem = readFemCheck(comm, plate);
   if (helpRequested()) return std::nullopt;
+  if (model != "fem" && (o.wasSet("coarse_mesh") || o.wasSet("fine_evaluations")))
+    throw InputError(o.fullName(o.wasSet("coarse_mesh") ? "coarse_mesh" : "fine_evaluations"), "(set)",
+                     "only with -design_model fem");
   if (model == "fem") {
     if (verifyFem)
       throw InputError(o.fullName("verify_fem"), "true",
@@ -203,6 +213,21 @@ std::optional<Problem> readProblem(MPI_Comm comm, RunParameters* record) {
       throw InputError("-surface_sigma_s", formatReal(s.fem->parameters.surface.sigmaStatic),
                        "0 (and -surface_sigma_k 0) with -design_model fem: one deterministic run per evaluation");
     s.verify = false;
+    if (!coarseMesh.empty()) {
+      const bool integers = coarseMesh.size() == 3 && std::all_of(coarseMesh.begin(), coarseMesh.end(), [](double v) {
+        return v >= 1 && v <= 100000 && v == std::floor(v);
+      });
+      if (!integers)
+        throw InputError(o.fullName("coarse_mesh"), "(" + std::to_string(coarseMesh.size()) + " values)",
+                         "three whole numbers nx,ny,nz from 1 to 100000");
+      s.coarseFem = std::make_shared<FemCheck>(*s.fem);
+      s.coarseFem->parameters.nx = static_cast<int>(coarseMesh[0]);
+      s.coarseFem->parameters.ny = static_cast<int>(coarseMesh[1]);
+      s.coarseFem->parameters.nz = static_cast<int>(coarseMesh[2]);
+      s.fineEvaluations = static_cast<int>(fine);
+    } else if (o.wasSet("fine_evaluations")) {
+      throw InputError(o.fullName("fine_evaluations"), std::to_string(fine), "only with -design_coarse_mesh");
+    }
     // The spring blocks' model-form check stands on the FEM's surface.
     s.parameters.surface = s.fem->parameters.surface;
   }
@@ -223,6 +248,7 @@ std::optional<Problem> readProblem(MPI_Comm comm, RunParameters* record) {
     for (const auto& c : corners(s.free)) all.push_back(s.gradingAt(c));
     if (kind == "variation") all.push_back(s.referenceGrading());  // the FEM's own reference run
     checkFemCheck(*s.fem, all);
+    if (s.coarseFem) checkFemCheck(*s.coarseFem, all);
   }
   readDesignTaoOptions();  // -design_tao_*: read by TaoSetFromOptions later, checked now
   if (s.fem)
@@ -250,6 +276,8 @@ std::optional<Problem> readProblem(MPI_Comm comm, RunParameters* record) {
   if (s.method == "root" && s.dimension() != 1)
     throw InputError(o.fullName("method"), method, "root with exactly one free parameter (-design_parameters has " +
                                                        std::to_string(s.dimension()) + "); tao for several");
+  if (s.coarseFem && s.method != "root")
+    throw InputError(o.fullName("coarse_mesh"), "(set)", "one free parameter (the root finder; TAO searches on one mesh)");
   s.firstBatch = static_cast<int>(first);
   s.cap = static_cast<int>(cap);
   s.maxEvaluations = static_cast<int>(evaluations);

@@ -37,8 +37,10 @@ SearchResult settleOnVerification(SearchResult result, const std::optional<Evalu
   return result;
 }
 
-const Evaluation& SearchLog::add(const Evaluation& e) {
-  evaluations_.push_back(e);
+const Evaluation& SearchLog::add(const Evaluation& evaluation) {
+  evaluations_.push_back(evaluation);
+  Evaluation& e = evaluations_.back();
+  e.index = static_cast<int>(evaluations_.size()) - 1;  // one order over every model and mesh
   if (problem_.monitor) {
     const char* where = e.side(problem_.target) == 0 ? "target inside" : e.side(problem_.target) > 0 ? "above target" : "below target";
     GF_CALL(PetscPrintf(comm_, "  eval %2d %-8s %s: R = %3d, %s = %.6f, 95%% CI [%.6f, %.6f] (+- %.6f), %s\n", e.index,

@@ -169,11 +169,34 @@ PY
   grep -q "Design (tao pounders, found)" "$work/t.log" || { cat "$work/t.log" >&2; fail "no FEM TAO design"; }
   "$python" -c "import h5py,sys; v=h5py.File(sys.argv[1])['design/value'][0]; sys.exit(int(abs(v-0.85) > 0.003))" "$work/t.h5" ||
     fail "the FEM TAO design is not within the tolerance of 0.85"
+  # Coarse to fine: the search on 8 x 8 x 1, then secant steps on 16 x 16 x 2; the design's
+  # mu_s is gradfric-fem's on the fine mesh at that Delta, and at most -design_fine_evaluations
+  # runs were made there.
+  run 0 2 "$work/c.log" "${scene[@]}" -sbm_N 12 "${fem_args[@]}" -fem_nx 16 -fem_ny 16 -fem_nz 2 -design_coarse_mesh 8,8,1 \
+    -design_target 0.88 -output "$work/c.h5"
+  grep -q "found on the coarse mesh 8x8x1, confirmed on the -fem_\* mesh" "$work/c.log" || { cat "$work/c.log" >&2; fail "no coarse-to-fine design"; }
+  delta=$("$python" -c "import h5py,sys; print(repr(float(h5py.File(sys.argv[1])['design/x_grading_delta'][0])))" "$work/c.h5")
+  "$fem" -fem_nx 16 -fem_ny 16 -fem_nz 2 -grading_profile linear -grading_property friction -grading_bands 10 \
+    -grading_delta "$delta" -friction_observables mu_s -output "$work/cg.h5" >"$work/cg.log" 2>&1 || { cat "$work/cg.log" >&2; fail "gradfric-fem on the fine mesh"; }
+  "$python" - "$work/c.h5" "$work/cg.h5" <<'PY' || fail "the coarse-to-fine design against gradfric-fem"
+import sys, h5py
+with h5py.File(sys.argv[1], "r") as m, h5py.File(sys.argv[2], "r") as g:
+    design, run = m["design/mu_s"][0], g["realisations/mu_s"][0, 0]
+    phases = m["evaluations"].attrs["phases"]
+    phases = (phases.decode() if isinstance(phases, bytes) else str(phases)).split(",")
+print(f"coarse to fine: mu_s {design!r}, gradfric-fem 16x16x2 {run!r}; phases {phases}")
+assert design == run and abs(design - 0.88) <= 0.002
+fine = [p for p in phases if p == "fine"]
+assert 1 <= len(fine) <= 4 and phases[-len(fine):] == fine, phases  # the fine runs come last
+PY
   # Refused before any work: the FEM checking itself, a dispersed surface, a verification that
-  # would repeat the same run.
+  # would repeat the same run, a coarse mesh without the FEM, of two numbers, or with TAO.
   refused 1 -design_verify_fem "${fem_args[@]}" -design_target 0.86 -design_verify_fem
   refused 1 -surface_sigma_s "${fem_args[@]}" -design_target 0.86 -surface_sigma_s 0.02
   refused 1 -design_verify "${fem_args[@]}" -design_target 0.86 -design_verify false
+  refused 1 -design_coarse_mesh -design_target 0.86 -design_coarse_mesh 8,8,1
+  refused 1 -design_coarse_mesh "${fem_args[@]}" -design_target 0.86 -design_coarse_mesh 8,8
+  refused 1 -design_fine_evaluations "${fem_args[@]}" -design_target 0.86 -design_fine_evaluations 3
   ;;
 refuse)
   refused 1 -design_parameters -design_parameters ""

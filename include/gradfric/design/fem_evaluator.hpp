@@ -18,7 +18,11 @@ namespace gradfric::design {
 
 class FemEvaluator : public DesignModel {
 public:
-  FemEvaluator(MPI_Comm comm, const Problem& problem) : comm_(comm), problem_(problem) {}
+  // mesh: the FEM's options to run (the problem's -fem_* ones, or its coarse copy); acceptance: a
+  // run holds the target within this (-design_tolerance, or -design_coarse on the coarse mesh,
+  // whose own error exceeds the tolerance anyway).
+  FemEvaluator(MPI_Comm comm, const Problem& problem, const FemCheck& mesh, double acceptance)
+      : comm_(comm), problem_(problem), mesh_(mesh), acceptance_(acceptance) {}
 
   // Collective. CollectiveError if the run does not confirm its peak.
   Evaluation evaluate(const std::vector<double>& x, double halfWidth, const std::string& phase,
@@ -32,6 +36,8 @@ private:
 
   MPI_Comm comm_;
   const Problem& problem_;
+  const FemCheck& mesh_;
+  double acceptance_;
   std::map<std::vector<double>, double> muStatic_;  // per x
   std::optional<double> reference_;
   int count_ = 0;

@@ -48,6 +48,10 @@ struct Problem {
   std::uint64_t seed = 1;
   bool verify = true;
   std::shared_ptr<FemCheck> fem;  // -design_model fem or -design_verify_fem: the FEM's options (null: no FEM run)
+  // -design_model fem with -design_coarse_mesh: the same options on the coarse mesh the search
+  // runs on first (null: the search runs on fem's mesh), and the runs allowed on fem's mesh after.
+  std::shared_ptr<FemCheck> coarseFem;
+  int fineEvaluations = 4;
   bool monitor = true;
   bool plot = false;
   std::string output;
