@@ -43,6 +43,14 @@ void printEvaluation(MPI_Comm comm, const Calibration& c, int k, const Evaluatio
                       e.unconfirmed ? "  (peaks unconfirmed)" : "", e.wallSeconds));
 }
 
+// The evaluation reported: the one closest to convergence, and whether it converged.
+void settleOnBest(const Calibration& c, CalibrationResult* out) {
+  out->best = 0;
+  for (int k = 1; k < static_cast<int>(out->evaluations.size()); ++k)
+    if (misfit(c, out->evaluations[k]) < misfit(c, out->evaluations[out->best])) out->best = k;
+  out->converged = misfit(c, out->fitted()) <= 1.0;
+}
+
 // The slope's 95 % half-width relative to the reference's slope: the SBM ensemble's and the
 // reference fit's, in quadrature.
 double relativeSlopeHalfWidth(const Calibration& c, const Evaluation& e) {
@@ -73,11 +81,8 @@ CalibrationResult calibrateLayer(MPI_Comm comm, const Calibration& c, Calibratio
     x = a;
     f = g;
   }
-  out.best = 0;
-  for (int k = 1; k < static_cast<int>(out.evaluations.size()); ++k)
-    if (misfit(c, out.evaluations[k]) < misfit(c, out.evaluations[out.best])) out.best = k;
+  settleOnBest(c, &out);
   const Evaluation& e = out.fitted();
-  out.converged = misfit(c, e) <= 1.0;
   out.jacobian[0][0] = slopeDerivative / lz0;
   out.jacobian[1][0] = peakDerivative / lz0;
   if (std::fabs(out.jacobian[0][0]) > 0) out.layerError = relativeSlopeHalfWidth(c, e) / std::fabs(out.jacobian[0][0]);
@@ -142,11 +147,8 @@ CalibrationResult calibrate(MPI_Comm comm, const Calibration& c) {
     x[1] = b;
     f = g;
   }
-  out.best = 0;
-  for (int k = 1; k < static_cast<int>(out.evaluations.size()); ++k)
-    if (misfit(c, out.evaluations[k]) < misfit(c, out.evaluations[out.best])) out.best = k;
+  settleOnBest(c, &out);
   const Evaluation& e = out.fitted();
-  out.converged = misfit(c, e) <= 1.0;
   // Unreachable: at a sigma bound the peak is still on the far side of the reference's.
   for (const Evaluation& b : out.evaluations) {
     const Residual r = residualOf(c, b);

@@ -1,5 +1,7 @@
 #include "gradfric/core/study_judgement.hpp"
 
+#include "gradfric/core/format.hpp"
+
 #include <cmath>
 #include <cstdio>
 
@@ -7,15 +9,9 @@ namespace gradfric::study {
 
 namespace {
 
-std::string number(const char* format, double value) {
-  char text[40];
-  std::snprintf(text, sizeof text, format, value);
-  return text;
-}
-
 // "+-0.77" or "n/b" (not bounded).
 std::string bar(const verification::Verdict& v) {
-  return v.bounded() ? number("%.2g", 100 * v.relative()) : std::string("n/b");
+  return v.bounded() ? formatNumber("%.2g", 100 * v.relative()) : std::string("n/b");
 }
 
 }  // namespace
@@ -36,17 +32,17 @@ std::string judgementMarkdown(const std::vector<StudyRow>& rows) {
       const verification::Verdict v = judgeLadder(ladder, int(k));
       const char* sep = k ? ", " : "";
       meshes += sep + meshText(ladder[k]->mesh);
-      values += sep + number("%.6f", ladder[k]->value);
+      values += sep + formatNumber("%.6f", ladder[k]->value);
       bars += sep + bar(v);
       finest = v;
     }
     const bool bounded = finest.bounded();
     text += "| " + ladder[0]->observable + " | " + sceneText(ladder[0]->scene) + " | " + meshes + " | " + values + " | " +
             verification::toString(finest.convergence) + " | " +
-            (finest.order != 0 ? number("%.2f", finest.order) : std::string("")) + " | " +
+            (finest.order != 0 ? formatNumber("%.2f", finest.order) : std::string("")) + " | " +
             (bounded ? verification::toString(finest.fit) : "") + " | " +
-            (bounded ? number("%.3g", finest.safetyFactor) : std::string("")) + " | " +
-            (bounded ? number("%.6f", finest.extrapolated) : std::string("")) + " | " + bars + " |\n";
+            (bounded ? formatNumber("%.3g", finest.safetyFactor) : std::string("")) + " | " +
+            (bounded ? formatNumber("%.6f", finest.extrapolated) : std::string("")) + " | " + bars + " |\n";
   }
   text += "\n" + std::to_string(alone) +
           " rows make no ladder of three meshes of one scene and shape (single settings such as a time step or "
@@ -71,12 +67,12 @@ std::string judgementTsv(const std::vector<StudyRow>& rows) {
     for (std::size_t k = 0; k < ladder.size(); ++k) {
       const verification::Verdict v = judgeLadder(ladder, int(k));
       text += ladder[k]->observable + "\t" + sceneText(ladder[k]->scene) + "\t" + meshText(ladder[k]->mesh) + "\t" +
-              number("%.6f", ladder[k]->value) + "\t" + std::to_string(ladder.size()) + "\t" +
-              verification::toString(v.convergence) + "\t" + number("%.6g", v.order) + "\t" +
-              verification::toString(v.fit) + "\t" + number("%.6g", v.safetyFactor) + "\t" +
-              number("%.9g", v.extrapolated) + "\t" + number("%.6g", v.fitStdDev) + "\t" + number("%.6g", v.dataRange) +
-              "\t" + number("%.6g", v.halfWidth) + "\t" + number("%.6g", v.bounded() ? v.uncertainty : NAN) + "\t" +
-              number("%.6g", v.bounded() ? v.relative() : NAN) + "\n";
+              formatNumber("%.6f", ladder[k]->value) + "\t" + std::to_string(ladder.size()) + "\t" +
+              verification::toString(v.convergence) + "\t" + formatNumber("%.6g", v.order) + "\t" +
+              verification::toString(v.fit) + "\t" + formatNumber("%.6g", v.safetyFactor) + "\t" +
+              formatNumber("%.9g", v.extrapolated) + "\t" + formatNumber("%.6g", v.fitStdDev) + "\t" + formatNumber("%.6g", v.dataRange) +
+              "\t" + formatNumber("%.6g", v.halfWidth) + "\t" + formatNumber("%.6g", v.bounded() ? v.uncertainty : NAN) + "\t" +
+              formatNumber("%.6g", v.bounded() ? v.relative() : NAN) + "\n";
     }
   return text;
 }

@@ -1,23 +1,13 @@
 // The design's uncertainty, source by source (include/gradfric/design/uncertainty.hpp).
 #include "gradfric/design/uncertainty.hpp"
 
+#include "gradfric/core/format.hpp"
 #include "gradfric/fem/parameters.hpp"
 #include "gradfric/study/scene_key.hpp"
 
 #include <algorithm>
-#include <cstdio>
 
 namespace gradfric::design {
-
-namespace {
-
-std::string number(const char* format, double value) {
-  char text[64];
-  std::snprintf(text, sizeof text, format, value);
-  return text;
-}
-
-}  // namespace
 
 study::StudyBar designStudyBar(const Problem& problem, const RunParameters& record, const std::vector<double>& x) {
   for (const FreeParameter& f : problem.free)
@@ -80,12 +70,12 @@ DesignUncertainty designUncertainty(const Problem& problem, const SearchResult& 
   else if (!bar.measured || !bar.verdict.bounded())
     u.discretisationNote = "not measured: " + (bar.why.empty() ? std::string("the ladder shows no convergence") : bar.why);
   else if (!slope)
-    u.discretisationNote = "+- " + number("%.3g", bar.verdict.uncertainty) + " on mu_s (no slope to map it: several parameters)";
+    u.discretisationNote = "+- " + formatNumber("%.3g", bar.verdict.uncertainty) + " on mu_s (no slope to map it: several parameters)";
   else {
     discretisation = bar.verdict.uncertainty / std::fabs(result.slope);
     u.discretisation = {x - discretisation, x + discretisation};
-    if (!fem) u.discretisationNote = "+- " + number("%.3g", bar.verdict.uncertainty) + " on mu_s, the spring blocks' study bar";
-    else u.discretisationNote = "+- " + number("%.3g", bar.verdict.uncertainty) + " on mu_s, the FEM's study bar";
+    if (!fem) u.discretisationNote = "+- " + formatNumber("%.3g", bar.verdict.uncertainty) + " on mu_s, the spring blocks' study bar";
+    else u.discretisationNote = "+- " + formatNumber("%.3g", bar.verdict.uncertainty) + " on mu_s, the FEM's study bar";
   }
 
   // Model form: where the other model would reach the design's value, at the design model's slope.
@@ -97,14 +87,14 @@ DesignUncertainty designUncertainty(const Problem& problem, const SearchResult& 
     u.modelFormNote = "not measured: " + other + " did not confirm its peak";
   if (std::isfinite(otherValue)) {
     const double gap = otherValue - d.value;
-    u.modelFormNote = other + " at the design: " + number("%.6f", otherValue) + " against " +
-                      (fem ? std::string("the FEM's ") : std::string("the spring blocks' ")) + number("%.6f", d.value) +
-                      " (" + number("%+.6f", gap) + ")";
+    u.modelFormNote = other + " at the design: " + formatNumber("%.6f", otherValue) + " against " +
+                      (fem ? std::string("the FEM's ") : std::string("the spring blocks' ")) + formatNumber("%.6f", d.value) +
+                      " (" + formatNumber("%+.6f", gap) + ")";
     if (slope) {
       const double otherX = x - gap / result.slope;
       u.modelForm = {std::min(x, otherX), std::max(x, otherX)};
       u.modelFormNote += "; at " + (fem ? std::string("the FEM's") : std::string("the spring blocks'")) + " slope " +
-                         other + (fem ? " reach" : " reaches") + " it at " + number("%.6g", otherX);
+                         other + (fem ? " reach" : " reaches") + " it at " + formatNumber("%.6g", otherX);
     }
   }
 

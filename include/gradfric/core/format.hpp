@@ -12,6 +12,13 @@ inline std::string formatReal(double value) {
   return buffer;
 }
 
+// One number with a printf format ("%.6f", "%+.3g"): the pieces of a message.
+inline std::string formatNumber(const char* format, double value) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, format, value);
+  return buffer;
+}
+
 // h:mm:ss, "?" for a negative or infinite time (progress lines).
 inline std::string hms(double seconds) {
   if (!std::isfinite(seconds) || seconds < 0) return "?";
