@@ -85,6 +85,20 @@ def main(argv):
             ka = {k: text(v) for k, v in a.attrs.items() if k not in skip}
             kb = {k: text(v) for k, v in b.attrs.items() if k not in skip}
             assert ka == kb, set(ka.items()) ^ set(kb.items())
+    elif check == "femrun":
+        # A FEM design against gradfric-fem's own run at its parameter: the same mu_s bit for bit,
+        # within the tolerance of the target; with a coarse search, its fine runs last and few.
+        target, most_fine = float(argv[4]), int(argv[5])
+        with h5py.File(argv[2], "r") as m, h5py.File(argv[3], "r") as g:
+            design, run = m["design/mu_s"][0], g["realisations/mu_s"][0, 0]
+            assert m["design/realisations"][0] == 1 and m["design/ci95_low"][0] == m["design/ci95_high"][0]
+            phases = text(m["evaluations"].attrs["phases"]).split(",")
+        print(f"FEM design: mu_s {design!r}, gradfric-fem at its parameter {run!r}; phases {phases}")
+        assert design == run, "the design's FEM value is not gradfric-fem's"
+        assert abs(design - target) <= 0.002, "not within the tolerance of the target"
+        if most_fine:
+            fine = [p for p in phases if p == "fine"]
+            assert 1 <= len(fine) <= most_fine and phases[-len(fine):] == fine, phases
     elif check == "uncertainty":
         # Each source's interval of the parameter recomputed from the file's own numbers
         # (docs/design.md, "The whole uncertainty of a design").

@@ -141,23 +141,19 @@ fem_model)
   # target within the tolerance; the design's mu_s is gradfric-fem's at that Delta, bit for bit;
   # 1 and 2 ranks write the same file; the spring blocks give the model-form interval.
   fem_args=(-design_model fem -fem_nx 8 -fem_ny 8 -fem_nz 1)
+  fem_at_design() {  # design.h5 nx ny nz target [most fine runs]: gradfric-fem at the design's Delta
+    local delta
+    delta=$("$python" -c "import h5py,sys; print(repr(float(h5py.File(sys.argv[1])['design/x_grading_delta'][0])))" "$1")
+    "$fem" -fem_nx "$2" -fem_ny "$3" -fem_nz "$4" -grading_profile linear -grading_property friction -grading_bands 10 \
+      -grading_delta "$delta" -friction_observables mu_s -output "$1.fem.h5" >"$1.fem.log" 2>&1 || { cat "$1.fem.log" >&2; return 1; }
+    "$python" "$checker" femrun "$1" "$1.fem.h5" "$5" "${6:-0}"
+  }
   run 0 2 "$work/m.log" "${scene[@]}" -sbm_N 12 "${fem_args[@]}" -design_target 0.86 -output "$work/m.h5"
   grep -q "Design (root, found)" "$work/m.log" && grep -q "^  no verification ensemble: a FEM run is deterministic" "$work/m.log" ||
     { cat "$work/m.log" >&2; fail "no FEM design"; }
   "$python" "$checker" status "$work/m.h5" found || fail "status"
   "$python" "$checker" uncertainty "$work/m.h5" || fail "the FEM design's intervals"
-  delta=$("$python" -c "import h5py,sys; print(repr(float(h5py.File(sys.argv[1])['design/x_grading_delta'][0])))" "$work/m.h5")
-  "$fem" -fem_nx 8 -fem_ny 8 -fem_nz 1 -grading_profile linear -grading_property friction -grading_bands 10 \
-    -grading_delta "$delta" -friction_observables mu_s -output "$work/g.h5" >"$work/g.log" 2>&1 || { cat "$work/g.log" >&2; fail "gradfric-fem at the design"; }
-  "$python" - "$work/m.h5" "$work/g.h5" <<'PY' || fail "the FEM design against gradfric-fem"
-import sys, h5py
-with h5py.File(sys.argv[1], "r") as m, h5py.File(sys.argv[2], "r") as g:
-    design, run = m["design/mu_s"][0], g["realisations/mu_s"][0, 0]
-    assert m["design/realisations"][0] == 1 and m["design/ci95_low"][0] == m["design/ci95_high"][0]
-print(f"FEM design: mu_s {design!r}, gradfric-fem at its Delta {run!r}")
-assert design == run, "the design's FEM value is not gradfric-fem's"
-assert abs(design - 0.86) <= 0.002, "not within the tolerance of the target"
-PY
+  fem_at_design "$work/m.h5" 8 8 1 0.86 || fail "the FEM design against gradfric-fem"
   run 0 1 "$work/m1.log" "${scene[@]}" -sbm_N 12 "${fem_args[@]}" -design_target 0.86 -output "$work/m1.h5"
   "$python" "$checker" same "$work/m1.h5" "$work/m.h5" || fail "FEM design: 1 and 2 ranks differ"
   # Beyond the family (the 8 x 8 x 1 plate reaches 0.81 at Delta -0.4): unreachable, exit 4.
@@ -175,20 +171,7 @@ PY
   run 0 2 "$work/c.log" "${scene[@]}" -sbm_N 12 "${fem_args[@]}" -fem_nx 16 -fem_ny 16 -fem_nz 2 -design_coarse_mesh 8,8,1 \
     -design_target 0.88 -output "$work/c.h5"
   grep -q "found on the coarse mesh 8x8x1, confirmed on the -fem_\* mesh" "$work/c.log" || { cat "$work/c.log" >&2; fail "no coarse-to-fine design"; }
-  delta=$("$python" -c "import h5py,sys; print(repr(float(h5py.File(sys.argv[1])['design/x_grading_delta'][0])))" "$work/c.h5")
-  "$fem" -fem_nx 16 -fem_ny 16 -fem_nz 2 -grading_profile linear -grading_property friction -grading_bands 10 \
-    -grading_delta "$delta" -friction_observables mu_s -output "$work/cg.h5" >"$work/cg.log" 2>&1 || { cat "$work/cg.log" >&2; fail "gradfric-fem on the fine mesh"; }
-  "$python" - "$work/c.h5" "$work/cg.h5" <<'PY' || fail "the coarse-to-fine design against gradfric-fem"
-import sys, h5py
-with h5py.File(sys.argv[1], "r") as m, h5py.File(sys.argv[2], "r") as g:
-    design, run = m["design/mu_s"][0], g["realisations/mu_s"][0, 0]
-    phases = m["evaluations"].attrs["phases"]
-    phases = (phases.decode() if isinstance(phases, bytes) else str(phases)).split(",")
-print(f"coarse to fine: mu_s {design!r}, gradfric-fem 16x16x2 {run!r}; phases {phases}")
-assert design == run and abs(design - 0.88) <= 0.002
-fine = [p for p in phases if p == "fine"]
-assert 1 <= len(fine) <= 4 and phases[-len(fine):] == fine, phases  # the fine runs come last
-PY
+  fem_at_design "$work/c.h5" 16 16 2 0.88 4 || fail "the coarse-to-fine design against gradfric-fem"
   # Refused before any work: the FEM checking itself, a dispersed surface, a verification that
   # would repeat the same run, a coarse mesh without the FEM, of two numbers, or with TAO.
   refused 1 -design_verify_fem "${fem_args[@]}" -design_target 0.86 -design_verify_fem
