@@ -53,6 +53,12 @@ void printSweep(MPI_Comm comm, const Scene& scene) {
                         "realisation(s) per point, at most %d\n",
                         scene.target.halfWidth, toString(scene.target.kind).c_str(), scene.target.first,
                         scene.target.cap));
+  bool dispersed = false;  // the surface is the only random input of a realisation
+  for (int p = 0; p < P && !dispersed; ++p) dispersed = scene.pointParameters(p).surface.dispersed();
+  if (!dispersed && (R > 1 || scene.target.active()))
+    GF_CALL(PetscPrintf(comm,
+                        "  - the surface is undispersed at every point (-surface_sigma_s and _k 0): a point's "
+                        "realisations are the same run, its CI of zero width (-ensemble_realisations 1 gives the same means)\n"));
   if (scene.stiffestFactor > 1.0)
     GF_CALL(PetscPrintf(comm, "  - one time step for the whole sweep, from its stiffest band (E x %g)\n",
                         scene.stiffestFactor));

@@ -45,6 +45,7 @@ grep -q "sigma_s = 0.000000, sigma_k = 0.000000: the surface's" layer.out && gre
   fail "layer: $(tail -8 layer.out)"
 [ "$(grep '^-sbm_lz' layer.opts)" = "$(grep '^-sbm_lz' fit.opts)" ] || fail "layer: another l_z: $(grep '^-sbm_lz' layer.opts fit.opts)"
 run layer_verify 1 0 "$sbm" -options_file layer.opts -output layer.h5
+grep -q "the surface is undispersed at every point" layer_verify.out || fail "layer_verify: identical realisations not reported"
 $python "$source_dir/tests/calibration/check_calibration.py" fem.h5 layer.h5 layer.opts || fail "the l_z-only scene"
 
 # The same curve as CSV and as plain HDF5 datasets.
