@@ -21,7 +21,6 @@ Evaluation FemEvaluator::evaluate(const std::vector<double>& x, double, const st
   const bool variation = problem_.kind == TargetKind::Variation;
   if (variation && !reference_) reference_ = run(problem_.referenceGrading(), "the non-graded plate");
   Evaluation e;
-  e.index = count_++;
   e.phase = phase;
   e.x = x;
   e.realisations = 1;

@@ -74,8 +74,8 @@ DesignUncertainty designUncertainty(const Problem& problem, const SearchResult& 
   else {
     discretisation = bar.verdict.uncertainty / std::fabs(result.slope);
     u.discretisation = {x - discretisation, x + discretisation};
-    if (!fem) u.discretisationNote = "+- " + formatNumber("%.3g", bar.verdict.uncertainty) + " on mu_s, the spring blocks' study bar";
-    else u.discretisationNote = "+- " + formatNumber("%.3g", bar.verdict.uncertainty) + " on mu_s, the FEM's study bar";
+    u.discretisationNote = "+- " + formatNumber("%.3g", bar.verdict.uncertainty) + " on mu_s, " +
+                           (fem ? "the FEM's" : "the spring blocks'") + " study bar";
   }
 
   // Model form: where the other model would reach the design's value, at the design model's slope.

@@ -40,7 +40,6 @@ private:
   double acceptance_;
   std::map<std::vector<double>, double> muStatic_;  // per x
   std::optional<double> reference_;
-  int count_ = 0;
   long runs_ = 0;
 };
 
