@@ -37,6 +37,8 @@ _RESULTS = {
     "mu_k_window_spread": "(max - min) / mean of the window's quarters' means",
     "mu_k_window_steady": "1 steady, 0 not steady by the latest start, -1 not tested",
     "mu_k_steady_tolerance": "the spread below which the window is steady",
+    "nodes_slid_above_one": "bottom nodes that slid at mu(theta) > 1 by the peak (flutter; -1: not measured)",
+    "area_slid_above_one": "their share of the contact area",
     "dt": "time step",
     "stable_dt": "the stable time step estimate",
     "steps": "time steps taken",

@@ -230,11 +230,14 @@ void ContactBoundary::recordOnset(double t) {
     const FrictionSites& sites = sitesOf(law);
     for (std::size_t site = 0; site < nodes_.size(); ++site) {
       Node& n = nodes_[site];
+      const double strength = fem::committedStrength(law, static_cast<int>(site));
+      // Sliding, not stuck or open: the flutter needs the friction force to act on a slip.
+      if (n.slidAboveOne < 0 && n.state == ContactState::Slip && strength > 1.0 + 1e-9) n.slidAboveOne = t;
       if (n.weakenEnd >= 0) continue;
       const int slot = sites.slotOfSite(static_cast<int>(site));
       const double s = sites.staticAt(slot), k = sites.kineticAt(slot);
       if (!(s - k > 1e-12 * s)) continue;  // no weakening to measure
-      const double left = (fem::committedStrength(law, static_cast<int>(site)) - k) / (s - k);
+      const double left = (strength - k) / (s - k);
       if (n.weakenStart < 0 && left < 0.9) n.weakenStart = t;
       if (left < 0.1) n.weakenEnd = t;
     }
@@ -273,6 +276,21 @@ double ContactBoundary::largestSlipPerStep(double until) const {
     if (t <= until) local = largest;
   GF_CALL_MPI(MPI_Allreduce(&local, &global, 1, MPI_DOUBLE, MPI_MAX, comm_));
   return global;
+}
+
+SlidingAboveOne ContactBoundary::slidAboveOne(double until) const {
+  ExactSum sums[3];  // nodes, their area, all the area: exact, so the same on any partition
+  for (const Node& n : nodes_) {
+    const bool slid = n.slidAboveOne >= 0 && n.slidAboveOne <= until;
+    sums[0].add(slid ? 1.0 : 0.0);
+    sums[1].add(slid ? n.area : 0.0);
+    sums[2].add(n.area);
+  }
+  allreduceExact(comm_, sums, 3);
+  SlidingAboveOne s;
+  s.nodes = std::lround(sums[0].value());
+  s.areaFraction = sums[2].value() > 0 ? sums[1].value() / sums[2].value() : 0.0;
+  return s;
 }
 
 void ContactBoundary::penetration(Vec X, double* mean, double* minimum, double* maximum) const {

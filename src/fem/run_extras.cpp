@@ -76,10 +76,12 @@ void writeResults(hid_t fem, const PlateModel& model, const FemRunResult& r, con
       {"mu_k_window_start", f.kineticFrom}, {"mu_k_window_end", f.kineticTo}, {"dt", r.dt}, {"stable_dt", r.stableDt}};
   const std::pair<const char*, double> numbers[] = {{"settled_normal_force", r.settledNormalForce},
                                                     {"mu_k_window_spread", f.kineticSpread},
-                                                    {"mu_k_steady_tolerance", q.measurement.kineticSteadyTolerance}};
+                                                    {"mu_k_steady_tolerance", q.measurement.kineticSteadyTolerance},
+                                                    {"area_slid_above_one", r.resolution.aboveOne.areaFraction}};
   const std::pair<const char*, int> flags[] = {
       {"kinetic_window_complete", f.kineticComplete ? 1 : 0},
-      {"mu_k_window_steady", !f.kineticSteadyTested ? -1 : f.kineticSteady ? 1 : 0}};
+      {"mu_k_window_steady", !f.kineticSteadyTested ? -1 : f.kineticSteady ? 1 : 0},
+      {"nodes_slid_above_one", r.resolution.applies ? static_cast<int>(r.resolution.aboveOne.nodes) : -1}};
   H5Group units = createGroup(results, "units");
   for (const auto& [name, value] : seconds) {
     writeRealAttribute(results, name, value);

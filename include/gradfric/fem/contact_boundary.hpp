@@ -22,6 +22,13 @@
 
 namespace gradfric::fem {
 
+// The nodes that slid while their strength mu(theta) was above 1 (docs/flutter.md: sliding on the
+// rigid plane is then ill-posed), up to a time: their number and their share of the contact area.
+struct SlidingAboveOne {
+  long nodes = 0;
+  double areaFraction = 0;
+};
+
 struct ContactSettings {
   bool kinematic = false;      // -fem_contact kinematic: exact contact (gfverlet), else penalty springs
   PenaltyStiffness stiffness;  // the penalty springs
@@ -43,6 +50,7 @@ public:
     bool everSlipped = false;
     double firstSlip = std::numeric_limits<double>::quiet_NaN();  // time its committed state first was Slip [s]
     double weakenStart = -1, weakenEnd = -1;  // times its strength fell 10 % and 90 % of the way to mu_k
+    double slidAboveOne = -1;  // time it first slid with its strength mu(theta) above 1 (-1: never)
     double pressure = 0, tx = 0, ty = 0;  // of the last evaluation
     double filtered = 0, pendingFiltered = 0;  // the normal-stress filter's p* [Pa]: committed, pending
     double force[3] = {0, 0, 0}, u[3] = {0, 0, 0};  // committed contact force and displacement
@@ -81,7 +89,8 @@ public:
   void settleFilteredPressure();
   // After each sliding step at time t, with a law that weakens over a slip (the state law): notes
   // the nodes whose committed strength has fallen 10 % and 90 % of the way from mu_s to mu_k (for
-  // processZone()) and the step's largest slip (for largestSlipPerStep()).
+  // processZone()), the step's largest slip (for largestSlipPerStep()) and the nodes that slide with
+  // a strength above 1 for the first time (for slidAboveOne()).
   void recordOnset(double t);
   // The process zone measured from those times over the nodes that started weakening by
   // latestStart (physics/process_zone.hpp); collective.
@@ -89,6 +98,8 @@ public:
   // The largest slip of a node in one step from resetSlipRecord to time `until` (as recordOnset
   // saw it), over ranks [m].
   double largestSlipPerStep(double until) const;
+  // The nodes that slid with mu(theta) > 1 from the start of sliding to `until`; collective.
+  SlidingAboveOne slidAboveOne(double until) const;
   // Work of the contact forces on the plate over the committed steps, summed over ranks [J]
   // (negative: friction and the inelastic normal impacts dissipate; with penalties it includes
   // the energy the springs store).

@@ -8,8 +8,11 @@
 //  - the process zone (measured up to the peak, physics/process_zone.hpp) spanning a median of at
 //    least 4 elements
 //    (Day et al. 2005; Dalguer & Day 2007).
+// And the flutter: a node that slides with mu(theta) > 1 on the rigid plane is on an ill-posed
+// interface (docs/flutter.md), so the onset there depends on the mesh; counted up to the peak.
 // Also the regime number kappa = G D_c / (H p (mu_s - mu_k)): the column stiffness of the layer
 // against the weakening rate; below 1 the onset is dynamic (fronts), above 1 it is smooth.
+#include "gradfric/fem/contact_boundary.hpp"
 #include "gradfric/physics/process_zone.hpp"
 
 #include <string>
@@ -24,7 +27,8 @@ struct InterfaceResolution {
   double slipLength = 0, kappa = 0;
   double elasticSlip = 0;  // mu_s,max p / k_t [m]; 0 with kinematic contact
   double largestStepSlip = 0;
-  double largestStaticCoefficient = 0;  // over the contact nodes: above 1 the sliding interface flutters
+  double largestStaticCoefficient = 0;  // over the contact nodes: above 1 a node may slide at mu > 1
+  SlidingAboveOne aboveOne;              // the nodes that did, before the peak: there sliding flutters
   bool filtered = false;                 // the Prakash-Clifton filter is on: it bounds that flutter
   bool randomSurface = false;            // the nodes' mu_s carry a dispersed random surface
   ProcessZone zone;
