@@ -198,9 +198,7 @@ std::string withBar(const char* name, double value, const study::StudyBar& bar, 
 // length (no -fem_slide_time, no -fem_stop_when_known false, no TS limit). Then mu_s is only the
 // largest mu reached: exit 5.
 bool peakMissed(const FemRun& run, const FemRunResult& r, const RunParameters& scene) {
-  const ResolvedOption* slideTime = scene.find("-fem_slide_time");
-  const bool fixedLength = !run.params.stopWhenKnown || (slideTime && slideTime->origin == OptionOrigin::User);
-  return !r.friction.peakConfirmed && !fixedLength && !r.stoppedByTS;
+  return !r.friction.peakConfirmed && !runLengthFixed(run.params, scene) && !r.stoppedByTS;
 }
 
 void printResults(MPI_Comm comm, const FemRun& run, const FemRunResult& r, double wall, const RunParameters& scene) {
@@ -324,8 +322,7 @@ int main(int argc, char** argv) {
     if (run->sweep.requested) {                                   // a sweep of runs over groups of ranks
       const FemSweep sweep = buildFemSweep(comm, run->params, run->grading, run->sweep, run->compare, record);
       if (run->dryRun) return printSweepDryRun(comm, sweep);      // -fem_dry_run: checked, nothing run
-      runFemSweep(comm, sweep, record);
-      return 0;
+      return runFemSweep(comm, sweep, record);                    // 5: a peak not confirmed
     }
     int ranks = 1;
     MPI_Comm_size(comm, &ranks);

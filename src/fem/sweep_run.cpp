@@ -145,7 +145,12 @@ void printRun(const FemSweep& s, const campaign::Task& task, const io::TaskOutpu
 
 }  // namespace
 
-void runFemSweep(MPI_Comm comm, const FemSweep& s, const RunParameters& record) {
+bool runLengthFixed(const FemParameters& q, const RunParameters& record) {
+  const ResolvedOption* slideTime = record.find("-fem_slide_time");
+  return !q.stopWhenKnown || (slideTime && slideTime->origin == OptionOrigin::User);
+}
+
+int runFemSweep(MPI_Comm comm, const FemSweep& s, const RunParameters& record) {
   int rank = 0;
   GF_CALL_MPI(MPI_Comm_rank(comm, &rank));
   const io::OutputPlan plan = campaign::planCampaignFile(comm, s);             // before any work
@@ -188,6 +193,21 @@ void runFemSweep(MPI_Comm comm, const FemSweep& s, const RunParameters& record) 
   printTable(comm, s, stats);
   GF_CALL(PetscPrintf(comm, "FEM sweep: %ld run(s) in %.2f s wall; results in %s\n", ran, MPI_Wtime() - wall0,
                       plan.path().c_str()));
+  int unconfirmed = 0, points = 0;
+  for (const auto& st : stats) {
+    unconfirmed += st.peaksUnconfirmed;
+    points += st.peaksUnconfirmed > 0 ? 1 : 0;
+  }
+  if (unconfirmed == 0) return 0;
+  const bool fixed = runLengthFixed(s.params, record);
+  GF_CALL(PetscPrintf(comm,
+                      "gradfric-fem: %s: %d run(s) at %d point(s) ended before their peak of mu(t) was confirmed: their "
+                      "mu_s is the largest mu reached, not the static coefficient (%s)%s\n",
+                      fixed ? "warning" : "error", unconfirmed, points,
+                      fixed ? "the run length was fixed by -fem_slide_time or -fem_stop_when_known false"
+                            : "a longer -fem_slide_time may confirm them",
+                      fixed ? "" : "; exit 5"));
+  return fixed ? 0 : 5;
 }
 
 void writeErrorBars(io::ResultsFile& file, const FemSweep& s) {

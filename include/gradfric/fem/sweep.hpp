@@ -74,8 +74,14 @@ study::StudyBar femStudyBar(const RunParameters& record, const campaign::SweepPo
 // and a single run's (one point) alike.
 void writeErrorBars(io::ResultsFile& file, const FemSweep& s);
 
+// Whether the user fixed the length of the runs (-fem_slide_time given, or -fem_stop_when_known
+// false): then a run may end before its peak is confirmed by design, not by accident.
+bool runLengthFixed(const FemParameters& q, const RunParameters& record);
+
 // Collective over comm: plans the file, runs every pending point on the groups, writes the
-// statistics, renames the file into place and prints the table.
-void runFemSweep(MPI_Comm comm, const FemSweep& sweep, const RunParameters& record);
+// statistics, renames the file into place and prints the table. Returns the exit status: 5 when a
+// run ended before confirming its peak although its length was not fixed (its mu_s is only the
+// largest mu reached), else 0.
+int runFemSweep(MPI_Comm comm, const FemSweep& sweep, const RunParameters& record);
 
 }  // namespace gradfric::fem
