@@ -12,6 +12,11 @@ C++ closed form (src/physics/sliding_dispersion.cpp):
 - the root is followed by continuation in mu from the neutral root sqrt(2) at mu = 1, Muller's
   method at each step, and checked to be the only growing one by the winding of det / eta^2 on a
   rectangle in the upper half plane (dense sampling).
+- with a normal-stress memory (relaxation time T, K = |k| c_s T; here k = c_s = 1, so K = T) the
+  friction row becomes sigma_xz (1 - i K eta) + mu sigma_zz = 0 (the filtered pressure is
+  p / (1 - i omega T)); K_c is where the root continued in K from the Coulomb one reaches the real
+  axis (secant on Im eta(K) = 0), and the memory's mode against the sliding is continued in K from
+  the neutral Coulomb root beyond -c_p/c_s, its largest K Im(eta) taken over K in (0, 100].
 Shear speed from the defaults of include/gradfric/physics/plate.hpp: c_s = sqrt(E / (2 (1 + nu) rho)).
 
     flutter_roots.py                      print the tables (markdown)
@@ -91,14 +96,14 @@ def partial_waves(eta, nu):
     return pw, sw, lam, g
 
 
-def determinant(eta, mu, nu):
-    """u_z = 0 and sigma_xz + mu sigma_zz = 0 on the two waves (d/dx -> i, d/dz -> i p)."""
+def determinant(eta, mu, nu, memory=0.0):
+    """u_z = 0 and sigma_xz (1 - i K eta) + mu sigma_zz = 0 on the two waves (d/dx -> i, d/dz -> i p)."""
     pw, sw, lam, g = partial_waves(eta, nu)
     cols = []
     for p, ax, az in (pw, sw):
         s_zz = lam * 1j * (ax + p * az) + 2 * g * 1j * p * az
         s_xz = g * (1j * p * ax + 1j * az)
-        cols.append((az, s_xz + mu * s_zz))
+        cols.append((az, s_xz * (1 - 1j * memory * eta) + mu * s_zz))
     det = cols[0][0] * cols[1][1] - cols[1][0] * cols[0][1]
     return det if np.ndim(eta) else complex(det)
 
@@ -172,6 +177,77 @@ def root_checked(mu, nu):
     return eta
 
 
+MEMORY_MU = [1.1, 1.2, 1.3, 1.4, 1.6, 2.0]
+
+
+def follow_in_memory(eta, mu, nu, grid, stop_at_axis=False):
+    """The root continued from eta (a root at K = grid[0]) over the memories in grid (Muller);
+    with stop_at_axis, up to the last K where Im eta > 2e-4."""
+    roots, previous = [eta], None
+    for K in grid[1:]:
+        guess = eta if previous is None else 2 * eta - previous
+        f = lambda z, K=K: determinant(z, mu, nu, K) / (z * z)  # without the double root eta = 0
+        with np.errstate(all="ignore"):
+            z = muller(f, guess, guess + 1e-4, guess + 1e-4j)
+        if stop_at_axis and not (np.isfinite(z) and z.imag > 2e-4 and abs(z - eta) < 0.02):
+            break  # next to the axis: the crossing is solved on the axis itself
+        previous, eta = eta, z
+        roots.append(eta)
+    return roots
+
+
+def memory_cutoff(mu, nu):
+    """(K_c, eta_c, largest K Im eta below K_c): the flutter root continued in K towards the real
+    axis; there the determinant, linear in K (det = A + K B), vanishes at a real eta and a real K:
+    Im(A/B) = 0 by the secant method from the last growing root, K_c = -Re(A/B)."""
+    grid = np.linspace(0.0, 4.0, 801)
+    roots = follow_in_memory(growing_root(mu, nu), mu, nu, grid, stop_at_axis=True)
+    ratio = lambda e: determinant(e, mu, nu) / (determinant(e, mu, nu, 1.0) - determinant(e, mu, nu))
+    x0, x1 = roots[-1].real, roots[-1].real + 1e-4
+    for _ in range(100):
+        f0, f1 = ratio(complex(x0)).imag, ratio(complex(x1)).imag
+        if f1 == f0 or abs(x1 - x0) < 1e-15:
+            break
+        x0, x1 = x1, x1 - f1 * (x1 - x0) / (f1 - f0)
+    kc = -ratio(complex(x1)).real
+    if not (abs(x1 - roots[-1].real) < 1e-2 and 0 < kc and abs(kc - grid[len(roots) - 1]) < 0.02):
+        sys.exit("flutter_roots: no real-axis crossing found at mu %g" % mu)
+    return kc, complex(x1), max(k * z.imag for k, z in zip(grid, roots))
+
+
+def memory_mode_growth(mu, nu):
+    """Largest K Im eta of the mode against the sliding, and the K at which it peaks."""
+    start = muller(lambda e: determinant(e, mu, nu), -2.1 + 0j, -2.101 + 0j, -2.102 + 0j)
+    grid = np.concatenate([[0.0], np.geomspace(1e-3, 100.0, 1001)])
+    roots = follow_in_memory(start, mu, nu, grid)
+    if not all(np.isfinite(z) for z in roots):
+        sys.exit("flutter_roots: the memory's mode was lost at mu %g" % mu)
+    scaled = [k * z.imag for k, z in zip(grid, roots)]
+    j = int(np.argmax(scaled))
+    if not (0 < j < len(grid) - 1) or roots[j].real >= 0:
+        sys.exit("flutter_roots: the memory's mode peaks at the scan's end at mu %g" % mu)
+    fine = np.linspace(grid[j - 1], grid[j + 1], 201)
+    best = max(k * muller(lambda e, k=k: determinant(e, mu, nu, k), roots[j], roots[j] + 1e-5,
+                          roots[j] + 1e-5j).imag for k in fine)
+    return best, grid[j]
+
+
+def memory_table(nu, cs):
+    lines = ["", "With a normal-stress memory (relaxation time T, K = |k| c_s T) at nu = %.4f: the flutter "
+             "branch grows only for K < K_c; lambda_c = 2 pi c_s T / K_c at the plate's c_s and T = 1 us; "
+             "the largest growth rate times T of the flutter branch (K < K_c) and of the memory's mode "
+             "against the sliding (any K):" % nu, "",
+             "| mu | K_c | eta_c | lambda_c / (c_s T) | lambda_c, T = 1 us | flutter: max growth x T "
+             "| mode against the sliding: max growth x T (at K) |",
+             "|---:|---:|---:|---:|---:|---:|---:|"]
+    for mu in MEMORY_MU:
+        kc, etac, flutter = memory_cutoff(mu, nu)
+        other, at = memory_mode_growth(mu, nu)
+        lines.append("| %.1f | %.4f | %.4f | %.2f | %.0f um | %.4f | %.4f (%.2f) |" % (
+            mu, kc, etac.real, 2 * math.pi / kc, 2 * math.pi * cs * 1e-6 / kc * 1e6, flutter, other, at))
+    return lines
+
+
 def tables():
     young, nu, rho = plate_defaults()
     cs = math.sqrt(young / (2 * (1 + nu) * rho))
@@ -197,6 +273,7 @@ def tables():
         eta = root_checked(1.2, value)
         ratio = math.sqrt((2 - 2 * value) / (1 - 2 * value))
         lines.append("| %s | %.4f | %.4f | %.4f |" % (label, ratio, eta.real, eta.imag))
+    lines += memory_table(nu, cs)
     return "\n".join(lines) + "\n"
 
 

@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cmath>
+#include <complex>
 #include <stdexcept>
 
 namespace gradfric {
@@ -48,7 +49,7 @@ ElementMatrix squareStiffness(double h, double poisson) {
 
 SlidingStripHistory simulateSlidingStrip(const SlidingStripSettings& s) {
   if (!(s.poisson > -1 && s.poisson < 0.5) || s.elementsPerWavelength < 4 || !(s.depth > 0) || !(s.duration > 0) ||
-      !(s.courant > 0 && s.courant < 1))
+      !(s.courant > 0 && s.courant < 1) || !(s.memory >= 0))
     throw std::invalid_argument("simulateSlidingStrip: settings out of range");
   const int nx = s.elementsPerWavelength, nz = static_cast<int>(std::lround(s.depth * nx));
   const double h = 1.0 / nx, k = 2 * kPi;
@@ -61,6 +62,12 @@ SlidingStripHistory simulateSlidingStrip(const SlidingStripSettings& s) {
     mass[node(i, 0)] = mass[node(i, nz)] = h * h / 2;  // periodic along x: only the base and the top are edges
     for (int j = 0; j <= nz; ++j) ux[node(i, j)] = 1e-6 * std::cos(k * i * h) * std::exp(-k * j * h);
   }
+  // The memory: R* per base node, relaxed toward R over each step exactly for R linear in time
+  // between the previous and the current step's reactions (R* = R at t = 0).
+  const bool memory = s.memory > 0;
+  std::vector<double> relaxed(memory ? nx : 0), previous(memory ? nx : 0);
+  double decay = 0, weightNew = 0, weightOld = 0;
+  bool started = false;
   const auto forces = [&] {  // f = -K u, then the base's reaction and friction
     std::fill(fx.begin(), fx.end(), 0.0);
     std::fill(fz.begin(), fz.end(), 0.0);
@@ -87,8 +94,16 @@ SlidingStripHistory simulateSlidingStrip(const SlidingStripSettings& s) {
       const std::size_t b = node(i, 0);
       const double reaction = -fz[b];
       fz[b] = 0;
-      fx[b] -= s.friction * reaction;
+      if (!memory) {
+        fx[b] -= s.friction * reaction;
+        continue;
+      }
+      // R*(t + dt) = e^-a R*(t) + (1 - (1 - e^-a)/a) R(t + dt) + ((1 - e^-a)/a - e^-a) R(t), a = dt/T
+      relaxed[i] = started ? decay * relaxed[i] + weightNew * reaction + weightOld * previous[i] : reaction;
+      previous[i] = reaction;
+      fx[b] -= s.friction * relaxed[i];
     }
+    started = true;
   };
   const auto record = [&](SlidingStripHistory& history, double t) {
     double re = 0, im = 0;
@@ -106,6 +121,13 @@ SlidingStripHistory simulateSlidingStrip(const SlidingStripSettings& s) {
   SlidingStripHistory history;
   history.step = s.courant * h / pWave;
   const long steps = static_cast<long>(std::ceil(s.duration / history.step));
+  if (memory) {
+    const double ratio = history.step / s.memory;
+    decay = std::exp(-ratio);
+    const double mean = -std::expm1(-ratio) / ratio;  // (1 - e^-a) / a
+    weightNew = 1 - mean;
+    weightOld = mean - decay;
+  }
   forces();
   for (std::size_t n = 0; n < nodes; ++n) {  // v at the half step
     vx[n] = 0.5 * history.step * fx[n] / mass[n];
@@ -156,6 +178,37 @@ double fittedGrowthRate(const SlidingStripHistory& history, double from, double 
 
 double fittedPhaseSpeed(const SlidingStripHistory& history, double from, double to) {
   return -slopeOver(history.time, history.phase, from, to) / (2 * kPi);
+}
+
+std::array<FittedWave, 2> fittedWavePair(const SlidingStripHistory& history, double from, double to, double lag) {
+  using Complex = std::complex<double>;
+  if (!(history.step > 0) || !(lag > 0)) throw std::invalid_argument("sliding strip: no step or lag");
+  const long L = std::max(1L, std::lround(lag / history.step));
+  // Normal equations of min sum |a[n + 2L] - c1 a[n + L] - c0 a[n]|^2 (Hermitian 2 x 2).
+  Complex m11 = 0, m12 = 0, m22 = 0, r1 = 0, r2 = 0;
+  long samples = 0;
+  const auto a = [&](std::size_t i) { return std::polar(history.amplitude[i], history.phase[i]); };
+  for (std::size_t n = 0; n + 2 * L < history.time.size(); ++n) {
+    if (history.time[n] < from || history.time[n + 2 * L] > to) continue;
+    const Complex x0 = a(n), x1 = a(n + L), y = a(n + 2 * L);
+    m11 += std::conj(x1) * x1, m12 += std::conj(x1) * x0, m22 += std::conj(x0) * x0;
+    r1 += std::conj(x1) * y, r2 += std::conj(x0) * y;
+    ++samples;
+  }
+  if (samples < 4) throw std::invalid_argument("sliding strip: too few samples for two waves in the window");
+  const Complex det = m11 * m22 - m12 * std::conj(m12);
+  const Complex c1 = (r1 * m22 - m12 * r2) / det, c0 = (m11 * r2 - std::conj(m12) * r1) / det;
+  const Complex root = std::sqrt(c1 * c1 + 4.0 * c0);
+  std::array<FittedWave, 2> waves;
+  const double lagTime = L * history.step;
+  for (int j = 0; j < 2; ++j) {
+    const Complex z = 0.5 * (c1 + (j == 0 ? root : -root));
+    const Complex s = std::log(z) / lagTime;
+    waves[j].growthRate = s.real();
+    waves[j].phaseSpeed = -s.imag() / (2 * kPi);
+  }
+  if (waves[0].phaseSpeed < waves[1].phaseSpeed) std::swap(waves[0], waves[1]);
+  return waves;
 }
 
 }  // namespace gradfric

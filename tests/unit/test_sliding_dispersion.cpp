@@ -185,3 +185,116 @@ TEST(SlidingDispersion, RefusesPoissonRatioOutsideTheRangeAndAZeroWavenumberSign
   EXPECT_THROW(slidingDispersion(Complex(1.4, 0.1), 1.2, 0.0), std::invalid_argument);
   EXPECT_THROW(countGrowingSlidingRoots(1.2, 1.0 / 3.0, 0), std::invalid_argument);
 }
+
+// With the normal-stress memory K = |k| c_s T: i alpha eta^2 (1 - i K eta) = mu (2 - eta^2 - 2 alpha beta)
+// for k > 0 (docs/flutter.md, "With a normal-stress memory").
+TEST(SlidingDispersionMemory, ZeroMemoryIsTheCoulombRelation) {
+  for (double nu : kPoisson)
+    for (Complex eta : {Complex(1.4, 0.1), Complex(-2.1, 0.0), Complex(0.3, 0.7), Complex(2.5, 1e-3)}) {
+      EXPECT_EQ(slidingDispersion(eta, 1.2, nu, 1, 0.0), slidingDispersion(eta, 1.2, nu));
+      EXPECT_EQ(slidingDispersion(eta, 1.2, nu, -1, 0.0), slidingDispersion(eta, 1.2, nu, -1));
+    }
+  EXPECT_EQ(growingSlidingMode(1.2, 1.0 / 3.0, 0.0).eta, growingSlidingMode(1.2, 1.0 / 3.0).eta);
+  EXPECT_EQ(slidingGrowthRate(1.2, 1.0 / 3.0, 55.9, 25e-6, 0.0), slidingGrowthRate(1.2, 1.0 / 3.0, 55.9, 25e-6));
+  // The memory term itself: D_K - D_0 = i alpha eta^2 (-i K eta) = K alpha eta^3, and k < 0 is the conjugate.
+  const Complex eta(1.3, 0.05);
+  const double K = 0.4, nu = 1.0 / 3.0, r = shearToPressureSpeedRatio(nu);
+  const Complex alpha = std::sqrt(1.0 - r * r * eta * eta);
+  EXPECT_LT(std::abs(slidingDispersion(eta, 1.2, nu, 1, K) - slidingDispersion(eta, 1.2, nu) - K * alpha * eta * eta * eta),
+            1e-14);
+  EXPECT_LT(std::abs(slidingDispersion(eta, 1.2, nu, -1, K) - std::conj(slidingDispersion(std::conj(eta), 1.2, nu, 1, K))),
+            1e-14);
+  EXPECT_THROW(slidingDispersion(eta, 1.2, nu, 1, -0.1), std::invalid_argument);
+}
+
+// K_c at nu = 1/3 (the note: 0.6 at mu 1.2, 1.1 at mu 1.4), and the root there is on the real axis
+// at eta_c^2 = 2 mu (mu - sqrt(mu^2 - 1)).
+TEST(SlidingDispersionMemory, CutoffAtNuOneThird) {
+  const double nu = 1.0 / 3.0;
+  EXPECT_NEAR(memoryCutoff(1.1, nu), 0.4795, 5e-5);
+  EXPECT_NEAR(memoryCutoff(1.2, nu), 0.7098, 5e-5);
+  EXPECT_NEAR(memoryCutoff(1.4, nu), 1.0751, 5e-5);
+  EXPECT_NEAR(memoryCutoff(2.0, nu), 1.9554, 5e-5);
+  EXPECT_NEAR(memoryCutoff(1.2, nu), 0.6, 0.15);  // the note, loosely
+  EXPECT_NEAR(memoryCutoff(1.4, nu), 1.1, 0.05);
+  EXPECT_EQ(memoryCutoff(1.0, nu), 0.0);
+  EXPECT_EQ(memoryCutoff(0.9, nu), 0.0);
+  for (double mu : {1.1, 1.2, 1.4, 2.0}) {
+    const double etaC = std::sqrt(2 * mu * (mu - std::sqrt(mu * mu - 1)));
+    EXPECT_LT(std::abs(slidingDispersion(etaC, mu, nu, 1, memoryCutoff(mu, nu))), 1e-13) << "mu " << mu;
+  }
+}
+
+// The flutter branch (direction +1) grows just below K_c and at no K above it; the count drops by
+// exactly one there and nowhere else (a scan: the memory's mode against the sliding stays).
+TEST(SlidingDispersionMemory, FlutterBranchGrowsBelowTheCutoffAndNeverAbove) {
+  const double nu = 1.0 / 3.0;
+  const auto withTheSliding = [nu](double mu, double K) {
+    int n = 0;
+    for (const SlidingMode& m : growingSlidingModes(mu, nu, K)) n += m.direction > 0;
+    return n;
+  };
+  for (double mu : {1.1, 1.2, 1.4, 2.0}) {
+    const double Kc = memoryCutoff(mu, nu);
+    EXPECT_EQ(withTheSliding(mu, 0.99 * Kc), 1) << "mu " << mu;
+    EXPECT_EQ(withTheSliding(mu, 1.01 * Kc), 0) << "mu " << mu;
+    for (double f : {0.05, 0.3, 0.6, 0.9, 0.99}) EXPECT_EQ(countGrowingSlidingRoots(mu, nu, 1, 0, f * Kc), 2);
+    for (double f : {1.01, 1.2, 2.0, 5.0, 20.0, 60.0}) {
+      EXPECT_EQ(countGrowingSlidingRoots(mu, nu, 1, 0, f * Kc), 1) << "mu " << mu << " K/Kc " << f;
+      EXPECT_EQ(countGrowingSlidingRoots(mu, nu, -1, 0, f * Kc), 1) << "mu " << mu << " K/Kc " << f;
+    }
+  }
+}
+
+TEST(SlidingDispersionMemory, CutoffWavelengthScalesWithShearSpeedTimesRelaxationTime) {
+  const double cs = plateShearSpeed(), nu = 1.0 / 3.0;
+  const double reference = memoryCutoffWavelength(1.2, nu, cs, 1e-6);
+  EXPECT_NEAR(reference, 2 * M_PI * cs * 1e-6 / memoryCutoff(1.2, nu), 1e-15);
+  EXPECT_NEAR(reference, 494.8e-6, 0.1e-6);  // 8.85 c_s T
+  EXPECT_NEAR(memoryCutoffWavelength(1.2, nu, cs, 4e-6), 4 * reference, 1e-12);
+  EXPECT_NEAR(memoryCutoffWavelength(1.2, nu, 2 * cs, 1e-6), 2 * reference, 1e-12);
+  EXPECT_EQ(memoryCutoffWavelength(1.0, nu, cs, 1e-6), 0.0);
+  // Just above lambda_c the flutter branch grows, just below it does not (here the memory's mode
+  // against the sliding is the only growing root).
+  const auto flutterRate = [&](double wavelength) {
+    const double K = 2 * M_PI / wavelength * cs * 1e-6;
+    for (const SlidingMode& m : growingSlidingModes(1.2, nu, K))
+      if (m.direction > 0) return 2 * M_PI / wavelength * cs * m.eta.imag();
+    return 0.0;
+  };
+  EXPECT_GT(flutterRate(1.01 * reference), 0.0);
+  EXPECT_EQ(flutterRate(0.99 * reference), 0.0);
+}
+
+// The other growing root: against the sliding near -c_p/c_s, for every K > 0 and every mu > 0
+// (mu <= 1 included). Its growth rate times T peaks at a finite K and falls to 0 both ways: the
+// growth rate is bounded by memoryModeGrowth / T at every wavelength (well-posed, not stable).
+TEST(SlidingDispersionMemory, TheMemorysModeAgainstTheSlidingHasBoundedGrowth) {
+  const double nu = 1.0 / 3.0;
+  EXPECT_NEAR(memoryModeGrowth(1.2, nu), 0.0430, 5e-4);
+  EXPECT_NEAR(memoryModeGrowth(1.4, nu), 0.0537, 5e-4);
+  EXPECT_NEAR(memoryFlutterGrowth(1.2, nu), 0.0156, 5e-4);
+  EXPECT_EQ(memoryFlutterGrowth(0.9, nu), 0.0);
+  for (double mu : {0.5, 0.9, 1.2, 1.4, 2.0}) {
+    const double bound = memoryModeGrowth(mu, nu);
+    EXPECT_GT(bound, 0.0) << "mu " << mu;
+    EXPECT_LT(bound, 0.1) << "mu " << mu;
+    double previous = INFINITY;
+    for (double K : {0.01, 0.1, 0.5, 1.0, 2.0, 5.0, 10.0, 30.0, 100.0}) {
+      const std::vector<SlidingMode> modes = growingSlidingModes(mu, nu, K);
+      int against = 0;
+      for (const SlidingMode& m : modes) {
+        if (m.direction > 0) continue;
+        ++against;
+        EXPECT_LT(std::abs(m.eta + 1.0 / shearToPressureSpeedRatio(nu)), 0.2) << "mu " << mu << " K " << K;
+        EXPECT_LE(K * m.eta.imag(), bound * (1 + 1e-9)) << "mu " << mu << " K " << K;
+        if (K >= 5.0) {  // past the peak: K Im(eta) falls (about as 1/K^2)
+          EXPECT_LT(K * m.eta.imag(), previous);
+          previous = K * m.eta.imag();
+        }
+      }
+      EXPECT_EQ(against, 1) << "mu " << mu << " K " << K;
+    }
+    EXPECT_LT(previous, 0.01 * bound) << "mu " << mu;  // at K = 100
+  }
+}

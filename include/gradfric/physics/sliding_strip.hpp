@@ -12,8 +12,12 @@
 // enough that the mode (which decays into the body over about a wavelength) does not feel it.
 // The discrete system is invariant under shifts along x, so its Fourier modes evolve apart: the
 // amplitude at the seeded wavenumber is that mode's alone, whatever the grid-scale modes do.
+// With `memory` T > 0 the friction is mu times the relaxed reaction R*, dR*/dt = (R - R*) / T per
+// base node (the normal-stress memory linearised about steady sliding: T = L / (|V| + V*)), R* = R
+// of the seed at t = 0, advanced over each step exactly for R linear in time over the step.
 // An independent check of the relation: it uses neither the relation nor its roots. Units: c_s,
 // lambda and the density are 1. Pure arithmetic, no PETSc.
+#include <array>
 #include <vector>
 
 namespace gradfric {
@@ -25,6 +29,7 @@ struct SlidingStripSettings {
   double depth = 4.0;                  // of the strip [lambda]
   double duration = 10.0;              // simulated [lambda / c_s]
   double courant = 0.3;                // time step over h / c_p
+  double memory = 0;  // relaxation time T of the normal-stress memory [lambda / c_s]; 0: none
 };
 
 struct SlidingStripHistory {
@@ -42,5 +47,18 @@ double fittedGrowthRate(const SlidingStripHistory& history, double from, double 
 // The wave's phase speed from the slope of the phase over [from, to] [c_s]: exp(i k (x - c t)) at
 // k = 2 pi / lambda turns its amplitude's phase at -k c. Positive: it travels with the sliding.
 double fittedPhaseSpeed(const SlidingStripHistory& history, double from, double to);
+
+// Two waves at the seeded wavenumber at once (the memory's flutter branch and its mode against the
+// sliding, which beat in the amplitude): the complex amplitude a(t) = amplitude e^{i phase} fitted
+// over [from, to] as A1 e^{s1 t} + A2 e^{s2 t} by linear prediction (Prony) with the lag `lag`
+// [lambda / c_s]: least squares over every sample of a(t + 2 lag) = c1 a(t + lag) + c0 a(t), then
+// e^{s lag} are the roots of z^2 - c1 z - c0. growth = Re s [c_s / lambda], speed = -Im s / k [c_s]
+// (unambiguous for |speed| < 1 / (2 lag)). Sorted by speed, the faster along the sliding first.
+struct FittedWave {
+  double growthRate = 0;
+  double phaseSpeed = 0;
+};
+std::array<FittedWave, 2> fittedWavePair(const SlidingStripHistory& history, double from, double to,
+                                         double lag = 0.1);
 
 }  // namespace gradfric
