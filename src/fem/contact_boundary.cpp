@@ -143,6 +143,11 @@ void ContactBoundary::archive(StateArchive& a) {
   a.field("contact.slipRecord", record);
   slipRecord_.clear();
   for (std::size_t i = 0; i + 1 < record.size(); i += 2) slipRecord_.emplace_back(record[i], record[i + 1]);
+  std::vector<double> rates;  // the same for the slip rates at mu > 1
+  for (const auto& [t, rate] : aboveOneRates_) rates.insert(rates.end(), {t, rate});
+  a.field("contact.aboveOneRates", rates);
+  aboveOneRates_.clear();
+  for (std::size_t i = 0; i + 1 < rates.size(); i += 2) aboveOneRates_.emplace_back(rates[i], rates[i + 1]);
 }
 
 LayerWork ContactBoundary::work() const {
@@ -196,8 +201,8 @@ void ContactBoundary::commit() {
     n.anchorY = n.pendingY;
     n.state = n.pendingState;
     n.filtered = n.pendingFiltered;
-    if (n.pendingState == ContactState::Slip)
-      lastStepSlip_ = std::max(lastStepSlip_, std::hypot(n.pendingU[0] - n.u[0], n.pendingU[1] - n.u[1]));
+    n.stepSlip = n.pendingState == ContactState::Slip ? std::hypot(n.pendingU[0] - n.u[0], n.pendingU[1] - n.u[1]) : 0.0;
+    lastStepSlip_ = std::max(lastStepSlip_, n.stepSlip);
     for (int d = 0; d < 3; ++d) {
       n.work += 0.5 * (n.force[d] + n.pendingForce[d]) * (n.pendingU[d] - n.u[d]);
       n.force[d] = n.pendingForce[d];
@@ -224,15 +229,20 @@ void ContactBoundary::settleFilteredPressure() {
   for (Node& n : nodes_) n.filtered = n.pressure;
 }
 
-void ContactBoundary::recordOnset(double t) {
+void ContactBoundary::recordOnset(double t, double dt) {
   if (lastStepSlip_ > (slipRecord_.empty() ? 0.0 : slipRecord_.back().second)) slipRecord_.push_back({t, lastStepSlip_});
+  double fastest = aboveOneRates_.empty() ? 0.0 : aboveOneRates_.back().second;
+  const double fastestBefore = fastest;
   visitContactLaw(law_, [&](const auto& law) {
     const FrictionSites& sites = sitesOf(law);
     for (std::size_t site = 0; site < nodes_.size(); ++site) {
       Node& n = nodes_[site];
       const double strength = fem::committedStrength(law, static_cast<int>(site));
       // Sliding, not stuck or open: the flutter needs the friction force to act on a slip.
-      if (n.slidAboveOne < 0 && n.state == ContactState::Slip && strength > 1.0 + 1e-9) n.slidAboveOne = t;
+      if (n.state == ContactState::Slip && strength > 1.0 + 1e-9) {
+        if (n.slidAboveOne < 0) n.slidAboveOne = t;
+        fastest = std::max(fastest, n.stepSlip / dt);
+      }
       if (n.weakenEnd >= 0) continue;
       const int slot = sites.slotOfSite(static_cast<int>(site));
       const double s = sites.staticAt(slot), k = sites.kineticAt(slot);
@@ -242,6 +252,7 @@ void ContactBoundary::recordOnset(double t) {
       if (left < 0.1) n.weakenEnd = t;
     }
   });
+  if (fastest > fastestBefore) aboveOneRates_.push_back({t, fastest});
 }
 
 ProcessZone ContactBoundary::processZone(double latestStart) const {
@@ -278,18 +289,33 @@ double ContactBoundary::largestSlipPerStep(double until) const {
   return global;
 }
 
-SlidingAboveOne ContactBoundary::slidAboveOne(double until) const {
+SlidingAboveOne ContactBoundary::slidAboveOne(double until, const MeshAxis& x, const MeshAxis& y) const {
+  // The larger of the two cells on either side of a node along an axis.
+  const auto side = [](const MeshAxis& axis, double at) {
+    const int node = axis.nearestNode(at);
+    double h = 0;
+    if (node > 0) h = std::max(h, axis.width(node - 1));
+    if (node < axis.cells()) h = std::max(h, axis.width(node));
+    return h;
+  };
   ExactSum sums[3];  // nodes, their area, all the area: exact, so the same on any partition
+  double largest[2] = {0, 0};  // element side, slip rate: maxima, the same on any partition
   for (const Node& n : nodes_) {
     const bool slid = n.slidAboveOne >= 0 && n.slidAboveOne <= until;
     sums[0].add(slid ? 1.0 : 0.0);
     sums[1].add(slid ? n.area : 0.0);
     sums[2].add(n.area);
+    if (slid) largest[0] = std::max({largest[0], side(x, n.x), side(y, n.y)});
   }
+  for (const auto& [t, rate] : aboveOneRates_)
+    if (t <= until) largest[1] = rate;
   allreduceExact(comm_, sums, 3);
+  GF_CALL_MPI(MPI_Allreduce(MPI_IN_PLACE, largest, 2, MPI_DOUBLE, MPI_MAX, comm_));
   SlidingAboveOne s;
   s.nodes = std::lround(sums[0].value());
   s.areaFraction = sums[2].value() > 0 ? sums[1].value() / sums[2].value() : 0.0;
+  s.largestElement = largest[0];
+  s.fastestRate = largest[1];
   return s;
 }
 

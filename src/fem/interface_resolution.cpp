@@ -2,6 +2,7 @@
 
 #include "gradfric/fem/plate_model.hpp"
 #include "gradfric/physics/friction_laws.hpp"
+#include "gradfric/physics/sliding_dispersion.hpp"
 
 #include <cstdio>
 
@@ -38,7 +39,29 @@ InterfaceResolution checkInterfaceResolution(const PlateModel& model, double pea
   r.filtered = q.normalFilter.active();
   // The nodes' own mu_s: a dispersed surface lifts some above the mean (by sigma_s z), so say so.
   r.randomSurface = model.properties().surface().dispersed();
-  r.aboveOne = model.contact().slidAboveOne(peakTime);
+  r.aboveOne = model.contact().slidAboveOne(peakTime, model.mesh().axisX(), model.mesh().axisY());
+  if (r.aboveOne.nodes > 0 && r.filtered && r.aboveOne.fastestRate + q.normalFilter.speed > 0) {
+    const NormalStressFilter& filter = q.normalFilter;
+    const double shearSpeed = std::sqrt(plate.shearModulus() / plate.density);
+    r.memoryTime = filter.length / (r.aboveOne.fastestRate + filter.speed);
+    r.cutoffWavelength = memoryCutoffWavelength(r.largestStaticCoefficient, plate.poissonRatio, shearSpeed, r.memoryTime);
+    r.baseLayer = model.mesh().hz();
+    r.timeStep = model.timeStep();
+    const double allowed = r.cutoffWavelength / 8;
+    const double element = std::max(r.aboveOne.largestElement, r.baseLayer);
+    if (element > allowed) {
+      std::snprintf(text, sizeof text,
+                    "filter not resolved: elements up to %.3g m (in-plane) and %.3g m (base layer) where nodes slid at "
+                    "mu > 1, above lambda_c/8 = %.3g m (refine there, or raise -fem_pc_length to %.3g m)",
+                    r.aboveOne.largestElement, r.baseLayer, allowed, filter.length * element / allowed);
+      r.violations.push_back(text);
+    }
+    if (r.timeStep > r.memoryTime / 10) {
+      std::snprintf(text, sizeof text, "time step %.3g s > T/10 = %.3g s of the filter (lower -fem_dt_safety)", r.timeStep,
+                    r.memoryTime / 10);
+      r.violations.push_back(text);
+    }
+  }
   if (r.aboveOne.nodes > 0 && !r.filtered) {
     std::snprintf(text, sizeof text,
                   "%ld nodes (%.3g %% of the area) slid at mu > 1 before the peak: there sliding flutters and the onset "
@@ -83,6 +106,11 @@ std::string InterfaceResolution::measures() const {
                   100 * aboveOne.areaFraction,
                   filtered && aboveOne.nodes > 0 ? ", their flutter bounded by the Prakash-Clifton filter" : "");
     line += text;
+    if (filtered && aboveOne.nodes > 0) {
+      std::snprintf(text, sizeof text, " (T %.3g s at %.3g m/s, lambda_c %.3g m; elements there %.3g m in-plane, %.3g m base layer)",
+                    memoryTime, aboveOne.fastestRate, cutoffWavelength, aboveOne.largestElement, baseLayer);
+      line += text;
+    }
   }
   return line;
 }

@@ -68,12 +68,18 @@ void writeResults(hid_t fem, const PlateModel& model, const FemRunResult& r, con
   H5Group results = createGroup(fem, "results");
   const FemParameters& q = model.params();
   const FrictionSummary& f = r.friction;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const bool filterMeasured = r.resolution.memoryTime > 0;  // the filter's rule applied (nodes slid at mu > 1)
   // The bars' fields are /statistics/mu_*_discretisation_* (as in a sweep); their text here.
   writeStringAttribute(results, "mu_s_error_basis", errorBasis[0]);
   writeStringAttribute(results, "mu_k_error_basis", errorBasis[1]);
   const std::pair<const char*, double> seconds[] = {
       {"eq2_peak_time", q.eq2PeakTime()}, {"first_slip_time", f.firstSlipTime}, {"slide_start", r.slideStart},
-      {"mu_k_window_start", f.kineticFrom}, {"mu_k_window_end", f.kineticTo}, {"dt", r.dt}, {"stable_dt", r.stableDt}};
+      {"mu_k_window_start", f.kineticFrom}, {"mu_k_window_end", f.kineticTo}, {"dt", r.dt}, {"stable_dt", r.stableDt},
+      {"memory_relaxation_time", filterMeasured ? r.resolution.memoryTime : nan}};
+  const std::pair<const char*, double> metres[] = {
+      {"memory_cutoff_wavelength", filterMeasured ? r.resolution.cutoffWavelength : nan},
+      {"largest_element_slid_above_one", r.resolution.aboveOne.nodes > 0 ? r.resolution.aboveOne.largestElement : nan}};
   const std::pair<const char*, double> numbers[] = {{"settled_normal_force", r.settledNormalForce},
                                                     {"mu_k_window_spread", f.kineticSpread},
                                                     {"mu_k_steady_tolerance", q.measurement.kineticSteadyTolerance},
@@ -90,6 +96,10 @@ void writeResults(hid_t fem, const PlateModel& model, const FemRunResult& r, con
   for (const auto& [name, value] : numbers) {
     writeRealAttribute(results, name, value);
     writeStringAttribute(units, name, "1");
+  }
+  for (const auto& [name, value] : metres) {
+    writeRealAttribute(results, name, value);
+    writeStringAttribute(units, name, "m");
   }
   for (const auto& [name, value] : flags) {
     writeIntAttribute(results, name, value);

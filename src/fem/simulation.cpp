@@ -343,7 +343,7 @@ private:
     const double mu = history_.observe(tSliding, totals.fx, totals.fy, totals.slip > 0,
                                        totals.everSlipped == totals.nodes);
     sample_.mu = mu;
-    if (recordOnset_) model_.recordOnset(tSliding);
+    if (recordOnset_) model_.recordOnset(tSliding, r_.dt);
     if (q_.measurement.firstSlipMap) model_.recordFirstSlips(tSliding);
     // The damping of the sliding plate starts at the confirmed peak (mu_s is then the undamped
     // run's), or as -fem_peak_damping_start says (loading_protocol.hpp).

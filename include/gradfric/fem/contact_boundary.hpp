@@ -8,6 +8,7 @@
 #include "gradfric/fem/contact_kinematic.hpp"
 #include "gradfric/fem/contact_law.hpp"
 #include "gradfric/fem/contact_penalty.hpp"
+#include "gradfric/fem/edge_grading.hpp"
 #include "gradfric/fem/layer.hpp"
 #include "gradfric/fem/normal_stress_filter.hpp"
 #include "gradfric/fem/plate_properties.hpp"
@@ -27,6 +28,8 @@ namespace gradfric::fem {
 struct SlidingAboveOne {
   long nodes = 0;
   double areaFraction = 0;
+  double fastestRate = 0;     // the largest slip rate of a node sliding at mu > 1 [m/s]
+  double largestElement = 0;  // the largest in-plane element side next to those nodes [m]
 };
 
 struct ContactSettings {
@@ -51,6 +54,7 @@ public:
     double firstSlip = std::numeric_limits<double>::quiet_NaN();  // time its committed state first was Slip [s]
     double weakenStart = -1, weakenEnd = -1;  // times its strength fell 10 % and 90 % of the way to mu_k
     double slidAboveOne = -1;  // time it first slid with its strength mu(theta) above 1 (-1: never)
+    double stepSlip = 0;       // its tangential slip over the last committed step [m] (0: not sliding)
     double pressure = 0, tx = 0, ty = 0;  // of the last evaluation
     double filtered = 0, pendingFiltered = 0;  // the normal-stress filter's p* [Pa]: committed, pending
     double force[3] = {0, 0, 0}, u[3] = {0, 0, 0};  // committed contact force and displacement
@@ -90,16 +94,17 @@ public:
   // After each sliding step at time t, with a law that weakens over a slip (the state law): notes
   // the nodes whose committed strength has fallen 10 % and 90 % of the way from mu_s to mu_k (for
   // processZone()), the step's largest slip (for largestSlipPerStep()) and the nodes that slide with
-  // a strength above 1 for the first time (for slidAboveOne()).
-  void recordOnset(double t);
+  // a strength above 1 and the fastest of them (for slidAboveOne()); dt: the step.
+  void recordOnset(double t, double dt);
   // The process zone measured from those times over the nodes that started weakening by
   // latestStart (physics/process_zone.hpp); collective.
   ProcessZone processZone(double latestStart) const;
   // The largest slip of a node in one step from resetSlipRecord to time `until` (as recordOnset
   // saw it), over ranks [m].
   double largestSlipPerStep(double until) const;
-  // The nodes that slid with mu(theta) > 1 from the start of sliding to `until`; collective.
-  SlidingAboveOne slidAboveOne(double until) const;
+  // The nodes that slid with mu(theta) > 1 from the start of sliding to `until`, the fastest of
+  // their slip rates and the largest element side next to them (the mesh's axes x, y); collective.
+  SlidingAboveOne slidAboveOne(double until, const MeshAxis& x, const MeshAxis& y) const;
   // Work of the contact forces on the plate over the committed steps, summed over ranks [J]
   // (negative: friction and the inelastic normal impacts dissipate; with penalties it includes
   // the energy the springs store).
@@ -121,6 +126,7 @@ private:
   bool randomSurface_ = false;  // the coefficients carry the random surface (for the stored fields' description)
   double lastStepSlip_ = 0;  // this rank's largest slip of a node in the last committed step
   std::vector<std::pair<double, double>> slipRecord_;  // (time, running maximum) where it grew
+  std::vector<std::pair<double, double>> aboveOneRates_;  // (time, running maximum slip rate at mu > 1)
   // Adds the evaluation's force on node n (at displacement xb) to its block's right-hand side fb and
   // to the totals, and keeps it pending until commit.
   void applyNodeForce(Node& n, const PetscScalar* xb, PetscScalar* fb, double fx, double fy, double fz,

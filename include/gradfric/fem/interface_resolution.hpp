@@ -10,6 +10,9 @@
 //    (Day et al. 2005; Dalguer & Day 2007).
 // And the flutter: a node that slides with mu(theta) > 1 on the rigid plane is on an ill-posed
 // interface (docs/flutter.md), so the onset there depends on the mesh; counted up to the peak.
+// With the normal-stress filter the interface is well-posed if the mesh resolves the filter: the
+// elements next to those nodes, in-plane and through the thickness, at most lambda_c / 8, and the
+// time step at most T / 10.
 // Also the regime number kappa = G D_c / (H p (mu_s - mu_k)): the column stiffness of the layer
 // against the weakening rate; below 1 the onset is dynamic (fronts), above 1 it is smooth.
 #include "gradfric/fem/contact_boundary.hpp"
@@ -30,6 +33,10 @@ struct InterfaceResolution {
   double largestStaticCoefficient = 0;  // over the contact nodes: above 1 a node may slide at mu > 1
   SlidingAboveOne aboveOne;              // the nodes that did, before the peak: there sliding flutters
   bool filtered = false;                 // the Prakash-Clifton filter is on: it bounds that flutter
+  // With the filter and nodes sliding at mu > 1: its shortest relaxation time T = L / (|V| + V*) at
+  // their fastest slip rate, and the shortest wavelength that still grows then, 2 pi c_s T / K_c
+  // (docs/flutter.md, "With a normal-stress memory"): the mesh must resolve it.
+  double memoryTime = 0, cutoffWavelength = 0, baseLayer = 0, timeStep = 0;
   bool randomSurface = false;            // the nodes' mu_s carry a dispersed random surface
   ProcessZone zone;
   std::vector<std::string> violations;  // empty: resolved

@@ -61,7 +61,7 @@ public:
   Vec createState() const;  // zero state (global)
   void rhs(double t, Vec X, Vec F);
   void postStep();  // the TS post-step, after each accepted step: every layer's, in the list's order
-  void recordOnset(double t) { contact_->recordOnset(t); }  // for the interface resolution check (sliding)
+  void recordOnset(double t, double dt) { contact_->recordOnset(t, dt); }  // for the interface resolution check (sliding)
   void recordFirstSlips(double t) { contact_->recordFirstSlips(t); }  // for the first-slip map (sliding)
 
   // The loading protocol (loading_protocol.hpp).
