@@ -58,6 +58,10 @@ std::pair<std::string, std::string> columnMeaning(const std::string& column, con
         return {x, std::string(end) + " end of the parameter's interval from the " + source +
                        " uncertainty (95 %; NaN: not measured; docs/design.md)"};
   if (column == "cells") return {"1", "hexahedra of the FEM mesh"};
+  if (column == "nodes_slid_above_one")
+    return {"1", "bottom nodes of the FEM run that slid at mu > 1 before the peak: there its onset depends on the mesh "
+                 "(docs/flutter.md); -1: not measured"};
+  if (column == "area_slid_above_one") return {"1", "their share of the contact area"};
   return {"", column};
 }
 
@@ -80,7 +84,7 @@ study::LadderTable tableOf(const std::string& name, const Problem& problem, cons
   study::LadderTable t;
   t.name = name;
   std::string phases;
-  std::vector<double> index, realisations, value, low, high, mu, muLow, muHigh;
+  std::vector<double> index, realisations, value, low, high, mu, muLow, muHigh, aboveOne, aboveOneArea;
   std::vector<std::vector<double>> x(problem.dimension());
   for (const auto& e : rows) {
     phases += (phases.empty() ? "" : ",") + e.phase;
@@ -93,6 +97,8 @@ study::LadderTable tableOf(const std::string& name, const Problem& problem, cons
     mu.push_back(e.muStatic);
     muLow.push_back(e.muStaticCiLow);
     muHigh.push_back(e.muStaticCiHigh);
+    aboveOne.push_back(static_cast<double>(e.nodesSlidAboveOne));
+    aboveOneArea.push_back(e.areaSlidAboveOne);
   }
   t.texts = {{"phases", phases},
              {"value_meaning", problem.kind == TargetKind::Variation ? "relative variation (mu_s - mu_s,0) / mu_s,0"
@@ -106,6 +112,8 @@ study::LadderTable tableOf(const std::string& name, const Problem& problem, cons
                                      {"mu_s", mu},
                                      {"mu_s_ci95_low", muLow},
                                      {"mu_s_ci95_high", muHigh}});
+  if (problem.model == "fem" && name != "model_form")  // the FEM's runs (model_form: the spring blocks')
+    t.columns.insert(t.columns.end(), {{"nodes_slid_above_one", aboveOne}, {"area_slid_above_one", aboveOneArea}});
   return t;
 }
 
@@ -184,7 +192,8 @@ void saveDesignFile(MPI_Comm comm, const io::OutputPlan& plan, const Problem& pr
     t.name = "fem_verification";
     for (const auto& option : io::optionAttributes(problem.fem->record)) t.texts.emplace_back(option.name, option.value);
     t.columns = {{"mu_s", {fem->muStatic}}, {"peak_confirmed", {fem->peakConfirmed ? 1.0 : 0.0}},
-                 {"cells", {double(fem->cells)}}};
+                 {"cells", {double(fem->cells)}}, {"nodes_slid_above_one", {double(fem->nodesSlidAboveOne)}},
+                 {"area_slid_above_one", {fem->areaSlidAboveOne}}};
     if (problem.kind == TargetKind::Variation)
       t.columns.insert(t.columns.end(), {{"reference_mu_s", {fem->referenceMuStatic}},
                                          {"reference_peak_confirmed", {fem->referenceConfirmed ? 1.0 : 0.0}}});
@@ -240,6 +249,14 @@ void printDesign(MPI_Comm comm, const Problem& problem, const SearchResult& resu
                           "", "", fem->referenceMuStatic, fem->referenceConfirmed ? "" : " (peak not confirmed)",
                           fem->referenceWallSeconds));
   }
+  // The FEM's value at the design rests on an ill-posed interface where nodes slid at mu > 1.
+  const long exposed = problem.model == "fem" ? d.nodesSlidAboveOne : fem ? fem->nodesSlidAboveOne : -1;
+  if (exposed > 0)
+    GF_CALL(PetscPrintf(comm,
+                        "  flutter: %ld FEM nodes (%.3g %% of the area) slid at mu > 1 before the peak at the design, so "
+                        "the FEM's onset there depends on the mesh (docs/flutter.md); the high-friction edge leading "
+                        "avoids it\n",
+                        exposed, 100 * (problem.model == "fem" ? d.areaSlidAboveOne : fem->areaSlidAboveOne)));
   GF_CALL(PetscPrintf(comm, "  target %s = %g +- %g%s\n", quantity, problem.target, problem.tolerance,
                       verification ? (verification->side(problem.target) == 0 ? "; the verification's CI holds it"
                                                                                : "; the verification's CI misses it")

@@ -42,6 +42,10 @@ FemVerification runFemCheck(MPI_Comm comm, const FemCheck& check, const Grading&
     v.muStatic = r.friction.muStatic;
     v.peakConfirmed = r.friction.peakConfirmed;
     v.wallSeconds = MPI_Wtime() - start;
+    if (r.resolution.applies) {
+      v.nodesSlidAboveOne = r.resolution.aboveOne.nodes;
+      v.areaSlidAboveOne = r.resolution.aboveOne.areaFraction;
+    }
   }
   if (reference) {
     fem::PlateModel model(comm, check.parameters, *reference);

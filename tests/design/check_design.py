@@ -93,8 +93,13 @@ def main(argv):
             design, run = m["design/mu_s"][0], g["realisations/mu_s"][0, 0]
             assert m["design/realisations"][0] == 1 and m["design/ci95_low"][0] == m["design/ci95_high"][0]
             phases = text(m["evaluations"].attrs["phases"]).split(",")
-        print(f"FEM design: mu_s {design!r}, gradfric-fem at its parameter {run!r}; phases {phases}")
+            # and the nodes that slid at mu > 1 before the peak (the flutter flag), as gradfric-fem counts them
+            above = (m["design/nodes_slid_above_one"][0], m["design/area_slid_above_one"][0])
+            above_run = (g["fem/results"].attrs["nodes_slid_above_one"], g["fem/results"].attrs["area_slid_above_one"])
+        print(f"FEM design: mu_s {design!r}, gradfric-fem at its parameter {run!r}; phases {phases}; "
+              f"nodes slid at mu > 1 {above} and {above_run}")
         assert design == run, "the design's FEM value is not gradfric-fem's"
+        assert above == above_run, "the design's flutter count is not gradfric-fem's"
         assert abs(design - target) <= 0.002, "not within the tolerance of the target"
         if most_fine:
             fine = [p for p in phases if p == "fine"]

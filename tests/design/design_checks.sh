@@ -172,6 +172,14 @@ fem_model)
     -design_target 0.88 -output "$work/c.h5"
   grep -q "found on the coarse mesh 8x8x1, confirmed on the -fem_\* mesh" "$work/c.log" || { cat "$work/c.log" >&2; fail "no coarse-to-fine design"; }
   fem_at_design "$work/c.h5" 16 16 2 0.88 4 || fail "the coarse-to-fine design against gradfric-fem"
+  # A design whose FEM run has nodes sliding at mu > 1 before the peak (the high-friction edge
+  # trailing, Delta about -0.39 on 10 x 10 x 2) says that its onset depends on the mesh; the count
+  # is gradfric-fem's at that Delta.
+  run 0 1 "$work/f.log" "${scene[@]}" -sbm_N 12 "${fem_args[@]}" -fem_nx 10 -fem_ny 10 -fem_nz 2 -design_target 0.78 \
+    -output "$work/f.h5"
+  grep -q "^  flutter: [1-9][0-9]* FEM nodes ([0-9.]* % of the area) slid at mu > 1 before the peak at the design" "$work/f.log" ||
+    { cat "$work/f.log" >&2; fail "no flutter line"; }
+  fem_at_design "$work/f.h5" 10 10 2 0.78 || fail "the flutter count against gradfric-fem"
   # Refused before any work: the FEM checking itself, a dispersed surface, a verification that
   # would repeat the same run, a coarse mesh without the FEM, of two numbers, or with TAO.
   refused 1 -design_verify_fem "${fem_args[@]}" -design_target 0.86 -design_verify_fem

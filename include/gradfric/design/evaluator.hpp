@@ -34,6 +34,10 @@ struct Evaluation {
   // value; it holds the target when within `acceptance` (the design's tolerance) of it.
   bool exact = false;
   double acceptance = 0.0;
+  // A FEM run: its bottom nodes that slid at mu > 1 before the peak and their share of the area
+  // (the onset there depends on the mesh, docs/flutter.md); -1: not measured or not a FEM run.
+  long nodesSlidAboveOne = -1;
+  double areaSlidAboveOne = 0.0;
   double halfWidth() const { return 0.5 * (ciHigh - ciLow); }
   // Where the target lies: +1 below the CI (the value is above it), -1 above it, 0 inside.
   int side(double target) const {

@@ -31,6 +31,10 @@ struct FemVerification {
   bool peakConfirmed = false;
   double wallSeconds = 0.0;
   int cells = 0;
+  // Bottom nodes that slid at mu(theta) > 1 before the peak, and their share of the area: there the
+  // onset depends on the mesh (docs/flutter.md); -1: not measured (a law without D_c).
+  long nodesSlidAboveOne = -1;
+  double areaSlidAboveOne = 0.0;
   // The FEM's own non-graded plate, the reference of a variation target (else not run: NaN).
   double referenceMuStatic = std::numeric_limits<double>::quiet_NaN();
   bool referenceConfirmed = false;

@@ -32,13 +32,18 @@ public:
   double referenceMuStatic() const { return reference_ ? *reference_ : std::numeric_limits<double>::quiet_NaN(); }
 
 private:
-  double run(const Grading& grading, const std::string& what);
+  struct Run {
+    double muStatic;
+    long nodesSlidAboveOne;
+    double areaSlidAboveOne;
+  };
+  Run run(const Grading& grading, const std::string& what);
 
   MPI_Comm comm_;
   const Problem& problem_;
   const FemCheck& mesh_;
   double acceptance_;
-  std::map<std::vector<double>, double> muStatic_;  // per x
+  std::map<std::vector<double>, Run> runsAt_;  // per x
   std::optional<double> reference_;
   long runs_ = 0;
 };
