@@ -18,6 +18,7 @@
 #include "gradfric/design/design_file.hpp"
 #include "gradfric/design/evaluator.hpp"
 #include "gradfric/design/fem_evaluator.hpp"
+#include "gradfric/design/known_runs.hpp"
 #include "gradfric/design/mesh_refinement.hpp"
 #include "gradfric/design/problem.hpp"
 #include "gradfric/design/root_finder.hpp"
@@ -44,6 +45,7 @@ int main(int argc, char** argv) {
     const std::optional<Problem> problem = readProblem(comm, &record);  // every option, checked
     if (!problem) return 0;                                               // -help
     const io::OutputPlan plan = planDesignFile(comm, *problem);         // before any work
+    const std::vector<KnownFemRun> known = readKnownFemRuns(comm, problem->reuse, *problem, record);  // -design_reuse
     record.print(comm, "gradfric-design parameters");
     if (problem->coarseFem)
       PetscPrintf(comm, "Every evaluation is one FEM run to its confirmed peak: the search on %d x %d x %d hexahedra, "
@@ -61,6 +63,11 @@ int main(int argc, char** argv) {
     std::optional<FemEvaluator> femRuns, coarseRuns;  // the FEM on the -fem_* mesh, and on the coarse one
     if (problem->fem) femRuns.emplace(comm, *problem, *problem->fem, problem->tolerance);
     if (problem->coarseFem) coarseRuns.emplace(comm, *problem, *problem->coarseFem, problem->coarse);
+    for (auto* runs : {&femRuns, &coarseRuns})
+      if (*runs) (*runs)->know(known);
+    if (!problem->reuse.empty())
+      PetscPrintf(comm, "-design_reuse: %zu earlier FEM run(s) known; an evaluation there is taken, not run again.\n",
+                  known.size());
     DesignModel& model = problem->model != "fem" ? static_cast<DesignModel&>(springBlocks)
                          : coarseRuns           ? static_cast<DesignModel&>(*coarseRuns)
                                                 : static_cast<DesignModel&>(*femRuns);
@@ -86,7 +93,10 @@ int main(int argc, char** argv) {
     const DesignUncertainty uncertainty =
         designUncertainty(*problem, result, otherValue, designStudyBar(*problem, record, result.design.x));
     RunCounts runs{springBlocks.realisationsRun(), 0};
-    if (problem->model == "fem") runs.femRuns = femRuns->realisationsRun() + (coarseRuns ? coarseRuns->realisationsRun() : 0);
+    if (problem->model == "fem") {
+      runs.femRuns = femRuns->realisationsRun() + (coarseRuns ? coarseRuns->realisationsRun() : 0);
+      runs.femReused = femRuns->runsReused() + (coarseRuns ? coarseRuns->runsReused() : 0);
+    }
     if (fem) runs.femRuns += problem->kind == TargetKind::Variation ? 2 : 1;  // -design_verify_fem's runs
     double wall = MPI_Wtime() - start;
     MPI_Bcast(&wall, 1, MPI_DOUBLE, 0, comm);

@@ -62,6 +62,11 @@ std::pair<std::string, std::string> columnMeaning(const std::string& column, con
     return {"1", "bottom nodes of the FEM run that slid at mu > 1 before the peak: there its onset depends on the mesh "
                  "(docs/flutter.md); -1: not measured"};
   if (column == "area_slid_above_one") return {"1", "their share of the contact area"};
+  if (column == "fem_nx" || column == "fem_ny" || column == "fem_nz")
+    return {"1", "hexahedra along " + column.substr(4) + " of the FEM run's mesh"};
+  if (column == "fem_reference_mu_s")
+    return {"1", "the FEM's non-graded plate's mu_s on the run's mesh (the reference of its variation; NaN: none)"};
+  if (column == "reused") return {"1", "1 if the FEM run was taken from an earlier design file (-design_reuse), not run"};
   return {"", column};
 }
 
@@ -84,7 +89,8 @@ study::LadderTable tableOf(const std::string& name, const Problem& problem, cons
   study::LadderTable t;
   t.name = name;
   std::string phases;
-  std::vector<double> index, realisations, value, low, high, mu, muLow, muHigh, aboveOne, aboveOneArea;
+  std::vector<double> index, realisations, value, low, high, mu, muLow, muHigh, aboveOne, aboveOneArea, reused;
+  std::vector<double> mesh[3], reference;
   std::vector<std::vector<double>> x(problem.dimension());
   for (const auto& e : rows) {
     phases += (phases.empty() ? "" : ",") + e.phase;
@@ -99,6 +105,9 @@ study::LadderTable tableOf(const std::string& name, const Problem& problem, cons
     muHigh.push_back(e.muStaticCiHigh);
     aboveOne.push_back(static_cast<double>(e.nodesSlidAboveOne));
     aboveOneArea.push_back(e.areaSlidAboveOne);
+    for (int d = 0; d < 3; ++d) mesh[d].push_back(e.femMesh[d]);
+    reused.push_back(e.reused ? 1.0 : 0.0);
+    reference.push_back(e.femReference);
   }
   t.texts = {{"phases", phases},
              {"value_meaning", problem.kind == TargetKind::Variation ? "relative variation (mu_s - mu_s,0) / mu_s,0"
@@ -113,7 +122,9 @@ study::LadderTable tableOf(const std::string& name, const Problem& problem, cons
                                      {"mu_s_ci95_low", muLow},
                                      {"mu_s_ci95_high", muHigh}});
   if (problem.model == "fem" && name != "model_form")  // the FEM's runs (model_form: the spring blocks')
-    t.columns.insert(t.columns.end(), {{"nodes_slid_above_one", aboveOne}, {"area_slid_above_one", aboveOneArea}});
+    t.columns.insert(t.columns.end(), {{"nodes_slid_above_one", aboveOne}, {"area_slid_above_one", aboveOneArea},
+                                       {"fem_nx", mesh[0]}, {"fem_ny", mesh[1]}, {"fem_nz", mesh[2]}, {"reused", reused},
+                                       {"fem_reference_mu_s", reference}});
   return t;
 }
 
@@ -161,7 +172,8 @@ void saveDesignFile(MPI_Comm comm, const io::OutputPlan& plan, const Problem& pr
                      {"free_parameters", names},
                      {"model", problem.model},
                      {"realisations_run", std::to_string(runs.realisations)},
-                     {"fem_runs", std::to_string(runs.femRuns)}};
+                     {"fem_runs", std::to_string(runs.femRuns)},
+                     {"fem_runs_reused", std::to_string(runs.femReused)}};
   for (const auto& option : io::optionAttributes(record)) file.attributes.emplace_back(option.name, option.value);
   file.ladders.push_back(tableOf("evaluations", problem, log.all()));
   file.ladders.push_back(tableOf("design", problem, {result.design}));
@@ -262,9 +274,11 @@ void printDesign(MPI_Comm comm, const Problem& problem, const SearchResult& resu
                                                                                : "; the verification's CI misses it")
                                    : ""));
   printUncertainty(comm, problem, uncertainty);
-  if (runs.femRuns > 0)
-    GF_CALL(PetscPrintf(comm, "  %ld FEM runs (any non-graded plate included) and %ld spring-block realisations, %.1f s wall\n",
-                        runs.femRuns, runs.realisations, wallSeconds));
+  if (runs.femRuns > 0 || runs.femReused > 0)
+    GF_CALL(PetscPrintf(comm, "  %ld FEM runs (any non-graded plate included)%s and %ld spring-block realisations, %.1f s wall\n",
+                        runs.femRuns,
+                        runs.femReused > 0 ? (", " + std::to_string(runs.femReused) + " more taken from -design_reuse").c_str() : "",
+                        runs.realisations, wallSeconds));
   else
     GF_CALL(PetscPrintf(comm, "  %ld realisations run (the verification and any reference plate included), %.1f s wall\n",
                         runs.realisations, wallSeconds));

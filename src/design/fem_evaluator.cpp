@@ -15,11 +15,29 @@ FemEvaluator::Run FemEvaluator::run(const Grading& grading, const std::string& w
   return {r.muStatic, r.nodesSlidAboveOne, r.areaSlidAboveOne};
 }
 
+std::array<int, 3> FemEvaluator::mesh() const {
+  return {mesh_.parameters.nx, mesh_.parameters.ny, mesh_.parameters.nz};
+}
+
+void FemEvaluator::know(const std::vector<KnownFemRun>& runs) {
+  for (const KnownFemRun& r : runs) {
+    if (r.mesh != mesh()) continue;
+    if (r.reference) {
+      if (!reference_) reference_ = r.muStatic, referenceKnown_ = true;
+    } else {
+      runsAt_.emplace(r.x, Run{r.muStatic, r.nodesSlidAboveOne, r.areaSlidAboveOne, true});
+    }
+  }
+}
+
 Evaluation FemEvaluator::evaluate(const std::vector<double>& x, double, const std::string& phase, std::uint32_t, int) {
   auto known = runsAt_.find(x);
   if (known == runsAt_.end()) known = runsAt_.emplace(x, run(problem_.gradingAt(x), problem_.describe(x))).first;
+  const bool reused = known->second.known;
+  if (reused) ++reused_, known->second.known = false;  // counted once
   const bool variation = problem_.kind == TargetKind::Variation;
   if (variation && !reference_) reference_ = run(problem_.referenceGrading(), "the non-graded plate").muStatic;
+  if (variation && referenceKnown_) ++reused_, referenceKnown_ = false;
   Evaluation e;
   e.phase = phase;
   e.x = x;
@@ -31,6 +49,9 @@ Evaluation FemEvaluator::evaluate(const std::vector<double>& x, double, const st
   e.value = variation ? r.muStatic / *reference_ - 1.0 : r.muStatic;
   e.nodesSlidAboveOne = r.nodesSlidAboveOne;
   e.areaSlidAboveOne = r.areaSlidAboveOne;
+  e.femMesh = mesh();
+  e.reused = reused;
+  if (variation) e.femReference = *reference_;
   e.ciLow = e.ciHigh = e.value;
   return e;
 }

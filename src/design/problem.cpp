@@ -166,6 +166,9 @@ std::optional<Problem> readProblem(MPI_Comm comm, RunParameters* record) {
   const PetscInt fine = o.integer("fine_evaluations", 4, 1, 1000, "1",
                                   "fem with -design_coarse_mesh: at most this many runs on the -fem_* mesh (secant steps "
                                   "from the coarse design)");
+  const std::string reuse = o.text("reuse", "",
+                                   "fem: earlier design files (comma-separated) of the same scene and FEM options whose "
+                                   "runs are taken instead of run again (a run is deterministic: the same numbers)");
   s.verify = o.flag("verify", true, "a fresh verification ensemble with independent streams at the design (sbm)");
   const bool verifyFem = o.flag("verify_fem", false,
                                 "also run the design's surface in the finite-element model (-fem_* options: mesh, "
@@ -199,6 +202,10 @@ std::optional<Problem> readProblem(MPI_Comm comm, RunParameters* record) {
   s.model = model;
   if (verifyFem || model == "fem" || helpRequested()) s.fem = readFemCheck(comm, plate);
   if (helpRequested()) return std::nullopt;
+  if (!reuse.empty()) s.reuse = splitNames(reuse);
+  if (model != "fem" && !s.reuse.empty())
+    throw InputError(o.fullName("reuse"), reuse,
+                     "only with -design_model fem (a spring-block evaluation is an ensemble of seconds, run again)");
   if (model != "fem" && (o.wasSet("coarse_mesh") || o.wasSet("fine_evaluations")))
     throw InputError(o.fullName(o.wasSet("coarse_mesh") ? "coarse_mesh" : "fine_evaluations"), "(set)",
                      "only with -design_model fem");

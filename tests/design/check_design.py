@@ -64,8 +64,17 @@ def main(argv):
             name = [k for k in d if k.startswith("x_")][0]
             assert abs(d[name] - expected) < 1e-12, f"closest at {d[name]}, expected {expected}"
             assert not (d["ci95_low"] <= target <= d["ci95_high"]), d
-    elif check == "same":
+    elif check in ("same", "reused"):
+        # reused: the second file took FEM runs from the first's kind (-design_reuse): the same
+        # numbers, but for the record of which runs were taken.
+        skipped = {"evaluations/reused", "design/reused"} if check == "reused" else set()
         with h5py.File(argv[2], "r") as a, h5py.File(argv[3], "r") as b:
+            if check == "reused":
+                taken, ran = int(text(a.attrs["fem_runs_reused"])), int(text(a.attrs["fem_runs"]))
+                assert taken >= int(a["evaluations/reused"][()].sum()) > 0, taken  # the references count too
+                assert int(text(b.attrs["fem_runs_reused"])) == 0 and not b["evaluations/reused"][()].any()
+                assert ran + taken == int(text(b.attrs["fem_runs"])), (ran, taken, text(b.attrs["fem_runs"]))
+                print(f"{taken} FEM run(s) taken, {text(a.attrs['fem_runs'])} run against {text(b.attrs['fem_runs'])}")
             names = []
             a.visit(names.append)
             other = []
@@ -73,7 +82,7 @@ def main(argv):
             assert names == other, (names, other)
             scales = {"DIMENSION_LIST", "REFERENCE_LIST"}  # object references: compared as the axes' names
             for n in names:
-                if n.startswith("provenance"):  # the ranks, date and command line differ by design
+                if n.startswith("provenance") or n in skipped:  # the ranks, date and command line differ by design
                     continue
                 if isinstance(a[n], h5py.Dataset):
                     nan = a[n].dtype.kind == "f"  # a source not measured is NaN in both
@@ -81,7 +90,7 @@ def main(argv):
                     assert [d.keys() for d in a[n].dims] == [d.keys() for d in b[n].dims], n
                 assert {k: v for k, v in a[n].attrs.items() if k not in scales} == \
                     {k: v for k, v in b[n].attrs.items() if k not in scales}, n
-            skip = {"output"}
+            skip = {"output"} | ({"fem_runs", "fem_runs_reused", "design_reuse"} if check == "reused" else set())
             ka = {k: text(v) for k, v in a.attrs.items() if k not in skip}
             kb = {k: text(v) for k, v in b.attrs.items() if k not in skip}
             assert ka == kb, set(ka.items()) ^ set(kb.items())

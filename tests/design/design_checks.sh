@@ -180,6 +180,22 @@ fem_model)
   grep -q "^  flutter: [1-9][0-9]* FEM nodes ([0-9.]* % of the area) slid at mu > 1 before the peak at the design" "$work/f.log" ||
     { cat "$work/f.log" >&2; fail "no flutter line"; }
   fem_at_design "$work/f.h5" 10 10 2 0.78 || fail "the flutter count against gradfric-fem"
+  # -design_reuse: the FEM runs of an earlier design file are taken, not run again, and change
+  # nothing. A design of another target (-0.06) from one of -0.08 takes the runs they share (the
+  # bracket's ends, the non-graded plates on both meshes) and equals its own fresh design, bit for
+  # bit; the runs taken plus those made are the fresh design's.
+  reuse_args=("${scene[@]}" -sbm_N 12 "${fem_args[@]}" -fem_nx 16 -fem_ny 16 -fem_nz 2 -design_coarse_mesh 8,8,1
+              -design_target_type variation)
+  run 0 1 "$work/r1.log" "${reuse_args[@]}" -design_target -0.08 -output "$work/r1.h5"
+  run 5 1 "$work/r2.log" "${reuse_args[@]}" -design_target -0.06 -design_reuse "$work/r1.h5" -output "$work/r2.h5"
+  run 5 1 "$work/r3.log" "${reuse_args[@]}" -design_target -0.06 -output "$work/r3.h5"
+  grep -q "more taken from -design_reuse" "$work/r2.log" || { cat "$work/r2.log" >&2; fail "no run reused"; }
+  "$python" "$checker" reused "$work/r2.h5" "$work/r3.h5" || fail "a design with reused runs differs from its fresh run"
+  # A file of another scene, of the spring blocks, or not a design file: refused, naming what differs.
+  refused 1 -design_reuse "${reuse_args[@]}" -design_target -0.06 -design_reuse "$work/r1.h5" -plate_E 2e7
+  grep -q "was run with -plate_E = " "$work/bad.log" || { cat "$work/bad.log" >&2; fail "the differing option not named"; }
+  refused 1 -design_reuse "${scene[@]}" -design_target 0.86 -design_reuse "$work/r1.h5"
+  refused 1 -design_reuse "${reuse_args[@]}" -design_target -0.06 -design_reuse "$work/r1.h5.log"
   # Refused before any work: the FEM checking itself, a dispersed surface, a verification that
   # would repeat the same run, a coarse mesh without the FEM, of two numbers, or with TAO.
   refused 1 -design_verify_fem "${fem_args[@]}" -design_target 0.86 -design_verify_fem

@@ -31,6 +31,7 @@ namespace gradfric::design {
 struct RunCounts {
   long realisations = 0;
   long femRuns = 0;
+  long femReused = 0;  // FEM runs taken from -design_reuse instead
 };
 
 // Collective, before any work.

@@ -14,6 +14,8 @@
 
 #include <mpi.h>
 
+#include <array>
+#include <cmath>
 #include <cstdint>
 #include <map>
 #include <string>
@@ -38,6 +40,9 @@ struct Evaluation {
   // (the onset there depends on the mesh, docs/flutter.md); -1: not measured or not a FEM run.
   long nodesSlidAboveOne = -1;
   double areaSlidAboveOne = 0.0;
+  std::array<int, 3> femMesh{};  // a FEM run's mesh nx, ny, nz (0: not a FEM run)
+  bool reused = false;           // a FEM run taken from an earlier design file (-design_reuse)
+  double femReference = std::nan("");  // a FEM variation: the non-graded plate's mu_s on its mesh
   double halfWidth() const { return 0.5 * (ciHigh - ciLow); }
   // Where the target lies: +1 below the CI (the value is above it), -1 above it, 0 inside.
   int side(double target) const {

@@ -6,6 +6,7 @@
 // the FEM's own non-graded plate, run once and kept; a parameter value already run is not run
 // again.
 #include "gradfric/design/evaluator.hpp"
+#include "gradfric/design/known_runs.hpp"
 
 #include <mpi.h>
 
@@ -28,6 +29,10 @@ public:
   Evaluation evaluate(const std::vector<double>& x, double halfWidth, const std::string& phase,
                       std::uint32_t stream = 0, int atLeast = 0) override;
   long realisationsRun() const override { return runs_; }
+  // Takes the known runs on this evaluator's mesh: an evaluation there is not run again.
+  void know(const std::vector<KnownFemRun>& runs);
+  long runsReused() const { return reused_; }  // known runs an evaluation took (the reference included)
+  std::array<int, 3> mesh() const;
   // The non-graded plate's mu_s (a variation target's reference; NaN before it ran).
   double referenceMuStatic() const { return reference_ ? *reference_ : std::numeric_limits<double>::quiet_NaN(); }
 
@@ -36,6 +41,7 @@ private:
     double muStatic;
     long nodesSlidAboveOne;
     double areaSlidAboveOne;
+    bool known = false;  // from -design_reuse, not yet taken by an evaluation
   };
   Run run(const Grading& grading, const std::string& what);
 
@@ -45,7 +51,8 @@ private:
   double acceptance_;
   std::map<std::vector<double>, Run> runsAt_;  // per x
   std::optional<double> reference_;
-  long runs_ = 0;
+  bool referenceKnown_ = false;  // reference_ from -design_reuse, not yet taken
+  long runs_ = 0, reused_ = 0;
 };
 
 }  // namespace gradfric::design

@@ -52,6 +52,7 @@ struct Problem {
   // runs on first (null: the search runs on fem's mesh), and the runs allowed on fem's mesh after.
   std::shared_ptr<FemCheck> coarseFem;
   int fineEvaluations = 4;
+  std::vector<std::string> reuse;  // -design_reuse: earlier design files whose FEM runs are taken, not rerun
   bool monitor = true;
   bool plot = false;
   std::string output;
