@@ -11,7 +11,7 @@ n<N>_dc<D_c>_E.h5 (-0.2, 0.2; its reference is the friction file's Delta = 0). S
 <sbm folder>/dc<D_c>_<property>.h5 (gradfric ensembles over -0.2, 0, 0.2, same seed: paired
 streams, so the variation's interval is the file's own mu_s_relative_ci95).
 kappa = G D_c / (H p (mu_s - mu_k)) for the FEM, and with H -> l_z for the spring blocks.
-With the study's table (docs/fem_study.tsv) the FEM with the Prakash-Clifton filter is added from
+With the study's table (docs/fem_study.tsv) the FEM with the normal-stress memory is added from
 its rows on the finest in-plane mesh run for every plate of a D_c (200 x 200 x 5): the points whose
 ladders converge (docs/accuracy_fem.md, "The map's FEM points refined").
 """
@@ -51,10 +51,10 @@ def fem_map(folder):
     return out
 
 
-# The filtered plates' scenes hold only these settings (docs/fem_study.tsv, column scene); the
-# defaults they leave out: D_c 2.5e-8 m, grading property E, no grading.
-FILTERED_SCENE = {"fem_pc_length", "fem_pc_speed", "friction_d_c", "grading_delta", "grading_profile",
-                  "grading_property"}
+# The plates with the normal-stress memory hold only these settings (docs/fem_study.tsv, column
+# scene); the defaults they leave out: D_c 2.5e-8 m, grading property E, no grading.
+FILTERED_SCENE = {"friction_memory_length", "friction_memory_speed", "friction_d_c", "grading_delta",
+                  "grading_profile", "grading_property"}
 
 
 def study_rows(path):
@@ -71,11 +71,11 @@ def study_rows(path):
 
 
 def filtered_map(study):
-    """{dc: {(property, delta): v}} from the filtered mu_s rows (the Prakash-Clifton filter, linear
+    """{dc: {(property, delta): v}} from the mu_s rows with the normal-stress memory (linear
     grading, the default step and contact) on 200 x 200 x 5."""
     mu = {}
     for observable, mesh, value, s in study_rows(study):
-        if (observable != "mu_s" or mesh != "200x200x5" or "fem_pc_length" not in s or not set(s) <= FILTERED_SCENE
+        if (observable != "mu_s" or mesh != "200x200x5" or "friction_memory_length" not in s or not set(s) <= FILTERED_SCENE
                 or s.get("grading_profile", "linear") != "linear"):
             continue
         delta = float(s.get("grading_delta", 0))

@@ -38,19 +38,20 @@ void ContactBoundary::addForce(const LayerContext& ctx, Vec X, Vec F, ContactSum
 void ContactBoundary::addPenaltyForce(Vec X, Vec F, double dt, ContactSums& totals) {
   const ReadState x(X);
   const WriteState f(F);
-  const NormalStressFilter& filter = settings_.normalFilter;
-  visitContactLaw(law_, [&](auto& law) {
+  NormalStressMemory& memory = law_.normalStress;
+  law_.visitStrength([&](auto& law) {
     const bool state = hasSlipState(law);
     for (std::size_t site = 0; site < nodes_.size(); ++site) {
       Node& n = nodes_[site];
+      const int i = static_cast<int>(site);
       const PetscScalar* u = x.displacement(n.block);
       const PetscScalar* v = x.velocity(n.block);
       const bool wasSlipping = n.state == ContactState::Slip;
-      const double slip = wasSlipping && (state || filter.active()) ? tangentialStep(n, u) : 0.0;
-      const ContactTraction r = penaltyContact(stiffness_, law, static_cast<int>(site), u[2], u[0], u[1], n.anchorX,
-                                               n.anchorY, v[0], v[1], wasSlipping, slip, dt, filter, n.filtered);
-      keepSlipState(law, static_cast<int>(site), r.state, r.strength);
-      n.pendingFiltered = r.frictionPressure;
+      const double slip = wasSlipping && (state || memory.active()) ? tangentialStep(n, u) : 0.0;
+      const ContactTraction r = penaltyContact(stiffness_, law, i, u[2], u[0], u[1], n.anchorX, n.anchorY, v[0], v[1],
+                                               wasSlipping, slip, dt, memory, memory.rememberedAt(i, 0.0));
+      keepSlipState(law, i, r.state, r.strength);
+      memory.setPending(i, r.frictionPressure);
       n.pendingX = r.anchorX;
       n.pendingY = r.anchorY;
       n.pendingState = r.state;
@@ -67,11 +68,12 @@ void ContactBoundary::addKinematicForce(Vec X, Vec F, const std::vector<double>&
                                         double dt, ContactSums& totals) {
   const ReadState x(X);
   const WriteState f(F);
-  const NormalStressFilter& filter = settings_.normalFilter;
-  visitContactLaw(law_, [&](auto& law) {
+  NormalStressMemory& memory = law_.normalStress;
+  law_.visitStrength([&](auto& law) {
     const bool state = hasSlipState(law);
     for (std::size_t site = 0; site < nodes_.size(); ++site) {
       Node& n = nodes_[site];
+      const int i = static_cast<int>(site);
       const PetscScalar* u = x.displacement(n.block);
       const PetscScalar* xv = x.velocity(n.block);
       PetscScalar* fb = f.force(n.block);
@@ -79,11 +81,11 @@ void ContactBoundary::addKinematicForce(Vec X, Vec F, const std::vector<double>&
       const double v[3] = {xv[0], xv[1], xv[2]};
       const double aFree[3] = {fb[0] / m + damping.acceleration(v, 0), fb[1] / m + damping.acceleration(v, 1),
                                fb[2] / m + damping.acceleration(v, 2)};
-      const double slip = state || filter.active() ? tangentialStep(n, u) : 0.0;
+      const double slip = state || memory.active() ? tangentialStep(n, u) : 0.0;
       const KinematicContactForce r =
-          kinematicContact(law, static_cast<int>(site), m, dt, u[2], v, aFree, slip, filter, n.filtered * n.area);
-      keepSlipState(law, static_cast<int>(site), r.state, r.strength);
-      n.pendingFiltered = r.frictionForce / n.area;
+          kinematicContact(law, i, m, dt, u[2], v, aFree, slip, memory, memory.rememberedAt(i, 0.0) * n.area);
+      keepSlipState(law, i, r.state, r.strength);
+      memory.setPending(i, r.frictionForce / n.area);
       n.pendingState = r.state;
       n.pressure = r.fn / n.area;
       n.tx = r.fx / n.area;
@@ -121,7 +123,7 @@ double ContactBoundary::tangentialStep(const Node& n, const PetscScalar* u) {
 
 double ContactBoundary::committedStrength(int site) const {
   double strength = 0;
-  visitContactLaw(law_, [&](const auto& law) { strength = fem::committedStrength(law, site); });
+  law_.visitStrength([&](const auto& law) { strength = fem::committedStrength(law, site); });
   return strength;
 }
 
@@ -136,7 +138,7 @@ void ContactBoundary::archive(StateArchive& a) {
   a.field("contact.nodes.count", count);
   if (count != nodes_.size()) throw CheckpointMismatch("the checkpoint has another number of contact nodes");
   a.fixedField("contact.nodes", nodes_);
-  visitContactLaw(law_, [&](auto& law) { law.archive(a); });
+  law_.archive(a);
   a.field("contact.lastStepSlip", lastStepSlip_);
   std::vector<double> record;  // (time, running maximum) pairs, flat
   for (const auto& [t, slip] : slipRecord_) record.insert(record.end(), {t, slip});
@@ -160,16 +162,16 @@ LayerWork ContactBoundary::work() const {
 std::string ContactBoundary::describe() const {
   std::string text = std::string(settings_.kinematic ? "kinematic" : "penalty") +
                      " contact with the rigid plane, friction law " + settings_.law.name + ", one site per bottom node";
-  if (settings_.normalFilter.active())
-    text += ", strength on the Prakash-Clifton filtered pressure (L " + formatReal(settings_.normalFilter.length) +
-            " m, V* " + formatReal(settings_.normalFilter.speed) + " m/s)";
+  if (law_.normalStress.active())
+    text += ", strength on the remembered pressure (normal-stress memory L_sigma " +
+            formatReal(law_.normalStress.length) + " m, V* " + formatReal(law_.normalStress.speed) + " m/s)";
   return text;
 }
 
 void ContactBoundary::writeProperties(PropertySink& sink) const {
   std::vector<PetscInt> blocks;
   std::vector<double> muS, muK;
-  visitContactLaw(law_, [&](const auto& law) {
+  law_.visitStrength([&](const auto& law) {
     const FrictionSites& sites = sitesOf(law);
     for (std::size_t site = 0; site < nodes_.size(); ++site) {
       const int slot = sites.slotOfSite(static_cast<int>(site));
@@ -186,7 +188,7 @@ void ContactBoundary::writeProperties(PropertySink& sink) const {
 
 double ContactBoundary::largestStaticCoefficient() const {
   double local = 0, global = 0;
-  visitContactLaw(law_, [&](const auto& law) {
+  law_.visitStrength([&](const auto& law) {
     for (double s : sitesOf(law).staticStrength) local = std::max(local, s);
   });
   GF_CALL_MPI(MPI_Allreduce(&local, &global, 1, MPI_DOUBLE, MPI_MAX, comm_));
@@ -195,12 +197,11 @@ double ContactBoundary::largestStaticCoefficient() const {
 
 void ContactBoundary::commit() {
   lastStepSlip_ = 0;
-  visitContactLaw(law_, [](auto& law) { law.commit(); });
+  law_.commit();
   for (Node& n : nodes_) {
     n.anchorX = n.pendingX;
     n.anchorY = n.pendingY;
     n.state = n.pendingState;
-    n.filtered = n.pendingFiltered;
     n.stepSlip = n.pendingState == ContactState::Slip ? std::hypot(n.pendingU[0] - n.u[0], n.pendingU[1] - n.u[1]) : 0.0;
     lastStepSlip_ = std::max(lastStepSlip_, n.stepSlip);
     for (int d = 0; d < 3; ++d) {
@@ -225,15 +226,15 @@ void ContactBoundary::recordFirstSlips(double t) {
     if (n.state == ContactState::Slip && std::isnan(n.firstSlip)) n.firstSlip = t;
 }
 
-void ContactBoundary::settleFilteredPressure() {
-  for (Node& n : nodes_) n.filtered = n.pressure;
+void ContactBoundary::settleRememberedPressure() {
+  for (std::size_t site = 0; site < nodes_.size(); ++site) law_.normalStress.settle(static_cast<int>(site), nodes_[site].pressure);
 }
 
 void ContactBoundary::recordOnset(double t, double dt) {
   if (lastStepSlip_ > (slipRecord_.empty() ? 0.0 : slipRecord_.back().second)) slipRecord_.push_back({t, lastStepSlip_});
   double fastest = aboveOneRates_.empty() ? 0.0 : aboveOneRates_.back().second;
   const double fastestBefore = fastest;
-  visitContactLaw(law_, [&](const auto& law) {
+  law_.visitStrength([&](const auto& law) {
     const FrictionSites& sites = sitesOf(law);
     for (std::size_t site = 0; site < nodes_.size(); ++site) {
       Node& n = nodes_[site];

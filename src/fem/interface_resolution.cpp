@@ -35,15 +35,16 @@ InterfaceResolution checkInterfaceResolution(const PlateModel& model, double pea
   // (docs/flutter.md). What decides is the mu of the nodes that slide, mu(theta), not their mu_s: a
   // node whose mu_s is above 1 but that sticks until the peak, or weakens below 1 within a fast
   // front, does not feed it. So the flag counts the nodes that slid at mu(theta) > 1 by the peak.
-  // The Prakash-Clifton filter bounds that growth (normal_stress_filter.hpp): named, not a violation.
-  r.filtered = q.normalFilter.active();
+  // The law's normal-stress memory bounds that growth (physics/normal_stress_memory.hpp) where the
+  // mesh resolves it: named, and the rule checked below.
+  const NormalStressMemory& memory = model.contact().law().normalStress;
+  r.withMemory = memory.active();
   // The nodes' own mu_s: a dispersed surface lifts some above the mean (by sigma_s z), so say so.
   r.randomSurface = model.properties().surface().dispersed();
   r.aboveOne = model.contact().slidAboveOne(peakTime, model.mesh().axisX(), model.mesh().axisY());
-  if (r.aboveOne.nodes > 0 && r.filtered && r.aboveOne.fastestRate + q.normalFilter.speed > 0) {
-    const NormalStressFilter& filter = q.normalFilter;
+  if (r.aboveOne.nodes > 0 && r.withMemory && r.aboveOne.fastestRate + memory.speed > 0) {
     const double shearSpeed = std::sqrt(plate.shearModulus() / plate.density);
-    r.memoryTime = filter.length / (r.aboveOne.fastestRate + filter.speed);
+    r.memoryTime = memory.relaxationTime(r.aboveOne.fastestRate);
     r.cutoffWavelength = memoryCutoffWavelength(r.largestStaticCoefficient, plate.poissonRatio, shearSpeed, r.memoryTime);
     r.baseLayer = model.mesh().hz();
     r.timeStep = model.timeStep();
@@ -51,21 +52,21 @@ InterfaceResolution checkInterfaceResolution(const PlateModel& model, double pea
     const double element = std::max(r.aboveOne.largestElement, r.baseLayer);
     if (element > allowed) {
       std::snprintf(text, sizeof text,
-                    "filter not resolved: elements up to %.3g m (in-plane) and %.3g m (base layer) where nodes slid at "
-                    "mu > 1, above lambda_c/8 = %.3g m (refine there, or raise -fem_pc_length to %.3g m)",
-                    r.aboveOne.largestElement, r.baseLayer, allowed, filter.length * element / allowed);
+                    "memory not resolved: elements up to %.3g m (in-plane) and %.3g m (base layer) where nodes slid at "
+                    "mu > 1, above lambda_c/8 = %.3g m (refine there, or raise -friction_memory_length to %.3g)",
+                    r.aboveOne.largestElement, r.baseLayer, allowed, q.frictionLaw.memoryLength * element / allowed);
       r.violations.push_back(text);
     }
     if (r.timeStep > r.memoryTime / 10) {
-      std::snprintf(text, sizeof text, "time step %.3g s > T/10 = %.3g s of the filter (lower -fem_dt_safety)", r.timeStep,
+      std::snprintf(text, sizeof text, "time step %.3g s > T/10 = %.3g s of the memory (lower -fem_dt_safety)", r.timeStep,
                     r.memoryTime / 10);
       r.violations.push_back(text);
     }
   }
-  if (r.aboveOne.nodes > 0 && !r.filtered) {
+  if (r.aboveOne.nodes > 0 && !r.withMemory) {
     std::snprintf(text, sizeof text,
                   "%ld nodes (%.3g %% of the area) slid at mu > 1 before the peak: there sliding flutters and the onset "
-                  "depends on the mesh (lead with the high-friction edge, keep mu_s <= 1, or -fem_pc_length)",
+                  "depends on the mesh (lead with the high-friction edge, keep mu_s <= 1, or -friction_memory_length)",
                   r.aboveOne.nodes, 100 * r.aboveOne.areaFraction);
     r.violations.push_back(text);
   }
@@ -104,9 +105,9 @@ std::string InterfaceResolution::measures() const {
     std::snprintf(text, sizeof text, "; local mu_s up to %.3g%s, %ld nodes (%.3g %% of the area) slid at mu > 1 by the peak%s",
                   largestStaticCoefficient, randomSurface ? " (with the random surface)" : "", aboveOne.nodes,
                   100 * aboveOne.areaFraction,
-                  filtered && aboveOne.nodes > 0 ? ", their flutter bounded by the Prakash-Clifton filter" : "");
+                  withMemory && aboveOne.nodes > 0 ? ", their flutter bounded by the normal-stress memory" : "");
     line += text;
-    if (filtered && aboveOne.nodes > 0) {
+    if (withMemory && aboveOne.nodes > 0) {
       std::snprintf(text, sizeof text, " (T %.3g s at %.3g m/s, lambda_c %.3g m; elements there %.3g m in-plane, %.3g m base layer)",
                     memoryTime, aboveOne.fastestRate, cutoffWavelength, aboveOne.largestElement, baseLayer);
       line += text;

@@ -37,6 +37,11 @@ static void requireEdgeGrading(const OptionReader& o, const FemParameters& q) {
 
 FemParameters readFemParameters(MPI_Comm comm, RunParameters* record, const Plate& plate) {
   // One sampling rule for the stored mu(t), a single run's and a sweep's: the friction observer's.
+  // The normal-stress memory is part of the friction law, its length in units of D_c.
+  refuseRetiredOption("-fem_pc_length",
+                      "replaced by -friction_memory_length, the friction law's normal-stress memory, in units of "
+                      "D_c (1e-7 m at the default D_c 2.5e-8 m is -friction_memory_length 4)");
+  refuseRenamedOption("-fem_pc_speed", "-friction_memory_speed", "the normal-stress memory belongs to the friction law");
   refuseRetiredOption("-fem_history_every",
                       "removed: the stored mu(t) is the friction observer's history, as in a FEM sweep; its sampling "
                       "is -friction_history_interval <seconds> (default t_load / 1000)");
@@ -65,7 +70,7 @@ FemParameters readFemParameters(MPI_Comm comm, RunParameters* record, const Plat
       o.choice("pressure_step", q.staticPressureStep ? "static" : "dynamic", {"static", "dynamic"},
                "step 1: static (the pressed equilibrium solved by CG, then sliding from rest; penalty contact, "
                "else dynamic) or dynamic (pressure ramp and hold in time)") == "static";
-  q.frictionLaw = readFrictionLaw(comm, record, q.frictionLaw, true, plate.thickness);  // shared with the SBM
+  q.frictionLaw = readFrictionLaw(comm, record, q.frictionLaw, true, plate.thickness, true);  // shared with the SBM
   // The SBM's surface with the paper's 3D default, no dispersion (then nothing is drawn); no
   // blocks kind: a node has no block of its own.
   q.surface = readSurface(comm, record, plate, SurfaceDefaults{0.0, false});
@@ -86,12 +91,6 @@ FemParameters readFemParameters(MPI_Comm comm, RunParameters* record, const Plat
   q.contactMethod = contact == "kinematic" ? ContactMethod::Kinematic : ContactMethod::Penalty;
   if (auto kn = o.realIfSet("kn", "Pa/m", "normal penalty stiffness k_n", "250 G/H")) q.kn = *kn;
   q.kt = o.realIfSet("kt", "Pa/m", "tangential penalty stiffness k_t", "k_n").value_or(q.kn);
-  q.normalFilter.length = o.real("pc_length", q.normalFilter.length, "m",
-                                 "Prakash-Clifton filter: slip length over which the pressure the friction strength "
-                                 "multiplies follows the contact pressure (0: off, the strength follows it at once)");
-  q.normalFilter.speed = o.real("pc_speed", q.normalFilter.speed, "m/s",
-                                "Prakash-Clifton filter: reference speed V*, the filtered pressure follows at rest "
-                                "over -fem_pc_length / V*");
   readFemTermOptions(o, q);  // the optional terms' own options (src/fem/terms/)
   if (auto g = o.realIfSet("settle_damping", "1/s", "mass-proportional damping during the pressure step", "c_s/H"))
     q.settleDamping = *g;
@@ -150,10 +149,8 @@ FemParameters readFemParameters(MPI_Comm comm, RunParameters* record, const Plat
   o.requireNonNegative("slip_length", q.slipLength, "m");
   if (o.wasSet("slip_length"))  // the default is not checked against H: a bad -plate_H is refused by its own name
     o.requireRange("slip_length", q.slipLength, 0.0, q.plate.thickness, "0 <= D_c <= H (the plate's thickness)");
-  o.requireRange("pc_length", q.normalFilter.length, 0.0, q.plate.thickness, "0 <= L <= H (the plate's thickness)");
-  o.requireNonNegative("pc_speed", q.normalFilter.speed, "m/s");
-  if (q.normalFilter.active() && !q.contact)
-    throw InputError(o.fullName("pc_length"), formatReal(q.normalFilter.length), "0 with -fem_contact none");
+  if (q.frictionLaw.memoryLength > 0 && !q.contact)
+    throw InputError("-friction_memory_length", formatReal(q.frictionLaw.memoryLength), "0 with -fem_contact none");
   if (o.wasSet("kn")) o.requirePositive("kn", q.kn, "Pa/m");
   if (o.wasSet("kt")) o.requirePositive("kt", q.kt, "Pa/m");
   if (o.wasSet("settle_damping")) o.requireNonNegative("settle_damping", q.settleDamping, "1/s");

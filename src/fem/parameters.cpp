@@ -23,10 +23,10 @@ double FemParameters::penaltySlopeError() const {
 
 namespace {
 std::string describeNormalFilter(const FemParameters& q) {
-  if (!q.normalFilter.active()) return "";
-  char text[160];
-  std::snprintf(text, sizeof text, "; Prakash-Clifton filtered pressure, L %.3g m, V* %.3g m/s", q.normalFilter.length,
-                q.normalFilter.speed);
+  if (!(q.frictionLaw.memoryLength > 0)) return "";
+  char text[200];
+  std::snprintf(text, sizeof text, "; strength on the remembered pressure (normal-stress memory L_sigma %.3g D_c = %.3g m, V* %.3g m/s)",
+                q.frictionLaw.memoryLength, q.frictionLaw.memoryLengthInMetres(), q.frictionLaw.memorySpeed);
   return text;
 }
 }  // namespace

@@ -18,7 +18,7 @@ ElasticSettings elasticSettings(const FemParameters& q) {
 
 ContactSettings contactSettings(const FemParameters& q) {
   return {q.contactMethod == ContactMethod::Kinematic, PenaltyStiffness{q.kn, q.kt}, q.frictionLaw, q.slipLength,
-          q.slipHealingOnly, q.normalFilter};
+          q.slipHealingOnly};
 }
 
 }  // namespace
@@ -143,7 +143,7 @@ void PlateModel::startSliding(Vec X) {
   protocol_.setPhase(Phase::Sliding);
   top_->startSliding(X);
   contact_->resetSlipRecord();
-  contact_->settleFilteredPressure();
+  contact_->settleRememberedPressure();
 }
 
 ContactTotals PlateModel::contactTotals() const {

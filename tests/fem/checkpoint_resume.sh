@@ -11,7 +11,8 @@
 #  5. a real SIGTERM from outside to both ranks once the first periodic checkpoint exists;
 #  6. refusals;
 #  7. the other terms and laws with state (kinematic contact, bulk viscosity, the peak's
-#     stiffness damping, friction grading, the weight; the slip-length memory of a stateless law),
+#     stiffness damping, friction grading with the normal-stress memory, the weight; the slip-length
+#     memory of a stateless law),
 #     and a dispersed random surface (its node coefficients rebuilt from the seed on resume).
 set -u
 driver=$1; scratch=$2
@@ -115,7 +116,7 @@ same fresh fresh.h5
 
 # 7. Every other term and law that carries state from step to step.
 for variant in "-fem_contact kinematic -fem_bulk_viscosity -fem_peak_stiffness_damping 1e-9" \
-               "-grading_profile linear -grading_property friction -grading_delta 0.2 -fem_gravity 9.81" \
+               "-grading_profile linear -grading_property friction -grading_delta -0.3 -friction_memory_length 4 -fem_gravity 9.81" \
                "-friction_law coulomb -fem_slip_length 1e-7 -fem_pressure_step static" \
                "-surface_sigma_s 0.05 -surface_sigma_k 0.05 -surface_length 5e-4 -fem_seed 3"; do
   small="-fem_nx 12 -fem_ny 12 -fem_nz 2 $variant"

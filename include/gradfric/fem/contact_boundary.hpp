@@ -10,7 +10,6 @@
 #include "gradfric/fem/contact_penalty.hpp"
 #include "gradfric/fem/edge_grading.hpp"
 #include "gradfric/fem/layer.hpp"
-#include "gradfric/fem/normal_stress_filter.hpp"
 #include "gradfric/fem/plate_properties.hpp"
 #include "gradfric/fem/sliding_damping.hpp"
 #include "gradfric/physics/process_zone.hpp"
@@ -38,7 +37,6 @@ struct ContactSettings {
   FrictionLawSettings law;     // the friction law of every node (contact_law.hpp)
   double memoryLength = 0.0;   // with a stateless law, its friction memory's slip length [m] (0: none)
   bool healingOnly = false;    // the memory's weakening at once, only the healing over it
-  NormalStressFilter normalFilter;  // Prakash-Clifton (normal_stress_filter.hpp); off by default
 };
 
 // The contact layer: the last force of the list (the kinematic contact needs every other force).
@@ -56,7 +54,6 @@ public:
     double slidAboveOne = -1;  // time it first slid with its strength mu(theta) above 1 (-1: never)
     double stepSlip = 0;       // its tangential slip over the last committed step [m] (0: not sliding)
     double pressure = 0, tx = 0, ty = 0;  // of the last evaluation
-    double filtered = 0, pendingFiltered = 0;  // the normal-stress filter's p* [Pa]: committed, pending
     double force[3] = {0, 0, 0}, u[3] = {0, 0, 0};  // committed contact force and displacement
     double work = 0;  // done by the contact force on the node since the start (the same on any partition)
     double pendingForce[3] = {0, 0, 0}, pendingU[3] = {0, 0, 0};
@@ -88,9 +85,9 @@ public:
   // After each sliding step at time t, with first_slip asked for: the nodes that slide now and never
   // did before get firstSlip = t (the first-slip map, first_slip_map.hpp).
   void recordFirstSlips(double t);
-  // At the start of sliding: every node's filtered pressure p* is its pressure (the plate has been
-  // pressed at rest, where p* would follow p over L / V*).
-  void settleFilteredPressure();
+  // At the start of sliding: every node's remembered pressure p* is its pressure (the plate has
+  // been pressed at rest, where p* would follow p over L_sigma / V*).
+  void settleRememberedPressure();
   // After each sliding step at time t, with a law that weakens over a slip (the state law): notes
   // the nodes whose committed strength has fallen 10 % and 90 % of the way from mu_s to mu_k (for
   // processZone()), the step's largest slip (for largestSlipPerStep()) and the nodes that slide with
@@ -111,7 +108,7 @@ public:
   double contactWork() const;
 
   const std::vector<Node>& nodes() const { return nodes_; }
-  const ContactLaw& law() const { return law_; }  // its per-node state
+  const ContactLaw& law() const { return law_; }  // its per-node state, the normal-stress memory's too
   double committedStrength(int site) const;      // the coefficient of node `site` at its committed state
   double largestStaticCoefficient() const;  // over the nodes and ranks
   // Mean penetration and its spread over the bottom nodes, over ranks (for tests).

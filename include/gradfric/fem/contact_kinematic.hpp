@@ -23,27 +23,27 @@ struct KinematicContactForce {
   double fn = 0, fx = 0, fy = 0;  // force of the plane on the node [N]
   ContactState state = ContactState::Open;
   double strength = 0;            // the friction coefficient available (in contact)
-  double frictionForce = 0;       // the normal force the strength multiplies: f_n, or the filter's f*
+  double frictionForce = 0;       // the normal force the strength multiplies: f_n, or the memory's f*
 };
 
 // site: the node's index among the law's sites; mass [kg]; dt [s]; gap: z of the node;
 // v: its velocity (half step); aFree: its acceleration from every other force; slip: its
 // tangential displacement since the last commit (a slip-length law's state evolves over it);
-// filter, filtered: the normal-stress filter and the node's committed f* (normal_stress_filter.hpp,
-// applied to the node's normal force: the pressure times its area).
+// memory, remembered: the law's normal-stress memory and the node's committed f*
+// (physics/normal_stress_memory.hpp, applied to the node's normal force: the pressure times its area).
 template <class Law>
 inline KinematicContactForce kinematicContact(Law& law, int site, double mass, double dt, double gap,
                                               const double v[3], const double aFree[3], double slip = 0.0,
-                                              const NormalStressFilter& filter = {}, double filtered = 0.0) {
+                                              const NormalStressMemory& memory = {}, double remembered = 0.0) {
   KinematicContactForce r;
   const double slipRate = dt > 0.0 ? slip / dt : 0.0;
   const double predicted = gap + dt * (v[2] + dt * aFree[2]);
   if (predicted >= 0.0) {  // open: the node stays on or above the plane by itself
-    r.frictionForce = filter.relax(filtered, 0.0, slipRate, dt);
+    r.frictionForce = memory.relax(remembered, 0.0, slipRate, dt);
     return r;
   }
   r.fn = -mass * predicted / (dt * dt);
-  r.frictionForce = filter.relax(filtered, r.fn, slipRate, dt);
+  r.frictionForce = memory.relax(remembered, r.fn, slipRate, dt);
   const double stickX = -mass * (v[0] + dt * aFree[0]) / dt;
   const double stickY = -mass * (v[1] + dt * aFree[1]) / dt;
   const double stickSquared = stickX * stickX + stickY * stickY;

@@ -4,7 +4,7 @@
 // friction law (the paper's Eq. 1 by default) times the contact pressure (return map onto the
 // friction cone). The law is the one the spring-block kernels use (physics/friction_laws.hpp),
 // its sites the bottom nodes, its strengths the nodes' coefficients mu_s,i, mu_k,i.
-#include "gradfric/fem/normal_stress_filter.hpp"
+#include "gradfric/physics/normal_stress_memory.hpp"
 #include "gradfric/physics/friction_laws.hpp"
 #include "gradfric/physics/slip_state_law.hpp"
 #include "gradfric/physics/state_weakening_law.hpp"
@@ -27,7 +27,7 @@ struct ContactTraction {
   double anchorX = 0, anchorY = 0;  // tangential position where the elastic slip is zero
   ContactState state = ContactState::Open;
   double strength = 0;            // the friction coefficient that capped the traction (in contact)
-  double frictionPressure = 0;    // the pressure the strength multiplies: p_c, or the filter's p*
+  double frictionPressure = 0;    // the pressure the strength multiplies: p_c, or the memory's p*
 };
 
 // The friction coefficient of a contact node: with a plain law, a sticking node holds up to its
@@ -57,23 +57,23 @@ inline double contactStrength(StateWeakening& law, int site, double /*speed*/, d
 // slipping feels the law's sliding strength at its tangential speed, the slip rate. slip: the
 // node's tangential displacement since the last commit when it was slipping (a slip-length law's
 // state evolves over it; plain laws ignore it); dt: the step (a state law's evolution).
-// filter, filtered: the normal-stress filter and the node's committed p* (normal_stress_filter.hpp;
-// off by default: the strength multiplies p_c itself).
+// memory, remembered: the law's normal-stress memory and the node's committed p*
+// (physics/normal_stress_memory.hpp; none by default: the strength multiplies p_c itself).
 template <class Law>
 inline ContactTraction penaltyContact(const PenaltyStiffness& k, Law& law, int site, double gap, double ux,
                                       double uy, double anchorX, double anchorY, double vx, double vy,
                                       bool wasSlipping, double slip = 0.0, double dt = 0.0,
-                                      const NormalStressFilter& filter = {}, double filtered = 0.0) {
+                                      const NormalStressMemory& memory = {}, double remembered = 0.0) {
   ContactTraction r;
   const double slipRate = wasSlipping && dt > 0.0 ? slip / dt : 0.0;
   if (gap >= 0.0) {  // open: no traction, the elastic slip is released, p* relaxes towards 0
     r.anchorX = ux;
     r.anchorY = uy;
-    r.frictionPressure = filter.relax(filtered, 0.0, slipRate, dt);
+    r.frictionPressure = memory.relax(remembered, 0.0, slipRate, dt);
     return r;
   }
   r.pressure = -k.normal * gap;
-  r.frictionPressure = filter.relax(filtered, r.pressure, slipRate, dt);
+  r.frictionPressure = memory.relax(remembered, r.pressure, slipRate, dt);
   const double trialX = -k.tangential * (ux - anchorX);
   const double trialY = -k.tangential * (uy - anchorY);
   const double trial = std::sqrt(trialX * trialX + trialY * trialY);

@@ -10,7 +10,7 @@
 //    (Day et al. 2005; Dalguer & Day 2007).
 // And the flutter: a node that slides with mu(theta) > 1 on the rigid plane is on an ill-posed
 // interface (docs/flutter.md), so the onset there depends on the mesh; counted up to the peak.
-// With the normal-stress filter the interface is well-posed if the mesh resolves the filter: the
+// With the law's normal-stress memory the interface is well-posed if the mesh resolves it: the
 // elements next to those nodes, in-plane and through the thickness, at most lambda_c / 8, and the
 // time step at most T / 10.
 // Also the regime number kappa = G D_c / (H p (mu_s - mu_k)): the column stiffness of the layer
@@ -32,8 +32,8 @@ struct InterfaceResolution {
   double largestStepSlip = 0;
   double largestStaticCoefficient = 0;  // over the contact nodes: above 1 a node may slide at mu > 1
   SlidingAboveOne aboveOne;              // the nodes that did, before the peak: there sliding flutters
-  bool filtered = false;                 // the Prakash-Clifton filter is on: it bounds that flutter
-  // With the filter and nodes sliding at mu > 1: its shortest relaxation time T = L / (|V| + V*) at
+  bool withMemory = false;               // the law's normal-stress memory is on: it bounds that flutter
+  // With the memory and nodes sliding at mu > 1: its shortest relaxation time T = L_sigma / (|V| + V*) at
   // their fastest slip rate, and the shortest wavelength that still grows then, 2 pi c_s T / K_c
   // (docs/flutter.md, "With a normal-stress memory"): the mesh must resolve it.
   double memoryTime = 0, cutoffWavelength = 0, baseLayer = 0, timeStep = 0;

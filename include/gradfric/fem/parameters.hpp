@@ -3,7 +3,6 @@
 // their reader is parameter_options.hpp.
 #include "gradfric/fem/edge_grading.hpp"
 #include "gradfric/fem/hex_element.hpp"
-#include "gradfric/fem/normal_stress_filter.hpp"
 #include "gradfric/fem/term_settings.hpp"
 #include "gradfric/physics/friction_history.hpp"
 #include "gradfric/physics/friction_laws_settings.hpp"
@@ -70,9 +69,6 @@ struct FemContact {
   // H/(G L^2), so the loading slope carries -G/(H k_t); 250 G/H keeps it at 0.4 %. k_t: k_n.
   double kn = kNotDerived, kt = kNotDerived;
   static constexpr double penaltyFactor = 250.0;
-  // The Prakash-Clifton filter of the pressure the strength multiplies (normal_stress_filter.hpp;
-  // -fem_pc_length, -fem_pc_speed): off by default (docs/accuracy_fem.md, "Local mu_s above 1").
-  NormalStressFilter normalFilter;
   // The random surface (-surface_ options, shared with the spring-block model) on the local mu_s,
   // mu_k: each bottom node takes realisation surfaceRealisation of seed -fem_seed averaged over
   // its tributary rectangle (plate_properties.hpp). No dispersion by default: the paper's
