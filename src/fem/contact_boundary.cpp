@@ -40,7 +40,7 @@ void ContactBoundary::addPenaltyForce(Vec X, Vec F, double dt, ContactSums& tota
   const WriteState f(F);
   NormalStressMemory& memory = law_.normalStress;
   law_.visitStrength([&](auto& law) {
-    const bool state = hasSlipState(law);
+    const bool state = law.hasState();
     for (std::size_t site = 0; site < nodes_.size(); ++site) {
       Node& n = nodes_[site];
       const int i = static_cast<int>(site);
@@ -50,7 +50,7 @@ void ContactBoundary::addPenaltyForce(Vec X, Vec F, double dt, ContactSums& tota
       const double slip = wasSlipping && (state || memory.active()) ? tangentialStep(n, u) : 0.0;
       const ContactTraction r = penaltyContact(stiffness_, law, i, u[2], u[0], u[1], n.anchorX, n.anchorY, v[0], v[1],
                                                wasSlipping, slip, dt, memory, memory.rememberedAt(i, 0.0));
-      keepSlipState(law, i, r.state, r.strength);
+      if (r.state == ContactState::Open) law.keepOpen(i);
       memory.setPending(i, r.frictionPressure);
       n.pendingX = r.anchorX;
       n.pendingY = r.anchorY;
@@ -70,7 +70,7 @@ void ContactBoundary::addKinematicForce(Vec X, Vec F, const std::vector<double>&
   const WriteState f(F);
   NormalStressMemory& memory = law_.normalStress;
   law_.visitStrength([&](auto& law) {
-    const bool state = hasSlipState(law);
+    const bool state = law.hasState();
     for (std::size_t site = 0; site < nodes_.size(); ++site) {
       Node& n = nodes_[site];
       const int i = static_cast<int>(site);
@@ -84,7 +84,7 @@ void ContactBoundary::addKinematicForce(Vec X, Vec F, const std::vector<double>&
       const double slip = state || memory.active() ? tangentialStep(n, u) : 0.0;
       const KinematicContactForce r =
           kinematicContact(law, i, m, dt, u[2], v, aFree, slip, memory, memory.rememberedAt(i, 0.0) * n.area);
-      keepSlipState(law, i, r.state, r.strength);
+      if (r.state == ContactState::Open) law.keepOpen(i);
       memory.setPending(i, r.frictionForce / n.area);
       n.pendingState = r.state;
       n.pressure = r.fn / n.area;
@@ -123,7 +123,7 @@ double ContactBoundary::tangentialStep(const Node& n, const PetscScalar* u) {
 
 double ContactBoundary::committedStrength(int site) const {
   double strength = 0;
-  law_.visitStrength([&](const auto& law) { strength = fem::committedStrength(law, site); });
+  law_.visitStrength([&](const auto& law) { strength = law.committedStrength(site); });
   return strength;
 }
 
@@ -172,7 +172,7 @@ void ContactBoundary::writeProperties(PropertySink& sink) const {
   std::vector<PetscInt> blocks;
   std::vector<double> muS, muK;
   law_.visitStrength([&](const auto& law) {
-    const FrictionSites& sites = sitesOf(law);
+    const FrictionSites& sites = law.sites;
     for (std::size_t site = 0; site < nodes_.size(); ++site) {
       const int slot = sites.slotOfSite(static_cast<int>(site));
       blocks.push_back(nodes_[site].block);
@@ -189,7 +189,7 @@ void ContactBoundary::writeProperties(PropertySink& sink) const {
 double ContactBoundary::largestStaticCoefficient() const {
   double local = 0, global = 0;
   law_.visitStrength([&](const auto& law) {
-    for (double s : sitesOf(law).staticStrength) local = std::max(local, s);
+    for (double s : law.sites.staticStrength) local = std::max(local, s);
   });
   GF_CALL_MPI(MPI_Allreduce(&local, &global, 1, MPI_DOUBLE, MPI_MAX, comm_));
   return global;
@@ -235,10 +235,10 @@ void ContactBoundary::recordOnset(double t, double dt) {
   double fastest = aboveOneRates_.empty() ? 0.0 : aboveOneRates_.back().second;
   const double fastestBefore = fastest;
   law_.visitStrength([&](const auto& law) {
-    const FrictionSites& sites = sitesOf(law);
+    const FrictionSites& sites = law.sites;
     for (std::size_t site = 0; site < nodes_.size(); ++site) {
       Node& n = nodes_[site];
-      const double strength = fem::committedStrength(law, static_cast<int>(site));
+      const double strength = law.committedStrength(static_cast<int>(site));
       // Sliding, not stuck or open: the flutter needs the friction force to act on a slip.
       if (n.state == ContactState::Slip && strength > 1.0 + 1e-9) {
         if (n.slidAboveOne < 0) n.slidAboveOne = t;

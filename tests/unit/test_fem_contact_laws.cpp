@@ -100,7 +100,7 @@ TEST(FemContact, KinematicNodePressedAndPulledSticksOrSlidesExactlyAtMuS) {
 
 TEST(FemSlipState, WithoutSlipLengthTheContactIsThePlainLawBitForBit) {
   const ExponentialVelocityWeakening plain = equationOne();
-  const auto wrapped = WithSlipLength<ExponentialVelocityWeakening>::make(plain, 0.0, 2);
+  auto wrapped = WithSlipLength<ExponentialVelocityWeakening>::make(plain, 0.0, 2);
   const PenaltyStiffness k{1.875e13, 1.875e13};
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> u(-1e-8, 1e-8), vel(-3e-3, 3e-3);

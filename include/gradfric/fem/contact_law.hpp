@@ -63,27 +63,6 @@ inline ContactLaw makeContactLaw(const FrictionLawSettings& settings, FrictionSi
                     NormalStressMemory::make(settings, siteCount)};
 }
 
-// What the contact loops ask of every law, whatever its kind.
-template <class Law>
-const FrictionSites& sitesOf(const WithSlipLength<Law>& law) { return law.sites(); }
-inline const FrictionSites& sitesOf(const StateWeakening& law) { return law.sites; }
-template <class Law>
-bool hasSlipState(const WithSlipLength<Law>& law) { return law.hasState(); }
-inline bool hasSlipState(const StateWeakening&) { return true; }
-// The strength of a site at its committed state (mu_s for a site of a law without state).
-template <class Law>
-double committedStrength(const WithSlipLength<Law>& law, int site) {
-  return law.hasState() ? law.strength[site] : law.sites().staticAt(law.sites().slotOfSite(site));
-}
-inline double committedStrength(const StateWeakening& law, int site) { return law.strengthAt(site, law.state[site]); }
-// After an evaluation: the memory keeps the strength the node was evaluated with (an open node its
-// state); the state law has already kept its new state (contactStrength).
-template <class Law>
-void keepSlipState(WithSlipLength<Law>& law, int site, ContactState state, double strength) {
-  if (law.hasState()) law.setPending(site, state == ContactState::Open ? law.strength[site] : strength);
-}
-inline void keepSlipState(StateWeakening&, int, ContactState, double) {}
-
 // Calls visit(law) with the law the variant holds (visitors return nothing: they write their results).
 template <class Variant, class Visitor>
 void visitContactLaw(Variant& law, Visitor&& visit) {

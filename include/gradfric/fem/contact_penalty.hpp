@@ -30,24 +30,19 @@ struct ContactTraction {
   double frictionPressure = 0;    // the pressure the strength multiplies: p_c, or the memory's p*
 };
 
-// The friction coefficient of a contact node: with a plain law, a sticking node holds up to its
-// static strength and a sliding one feels the law's sliding strength at its speed; with a slip
-// length (slip_state_law.hpp) the node's state after slipping `slip` [m] since the last commit;
-// with a state law (state_weakening_law.hpp) the strength at the node's new state after slipping
-// `slip` over the step dt (0 while it sticks: the state heals), which is kept pending.
+// The friction coefficient of a contact node: a law with a per-site state answers itself, at the
+// node's state after slipping `slip` [m] over the step dt (sliding) or sticking, kept pending
+// (friction_law.hpp, "Laws with a per-site state"); with a plain law a sticking node holds up to
+// its static strength and a sliding one feels the law's sliding strength at its speed.
 template <class Law>
-inline double contactStrength(const Law& law, int site, double speed, double /*slip*/, double /*dt*/, bool sliding) {
-  const int slot = law.sites.slotOfSite(site);
-  const double staticStrength = law.sites.staticAt(slot);
-  return sliding ? law.slidingStrength(staticStrength, law.sites.kineticAt(slot), speed) : staticStrength;
-}
-template <class Law>
-inline double contactStrength(const WithSlipLength<Law>& law, int site, double speed, double slip, double /*dt*/,
-                              bool sliding) {
-  return law.strengthAfter(site, speed, slip, sliding);
-}
-inline double contactStrength(StateWeakening& law, int site, double /*speed*/, double slip, double dt, bool sliding) {
-  return law.advance(site, sliding ? slip : 0.0, dt);
+inline double contactStrength(Law& law, int site, double speed, double slip, double dt, bool sliding) {
+  if constexpr (hasSiteState<Law>::value) {
+    return law.contactStrength(site, speed, slip, dt, sliding);
+  } else {
+    const int slot = law.sites.slotOfSite(site);
+    const double staticStrength = law.sites.staticAt(slot);
+    return sliding ? law.slidingStrength(staticStrength, law.sites.kineticAt(slot), speed) : staticStrength;
+  }
 }
 
 // site: the node's index among the law's sites; gap: z of the node (negative = penetration);

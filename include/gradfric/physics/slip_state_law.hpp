@@ -19,7 +19,9 @@
 // relaxation above. A site that stops keeps its strength in both forms.
 //
 // The state is per site and is pending until commit() (a model may evaluate its forces more than
-// once per step). Pure arithmetic, no PETSc.
+// once per step). The wrapped law is the base: its sites and its sliding strength are the
+// wrapper's, and the wrapper answers the questions every law with a per-site state answers
+// (friction_law.hpp, "Laws with a per-site state"). Pure arithmetic, no PETSc.
 #include "gradfric/core/state_archive.hpp"
 #include "gradfric/physics/friction_law.hpp"
 
@@ -31,8 +33,7 @@
 namespace gradfric {
 
 template <class Law>
-struct WithSlipLength {
-  Law steady;               // the law whose sliding strength at v is the steady value mu_ss(v)
+struct WithSlipLength : Law {  // Law: the law whose sliding strength at v is the steady value mu_ss(v)
   double slipLength = 0.0;  // D_c [m]; 0: no state, the law itself
   bool healingOnly = false;  // weakening at once (the law's), only healing over D_c
   std::vector<double> strength;  // per site: committed psi (starts at the site's static strength)
@@ -47,25 +48,36 @@ struct WithSlipLength {
   static WithSlipLength make(Law law, double slipLength, std::size_t siteCount, bool healingOnly = false) {
     WithSlipLength w{std::move(law), slipLength, healingOnly, {}, {}};
     w.strength.resize(siteCount);
-    for (std::size_t i = 0; i < siteCount; ++i)
-      w.strength[i] = w.steady.sites.staticAt(w.steady.sites.slotOfSite(static_cast<int>(i)));
+    for (std::size_t i = 0; i < siteCount; ++i) w.strength[i] = w.staticOf(static_cast<int>(i));
     w.pending = w.strength;
     return w;
   }
 
-  const FrictionSites& sites() const { return steady.sites; }
   bool hasState() const { return slipLength > 0.0; }
+  // The strength of a site at its committed state (mu_s without a slip length).
+  double committedStrength(int site) const { return hasState() ? strength[site] : staticOf(site); }
+  // One evaluation of a site in contact (friction_law.hpp): its strength after strengthAfter(),
+  // kept pending.
+  double contactStrength(int site, double speed, double slip, double /*dt*/, bool sliding) {
+    const double value = strengthAfter(site, speed, slip, sliding);
+    setPending(site, value);
+    return value;
+  }
+  // A site out of contact keeps its committed state.
+  void keepOpen(int site) {
+    if (hasState()) pending[site] = strength[site];
+  }
 
   // The strength of a site (in the law's units) once it has slipped `slip` [m] at speed `speed`
   // [m/s] since the last commit. sliding = false: the site sticks (no slip; without a slip length
   // it holds up to its static strength, as the law's static threshold).
   double strengthAfter(int site, double speed, double slip, bool sliding) const {
-    const int slot = steady.sites.slotOfSite(site);
-    const double staticStrength = steady.sites.staticAt(slot);
+    const int slot = this->sites.slotOfSite(site);
+    const double staticStrength = this->sites.staticAt(slot);
     if (!hasState())
-      return sliding ? steady.slidingStrength(staticStrength, steady.sites.kineticAt(slot), speed) : staticStrength;
+      return sliding ? this->slidingStrength(staticStrength, this->sites.kineticAt(slot), speed) : staticStrength;
     if (!sliding) return strength[site];
-    const double target = steady.slidingStrength(staticStrength, steady.sites.kineticAt(slot), speed);
+    const double target = this->slidingStrength(staticStrength, this->sites.kineticAt(slot), speed);
     if (healingOnly && target <= strength[site]) return target;
     if (!(slip > 0.0)) return strength[site];
     return target + (strength[site] - target) * std::exp(-slip / slipLength);
@@ -76,6 +88,9 @@ struct WithSlipLength {
   void commit() {
     if (hasState()) strength = pending;
   }
+
+private:
+  double staticOf(int site) const { return this->sites.staticAt(this->sites.slotOfSite(site)); }
 };
 
 }  // namespace gradfric

@@ -91,6 +91,15 @@ struct StateWeakening {
     return strengthAt(site, pending[site]);
   }
   void commit() { state = pending; }
+
+  // What a contact asks of every law with a per-site state (friction_law.hpp).
+  bool hasState() const { return true; }
+  double committedStrength(int site) const { return strengthAt(site, state[site]); }
+  // A site in contact: sliding, it slid `slip` over dt; sticking, it heals over dt.
+  double contactStrength(int site, double /*speed*/, double slip, double dt, bool sliding) {
+    return advance(site, sliding ? slip : 0.0, dt);
+  }
+  void keepOpen(int) {}  // a site out of contact keeps its state
 };
 
 }  // namespace gradfric
