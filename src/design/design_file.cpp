@@ -103,8 +103,8 @@ study::LadderTable tableOf(const std::string& name, const Problem& problem, cons
     mu.push_back(e.muStatic);
     muLow.push_back(e.muStaticCiLow);
     muHigh.push_back(e.muStaticCiHigh);
-    aboveOne.push_back(static_cast<double>(e.nodesSlidAboveOne));
-    aboveOneArea.push_back(e.areaSlidAboveOne);
+    aboveOne.push_back(static_cast<double>(e.flutter.nodes));
+    aboveOneArea.push_back(e.flutter.areaFraction);
     for (int d = 0; d < 3; ++d) mesh[d].push_back(e.femMesh[d]);
     reused.push_back(e.reused ? 1.0 : 0.0);
     reference.push_back(e.femReference);
@@ -204,8 +204,8 @@ void saveDesignFile(MPI_Comm comm, const io::OutputPlan& plan, const Problem& pr
     t.name = "fem_verification";
     for (const auto& option : io::optionAttributes(problem.fem->record)) t.texts.emplace_back(option.name, option.value);
     t.columns = {{"mu_s", {fem->muStatic}}, {"peak_confirmed", {fem->peakConfirmed ? 1.0 : 0.0}},
-                 {"cells", {double(fem->cells)}}, {"nodes_slid_above_one", {double(fem->nodesSlidAboveOne)}},
-                 {"area_slid_above_one", {fem->areaSlidAboveOne}}};
+                 {"cells", {double(fem->cells)}}, {"nodes_slid_above_one", {double(fem->flutter.nodes)}},
+                 {"area_slid_above_one", {fem->flutter.areaFraction}}};
     if (problem.kind == TargetKind::Variation)
       t.columns.insert(t.columns.end(), {{"reference_mu_s", {fem->referenceMuStatic}},
                                          {"reference_peak_confirmed", {fem->referenceConfirmed ? 1.0 : 0.0}}});
@@ -262,13 +262,13 @@ void printDesign(MPI_Comm comm, const Problem& problem, const SearchResult& resu
                           fem->referenceWallSeconds));
   }
   // The FEM's value at the design rests on an ill-posed interface where nodes slid at mu > 1.
-  const long exposed = problem.model == "fem" ? d.nodesSlidAboveOne : fem ? fem->nodesSlidAboveOne : -1;
-  if (exposed > 0)
+  const FlutterExposure exposed = problem.model == "fem" ? d.flutter : fem ? fem->flutter : FlutterExposure{};
+  if (exposed.nodes > 0)
     GF_CALL(PetscPrintf(comm,
                         "  flutter: %ld FEM nodes (%.3g %% of the area) slid at mu > 1 before the peak at the design, so "
                         "the FEM's onset there depends on the mesh (docs/flutter.md); the high-friction edge leading "
                         "avoids it\n",
-                        exposed, 100 * (problem.model == "fem" ? d.areaSlidAboveOne : fem->areaSlidAboveOne)));
+                        exposed.nodes, 100 * exposed.areaFraction));
   GF_CALL(PetscPrintf(comm, "  target %s = %g +- %g%s\n", quantity, problem.target, problem.tolerance,
                       verification ? (verification->side(problem.target) == 0 ? "; the verification's CI holds it"
                                                                                : "; the verification's CI misses it")

@@ -43,8 +43,7 @@ FemVerification runFemCheck(MPI_Comm comm, const FemCheck& check, const Grading&
     v.peakConfirmed = r.friction.peakConfirmed;
     v.wallSeconds = MPI_Wtime() - start;
     if (r.resolution.applies) {
-      v.nodesSlidAboveOne = r.resolution.aboveOne.nodes;
-      v.areaSlidAboveOne = r.resolution.aboveOne.areaFraction;
+      v.flutter = {r.resolution.aboveOne.nodes, r.resolution.aboveOne.areaFraction};
     }
   }
   if (reference) {

@@ -12,7 +12,7 @@ FemEvaluator::Run FemEvaluator::run(const Grading& grading, const std::string& w
   if (!r.peakConfirmed)  // every rank ran the same run: the same decision everywhere
     throw CollectiveError("the FEM run at " + what + " did not confirm its static peak (mu_s " + formatReal(r.muStatic) +
                           "): lengthen it (-fem_slide_time) or check the plate");
-  return {r.muStatic, r.nodesSlidAboveOne, r.areaSlidAboveOne};
+  return {r.muStatic, r.flutter};
 }
 
 std::array<int, 3> FemEvaluator::mesh() const {
@@ -25,7 +25,7 @@ void FemEvaluator::know(const std::vector<KnownFemRun>& runs) {
     if (r.reference) {
       if (!reference_) reference_ = r.muStatic, referenceKnown_ = true;
     } else {
-      runsAt_.emplace(r.x, Run{r.muStatic, r.nodesSlidAboveOne, r.areaSlidAboveOne, true});
+      runsAt_.emplace(r.x, Run{r.muStatic, r.flutter, true});
     }
   }
 }
@@ -47,8 +47,7 @@ Evaluation FemEvaluator::evaluate(const std::vector<double>& x, double, const st
   const Run& r = known->second;
   e.muStatic = e.muStaticCiLow = e.muStaticCiHigh = r.muStatic;
   e.value = variation ? r.muStatic / *reference_ - 1.0 : r.muStatic;
-  e.nodesSlidAboveOne = r.nodesSlidAboveOne;
-  e.areaSlidAboveOne = r.areaSlidAboveOne;
+  e.flutter = r.flutter;
   e.femMesh = mesh();
   e.reused = reused;
   if (variation) e.femReference = *reference_;

@@ -116,8 +116,7 @@ std::vector<KnownFemRun> readKnownFemRuns(MPI_Comm comm, const std::vector<std::
     r.mesh = {static_cast<int>(flat[i]), static_cast<int>(flat[i + 1]), static_cast<int>(flat[i + 2])};
     r.reference = flat[i + 3] != 0;
     r.muStatic = flat[i + 4];
-    r.nodesSlidAboveOne = static_cast<long>(flat[i + 5]);
-    r.areaSlidAboveOne = flat[i + 6];
+    r.flutter = {static_cast<long>(flat[i + 5]), flat[i + 6]};
     const std::size_t d = static_cast<std::size_t>(flat[i + 7]);
     r.x.assign(flat.begin() + static_cast<long>(i + kFields), flat.begin() + static_cast<long>(i + kFields + d));
     runs.push_back(std::move(r));

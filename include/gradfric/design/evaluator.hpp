@@ -10,6 +10,7 @@
 // search. Realisations are kept, so refining an evaluation only runs the new ones. Every value is
 // a pure function of its stream key and the decisions depend only on completed values, in a fixed
 // order: the same problem and seed give the same evaluations on any number of ranks.
+#include "gradfric/design/flutter_exposure.hpp"
 #include "gradfric/design/problem.hpp"
 
 #include <mpi.h>
@@ -36,10 +37,7 @@ struct Evaluation {
   // value; it holds the target when within `acceptance` (the design's tolerance) of it.
   bool exact = false;
   double acceptance = 0.0;
-  // A FEM run: its bottom nodes that slid at mu > 1 before the peak and their share of the area
-  // (the onset there depends on the mesh, docs/flutter.md); -1: not measured or not a FEM run.
-  long nodesSlidAboveOne = -1;
-  double areaSlidAboveOne = 0.0;
+  FlutterExposure flutter;  // a FEM run's nodes that slid at mu > 1 before the peak
   std::array<int, 3> femMesh{};  // a FEM run's mesh nx, ny, nz (0: not a FEM run)
   bool reused = false;           // a FEM run taken from an earlier design file (-design_reuse)
   double femReference = std::nan("");  // a FEM variation: the non-graded plate's mu_s on its mesh

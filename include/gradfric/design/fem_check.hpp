@@ -3,6 +3,7 @@
 // the same plate, grading and fields, the -fem_* mesh and numerics, a reduced mesh allowed), run
 // to its confirmed static peak and printed beside the spring-block values.
 #include "gradfric/core/options.hpp"
+#include "gradfric/design/flutter_exposure.hpp"
 #include "gradfric/fem/parameters.hpp"
 #include "gradfric/physics/grading.hpp"
 
@@ -31,10 +32,7 @@ struct FemVerification {
   bool peakConfirmed = false;
   double wallSeconds = 0.0;
   int cells = 0;
-  // Bottom nodes that slid at mu(theta) > 1 before the peak, and their share of the area: there the
-  // onset depends on the mesh (docs/flutter.md); -1: not measured (a law without D_c).
-  long nodesSlidAboveOne = -1;
-  double areaSlidAboveOne = 0.0;
+  FlutterExposure flutter;  // the nodes that slid at mu(theta) > 1 before the peak
   // The FEM's own non-graded plate, the reference of a variation target (else not run: NaN).
   double referenceMuStatic = std::numeric_limits<double>::quiet_NaN();
   bool referenceConfirmed = false;

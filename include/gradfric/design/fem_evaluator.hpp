@@ -39,8 +39,7 @@ public:
 private:
   struct Run {
     double muStatic;
-    long nodesSlidAboveOne;
-    double areaSlidAboveOne;
+    FlutterExposure flutter;
     bool known = false;  // from -design_reuse, not yet taken by an evaluation
   };
   Run run(const Grading& grading, const std::string& what);

@@ -4,6 +4,7 @@
 // deterministic, so a run read back is the run: the design is the same, bit for bit, as if it
 // had run them (docs/design.md, "Reusing earlier runs").
 #include "gradfric/core/options.hpp"
+#include "gradfric/design/flutter_exposure.hpp"
 
 #include <mpi.h>
 
@@ -20,8 +21,7 @@ struct KnownFemRun {
   bool reference = false;     // the non-graded plate (x empty)
   std::vector<double> x;      // the free parameters' values
   double muStatic = 0.0;
-  long nodesSlidAboveOne = -1;
-  double areaSlidAboveOne = 0.0;
+  FlutterExposure flutter;
 };
 
 // Collective: the FEM runs of the design files `paths` (read on rank 0, broadcast). Each file must
