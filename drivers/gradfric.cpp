@@ -9,6 +9,7 @@
 #include "gradfric/core/options.hpp"
 #include "gradfric/campaign/campaign_file.hpp"
 #include "gradfric/campaign/interruption.hpp"
+#include "gradfric/campaign/unconfirmed_peaks.hpp"
 #include "gradfric/ensemble/scene.hpp"
 #include "gradfric/ensemble/scene_file.hpp"
 #include "gradfric/ensemble/scene_report.hpp"
@@ -61,9 +62,12 @@ int main(int argc, char** argv) {
     refuseRetiredOption("-model", "gradfric runs the spring-block model only; the finite-element model is the driver gradfric-fem");
     const PlotRequest plot = readPlotOptions(comm, &record);
     const std::optional<Scene> scene = readScene(comm, &record);  // every option, checked
-    if (!scene) return;                                           // -help
+    if (!scene) return 0;                                         // -help
     printScene(comm, *scene, record);
-    if (scene->dryRun) return printDryRun(comm, *scene);
+    if (scene->dryRun) {
+      printDryRun(comm, *scene);
+      return 0;
+    }
     const io::OutputPlan plan = campaign::planCampaignFile(comm, *scene);  // before any work
     std::optional<campaign::InterruptionNotice> notice(std::in_place, comm, plan.workPath(), scene->resume);  // Ctrl-C, SIGTERM
     io::ResultsFile file = campaign::openCampaignFile(comm, *scene, plan, "tasks");
@@ -74,5 +78,8 @@ int main(int argc, char** argv) {
     notice.reset();
     printResults(comm, *scene, statistics, tally, plan.path());
     plotResults(comm, plot, plan.path());
+    // A realisation that gave up at -sbm_t_max has no static coefficient: exit 5, as the FEM's.
+    const bool fixed = scene->request.endTime > 0;
+    return campaign::reportUnconfirmedPeaks(comm, "gradfric", statistics, {fixed, "-sbm_t_end", "-sbm_t_max"});
   });
 }

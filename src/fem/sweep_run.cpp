@@ -8,6 +8,7 @@
 #include "gradfric/campaign/resume_check.hpp"
 #include "gradfric/campaign/runner.hpp"
 #include "gradfric/campaign/statistics_columns.hpp"
+#include "gradfric/campaign/unconfirmed_peaks.hpp"
 #include "gradfric/fem/plate_model.hpp"
 #include "gradfric/fem/simulation.hpp"
 #include "gradfric/fem/stable_step.hpp"
@@ -193,21 +194,9 @@ int runFemSweep(MPI_Comm comm, const FemSweep& s, const RunParameters& record) {
   printTable(comm, s, stats);
   GF_CALL(PetscPrintf(comm, "FEM sweep: %ld run(s) in %.2f s wall; results in %s\n", ran, MPI_Wtime() - wall0,
                       plan.path().c_str()));
-  int unconfirmed = 0, points = 0;
-  for (const auto& st : stats) {
-    unconfirmed += st.peaksUnconfirmed;
-    points += st.peaksUnconfirmed > 0 ? 1 : 0;
-  }
-  if (unconfirmed == 0) return 0;
-  const bool fixed = runLengthFixed(s.params, record);
-  GF_CALL(PetscPrintf(comm,
-                      "gradfric-fem: %s: %d run(s) at %d point(s) ended before their peak of mu(t) was confirmed: their "
-                      "mu_s is the largest mu reached, not the static coefficient (%s)%s\n",
-                      fixed ? "warning" : "error", unconfirmed, points,
-                      fixed ? "the run length was fixed by -fem_slide_time or -fem_stop_when_known false"
-                            : "a longer -fem_slide_time may confirm them",
-                      fixed ? "" : "; exit 5"));
-  return fixed ? 0 : 5;
+  return campaign::reportUnconfirmedPeaks(
+      comm, "gradfric-fem", stats,
+      {runLengthFixed(s.params, record), "-fem_slide_time or -fem_stop_when_known false", "-fem_slide_time"});
 }
 
 void writeErrorBars(io::ResultsFile& file, const FemSweep& s) {
