@@ -162,9 +162,7 @@ LayerWork ContactBoundary::work() const {
 std::string ContactBoundary::describe() const {
   std::string text = std::string(settings_.kinematic ? "kinematic" : "penalty") +
                      " contact with the rigid plane, friction law " + settings_.law.name + ", one site per bottom node";
-  if (law_.normalStress.active())
-    text += ", strength on the remembered pressure (normal-stress memory L_sigma " +
-            formatReal(law_.normalStress.length) + " m, V* " + formatReal(law_.normalStress.speed) + " m/s)";
+  if (law_.normalStress.active()) text += ", " + law_.normalStress.describe();
   return text;
 }
 

@@ -2,6 +2,7 @@
 
 #include "gradfric/core/format.hpp"
 #include "gradfric/physics/friction_laws.hpp"
+#include "gradfric/physics/normal_stress_memory.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -22,12 +23,10 @@ double FemParameters::penaltySlopeError() const {
 }
 
 namespace {
-std::string describeNormalFilter(const FemParameters& q) {
-  if (!(q.frictionLaw.memoryLength > 0)) return "";
-  char text[200];
-  std::snprintf(text, sizeof text, "; strength on the remembered pressure (normal-stress memory L_sigma %.3g D_c = %.3g m, V* %.3g m/s)",
-                q.frictionLaw.memoryLength, q.frictionLaw.memoryLengthInMetres(), q.frictionLaw.memorySpeed);
-  return text;
+// Empty without a memory: a run without one shows nothing about it.
+std::string describeMemory(const FemParameters& q) {
+  const NormalStressMemory memory = NormalStressMemory::make(q.frictionLaw, 0);
+  return memory.active() ? "; " + memory.describe() : "";
 }
 }  // namespace
 
@@ -40,11 +39,11 @@ std::string describeSurface(const SurfaceSettings& s, double elementSize) {
 std::string describeContact(const FemParameters& q) {
   if (!q.contact) return "none (free bottom face)";
   if (q.contactMethod == ContactMethod::Kinematic)
-    return "kinematic (exact: no penetration, exact stick within mu_s p_c A)" + describeNormalFilter(q);
+    return "kinematic (exact: no penetration, exact stick within mu_s p_c A)" + describeMemory(q);
   char text[200];
   std::snprintf(text, sizeof text, "penalty k_n %.3g, k_t %.3g Pa/m (loading slope %.2f %% low)", q.kn, q.kt,
                 100.0 * q.penaltySlopeError());
-  return text + describeNormalFilter(q);
+  return text + describeMemory(q);
 }
 
 std::string describeFrictionState(const FemParameters& q) {

@@ -17,11 +17,13 @@
 //
 // The law owns the memory's parameters and its per-site state, pending until commit() as the
 // state law's (a model may evaluate its forces more than once per step). Pure arithmetic, no PETSc.
+#include "gradfric/core/format.hpp"
 #include "gradfric/core/state_archive.hpp"
 #include "gradfric/physics/friction_laws_settings.hpp"
 
 #include <cmath>
 #include <cstddef>
+#include <string>
 #include <vector>
 
 namespace gradfric {
@@ -29,16 +31,23 @@ namespace gradfric {
 struct NormalStressMemory {
   double length = 0.0;  // L_sigma [m]; 0: none, the strength follows the pressure at once
   double speed = 0.0;   // V* [m/s]
+  double lengthInSlipLengths = 0.0;  // L_sigma as the user gave it [D_c]
   std::vector<double> remembered;  // per site: committed p* (in the model's units: pressure or force)
   std::vector<double> pending;     // per site: p* after the last evaluation
 
   static NormalStressMemory make(const FrictionLawSettings& settings, std::size_t siteCount) {
-    NormalStressMemory m{settings.memoryLengthInMetres(), settings.memorySpeed, {}, {}};
+    NormalStressMemory m{settings.memoryLengthInMetres(), settings.memorySpeed, settings.memoryLength, {}, {}};
     if (m.active()) m.remembered.assign(siteCount, 0.0), m.pending.assign(siteCount, 0.0);
     return m;
   }
 
   bool active() const { return length > 0.0; }
+  // The run's one description of the memory (the parameters printout and the result file's).
+  std::string describe() const {
+    if (!active()) return "strength on the present pressure (no normal-stress memory)";
+    return "strength on the remembered pressure (normal-stress memory L_sigma " + formatReal(lengthInSlipLengths) +
+           " D_c = " + formatReal(length) + " m, V* " + formatReal(speed) + " m/s)";
+  }
   // The relaxation time T = L_sigma / (|V| + V*) at slip rate V [m/s] (infinite with neither).
   double relaxationTime(double slipRate) const { return length / (std::fabs(slipRate) + speed); }
   // p* after a step dt [s] at slip rate slipRate [m/s] under pressure p, from `from`: exact for a

@@ -60,7 +60,7 @@ struct WithSlipLength : Law {  // Law: the law whose sliding strength at v is th
   // kept pending.
   double contactStrength(int site, double speed, double slip, double /*dt*/, bool sliding) {
     const double value = strengthAfter(site, speed, slip, sliding);
-    setPending(site, value);
+    if (hasState()) pending[site] = value;
     return value;
   }
   // A site out of contact keeps its committed state.
@@ -81,9 +81,6 @@ struct WithSlipLength : Law {  // Law: the law whose sliding strength at v is th
     if (healingOnly && target <= strength[site]) return target;
     if (!(slip > 0.0)) return strength[site];
     return target + (strength[site] - target) * std::exp(-slip / slipLength);
-  }
-  void setPending(int site, double value) {
-    if (hasState()) pending[site] = value;
   }
   void commit() {
     if (hasState()) strength = pending;
