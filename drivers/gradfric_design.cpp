@@ -9,7 +9,8 @@
 //
 // One free parameter: a stochastic root finder; several: PETSc TAO. Each evaluation is a
 // spring-block ensemble, or with -design_model fem one FEM run. Then a fresh verification
-// ensemble with independent streams (spring blocks), the other model at the design, and the
+// ensemble with independent streams (spring blocks), the other model at the design, the
+// spring-block variants the designer names (-design_variants), and the
 // parameter's interval from each source of uncertainty. Exit status: 0 design found
 // (and verified), 4 target unreachable within the bounds, 5 not converged, 6 found but the verification misses the
 // target, 2 bad input (docs/design.md).
@@ -90,9 +91,14 @@ int main(int argc, char** argv) {
       fem = runFemCheck(comm, *problem->fem, problem->gradingAt(result.design.x),
                         problem->kind == TargetKind::Variation ? &uniform : nullptr);
     const double otherValue = fem ? femTargetValue(*problem, *fem) : otherSpringBlocks ? otherSpringBlocks->value : NAN;
+    // The spring-block variants the designer names, paired with the verification (its streams).
+    long variantRealisations = 0;
+    const std::vector<Evaluation> variants =
+        evaluateVariants(comm, *problem, result.design.x, verification ? 1 : 0, &variantRealisations);
     const DesignUncertainty uncertainty =
-        designUncertainty(*problem, result, otherValue, designStudyBar(*problem, record, result.design.x));
-    RunCounts runs{springBlocks.realisationsRun(), 0};
+        designUncertainty(*problem, result, otherValue, designStudyBar(*problem, record, result.design.x), variants,
+                          verification ? &*verification : nullptr);
+    RunCounts runs{springBlocks.realisationsRun() + variantRealisations, 0};
     if (problem->model == "fem") {
       runs.femRuns = femRuns->realisationsRun() + (coarseRuns ? coarseRuns->realisationsRun() : 0);
       runs.femReused = femRuns->runsReused() + (coarseRuns ? coarseRuns->runsReused() : 0);
@@ -100,8 +106,10 @@ int main(int argc, char** argv) {
     if (fem) runs.femRuns += problem->kind == TargetKind::Variation ? 2 : 1;  // -design_verify_fem's runs
     double wall = MPI_Wtime() - start;
     MPI_Bcast(&wall, 1, MPI_DOUBLE, 0, comm);
-    saveDesignFile(comm, plan, *problem, record, log, result, verification, fem, otherSpringBlocks, uncertainty, runs);
-    printDesign(comm, *problem, result, verification, fem, otherSpringBlocks, uncertainty, runs, wall, plan.path());
+    saveDesignFile(comm, plan, *problem, record, log, result, verification, fem, otherSpringBlocks, variants, uncertainty,
+                   runs);
+    printDesign(comm, *problem, result, verification, fem, otherSpringBlocks, variants, uncertainty, runs, wall,
+                plan.path());
     int rank = 0;
     MPI_Comm_rank(comm, &rank);
     if (problem->plot && rank == 0) {

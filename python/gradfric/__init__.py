@@ -29,7 +29,8 @@ What open() returns, by the file's `format` (attribute Dataset.attrs["format"]):
   gradfric-accuracy-study (docs/accuracy.md): dims ladder, rung; setting, mu_s_error, ...
       (NaN past a ladder's last rung); knob, setting_unit, error_meaning per ladder.
   gradfric-design (docs/design.md): dim evaluation (x_<parameter>, value, ci95_low, ...; phase);
-      design_<column>, verification_<column>, fem_verification_<column> as 0-d variables.
+      design_<column>, verification_<column>, fem_verification_<column> as 0-d variables;
+      with -design_variants, dim variant (variants_<column>; attributes variants_files, variants_options).
   gradfric-calibration-curves / -scene (docs/calibration.md): the CSV of -calibrate_curve along
       time (with the .opts of the same name, its fit), or the .opts alone: lz, sigma, ...
 

@@ -82,7 +82,8 @@ def read_study(f):
 
 def read_design(f):
     """/evaluations along `evaluation` (phase as a coordinate); the one-row tables /design,
-    /verification, /fem_verification as 0-d variables design_<column>, ...; texts as attributes."""
+    /verification, /fem_verification as 0-d variables design_<column>, ...; /variants along
+    `variant` (variants_<column>); texts as attributes."""
     fallback = {}
     for group in f:
         if group in ("evaluations", "design", "verification", "fem_verification"):
@@ -104,6 +105,8 @@ def read_design(f):
     attrs["value_meaning"] = _h5.text(f["evaluations"].attrs.get("value_meaning", ""))
     if "fem_verification" in f:
         attrs.update({f"fem_verification_{k}": v for k, v in _h5.attributes(f["fem_verification"]).items()})
+    if "variants" in f:  # -design_variants: the files and the options each set
+        attrs.update({f"variants_{k}": v for k, v in _h5.attributes(f["variants"]).items() if k in ("files", "options")})
     if "provenance" in f:
         attrs.update(_h5.provenance(f["provenance"]))
     return xr.Dataset(data, coords, attrs), {}

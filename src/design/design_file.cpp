@@ -52,7 +52,9 @@ std::pair<std::string, std::string> columnMeaning(const std::string& column, con
   if (column == "reference_peak_confirmed") return {"1", "1 if the FEM's non-graded run confirmed its peak"};
   if (column == "other_model_value")
     return {"1", "the other model's " + value + " at the design (the FEM's, or with -design_model fem the spring blocks'; NaN: not run)"};
-  for (const char* source : {"statistical", "discretisation", "model_form", "combined"})
+  if (column == "reaches_target_at")
+    return {x, "where the variant reaches the reference's value at the design model's slope (NaN: no slope)"};
+  for (const char* source : {"statistical", "discretisation", "model_form", "variants", "combined"})
     for (const char* end : {"low", "high"})
       if (column == std::string(source) + "_" + end)
         return {x, std::string(end) + " end of the parameter's interval from the " + source +
@@ -145,6 +147,14 @@ void printUncertainty(MPI_Comm comm, const Problem& problem, const DesignUncerta
   line("statistical", u.statistical, statistical);
   line("discretisation", u.discretisation, u.discretisationNote);
   line("model form", u.modelForm, u.modelFormNote);
+  if (!problem.variants.empty()) {  // a variant per line
+    std::string note = u.variantsNote;
+    for (std::size_t at = note.find(';'); at != std::string::npos; at = note.find(';', at))
+      note.replace(at, 1, "\n                   ");
+    const std::size_t first = note.find(": ");
+    if (first != std::string::npos) note.replace(first, 2, ":\n                    ");
+    line("variants", u.variants, note);
+  }
   line("combined", u.combined, u.combinedNote);
 }
 
@@ -159,7 +169,8 @@ io::OutputPlan planDesignFile(MPI_Comm comm, const Problem& problem) {
 void saveDesignFile(MPI_Comm comm, const io::OutputPlan& plan, const Problem& problem, const RunParameters& record,
                     const SearchLog& log, const SearchResult& result, const std::optional<Evaluation>& verification,
                     const std::optional<FemVerification>& fem, const std::optional<Evaluation>& springBlocks,
-                    const DesignUncertainty& uncertainty, const RunCounts& runs) {
+                    const std::vector<Evaluation>& variants, const DesignUncertainty& uncertainty,
+                    const RunCounts& runs) {
   if (!runProvenance) runProvenance = io::collectProvenance(comm);
   study::StudyFile file;
   std::string names;
@@ -188,6 +199,7 @@ void saveDesignFile(MPI_Comm comm, const io::OutputPlan& plan, const Problem& pr
     for (const auto& [name, interval] : {std::pair<const char*, ParameterInterval>{"statistical", u.statistical},
                                          {"discretisation", u.discretisation},
                                          {"model_form", u.modelForm},
+                                         {"variants", u.variants},
                                          {"combined", u.combined}}) {
       design.columns.push_back({std::string(name) + "_low", {interval.low}});
       design.columns.push_back({std::string(name) + "_high", {interval.high}});
@@ -195,10 +207,23 @@ void saveDesignFile(MPI_Comm comm, const io::OutputPlan& plan, const Problem& pr
     design.columns.push_back({"other_model_value", {u.otherValue}});
     design.texts.emplace_back("discretisation_note", u.discretisationNote);
     design.texts.emplace_back("model_form_note", u.modelFormNote);
+    design.texts.emplace_back("variants_note", u.variantsNote);
     design.texts.emplace_back("combined_note", u.combinedNote);
   }
   if (verification) file.ladders.push_back(tableOf("verification", problem, {*verification}));
   if (springBlocks) file.ladders.push_back(tableOf("model_form", problem, {*springBlocks}));
+  if (!variants.empty()) {  // one row per variant, in -design_variants' order
+    study::LadderTable t = tableOf("variants", problem, variants);
+    std::string files, options;
+    for (const auto& v : problem.variants) {
+      files += (files.empty() ? "" : ",") + v.file;
+      options += (options.empty() ? "" : "; ") + v.options;
+    }
+    t.texts.emplace_back("files", files);
+    t.texts.emplace_back("options", options);
+    t.columns.push_back({"reaches_target_at", uncertainty.variantX});
+    file.ladders.push_back(t);
+  }
   if (fem) {
     study::LadderTable t;
     t.name = "fem_verification";
@@ -221,7 +246,11 @@ void saveDesignFile(MPI_Comm comm, const io::OutputPlan& plan, const Problem& pr
         io::createIndexScale(out, "evaluation", file.ladders.front().columns.front().second.size(), "evaluation index (row of /evaluations)");
     const io::H5Dataset row =
         io::createIndexScale(out, "row", 1, "the one row of /design, /verification, /model_form and /fem_verification");
-    for (const auto& t : file.ladders) writeTable(out, t, t.name == "evaluations" ? evaluation.get() : row.get(), problem, record);
+    const io::H5Dataset variant =
+        variants.empty() ? io::H5Dataset() : io::createIndexScale(out, "variant", variants.size(), "-design_variants' files, in order (row of /variants)");
+    for (const auto& t : file.ladders)
+      writeTable(out, t, t.name == "evaluations" ? evaluation.get() : t.name == "variants" ? variant.get() : row.get(), problem,
+                 record);
     io::H5Group provenance = io::createGroup(out, "provenance");
     io::writeProvenance(provenance, *runProvenance);
     GF_H5(H5Fflush(out, H5F_SCOPE_GLOBAL));  // a full disk shows here, not in a silent close
@@ -231,8 +260,8 @@ void saveDesignFile(MPI_Comm comm, const io::OutputPlan& plan, const Problem& pr
 
 void printDesign(MPI_Comm comm, const Problem& problem, const SearchResult& result,
                  const std::optional<Evaluation>& verification, const std::optional<FemVerification>& fem,
-                 const std::optional<Evaluation>& springBlocks, const DesignUncertainty& uncertainty,
-                 const RunCounts& runs, double wallSeconds,
+                 const std::optional<Evaluation>& springBlocks, const std::vector<Evaluation>& variants,
+                 const DesignUncertainty& uncertainty, const RunCounts& runs, double wallSeconds,
                  const std::string& path) {
   const char* quantity = problem.kind == TargetKind::Variation ? "relative variation" : "mu_s";
   const Evaluation& d = result.design;
@@ -249,6 +278,7 @@ void printDesign(MPI_Comm comm, const Problem& problem, const SearchResult& resu
                         problem.free[0].name.c_str(), result.parameterLow(), result.parameterHigh(), result.slope));
   if (verification) row("verification", *verification);
   if (springBlocks) row("spring blocks", *springBlocks);
+  for (std::size_t k = 0; k < variants.size(); ++k) row(("variant " + std::to_string(k + 1)).c_str(), variants[k]);
   if (problem.model == "fem")
     GF_CALL(PetscPrintf(comm, "  no verification ensemble: a FEM run is deterministic (the same run gives the same number)\n"));
   if (fem) {

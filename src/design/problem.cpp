@@ -169,6 +169,11 @@ std::optional<Problem> readProblem(MPI_Comm comm, RunParameters* record) {
   const std::string reuse = o.text("reuse", "",
                                    "fem: earlier design files (comma-separated) of the same scene and FEM options whose "
                                    "runs are taken instead of run again (a run is deterministic: the same numbers)");
+  const std::string variants =
+      o.text("variants", "",
+             "sbm: spring-block variants to run at the design (a friction law, a calibration), comma-separated options "
+             "files of -sbm_*, -friction_*, -surface_* options laid over the scene; their spread is the design's "
+             "variant interval");
   s.verify = o.flag("verify", true, "a fresh verification ensemble with independent streams at the design (sbm)");
   const bool verifyFem = o.flag("verify_fem", false,
                                 "also run the design's surface in the finite-element model (-fem_* options: mesh, "
@@ -206,6 +211,13 @@ std::optional<Problem> readProblem(MPI_Comm comm, RunParameters* record) {
   if (model != "fem" && !s.reuse.empty())
     throw InputError(o.fullName("reuse"), reuse,
                      "only with -design_model fem (a spring-block evaluation is an ensemble of seconds, run again)");
+  if (!variants.empty()) {
+    if (model == "fem")
+      throw InputError(o.fullName("variants"), variants,
+                       "only with -design_model sbm (the variants are the spring blocks'; with the FEM they give the "
+                       "model-form check, on the FEM's surface)");
+    s.variants = readVariants(comm, splitNames(variants), plate, stiffest);
+  }
   if (model != "fem" && (o.wasSet("coarse_mesh") || o.wasSet("fine_evaluations")))
     throw InputError(o.fullName(o.wasSet("coarse_mesh") ? "coarse_mesh" : "fine_evaluations"), "(set)",
                      "only with -design_model fem");
@@ -290,12 +302,15 @@ std::optional<Problem> readProblem(MPI_Comm comm, RunParameters* record) {
   s.maxEvaluations = static_cast<int>(evaluations);
   s.scanPoints = static_cast<int>(scan);
   s.seed = static_cast<std::uint64_t>(seed);
-  // Only mu_s is needed: every run stops at its confirmed peak, keeps no map and a sparse history.
-  s.request.measurement.kinetic = false;
-  s.request.measurement.firstSlipMap = false;
-  s.request.measurement.historyInterval = s.request.maxTime;
-  s.request.snapshotTimes.clear();
+  measureMuStaticOnly(&s.request);
   return s;
+}
+
+void measureMuStaticOnly(sbm::Request* request) {
+  request->measurement.kinetic = false;
+  request->measurement.firstSlipMap = false;
+  request->measurement.historyInterval = request->maxTime;
+  request->snapshotTimes.clear();
 }
 
 }  // namespace gradfric::design

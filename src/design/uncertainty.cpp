@@ -51,7 +51,8 @@ double femTargetValue(const Problem& problem, const FemVerification& fem) {
 }
 
 DesignUncertainty designUncertainty(const Problem& problem, const SearchResult& result, double otherValue,
-                                    const study::StudyBar& bar) {
+                                    const study::StudyBar& bar, const std::vector<Evaluation>& variants,
+                                    const Evaluation* reference) {
   DesignUncertainty u;
   const Evaluation& d = result.design;
   const bool slope = problem.dimension() == 1 && std::isfinite(result.slope) && result.slope != 0.0;
@@ -98,12 +99,36 @@ DesignUncertainty designUncertainty(const Problem& problem, const SearchResult& 
     }
   }
 
-  // Combined: the model-form interval (or the design) widened by the other half-widths, added.
+  // Variants: where each reaches the reference's value at the design model's slope, with its CI.
+  if (problem.variants.empty())
+    u.variantsNote = "not measured: no -design_variants";
+  else {
+    const Evaluation& ref = reference ? *reference : d;
+    u.variantsNote = "against the " + std::string(reference ? "verification's " : "design's ") + formatNumber("%.6f", ref.value) + ":";
+    if (slope) u.variants = {x, x};
+    for (std::size_t k = 0; k < variants.size(); ++k) {
+      const Evaluation& v = variants[k];
+      u.variantsNote += std::string(k ? ";" : "") + " " + problem.variants[k].file + " (" + problem.variants[k].options +
+                        ") " + formatNumber("%.6f", v.value) + " [" + formatNumber("%.6f", v.ciLow) + ", " +
+                        formatNumber("%.6f", v.ciHigh) + "] (" + formatNumber("%+.6f", v.value - ref.value) + ")";
+      double reach = std::numeric_limits<double>::quiet_NaN();
+      if (slope) {
+        reach = x - (v.value - ref.value) / result.slope;
+        const double spread = v.halfWidth() / std::fabs(result.slope);
+        u.variants = {std::min(u.variants.low, reach - spread), std::max(u.variants.high, reach + spread)};
+        u.variantsNote += ", reaches it at " + formatNumber("%.6g", reach);
+      }
+      u.variantX.push_back(reach);
+    }
+  }
+
+  // Combined: the model-form and variant intervals (or the design) widened by the other half-widths, added.
   if (slope) {
-    const ParameterInterval core = u.modelForm.known() ? u.modelForm : ParameterInterval{x, x};
+    ParameterInterval core = u.modelForm.known() ? u.modelForm : ParameterInterval{x, x};
+    if (u.variants.known()) core = {std::min(core.low, u.variants.low), std::max(core.high, u.variants.high)};
     u.combined = {core.low - statistical - discretisation, core.high + statistical + discretisation};
     u.combinedNote = std::string("statistical") + (u.discretisation.known() ? " + discretisation" : "") +
-                     (u.modelForm.known() ? " + model form" : "") + ", added";
+                     (u.modelForm.known() ? " + model form" : "") + (u.variants.known() ? " + variants" : "") + ", added";
     std::string missing;
     if (!u.discretisation.known()) missing += "discretisation";
     if (!u.modelForm.known()) missing += std::string(missing.empty() ? "" : " and ") + "model form";

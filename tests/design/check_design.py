@@ -5,6 +5,7 @@
   check_design.py meets <design.h5> <target> <tolerance>   the design's CI holds the target, within the tolerance
   check_design.py known <design.h5> <sweep.h5> <target>    the design recovers the Delta a gradfric sweep gives
   check_design.py unreachable <design.h5> <target> <x>     the closest value is at x and its CI misses the target
+  check_design.py variants <design.h5> <k> <m>            variant k is the scene (the verification, bit for bit); m moves mu_s
   check_design.py same <a.h5> <b.h5>                       every dataset and attribute alike (but -output, /provenance)
 """
 import sys
@@ -140,6 +141,19 @@ def main(argv):
                 assert np.isnan(d["other_model_value"]) and np.isnan(d["model_form_low"]), d
                 assert "-design_verify_fem" in text(f["design"].attrs["model_form_note"])
                 core = (x, x)
+            if "variants" in f:  # each variant where it reaches the reference value, with its CI
+                v = f["variants"]
+                reference = design_row(f, "verification" if "verification" in f else "design")["value"]
+                low = high = x
+                for k in range(len(v["value"])):
+                    reach = x - (v["value"][k] - reference) / slope
+                    assert close(v["reaches_target_at"][k], reach), (k, reach)
+                    spread = 0.5 * (v["ci95_high"][k] - v["ci95_low"][k]) / abs(slope)
+                    low, high = min(low, reach - spread), max(high, reach + spread)
+                assert close(d["variants_low"], low) and close(d["variants_high"], high), (d, low, high)
+                core = (min(core[0], low), max(core[1], high))
+            else:
+                assert np.isnan(d["variants_low"]), d
             disc = 0.0
             if np.isnan(d["discretisation_low"]):
                 assert text(f["design"].attrs["discretisation_note"]).startswith("not measured"), d
@@ -148,6 +162,22 @@ def main(argv):
             assert close(d["combined_low"], core[0] - stat - disc) and close(d["combined_high"], core[1] + stat + disc), d
             print(f"x {x:.6f}: statistical +-{stat:.6f}, model form [{d['model_form_low']:.6f}, "
                   f"{d['model_form_high']:.6f}], combined [{d['combined_low']:.6f}, {d['combined_high']:.6f}]")
+    elif check == "variants":
+        # An identical variant is the verification itself (same streams), bit for bit; the
+        # state law moves mu_s beyond both CIs.
+        identical, moved = int(argv[3]), int(argv[4])
+        with h5py.File(argv[2], "r") as f:
+            verification = design_row(f, "verification")
+            v = f["variants"]
+            x = next(float(f["design"][k][0]) for k in f["design"] if k.startswith("x_") and k not in ("x_ci95_low", "x_ci95_high"))
+            assert v["value"][identical] == verification["value"], (v["value"][identical], verification)
+            assert v["ci95_low"][identical] == verification["ci95_low"], "an identical variant's CI differs"
+            assert v["reaches_target_at"][identical] == x, (v["reaches_target_at"][identical], x)
+            assert v["ci95_low"][moved] > verification["ci95_high"] or v["ci95_high"][moved] < verification["ci95_low"], \
+                (v["value"][moved], verification)
+            files = text(v.attrs["files"]).split(",")
+            assert len(files) == len(v["value"]), files
+            print(f"variants: {files}, values {list(v['value'][()])} against the verification's {verification['value']:.6f}")
     else:
         raise SystemExit(f"unknown check {check}")
 

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # End-to-end checks of gradfric-design on reduced plates (check_design.py reads the files).
 #   design_checks.sh <gradfric-design> <gradfric> <source-dir> <check> [<gradfric-fem>]
-# checks: known_answer, unreachable, ranks, tao, refuse, fem
+# checks: known_answer, missed, unreachable, ranks, tao, refuse, fem, fem_model, variants
 set -euo pipefail
 design=$1
 driver=$2
@@ -204,6 +204,34 @@ fem_model)
   refused 1 -design_coarse_mesh -design_target 0.86 -design_coarse_mesh 8,8,1
   refused 1 -design_coarse_mesh "${fem_args[@]}" -design_target 0.86 -design_coarse_mesh 8,8
   refused 1 -design_fine_evaluations "${fem_args[@]}" -design_target 0.86 -design_fine_evaluations 3
+  ;;
+variants)
+  # The spring-block variants a designer names, run at the design on the verification's streams:
+  # the scene itself (an option at its default), a calibration's scene file (its -ensemble_* are
+  # reported unused) and the state law. Their spread is the design's variant interval.
+  printf -- '-sbm_integrator verlet\n' >"$work/scene.opts"
+  printf -- '# gradfric-calibrate wrote\n-sbm_lz 5.0482e-05\n-ensemble_realisations 2\n' >"$work/calibrated.opts"
+  printf -- '-friction_law state\n' >"$work/state.opts"
+  run 0 2 "$work/v.log" "${scene[@]}" -design_variants "$work/scene.opts,$work/calibrated.opts,$work/state.opts" \
+    -output "$work/v.h5"
+  grep -q "^    variants  *\[" "$work/v.log" || { cat "$work/v.log" >&2; fail "no variants interval"; }
+  grep -q "ensemble_realisations not used" "$work/v.log" || fail "the calibration's ensemble options not reported"
+  grep -q "statistical + variants, added" "$work/v.log" || fail "the combination leaves out the variants"
+  "$python" "$checker" variants "$work/v.h5" 0 2 || fail "the variants"
+  "$python" "$checker" uncertainty "$work/v.h5" || fail "the sources' intervals with variants"
+  # Refused before any work, on every rank alike: a missing file, an option that is not the
+  # spring blocks', one nothing reads, a malformed line (PETSc's reader would stop rank 0 alone),
+  # a bad value, the FEM as the design's model.
+  printf -- '-design_target 0.7\n' >"$work/design.opts"
+  printf -- '-sbm_lzz 1e-4\n' >"$work/misspelt.opts"
+  printf -- 'sbm_lz 1e-4\n' >"$work/malformed.opts"
+  printf -- '-friction_law state\n-friction_memory_length 4\n' >"$work/memory.opts"
+  refused 2 -design_variants -design_variants "$work/missing.opts"
+  refused 2 -design_variants -design_variants "$work/design.opts"
+  refused 2 -design_variants -design_variants "$work/state.opts,$work/misspelt.opts"
+  refused 2 -design_variants -design_variants "$work/malformed.opts"
+  refused 2 -friction_memory_length -design_variants "$work/memory.opts"
+  refused 1 -design_variants -design_model fem -fem_nx 8 -fem_ny 8 -fem_nz 1 -design_variants "$work/state.opts"
   ;;
 refuse)
   refused 1 -design_parameters -design_parameters ""

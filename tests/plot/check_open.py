@@ -273,10 +273,13 @@ for name in ("N", "dt_verlet"):  # each ladder opens in plain xarray with its na
 
 # 5. A design: described columns on named axes and the provenance record, also to plain xarray.
 design_file = os.path.join(src, "input", "design_friction_delta.opts")
-run(design, "-options_file", design_file, "-sbm_N", "12", "-output", path("design.h5"))
+variant_file = os.path.join(src, "input", "sbm_variant_calibrated_state.opts")
+run(design, "-options_file", design_file, "-sbm_N", "12", "-design_variants", variant_file, "-output", path("design.h5"))
 with gradfric.open(path("design.h5")) as ds, h5py.File(path("design.h5"), "r") as f:
     n = len(f["evaluations/index"])
-    expect_dims(ds, {"evaluation": n})
+    expect_dims(ds, {"evaluation": n, "variant": 1})
+    assert ds["variants_value"].dims == ("variant",) and float(ds["variants_value"][0]) == f["variants/value"][0]
+    assert ds.attrs["variants_files"] == variant_file and "-friction_law state" in ds.attrs["variants_options"]
     assert list(ds["phase"].values) == f["evaluations"].attrs["phases"].split(",")
     assert ds["value"].dims == ("evaluation",) and ds["x_grading_delta"].attrs["units"] == "1"
     assert ds["design_value"].dims == () and float(ds["design_value"]) == f["design/value"][0]
@@ -285,7 +288,7 @@ with gradfric.open(path("design.h5")) as ds, h5py.File(path("design.h5"), "r") a
     assert ds.attrs["value_meaning"] == "mean mu_s"
     check_provenance(ds, 2, design_file)
     assert check_against_file(ds, path("design.h5")) >= 30
-for group, dim in (("evaluations", "evaluation"), ("design", "row"), ("verification", "row")):
+for group, dim in (("evaluations", "evaluation"), ("design", "row"), ("verification", "row"), ("variants", "variant")):
     plain = xr.open_dataset(path("design.h5"), engine="h5netcdf", group=group, phony_dims="access")
     assert set(plain.dims) == {dim} and plain["value"].attrs["units"] == "1", (group, plain.dims)
     plain.close()

@@ -9,8 +9,10 @@
 //   /design      the design (one row, same columns; one parameter: slope, x_ci95_low, x_ci95_high,
 //                its CI mapped onto the parameter through the local slope, and each source's
 //                interval of the parameter, NaN where not measured: statistical_, discretisation_,
-//                model_form_, combined_ low/high; other_model_value; attributes *_note say why)
+//                model_form_, variants_, combined_ low/high; other_model_value; attributes *_note say why)
 //   /model_form  with -design_model fem: the spring blocks' ensemble at the design (one row)
+//   /variants    with -design_variants: each variant's ensemble at the design (a row per file, along
+//                /variant; reaches_target_at; attributes files, options)
 //   /verification  the fresh ensemble at the design (one row; absent with -design_verify false)
 //   /fem_verification  with -design_verify_fem: mu_s, peak_confirmed, cells (a variation target:
 //                reference_mu_s, reference_peak_confirmed of the FEM's non-graded plate); value (the
@@ -41,13 +43,14 @@ io::OutputPlan planDesignFile(MPI_Comm comm, const Problem& problem);
 void saveDesignFile(MPI_Comm comm, const io::OutputPlan& plan, const Problem& problem, const RunParameters& record,
                     const SearchLog& log, const SearchResult& result, const std::optional<Evaluation>& verification,
                     const std::optional<FemVerification>& fem, const std::optional<Evaluation>& springBlocks,
-                    const DesignUncertainty& uncertainty, const RunCounts& runs);
+                    const std::vector<Evaluation>& variants, const DesignUncertainty& uncertainty,
+                    const RunCounts& runs);
 
 // Rank 0 prints the design, its verification and how the search went.
 void printDesign(MPI_Comm comm, const Problem& problem, const SearchResult& result,
                  const std::optional<Evaluation>& verification, const std::optional<FemVerification>& fem,
-                 const std::optional<Evaluation>& springBlocks, const DesignUncertainty& uncertainty,
-                 const RunCounts& runs, double wallSeconds,
+                 const std::optional<Evaluation>& springBlocks, const std::vector<Evaluation>& variants,
+                 const DesignUncertainty& uncertainty, const RunCounts& runs, double wallSeconds,
                  const std::string& path);
 
 }  // namespace gradfric::design

@@ -5,6 +5,7 @@
 // (docs/design.md).
 #include "gradfric/core/options.hpp"
 #include "gradfric/design/fem_check.hpp"
+#include "gradfric/design/variants.hpp"
 #include "gradfric/physics/grading.hpp"
 #include "gradfric/sbm/parameters.hpp"
 
@@ -52,6 +53,7 @@ struct Problem {
   // runs on first (null: the search runs on fem's mesh), and the runs allowed on fem's mesh after.
   std::shared_ptr<FemCheck> coarseFem;
   int fineEvaluations = 4;
+  std::vector<SpringBlockVariant> variants;  // -design_variants: the spring-block variants run at the design
   std::vector<std::string> reuse;  // -design_reuse: earlier design files whose FEM runs are taken, not rerun
   bool monitor = true;
   bool plot = false;
@@ -67,6 +69,9 @@ struct Problem {
 };
 
 const char* toString(TargetKind kind);
+
+// A design's runs measure mu_s alone: each stops at its confirmed peak, with no map and a sparse history.
+void measureMuStaticOnly(sbm::Request* request);
 
 // Collective: reads and checks every option (InputError on every rank alike); nullopt after -help.
 std::optional<Problem> readProblem(MPI_Comm comm, RunParameters* record);

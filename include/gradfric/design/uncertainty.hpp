@@ -9,7 +9,11 @@
 //    (-design_verify_fem; for a variation target against the FEM's own non-graded plate); with
 //    -design_model fem, a spring-block ensemble. At the design model's slope, the other reaches
 //    the same value at x_O = x - (v_other - v_design) / s; the interval runs from x to x_O.
-// Combined: the hull of the model-form interval widened by the statistical and discretisation
+//  - variants (-design_variants): the spring-block variants the designer names, each one ensemble at
+//    the design on the verification's streams (paired with it; without a verification, the search's
+//    stream and value). Variant k reaches the reference value v at x_k = x - (v_k - v) / s; the
+//    interval is the hull of x and every x_k +- h_k / |s| (h_k: the variant's CI half-width).
+// Combined: the hull of the model-form and variant intervals widened by the statistical and discretisation
 // half-widths, added, not in quadrature: a bound whenever each part is one. Several free
 // parameters have no slope: each source is then reported in the target's quantity only.
 #include "gradfric/core/study_table.hpp"
@@ -37,14 +41,19 @@ struct DesignUncertainty {
   ParameterInterval modelForm;
   std::string modelFormNote;       // the other model's value against the design's, or why not measured
   double otherValue = std::numeric_limits<double>::quiet_NaN();  // the other model's target quantity at the design
+  ParameterInterval variants;
+  std::string variantsNote;        // each variant against the reference, or why not measured
+  std::vector<double> variantX;    // per variant: where it reaches the reference value (NaN: no slope)
   ParameterInterval combined;
   std::string combinedNote;        // which sources it holds
 };
 
 // otherValue: the other model's mu_s or variation at the design (NaN: not run). bar: the design
-// model's study bar of mu_s at the design point (absolute uncertainty in its verdict).
+// model's study bar of mu_s at the design point (absolute uncertainty in its verdict). variants:
+// the variants' ensembles at the design, against `reference` (the verification, or the design).
 DesignUncertainty designUncertainty(const Problem& problem, const SearchResult& result, double otherValue,
-                                    const study::StudyBar& bar);
+                                    const study::StudyBar& bar, const std::vector<Evaluation>& variants = {},
+                                    const Evaluation* reference = nullptr);
 
 // The design model's study bar of mu_s at the design point x (sbm_study.tsv at the lattice N_b, or
 // fem_study.tsv at the -fem_* mesh; the scene's options with the design's grading amplitude). A
