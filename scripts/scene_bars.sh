@@ -17,6 +17,7 @@ trap 'rm -f "$out"' EXIT
     name=$(basename "$scene")
     case $name in
       design_*|calibrate_*|study_*) continue ;;                      # other drivers: no bars of their own
+      sbm_variant_*) continue ;;                                     # design variants: laid over a scene
       fem_*) command=("$build/drivers/gradfric-fem" -options_file "$scene" -fem_dry_run) ;;
       *) command=("$build/drivers/gradfric" -options_file "$scene" -ensemble_dry_run) ;;
     esac
