@@ -130,7 +130,8 @@ FemParameters readFemParameters(MPI_Comm comm, RunParameters* record, const Plat
                            "blow-up monitor: stop when kinetic + elastic energy exceeds this x (energy put in + p^2 L^2 H / 2E)");
   if (auto t = o.realIfSet("ramp_time", "s", "pressure ramp duration", "20 H/c_s")) q.rampTime = *t;
   if (auto t = o.realIfSet("settle_time", "s", "hold under pressure before sliding", "10 H/c_s")) q.settleTime = *t;
-  if (auto t = o.realIfSet("slide_time", "s", "longest sliding duration", "1.5 t_load + the latest mu_k window's end (Eq. 2 t_load)")) q.slideTime = *t;
+  if (auto t = o.realIfSet("slide_time", "s", "longest sliding duration",
+                              "1.5 t_load + the latest mu_k window's end (Eq. 2 t_load); at least 9 t_load with -friction_memory_length")) q.slideTime = *t;
   q.stopWhenKnown = o.flag("stop_when_known", true, "stop once the -friction_observables are known");
   q.partitioner = o.choice("partitioner", q.partitioner, {"metis", "ptscotch", "simple"}, "mesh partitioner");
   q.snapshotTimes = o.realList("snapshot_times", {}, "s", "field snapshot times after the start of sliding");
@@ -140,7 +141,7 @@ FemParameters readFemParameters(MPI_Comm comm, RunParameters* record, const Plat
   o.requireAtLeast("ny", q.ny, 1);
   o.requireAtLeast("nz", q.nz, 1);
   requireEdgeGrading(o, q);
-  if (isStateLaw(q.frictionLaw)) {  // the memory belongs to the stateless laws
+  if (isStateLaw(q.frictionLaw)) {  // the slip length (-fem_slip_length) belongs to the stateless laws
     const char* allowed = "only with -friction_law exponential or coulomb (the state law's length is -friction_d_c)";
     if (o.wasSet("slip_length")) throw InputError(o.fullName("slip_length"), formatReal(q.slipLength), allowed);
     if (o.wasSet("slip_evolution"))
@@ -181,7 +182,8 @@ FemParameters readFemParameters(MPI_Comm comm, RunParameters* record, const Plat
   // then the sliding time that fits its window.
   q.measurement = readFrictionMeasurement(comm, record, q.eq2PeakTime(),
                                           MeasurementDefaults{kMukSteadyTolerance, kMukLatestDelay});
-  if (!o.wasSet("slide_time")) q.slideTime = defaultSlideTime(q.eq2PeakTime(), q.measurement);
+  if (!o.wasSet("slide_time"))
+    q.slideTime = defaultSlideTime(q.eq2PeakTime(), q.measurement, q.frictionLaw.memoryLength > 0);
   if (!o.wasSet("kn")) o.recordDerived("kn", q.kn, "Pa/m", "normal penalty stiffness k_n");
   if (!o.wasSet("kt")) o.recordDerived("kt", q.kt, "Pa/m", "tangential penalty stiffness k_t");
   if (!o.wasSet("settle_damping"))

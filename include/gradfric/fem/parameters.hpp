@@ -172,7 +172,10 @@ double defaultPenaltyStiffness(const Plate& plate);  // penaltyFactor G/H
 // The measurement's times from the FEM's loading time t_load (Eq. 2 with H) and its steady window.
 FrictionMeasurement defaultFemMeasurement(double loadingTime);
 // Long enough for the latest window: 1.5 t_load for the peak and its confirmation, then the window.
-double defaultSlideTime(double loadingTime, const FrictionMeasurement& m);
+// The longest sliding step: 1.5 t_load + the latest mu_k window's end; with the normal-stress
+// memory at least kMemorySlideLoadingTimes t_load (a leading patch sticks long after the peak).
+constexpr double kMemorySlideLoadingTimes = 9.0;
+double defaultSlideTime(double loadingTime, const FrictionMeasurement& m, bool withMemory = false);
 
 // One line each for the active effects and the results file: the contact (method, penalties and
 // the slope error they carry) and the damping of the sliding step.
