@@ -234,10 +234,7 @@ void OutputFiles::writeResults(const PlateModel& model, const FemRunResult& r, c
   io::ResultsFile file = io::ResultsFile::create(comm_, resultsPlan_->workPath(), campaign.layout, campaign.table,
                                                  campaign.sceneAttributes);
   file.setRun(campaign.runAttributes, provenance_);
-  io::TaskOutput task;  // as a sweep's point: its observer's summary and sampled history
-  task.friction = r.friction;
-  task.endTime = r.time.empty() ? 0.0 : r.time.back();
-  task.steps = r.steps;
+  io::TaskOutput task = taskOutputOf(r);  // as a sweep's point
   task.wallSeconds = r.wallPressure + r.wallSliding;
   int rank = 0;
   MPI_Comm_rank(comm_, &rank);

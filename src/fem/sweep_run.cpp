@@ -36,13 +36,9 @@ io::TaskOutput runTask(const FemSweep& s, const campaign::Task& task, MPI_Comm g
   q.measurement.firstSlipMap = false;  // a sweep's file has no place for the FEM's node map: not recorded
   PlateModel model(group, q, s.pointGrading(task.point));
   const double wall0 = MPI_Wtime();
-  FemRunResult r = runPlateExperiment(model);
-  io::TaskOutput o;
+  io::TaskOutput o = taskOutputOf(runPlateExperiment(model));
   o.point = task.point;
   o.realisation = task.realisation;
-  o.friction = std::move(r.friction);
-  o.endTime = r.time.empty() ? 0.0 : r.time.back();
-  o.steps = r.steps;
   o.wallSeconds = MPI_Wtime() - wall0;
   o.rank = worldRank;  // the group's first rank
   return o;
@@ -137,14 +133,30 @@ void printRun(const FemSweep& s, const campaign::Task& task, const io::TaskOutpu
                              : " (window spread " + formatReal(100 * f.kineticSpread) + " %" +
                                    (!f.kineticSteadyTested ? ")" : f.kineticSteady ? ", steady)" : ", NOT steady)");
   const std::string realisation = s.realisations > 1 ? " realisation " + std::to_string(task.realisation) : "";
-  std::printf("[group %d] point %d (%s)%s: %s%s%s  run %.2f s, %lld steps\n", group, task.point,
+  // The flutter flag (docs/flutter.md): where nodes slid at mu > 1, the onset depends on the mesh.
+  const std::string flutter = o.nodesSlidAboveOne > 0 ? ", flutter: " + std::to_string(o.nodesSlidAboveOne) +
+                                                            " nodes slid at mu > 1 before the peak"
+                                                      : "";
+  std::printf("[group %d] point %d (%s)%s: %s%s%s%s  run %.2f s, %lld steps\n", group, task.point,
               campaign::pointLabel(s.sweep, task.point).c_str(), realisation.c_str(), observablesText(f).c_str(),
-              window.c_str(),
-              f.peakConfirmed ? "" : " (peak not confirmed)", o.wallSeconds, static_cast<long long>(o.steps));
+              window.c_str(), f.peakConfirmed ? "" : " (peak not confirmed)", flutter.c_str(), o.wallSeconds,
+              static_cast<long long>(o.steps));
   std::fflush(stdout);
 }
 
 }  // namespace
+
+io::TaskOutput taskOutputOf(const FemRunResult& run) {
+  io::TaskOutput o;
+  o.friction = run.friction;
+  o.endTime = run.time.empty() ? 0.0 : run.time.back();
+  o.steps = run.steps;
+  if (run.resolution.applies) {
+    o.nodesSlidAboveOne = run.resolution.aboveOne.nodes;
+    o.areaSlidAboveOne = run.resolution.aboveOne.areaFraction;
+  }
+  return o;
+}
 
 bool runLengthFixed(const FemParameters& q, const RunParameters& record) {
   const ResolvedOption* slideTime = record.find("-fem_slide_time");

@@ -127,6 +127,15 @@ std::vector<TaskDataset> taskDatasets(const EnsembleLayout& layout) {
     out.push_back(integer("realisations/redrawn_blocks", Type::Int32, 0, "1",
                           "local coefficients redrawn to keep 0 < mu_k,i <= mu_s,i",
                           [](const TaskOutput& t) { return t.redrawnBlocks; }));
+  if (!sbm) {  // the FEM's flutter flag of each run (docs/flutter.md)
+    out.push_back(integer("realisations/nodes_slid_above_one", Type::Int64, -1, "1",
+                          "bottom nodes that slid at mu(theta) > 1 before the peak: there the onset depends on the mesh "
+                          "unless the normal-stress memory resolves it (docs/flutter.md); -1: not measured (a law "
+                          "without state)",
+                          [](const TaskOutput& t) { return t.nodesSlidAboveOne; }));
+    out.push_back(real("realisations/area_slid_above_one", {}, "1", "their share of the contact area (NaN: not measured)",
+                       [](const TaskOutput& t, std::vector<double>& row) { row[0] = t.areaSlidAboveOne; }));
+  }
   out.push_back(integer("realisations/done", Type::Int8, 0, "1",
                         "1: the task finished and its results are stored; 0: not run (yet)",
                         [](const TaskOutput&) { return 1; }));

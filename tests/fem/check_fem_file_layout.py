@@ -49,8 +49,8 @@ def descriptions(f):
 
 
 def check_fem_names(f, nx, ny=None):
-    """What every FEM file of version 4 has and lacks."""
-    assert f.attrs["format_version"] == 4, f.attrs["format_version"]
+    """What every FEM file of version 5 has and lacks."""
+    assert f.attrs["format_version"] == 5, f.attrs["format_version"]
     for name in SPRING_BLOCK:
         assert name not in f, f"/{name} in a FEM file"
     for name in SPRING_BLOCK_ROOT:

@@ -27,7 +27,7 @@ r = subprocess.run(mpi + base, env=env, capture_output=True, text=True)
 assert r.returncode == 0, r.stdout + r.stderr
 with h5py.File(out, "r") as f:
     # The campaign layout of one point, one realisation (docs/ensemble.md), with the FEM's extras under /fem.
-    assert f.attrs["complete"] == 1 and f.attrs["format"] == "gradfric-fem-run" and f.attrs["format_version"] == 4
+    assert f.attrs["complete"] == 1 and f.attrs["format"] == "gradfric-fem-run" and f.attrs["format_version"] == 5
     assert f.attrs["points"] == 1 and f.attrs["realisations"] == 1 and f["realisations/done"][0, 0] == 1
     assert f["fem"].attrs["format_version"] == 5 and f["fem"].attrs["fields_xdmf"] == "run_fields.xmf"
     n = int(f["history/length"][0, 0])

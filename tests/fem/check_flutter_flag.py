@@ -52,6 +52,7 @@ def run(delta):
 
 
 out, stored, res, upper, lower, share, top = run("-0.4")
+res_minus = res
 n = int(res["nodes_slid_above_one"])
 print("Delta -0.4: %d nodes slid at mu > 1 by the peak (bounds %d..%d), area %.4f" % (n, lower.sum(), upper.sum(),
                                                                                      res["area_slid_above_one"]))
@@ -67,4 +68,20 @@ print("Delta +0.2: %d nodes slid at mu > 1 by the peak (local mu_s up to %.3g, %
       % (res["nodes_slid_above_one"], top, upper.sum()))
 assert top > 1.19 and res["nodes_slid_above_one"] == 0 and upper.sum() == 0 and res["area_slid_above_one"] == 0, res
 assert "slid at mu > 1 before the peak" not in out and "local mu_s up to 1.2, 0 nodes (0 % of the area) slid at mu > 1" in out, out
+# A sweep of the same points stores each run's flag in /realisations (format version 5): the same
+# counts and shares as the single runs, and its run lines name the flutter where there is one.
+path = os.path.join(work, "flutter_flag_sweep.h5")
+command = [driver, "-fem_nx", "10", "-fem_ny", "10", "-fem_nz", "2", "-grading_profile", "linear",
+           "-grading_property", "friction", "-ensemble_delta", "-0.4,0.2", "-friction_observables", "mu_s",
+           "-output", path, "-output_overwrite"]
+r = subprocess.run(command, env=env, capture_output=True, text=True)
+if r.returncode != 0:
+    sys.exit("sweep failed (%d): %s\n%s" % (r.returncode, " ".join(command), r.stdout + r.stderr))
+with h5py.File(path, "r") as f:
+    nodes = f["realisations/nodes_slid_above_one"][:, 0]
+    areas = f["realisations/area_slid_above_one"][:, 0]
+    assert f.attrs["format_version"] == 5, f.attrs["format_version"]
+print("sweep: nodes slid at mu > 1 per point %s, area %s" % (list(nodes), list(areas)))
+assert list(nodes) == [n, 0] and areas[0] == res_minus["area_slid_above_one"] and areas[1] == 0, (nodes, areas)
+assert ("flutter: %d nodes slid at mu > 1 before the peak" % n) in r.stdout and r.stdout.count("flutter:") == 1, r.stdout
 print("flutter flag OK")

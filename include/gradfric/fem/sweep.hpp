@@ -14,6 +14,7 @@
 #include "gradfric/campaign/realisation_options.hpp"
 #include "gradfric/core/study_table.hpp"
 #include "gradfric/fem/parameters.hpp"
+#include "gradfric/fem/simulation.hpp"
 #include "gradfric/io/hdf5_attributes.hpp"
 #include "gradfric/io/results_file.hpp"
 #include "gradfric/physics/grading.hpp"
@@ -73,6 +74,10 @@ study::StudyBar femStudyBar(const RunParameters& record, const campaign::SweepPo
 // Writes each point's bars as the statistics' mu_s and mu_k discretisation columns: a sweep's file
 // and a single run's (one point) alike.
 void writeErrorBars(io::ResultsFile& file, const FemSweep& s);
+
+// A run's task record for the campaign file (a sweep's point, or a single run's one): its
+// observer's summary and history, and its flutter flag (the nodes that slid at mu > 1).
+io::TaskOutput taskOutputOf(const FemRunResult& run);
 
 // Whether the user fixed the length of the runs (-fem_slide_time given, or -fem_stop_when_known
 // false): then a run may end before its peak is confirmed by design, not by accident.

@@ -22,6 +22,7 @@
 #include <functional>
 #include <string>
 #include <utility>
+#include <limits>
 #include <vector>
 
 namespace gradfric::io {
@@ -34,7 +35,8 @@ inline constexpr int kFormatVersion = 3;  // gradfric-sbm-ensemble
 // their centres in m) instead of block_column, block_row and map_side; no /sweep/sigma,
 // /sweep/sigma_kinetic or /realisations/redrawn_blocks; a single run stores its samples alone
 // (history capacity = its length) and no /sweep/reference_point or relative statistics.
-inline constexpr int kFemFormatVersion = 4;  // gradfric-fem-sweep, gradfric-fem-run
+// 5: /realisations/nodes_slid_above_one and area_slid_above_one (the flutter flag of each run).
+inline constexpr int kFemFormatVersion = 5;  // gradfric-fem-sweep, gradfric-fem-run
 inline constexpr const char* kFormatName = "gradfric-sbm-ensemble";
 // The same layout filled by a sweep of finite-element runs (gradfric-fem, one run per point).
 inline constexpr const char* kFemSweepFormatName = "gradfric-fem-sweep";
@@ -109,6 +111,10 @@ struct TaskOutput {
   double endTime = 0.0;
   std::int64_t steps = 0;
   int redrawnBlocks = 0;
+  // The FEM's bottom nodes that slid at mu(theta) > 1 before the peak, and their share of the
+  // contact area (docs/flutter.md); -1 and NaN: not measured (a law without state).
+  std::int64_t nodesSlidAboveOne = -1;
+  double areaSlidAboveOne = std::numeric_limits<double>::quiet_NaN();
   std::vector<double> firstSlipTime;  // N_b x N_b or empty
   std::vector<double> localStatic, localKinetic;  // mu_s,i and mu_k,i, N_b x N_b (frictionFields)
   std::vector<double> snapshotTime;   // actual time of each snapshot taken (<= S)
