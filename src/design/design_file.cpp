@@ -310,7 +310,7 @@ void printDesign(MPI_Comm comm, const Problem& problem, const SearchResult& resu
                         runs.femReused > 0 ? (", " + std::to_string(runs.femReused) + " more taken from -design_reuse").c_str() : "",
                         runs.realisations, wallSeconds));
   else
-    GF_CALL(PetscPrintf(comm, "  %ld realisations run (the verification and any reference plate included), %.1f s wall\n",
+    GF_CALL(PetscPrintf(comm, "  %ld realisations run (the verification, any reference plate and any variants included), %.1f s wall\n",
                         runs.realisations, wallSeconds));
   GF_CALL(PetscPrintf(comm, "design file: %s\n", path.c_str()));
 }

@@ -28,8 +28,8 @@
 
 namespace gradfric::design {
 
-// What a design ran: spring-block realisations (the verification, the reference plate and the
-// model-form ensemble included) and FEM runs.
+// What a design ran: spring-block realisations (the verification, the reference plate, the
+// model-form ensemble and the variants included) and FEM runs.
 struct RunCounts {
   long realisations = 0;
   long femRuns = 0;
