@@ -1,6 +1,7 @@
 // The designer's spring-block variants (include/gradfric/design/variants.hpp).
 #include "gradfric/design/variants.hpp"
 
+#include "gradfric/core/broadcast.hpp"
 #include "gradfric/core/input_error.hpp"
 #include "gradfric/core/petsc_call.hpp"
 #include "gradfric/design/evaluator.hpp"
@@ -44,21 +45,20 @@ std::vector<std::pair<std::string, std::string>> readOptionsFile(MPI_Comm comm, 
   int rank = 0;
   GF_CALL_MPI(MPI_Comm_rank(comm, &rank));
   std::string text;
-  long size = -1;  // -1: no such file
+  int exists = 0;
   if (rank == 0) {
     std::ifstream in(file);
     if (in) {
       std::stringstream all;
       all << in.rdbuf();
       text = all.str();
-      size = static_cast<long>(text.size());
+      exists = 1;
     }
   }
-  GF_CALL_MPI(MPI_Bcast(&size, 1, MPI_LONG, 0, comm));
-  if (file.empty() || size < 0)
+  GF_CALL_MPI(MPI_Bcast(&exists, 1, MPI_INT, 0, comm));
+  if (file.empty() || !exists)
     throw InputError(kOption, file.empty() ? "(an empty item)" : file, std::string(kAllowed) + " that exist");
-  text.resize(static_cast<std::size_t>(size));
-  GF_CALL_MPI(MPI_Bcast(text.data(), static_cast<int>(size), MPI_CHAR, 0, comm));
+  broadcast(comm, text);
   // As the options files PETSc reads at start-up: -name [value] pairs, several on a line allowed.
   std::vector<std::pair<std::string, std::string>> options;
   std::stringstream lines(text);
@@ -81,14 +81,14 @@ std::vector<std::pair<std::string, std::string>> readOptionsFile(MPI_Comm comm, 
 }
 
 // A database with the scene's options (the global database without -options_file, whose values
-// it already holds, later ones winning) under the file's.
-PetscOptions sceneWithFile(MPI_Comm comm, const std::string& file) {
+// it already holds, later ones winning) under the variant's.
+PetscOptions sceneWith(const std::vector<std::pair<std::string, std::string>>& variant) {
   PetscOptions options = nullptr;
   GF_CALL(PetscOptionsCreate(&options));
   for (const auto& [name, value] : optionsOf(nullptr))
     if (name != "options_file" && name != "design_variants")
       GF_CALL(PetscOptionsSetValue(options, ("-" + name).c_str(), value.empty() ? nullptr : value.c_str()));
-  for (const auto& [name, value] : readOptionsFile(comm, file))
+  for (const auto& [name, value] : variant)
     GF_CALL(PetscOptionsSetValue(options, ("-" + name).c_str(), value.empty() ? nullptr : value.c_str()));
   return options;
 }
@@ -131,7 +131,7 @@ std::vector<SpringBlockVariant> readVariants(MPI_Comm comm, const std::vector<st
     if (!ignored.empty())
       GF_CALL(PetscPrintf(comm, "%s %s: %s not used (the design's -design_tolerance and -design_seed decide its ensembles)\n",
                           kOption, file.c_str(), ignored.c_str()));
-    const PushedOptions scene(sceneWithFile(comm, file));
+    const PushedOptions scene(sceneWith(set));  // the file read once, its -ensemble_* left out
     std::string unread;
     try {
       RunParameters record;
