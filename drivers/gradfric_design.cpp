@@ -84,12 +84,10 @@ int main(int argc, char** argv) {
     // plate), or with the FEM as the design's model, a spring-block ensemble.
     std::optional<FemVerification> fem;
     std::optional<Evaluation> otherSpringBlocks;
-    const Grading uniform = problem->referenceGrading();
     if (problem->model == "fem")
       otherSpringBlocks = springBlocks.evaluate(result.design.x, problem->tolerance, "model_form");
-    else if (problem->fem)
-      fem = runFemCheck(comm, *problem->fem, problem->gradingAt(result.design.x),
-                        problem->kind == TargetKind::Variation ? &uniform : nullptr);
+    else if (femRuns)
+      fem = femRuns->check(result.design.x);
     const double otherValue = fem ? femTargetValue(*problem, *fem) : otherSpringBlocks ? otherSpringBlocks->value : NAN;
     // The spring-block variants the designer names, paired with the verification (its streams).
     long variantRealisations = 0;
@@ -99,11 +97,8 @@ int main(int argc, char** argv) {
         designUncertainty(*problem, result, otherValue, designStudyBar(*problem, record, result.design.x), variants,
                           verification ? &*verification : nullptr);
     RunCounts runs{springBlocks.realisationsRun() + variantRealisations, 0};
-    if (problem->model == "fem") {
-      runs.femRuns = femRuns->realisationsRun() + (coarseRuns ? coarseRuns->realisationsRun() : 0);
-      runs.femReused = femRuns->runsReused() + (coarseRuns ? coarseRuns->runsReused() : 0);
-    }
-    if (fem) runs.femRuns += problem->kind == TargetKind::Variation ? 2 : 1;  // -design_verify_fem's runs
+    for (const auto* fe : {&femRuns, &coarseRuns})
+      if (*fe) runs.femRuns += (*fe)->realisationsRun(), runs.femReused += (*fe)->runsReused();
     double wall = MPI_Wtime() - start;
     MPI_Bcast(&wall, 1, MPI_DOUBLE, 0, comm);
     saveDesignFile(comm, plan, *problem, record, log, result, verification, fem, otherSpringBlocks, variants, uncertainty,

@@ -1,6 +1,7 @@
 // The design file and the printed result (include/gradfric/design/design_file.hpp).
 #include "gradfric/design/design_file.hpp"
 
+#include "gradfric/core/format.hpp"
 #include "gradfric/core/petsc_call.hpp"
 #include "gradfric/io/hdf5_attributes.hpp"
 #include "gradfric/io/hdf5_datasets.hpp"
@@ -68,7 +69,9 @@ std::pair<std::string, std::string> columnMeaning(const std::string& column, con
     return {"1", "hexahedra along " + column.substr(4) + " of the FEM run's mesh"};
   if (column == "fem_reference_mu_s")
     return {"1", "the FEM's non-graded plate's mu_s on the run's mesh (the reference of its variation; NaN: none)"};
-  if (column == "reused") return {"1", "1 if the FEM run was taken from an earlier design file (-design_reuse), not run"};
+  if (column == "reused" || column == "reference_reused")
+    return {"1", std::string("1 if the FEM run") + (column == "reused" ? "" : " of the non-graded plate") +
+                     " was taken from -design_reuse (an earlier design file or the study table), not run"};
   return {"", column};
 }
 
@@ -148,11 +151,8 @@ void printUncertainty(MPI_Comm comm, const Problem& problem, const DesignUncerta
   line("discretisation", u.discretisation, u.discretisationNote);
   line("model form", u.modelForm, u.modelFormNote);
   if (!problem.variants.empty()) {  // a variant per line
-    std::string note = u.variantsNote;
-    for (std::size_t at = note.find(';'); at != std::string::npos; at = note.find(';', at))
-      note.replace(at, 1, "\n                   ");
-    const std::size_t first = note.find(": ");
-    if (first != std::string::npos) note.replace(first, 2, ":\n                    ");
+    std::string note;
+    for (const std::string& l : u.variantLines) note += (note.empty() ? "" : "\n                    ") + l;
     line("variants", u.variants, note);
   }
   line("combined", u.combined, u.combinedNote);
@@ -228,12 +228,14 @@ void saveDesignFile(MPI_Comm comm, const io::OutputPlan& plan, const Problem& pr
     study::LadderTable t;
     t.name = "fem_verification";
     for (const auto& option : io::optionAttributes(problem.fem->record)) t.texts.emplace_back(option.name, option.value);
-    t.columns = {{"mu_s", {fem->muStatic}}, {"peak_confirmed", {fem->peakConfirmed ? 1.0 : 0.0}},
-                 {"cells", {double(fem->cells)}}, {"nodes_slid_above_one", {double(fem->flutter.nodes)}},
-                 {"area_slid_above_one", {fem->flutter.areaFraction}}};
-    if (problem.kind == TargetKind::Variation)
-      t.columns.insert(t.columns.end(), {{"reference_mu_s", {fem->referenceMuStatic}},
-                                         {"reference_peak_confirmed", {fem->referenceConfirmed ? 1.0 : 0.0}}});
+    const FemRun& r = fem->design;
+    t.columns = {{"mu_s", {r.muStatic}}, {"peak_confirmed", {r.peakConfirmed ? 1.0 : 0.0}},
+                 {"cells", {double(fem->cells)}}, {"nodes_slid_above_one", {double(r.flutter.nodes)}},
+                 {"area_slid_above_one", {r.flutter.areaFraction}}, {"reused", {r.reused ? 1.0 : 0.0}}};
+    if (fem->reference)
+      t.columns.insert(t.columns.end(), {{"reference_mu_s", {fem->reference->muStatic}},
+                                         {"reference_peak_confirmed", {fem->reference->peakConfirmed ? 1.0 : 0.0}},
+                                         {"reference_reused", {fem->reference->reused ? 1.0 : 0.0}}});
     t.columns.push_back({"value", {uncertainty.otherValue}});
     file.ladders.push_back(t);
   }
@@ -284,15 +286,20 @@ void printDesign(MPI_Comm comm, const Problem& problem, const SearchResult& resu
   if (fem) {
     char femValue[32] = "";
     if (std::isfinite(uncertainty.otherValue)) std::snprintf(femValue, sizeof femValue, "%.6f", uncertainty.otherValue);
-    GF_CALL(PetscPrintf(comm, "  %-13s %4s %12s %26s %12.6f%s   (%d hexahedra, %.1f s)\n", "FEM", "1", femValue, "",
-                        fem->muStatic, fem->peakConfirmed ? "" : " (peak not confirmed)", fem->cells, fem->wallSeconds));
-    if (problem.kind == TargetKind::Variation)
-      GF_CALL(PetscPrintf(comm, "  %-13s %4s %12s %26s %12.6f%s   (the FEM's non-graded plate, %.1f s)\n", "FEM, uniform", "1",
-                          "", "", fem->referenceMuStatic, fem->referenceConfirmed ? "" : " (peak not confirmed)",
-                          fem->referenceWallSeconds));
+    // A run taken from -design_reuse says so in place of its time.
+    const auto source = [](const FemRun& r) {
+      return r.reused ? std::string("taken from -design_reuse") : formatNumber("%.1f s", r.wallSeconds);
+    };
+    GF_CALL(PetscPrintf(comm, "  %-13s %4s %12s %26s %12.6f%s   (%d hexahedra, %s)\n", "FEM", "1", femValue, "",
+                        fem->design.muStatic, fem->design.peakConfirmed ? "" : " (peak not confirmed)", fem->cells,
+                        source(fem->design).c_str()));
+    if (fem->reference)
+      GF_CALL(PetscPrintf(comm, "  %-13s %4s %12s %26s %12.6f%s   (the FEM's non-graded plate, %s)\n", "FEM, uniform", "1",
+                          "", "", fem->reference->muStatic, fem->reference->peakConfirmed ? "" : " (peak not confirmed)",
+                          source(*fem->reference).c_str()));
   }
   // The FEM's value at the design rests on an ill-posed interface where nodes slid at mu > 1.
-  const FlutterExposure exposed = problem.model == "fem" ? d.flutter : fem ? fem->flutter : FlutterExposure{};
+  const FlutterExposure exposed = problem.model == "fem" ? d.flutter : fem ? fem->design.flutter : FlutterExposure{};
   if (exposed.nodes > 0)
     GF_CALL(PetscPrintf(comm,
                         "  flutter: %ld FEM nodes (%.3g %% of the area) slid at mu > 1 before the peak at the design, so "

@@ -33,29 +33,16 @@ void checkFemCheck(const FemCheck& check, const std::vector<Grading>& corners) {
   }
 }
 
-FemVerification runFemCheck(MPI_Comm comm, const FemCheck& check, const Grading& grading, const Grading* reference) {
-  FemVerification v;
-  {
-    fem::PlateModel model(comm, check.parameters, grading);
-    const double start = MPI_Wtime();
-    const fem::FemRunResult r = fem::runPlateExperiment(model);
-    v.muStatic = r.friction.muStatic;
-    v.peakConfirmed = r.friction.peakConfirmed;
-    v.wallSeconds = MPI_Wtime() - start;
-    if (r.resolution.applies) {
-      v.flutter = {r.resolution.aboveOne.nodes, r.resolution.aboveOne.areaFraction};
-    }
-  }
-  if (reference) {
-    fem::PlateModel model(comm, check.parameters, *reference);
-    const double start = MPI_Wtime();
-    const fem::FemRunResult r = fem::runPlateExperiment(model);
-    v.referenceMuStatic = r.friction.muStatic;
-    v.referenceConfirmed = r.friction.peakConfirmed;
-    v.referenceWallSeconds = MPI_Wtime() - start;
-  }
-  v.cells = check.parameters.nx * check.parameters.ny * check.parameters.nz;
-  return v;
+FemRun runFemPlate(MPI_Comm comm, const FemCheck& check, const Grading& grading) {
+  fem::PlateModel model(comm, check.parameters, grading);
+  const double start = MPI_Wtime();
+  const fem::FemRunResult r = fem::runPlateExperiment(model);
+  FemRun run;
+  run.muStatic = r.friction.muStatic;
+  run.peakConfirmed = r.friction.peakConfirmed;
+  run.wallSeconds = MPI_Wtime() - start;
+  if (r.resolution.applies) run.flutter = {r.resolution.aboveOne.nodes, r.resolution.aboveOne.areaFraction};
+  return run;
 }
 
 }  // namespace gradfric::design

@@ -3,7 +3,9 @@
 
 #include "gradfric/core/broadcast.hpp"
 #include "gradfric/core/input_error.hpp"
+#include "gradfric/core/study_table.hpp"
 #include "gradfric/design/problem.hpp"
+#include "gradfric/design/uncertainty.hpp"
 #include "gradfric/io/hdf5_attributes.hpp"
 #include "gradfric/io/hdf5_datasets.hpp"
 #include "gradfric/io/hdf5_handle.hpp"
@@ -13,6 +15,8 @@
 #include <cmath>
 #include <fstream>
 #include <map>
+#include <sstream>
+#include <stdexcept>
 
 namespace gradfric::design {
 
@@ -33,10 +37,51 @@ std::vector<double> column(hid_t group, const std::string& name, const std::stri
   return io::readAll<double>(d, H5T_NATIVE_DOUBLE);
 }
 
-// Rank 0: the runs of one file, flattened, or a reason it cannot serve.
-std::vector<double> readFile(const std::string& path, const Problem& problem, const RunParameters& record) {
-  if (!std::ifstream(path)) throw std::runtime_error(path + " cannot be read");
-  if (H5Fis_hdf5(path.c_str()) <= 0) throw std::runtime_error(path + " is not an HDF5 file");
+void addRun(std::vector<double>* runs, const std::array<double, 3>& mesh, bool reference, double mu, double nodes,
+            double area, const std::vector<double>& x) {
+  runs->insert(runs->end(), {mesh[0], mesh[1], mesh[2], reference ? 1.0 : 0.0, mu, nodes, area, double(x.size())});
+  runs->insert(runs->end(), x.begin(), x.end());
+}
+
+// Rank 0: the rows of a FEM study table that stand for runs of this design: mu_s rows whose
+// scene is the scene of the design's plate at the row's grading amplitude, or of its non-graded
+// plate (the same key the design's study bar is looked up by).
+std::vector<double> readTable(const std::string& path, const std::string& text, const Problem& problem,
+                              const RunParameters& record) {
+  if (problem.free.size() != 1 || problem.free[0].name != "grading_delta")
+    throw std::runtime_error(path + " is a study table, whose rows serve a design of grading_delta alone, not of " +
+                             problem.free[0].name + (problem.free.size() > 1 ? ",..." : ""));
+  const std::vector<study::StudyRow> rows = study::parseStudyTable(text, path);
+  const study::SceneKey uniform = designRunScene(problem, record, problem.referenceGrading(), true);
+  std::vector<double> runs;
+  for (const study::StudyRow& row : rows) {
+    if (row.observable != "mu_s" || row.mesh.size() != 3 || row.stdError != 0) continue;
+    const std::array<double, 3> mesh{double(row.mesh[0]), double(row.mesh[1]), double(row.mesh[2])};
+    double delta = 0.0;
+    for (const auto& [name, value] : row.scene)
+      if (name == "grading_delta") delta = std::stod(value);
+    if (study::sameScene(row.scene, designRunScene(problem, record, problem.gradingAt({delta}), true)))
+      addRun(&runs, mesh, false, row.value, -1, 0, {delta});
+    if (study::sameScene(row.scene, uniform)) addRun(&runs, mesh, true, row.value, -1, 0, {});
+  }
+  return runs;
+}
+
+// Rank 0: the runs of one file (a design file or a study table; "study": the FEM study table the
+// bars come from), flattened, or a reason it cannot serve.
+std::vector<double> readFile(const std::string& name, const Problem& problem, const RunParameters& record) {
+  const std::string path = name == "study" ? study::studyTablePath("fem_study.tsv") : name;
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error(path + " cannot be read");
+  if (H5Fis_hdf5(path.c_str()) <= 0) {
+    std::ostringstream text;
+    text << in.rdbuf();
+    try {
+      return readTable(path, text.str(), problem, record);
+    } catch (const std::invalid_argument& e) {
+      throw std::runtime_error(path + " is neither a design file (HDF5) nor a study table (" + e.what() + ")");
+    }
+  }
   io::H5File file(GF_H5(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT)));
   std::map<std::string, std::string> stored;
   for (const auto& [name, value] : io::readStringAttributes(file)) stored[name] = value;
@@ -60,10 +105,7 @@ std::vector<double> readFile(const std::string& path, const Problem& problem, co
     }
   std::vector<double> runs;
   const auto add = [&](const std::array<double, 3>& mesh, bool reference, double mu, double nodes, double area,
-                       const std::vector<double>& x) {
-    runs.insert(runs.end(), {mesh[0], mesh[1], mesh[2], reference ? 1.0 : 0.0, mu, nodes, area, double(x.size())});
-    runs.insert(runs.end(), x.begin(), x.end());
-  };
+                       const std::vector<double>& x) { addRun(&runs, mesh, reference, mu, nodes, area, x); };
   {
     io::H5Group group(GF_H5(H5Gopen2(file, "evaluations", H5P_DEFAULT)));
     const std::string where = path + ":/evaluations";
@@ -108,7 +150,8 @@ std::vector<KnownFemRun> readKnownFemRuns(MPI_Comm comm, const std::vector<std::
   for (const std::string& p : paths) list += (list.empty() ? "" : ",") + p;
   if (!failure.empty())  // every rank alike: a bad input, before any work
     throw InputError("-design_reuse", list,
-                     "design files of -design_model fem with the same scene and FEM options (" + failure + ")");
+                     "design files of -design_model fem with the same scene and FEM options, or FEM study tables (" +
+                         failure + ")");
   broadcast(comm, flat);
   std::vector<KnownFemRun> runs;
   for (std::size_t i = 0; i + kFields <= flat.size();) {

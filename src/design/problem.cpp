@@ -167,8 +167,10 @@ std::optional<Problem> readProblem(MPI_Comm comm, RunParameters* record) {
                                   "fem with -design_coarse_mesh: at most this many runs on the -fem_* mesh (secant steps "
                                   "from the coarse design)");
   const std::string reuse = o.text("reuse", "",
-                                   "fem: earlier design files (comma-separated) of the same scene and FEM options whose "
-                                   "runs are taken instead of run again (a run is deterministic: the same numbers)");
+                                   "fem, verify_fem: FEM runs taken instead of run again, comma-separated: earlier design "
+                                   "files of -design_model fem with the same scene and FEM options (the same bits), or "
+                                   "study tables (study: the FEM study table the bars come from; its rows keep 6 "
+                                   "decimals)");
   const std::string variants =
       o.text("variants", "",
              "sbm: spring-block variants to run at the design (a friction law, a calibration), comma-separated options "
@@ -208,9 +210,10 @@ std::optional<Problem> readProblem(MPI_Comm comm, RunParameters* record) {
   if (verifyFem || model == "fem" || helpRequested()) s.fem = readFemCheck(comm, plate);
   if (helpRequested()) return std::nullopt;
   if (!reuse.empty()) s.reuse = splitNames(reuse);
-  if (model != "fem" && !s.reuse.empty())
+  if (model != "fem" && !verifyFem && !s.reuse.empty())
     throw InputError(o.fullName("reuse"), reuse,
-                     "only with -design_model fem (a spring-block evaluation is an ensemble of seconds, run again)");
+                     "only with -design_model fem or -design_verify_fem (a spring-block evaluation is an ensemble of "
+                     "seconds, run again)");
   if (!variants.empty()) {
     if (model == "fem")
       throw InputError(o.fullName("variants"), variants,

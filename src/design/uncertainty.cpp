@@ -16,7 +16,14 @@ study::StudyBar designStudyBar(const Problem& problem, const RunParameters& reco
       bar.why = "the free parameter " + f.name + " is a field's, whose design point the study tables are not searched for";
       return bar;
     }
-  const Grading g = problem.gradingAt(x);
+  const bool fem = problem.model == "fem";
+  const study::SceneKey key = designRunScene(problem, record, problem.gradingAt(x), fem);
+  if (!fem) return study::studyBar("sbm_study.tsv", "mu_s", key, {problem.parameters.blocksPerSide});
+  const fem::FemParameters& q = problem.fem->parameters;
+  return study::studyBar("fem_study.tsv", "mu_s", key, {q.nx, q.ny, q.nz});
+}
+
+study::SceneKey designRunScene(const Problem& problem, const RunParameters& record, const Grading& g, bool fem) {
   campaign::SweepPoint point;
   point.delta = g.delta;
   point.property = toString(g.property);
@@ -25,29 +32,27 @@ study::StudyBar designStudyBar(const Problem& problem, const RunParameters& reco
   point.sigma = problem.parameters.surface.sigmaStatic;
   point.sigmaKinetic = problem.parameters.surface.sigmaKinetic;
   study::SceneKey key = study::sceneKey(record, {"-sbm_N"}, &point);
-  const bool fem = problem.model == "fem";
-  // The design's own options choose where to look, not what a run at x computes; with the FEM,
-  // the spring blocks' options do not enter its run, and its own (-fem_*) come from its record.
+  // The design's own options choose where to look, not what a run computes; in the FEM, the
+  // spring blocks' options do not enter its run, and its own (-fem_*) come from its record.
   key.erase(std::remove_if(key.begin(), key.end(),
                            [&](const auto& kv) {
                              return kv.first.rfind("design_", 0) == 0 ||
                                     (fem && (kv.first.rfind("sbm_", 0) == 0 || kv.first.rfind("surface_", 0) == 0));
                            }),
             key.end());
-  if (!fem) return study::studyBar("sbm_study.tsv", "mu_s", key, {problem.parameters.blocksPerSide});
-  const fem::FemParameters& q = problem.fem->parameters;
+  if (!fem) return key;
   for (const auto& kv : study::sceneKey(problem.fem->record, {"-fem_nx", "-fem_ny", "-fem_nz"}))
     if (kv.first.rfind("fem_", 0) == 0 || kv.first.rfind("surface_", 0) == 0) key.push_back(kv);
   std::sort(key.begin(), key.end());
-  return study::studyBar("fem_study.tsv", "mu_s", key, {q.nx, q.ny, q.nz});
+  return key;
 }
 
 double femTargetValue(const Problem& problem, const FemVerification& fem) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  if (!fem.peakConfirmed) return nan;
-  if (problem.kind == TargetKind::Absolute) return fem.muStatic;
-  if (!fem.referenceConfirmed || !(fem.referenceMuStatic > 0)) return nan;
-  return fem.muStatic / fem.referenceMuStatic - 1.0;
+  if (!fem.design.peakConfirmed) return nan;
+  if (problem.kind == TargetKind::Absolute) return fem.design.muStatic;
+  if (!fem.reference || !fem.reference->peakConfirmed || !(fem.reference->muStatic > 0)) return nan;
+  return fem.design.muStatic / fem.reference->muStatic - 1.0;
 }
 
 DesignUncertainty designUncertainty(const Problem& problem, const SearchResult& result, double otherValue,
@@ -104,22 +109,26 @@ DesignUncertainty designUncertainty(const Problem& problem, const SearchResult& 
     u.variantsNote = "not measured: no -design_variants";
   else {
     const Evaluation& ref = reference ? *reference : d;
-    u.variantsNote = "against the " + std::string(reference ? "verification's " : "design's ") + formatNumber("%.6f", ref.value) + ":";
+    u.variantLines.push_back("against the " + std::string(reference ? "verification's " : "design's ") +
+                             formatNumber("%.6f", ref.value) + ":");
     if (slope) u.variants = {x, x};
     for (std::size_t k = 0; k < variants.size(); ++k) {
       const Evaluation& v = variants[k];
-      u.variantsNote += std::string(k ? ";" : "") + " " + problem.variants[k].file + " (" + problem.variants[k].options +
-                        ") " + formatNumber("%.6f", v.value) + " [" + formatNumber("%.6f", v.ciLow) + ", " +
-                        formatNumber("%.6f", v.ciHigh) + "] (" + formatNumber("%+.6f", v.value - ref.value) + ")";
+      std::string line = problem.variants[k].file + " (" + problem.variants[k].options + ") " +
+                         formatNumber("%.6f", v.value) + " [" + formatNumber("%.6f", v.ciLow) + ", " +
+                         formatNumber("%.6f", v.ciHigh) + "] (" + formatNumber("%+.6f", v.value - ref.value) + ")";
       double reach = std::numeric_limits<double>::quiet_NaN();
       if (slope) {
         reach = x - (v.value - ref.value) / result.slope;
         const double spread = v.halfWidth() / std::fabs(result.slope);
         u.variants = {std::min(u.variants.low, reach - spread), std::max(u.variants.high, reach + spread)};
-        u.variantsNote += ", reaches it at " + formatNumber("%.6g", reach);
+        line += ", reaches it at " + formatNumber("%.6g", reach);
       }
+      u.variantLines.push_back(line);
       u.variantX.push_back(reach);
     }
+    for (std::size_t k = 0; k < u.variantLines.size(); ++k)
+      u.variantsNote += (k > 1 ? "; " : k ? " " : "") + u.variantLines[k];
   }
 
   // Combined: the model-form and variant intervals (or the design) widened by the other half-widths, added.

@@ -95,6 +95,31 @@ def main(argv):
             ka = {k: text(v) for k, v in a.attrs.items() if k not in skip}
             kb = {k: text(v) for k, v in b.attrs.items() if k not in skip}
             assert ka == kb, set(ka.items()) ^ set(kb.items())
+    elif check == "table_reused":
+        # A design that took study-table rows against its fresh run: each row taken is the fresh
+        # design's run at that point to 6 decimals (both are gradfric-fem's runs), the decoy row of
+        # another scene is taken nowhere, and the design follows the fresh one to the rows' precision.
+        rows = {}
+        for line in open(argv[4]):
+            if not line.startswith("#"):
+                _, mesh, value, _, _, scene = line.rstrip("\n").split("\t")
+                rows[(mesh, scene)] = float(value)
+        with h5py.File(argv[2], "r") as a, h5py.File(argv[3], "r") as b:
+            ea, eb = a["evaluations"], b["evaluations"]
+            taken = int(text(a.attrs["fem_runs_reused"]))
+            assert taken == 4 and int(text(a.attrs["fem_runs"])) + taken == int(text(b.attrs["fem_runs"])), taken
+            assert len(ea["mu_s"]) == len(eb["mu_s"])
+            for i in range(len(ea["mu_s"])):
+                mesh = "%dx%dx%d" % (ea["fem_nx"][i], ea["fem_ny"][i], ea["fem_nz"][i])
+                x = ea["x_grading_delta"][i]
+                assert abs(x - eb["x_grading_delta"][i]) < 1e-5 and abs(ea["value"][i] - eb["value"][i]) < 1e-5, i
+                assert ea["mu_s"][i] != 0.5 and ea["fem_reference_mu_s"][i] == rows[(mesh, "-")], i
+                if ea["reused"][i]:
+                    scene = "-" if x == 0 else "grading_delta=%g,grading_profile=linear,grading_property=friction" % x
+                    assert ea["mu_s"][i] == rows[(mesh, scene)] == round(eb["mu_s"][i], 6), (i, ea["mu_s"][i])
+            assert int(ea["reused"][()].sum()) == 2  # -0.4 and 0 on the coarse mesh
+            assert abs(a["design/x_grading_delta"][0] - b["design/x_grading_delta"][0]) < 1e-5
+        print(f"{taken} rows taken; the design follows the fresh one to the rows' 6 decimals")
     elif check == "femrun":
         # A FEM design against gradfric-fem's own run at its parameter: the same mu_s bit for bit,
         # within the tolerance of the target; with a coarse search, its fine runs last and few.

@@ -191,11 +191,45 @@ fem_model)
   run 5 1 "$work/r3.log" "${reuse_args[@]}" -design_target -0.06 -output "$work/r3.h5"
   grep -q "more taken from -design_reuse" "$work/r2.log" || { cat "$work/r2.log" >&2; fail "no run reused"; }
   "$python" "$checker" reused "$work/r2.h5" "$work/r3.h5" || fail "a design with reused runs differs from its fresh run"
+  # -design_reuse of a study table: rows of gradfric-fem's own runs (6 decimals, as the study
+  # writes them) stand for the runs of their scene; a row of another scene (plate_E) is passed
+  # over. The design takes the bracket's end -0.4, Delta 0 and the non-graded plates on both meshes
+  # and follows the fresh design to the 6th decimal. A spring-block design's FEM check takes its
+  # non-graded plate from the same table.
+  fem_mu_s() {  # nx ny nz [options]: gradfric-fem's mu_s with 6 decimals
+    local nx=$1 ny=$2 nz=$3
+    shift 3
+    "$fem" -fem_nx "$nx" -fem_ny "$ny" -fem_nz "$nz" -friction_observables mu_s "$@" -output "$work/row.h5" \
+      -output_overwrite >"$work/row.log" 2>&1 || { cat "$work/row.log" >&2; fail "gradfric-fem for a table row"; }
+    "$python" -c "import h5py,sys; print('%.6f' % h5py.File(sys.argv[1])['realisations/mu_s'][0, 0])" "$work/row.h5"
+  }
+  graded=(-grading_profile linear -grading_property friction -grading_delta -0.4)
+  {
+    printf '# a study table of the test\n'
+    printf 'mu_s\t8x8x1\t%s\t0\t0\tgrading_delta=-0.4,grading_profile=linear,grading_property=friction\n' "$(fem_mu_s 8 8 1 "${graded[@]}")"
+    printf 'mu_s\t8x8x1\t%s\t0\t0\t-\n' "$(fem_mu_s 8 8 1)"
+    printf 'mu_s\t16x16x2\t%s\t0\t0\t-\n' "$(fem_mu_s 16 16 2)"
+    printf 'mu_s\t8x8x1\t0.5\t0\t0\tgrading_delta=-0.4,grading_profile=linear,grading_property=friction,plate_E=2e7\n'
+  } >"$work/table.tsv"
+  run 5 1 "$work/r4.log" "${reuse_args[@]}" -design_target -0.06 -design_reuse "$work/table.tsv" -output "$work/r4.h5"
+  grep -q "4 more taken from -design_reuse" "$work/r4.log" || { cat "$work/r4.log" >&2; fail "not 4 rows taken"; }
+  "$python" "$checker" table_reused "$work/r4.h5" "$work/r3.h5" "$work/table.tsv" || fail "a design with table rows"
+  run 0 1 "$work/v.log" "${scene[@]}" -sbm_N 12 -design_target_type variation -design_target -0.06 -design_verify_fem \
+    -fem_nx 16 -fem_ny 16 -fem_nz 2 -design_reuse "$work/table.tsv" -output "$work/v.h5"
+  uniform16=$(awk -F'\t' '$2 == "16x16x2" && $6 == "-" {print $3}' "$work/table.tsv")
+  grep -q "^  FEM, uniform .* $uniform16   (the FEM's non-graded plate, taken from -design_reuse)" "$work/v.log" ||
+    { cat "$work/v.log" >&2; fail "the FEM check's non-graded plate not taken from the table"; }
+  "$python" -c "import h5py,sys; t=h5py.File(sys.argv[1])['fem_verification']; sys.exit(int(not (t['reference_reused'][0] == 1 and t['reused'][0] == 0)))" \
+    "$work/v.h5" || fail "the FEM check's record of what it took"
   # A file of another scene, of the spring blocks, or not a design file: refused, naming what differs.
   refused 1 -design_reuse "${reuse_args[@]}" -design_target -0.06 -design_reuse "$work/r1.h5" -plate_E 2e7
   grep -q "was run with -plate_E = " "$work/bad.log" || { cat "$work/bad.log" >&2; fail "the differing option not named"; }
   refused 1 -design_reuse "${scene[@]}" -design_target 0.86 -design_reuse "$work/r1.h5"
   refused 1 -design_reuse "${reuse_args[@]}" -design_target -0.06 -design_reuse "$work/r1.h5.log"
+  refused 1 -design_reuse "${reuse_args[@]}" -design_target -0.06 -design_reuse "$src/input/design_friction_delta.opts"
+  grep -q "neither a design file (HDF5) nor a study table" "$work/bad.log" || { cat "$work/bad.log" >&2; fail "a log taken for a table"; }
+  refused 1 -design_reuse -options_file "$src/input/design_E_mu_tao.opts" -sbm_N 12 "${fem_args[@]}" -design_reuse "$work/table.tsv"
+  grep -q "serve a design of grading_delta alone" "$work/bad.log" || { cat "$work/bad.log" >&2; fail "a table for two parameters"; }
   # Refused before any work: the FEM checking itself, a dispersed surface, a verification that
   # would repeat the same run, a coarse mesh without the FEM, of two numbers, or with TAO.
   refused 1 -design_verify_fem "${fem_args[@]}" -design_target 0.86 -design_verify_fem

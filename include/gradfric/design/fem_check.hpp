@@ -1,7 +1,7 @@
 #pragma once
-// -design_verify_fem: the design's surface in the finite-element model (gradfric-fem's library:
-// the same plate, grading and fields, the -fem_* mesh and numerics, a reduced mesh allowed), run
-// to its confirmed static peak and printed beside the spring-block values.
+// The design's FEM runs (gradfric-fem's library: the same plate, grading and fields, the -fem_*
+// mesh and numerics, a reduced mesh allowed), each to its confirmed static peak: the evaluations
+// of -design_model fem and the check of -design_verify_fem, both through FemEvaluator.
 #include "gradfric/core/options.hpp"
 #include "gradfric/design/flutter_exposure.hpp"
 #include "gradfric/fem/parameters.hpp"
@@ -9,8 +9,8 @@
 
 #include <mpi.h>
 
-#include <limits>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace gradfric::design {
@@ -27,20 +27,23 @@ std::shared_ptr<FemCheck> readFemCheck(MPI_Comm comm, const Plate& plate);
 // run, at each of `corners`.
 void checkFemCheck(const FemCheck& check, const std::vector<Grading>& corners);
 
-struct FemVerification {
+// One FEM run of a plate of the family to its confirmed static peak.
+struct FemRun {
   double muStatic = 0.0;
   bool peakConfirmed = false;
   double wallSeconds = 0.0;
-  int cells = 0;
   FlutterExposure flutter;  // the nodes that slid at mu(theta) > 1 before the peak
-  // The FEM's own non-graded plate, the reference of a variation target (else not run: NaN).
-  double referenceMuStatic = std::numeric_limits<double>::quiet_NaN();
-  bool referenceConfirmed = false;
-  double referenceWallSeconds = 0.0;
+  bool reused = false;      // taken from -design_reuse (a design file or the study table), not run
 };
 
-// Collective over comm. reference: the non-graded plate, run too when given (a variation target).
-FemVerification runFemCheck(MPI_Comm comm, const FemCheck& check, const Grading& grading,
-                            const Grading* reference = nullptr);
+// Collective over comm: the design's one way to run the FEM (evaluations and checks alike).
+FemRun runFemPlate(MPI_Comm comm, const FemCheck& check, const Grading& grading);
+
+// -design_verify_fem: the FEM at the spring blocks' design (FemEvaluator::check).
+struct FemVerification {
+  FemRun design;
+  std::optional<FemRun> reference;  // the FEM's own non-graded plate, of a variation target
+  int cells = 0;
+};
 
 }  // namespace gradfric::design

@@ -1,8 +1,12 @@
 #pragma once
-// FEM runs a design already has (-design_reuse): the evaluations of earlier design files of the
-// same scene, taken instead of running them again. A FEM run on an undispersed surface is
-// deterministic, so a run read back is the run: the design is the same, bit for bit, as if it
-// had run them (docs/design.md, "Reusing earlier runs").
+// FEM runs a design already has (-design_reuse), taken instead of running them again:
+// - the evaluations of earlier design files of the same scene: a FEM run on an undispersed
+//   surface is deterministic, so a run read back is the run, and the design is the same, bit for
+//   bit, as if it had run them;
+// - the rows of a FEM study table (docs/fem_study.tsv, "study" for the one the bars come from)
+//   whose scene is the design's plate at the row's grading amplitude, or its non-graded plate:
+//   those keep 6 decimals, so the design can differ from a fresh one in the 7th
+// (docs/design.md, "Reusing earlier runs").
 #include "gradfric/core/options.hpp"
 #include "gradfric/design/flutter_exposure.hpp"
 
@@ -24,11 +28,12 @@ struct KnownFemRun {
   FlutterExposure flutter;
 };
 
-// Collective: the FEM runs of the design files `paths` (read on rank 0, broadcast). Each file must
+// Collective: the FEM runs of the files `paths` (read on rank 0, broadcast). A design file must
 // be a design with -design_model fem of the same free parameters whose every option that a FEM
 // run depends on equals this run's (record): all but the -design_* (search, target, tolerance,
 // bounds), -sbm_* (the spring blocks' model-form check), the -fem_* mesh (a run keeps its own)
-// and the output options. Else InputError naming -design_reuse, the file and the first option
+// and the output options. A study table serves a design of grading_delta; its rows of other
+// scenes are passed over. Else InputError naming -design_reuse, the file and the first option
 // that differs, on every rank alike.
 std::vector<KnownFemRun> readKnownFemRuns(MPI_Comm comm, const std::vector<std::string>& paths, const Problem& problem,
                                           const RunParameters& record);

@@ -42,7 +42,8 @@ struct DesignUncertainty {
   std::string modelFormNote;       // the other model's value against the design's, or why not measured
   double otherValue = std::numeric_limits<double>::quiet_NaN();  // the other model's target quantity at the design
   ParameterInterval variants;
-  std::string variantsNote;        // each variant against the reference, or why not measured
+  std::string variantsNote;        // each variant against the reference, or why not measured (stored)
+  std::vector<std::string> variantLines;  // the same, the reference first, then one per variant (printed)
   std::vector<double> variantX;    // per variant: where it reaches the reference value (NaN: no slope)
   ParameterInterval combined;
   std::string combinedNote;        // which sources it holds
@@ -59,6 +60,11 @@ DesignUncertainty designUncertainty(const Problem& problem, const SearchResult& 
 // fem_study.tsv at the -fem_* mesh; the scene's options with the design's grading amplitude). A
 // field parameter's design point is not looked up: not measured, said so.
 study::StudyBar designStudyBar(const Problem& problem, const RunParameters& record, const std::vector<double>& x);
+
+// The study-table scene of one run of the design's family with grading g, in the FEM (fem) or
+// the spring blocks: the scene's options with g's, less the design's own. The key designStudyBar
+// looks up, and the one a study-table row must have to stand for a run (-design_reuse).
+study::SceneKey designRunScene(const Problem& problem, const RunParameters& record, const Grading& g, bool fem);
 
 // The FEM's value of the target's quantity: mu_s, or (mu_s - mu_s,0) / mu_s,0 against its own
 // non-graded run; NaN when a run did not confirm its peak.
