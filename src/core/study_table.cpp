@@ -218,6 +218,50 @@ StudyBar studyBar(const std::string& table, const std::string& observable, const
   }
 }
 
+StudyBar variationBar(const std::vector<StudyRow>& rows, const std::string& observable, const SceneKey& scene,
+                      const SceneKey& reference, const std::vector<int>& mesh) {
+  auto derived = std::make_shared<std::vector<StudyRow>>();
+  for (const StudyRow& r : rows) {
+    if (r.observable != observable || !sameScene(r.scene, scene)) continue;
+    const auto base = std::find_if(rows.begin(), rows.end(), [&](const StudyRow& b) {
+      return b.observable == observable && b.mesh == r.mesh && sameScene(b.scene, reference);
+    });
+    if (base == rows.end()) continue;  // a mesh the plate without the grading was not run on
+    if (r.stdError != 0 || base->stdError != 0) {
+      StudyBar bar;
+      bar.why = "the study's rows of this scene are ensembles (" + meshText(r.mesh) +
+                "): a ratio of two means has no row's standard error to judge its ladder by";
+      return bar;
+    }
+    StudyRow v = r;
+    v.value = r.value / base->value - 1.0;
+    derived->push_back(v);
+  }
+  if (derived->empty()) {
+    StudyBar bar = studyBar(rows, observable, scene, mesh);  // its reason: no rows, or another shape
+    bar.why = bar.ladder.empty() ? bar.why
+                                 : "the study holds none of this scene's meshes for the plate without the grading (" +
+                                       sceneText(reference) + ")";
+    bar.measured = bar.judged = false;
+    bar.ladder.clear();
+    return bar;
+  }
+  StudyBar bar = studyBar(*derived, observable, scene, mesh);
+  bar.derivedRows = std::move(derived);  // the ladder points into it
+  return bar;
+}
+
+StudyBar variationBar(const std::string& table, const std::string& observable, const SceneKey& scene,
+                      const SceneKey& reference, const std::vector<int>& mesh) {
+  try {
+    return variationBar(studyTable(table), observable, scene, reference, mesh);
+  } catch (const std::runtime_error& e) {
+    StudyBar bar;
+    bar.why = e.what();
+    return bar;
+  }
+}
+
 std::string ladderText(const StudyBar& bar) {
   std::string text;
   char value[32];

@@ -18,9 +18,13 @@ study::StudyBar designStudyBar(const Problem& problem, const RunParameters& reco
     }
   const bool fem = problem.model == "fem";
   const study::SceneKey key = designRunScene(problem, record, problem.gradingAt(x), fem);
-  if (!fem) return study::studyBar("sbm_study.tsv", "mu_s", key, {problem.parameters.blocksPerSide});
-  const fem::FemParameters& q = problem.fem->parameters;
-  return study::studyBar("fem_study.tsv", "mu_s", key, {q.nx, q.ny, q.nz});
+  const std::string table = fem ? "fem_study.tsv" : "sbm_study.tsv";
+  const std::vector<int> mesh = fem ? std::vector<int>{problem.fem->parameters.nx, problem.fem->parameters.ny,
+                                                       problem.fem->parameters.nz}
+                                    : std::vector<int>{problem.parameters.blocksPerSide};
+  if (problem.kind == TargetKind::Variation)  // the ladder of mu_s / mu_s,0 - 1 against the non-graded plate
+    return study::variationBar(table, "mu_s", key, designRunScene(problem, record, problem.referenceGrading(), fem), mesh);
+  return study::studyBar(table, "mu_s", key, mesh);
 }
 
 study::SceneKey designRunScene(const Problem& problem, const RunParameters& record, const Grading& g, bool fem) {
@@ -70,17 +74,17 @@ DesignUncertainty designUncertainty(const Problem& problem, const SearchResult& 
 
   const bool fem = problem.model == "fem";
   const std::string other = fem ? "the spring blocks" : "the FEM";
-  // Discretisation: the study's bar of the design model's mu_s (a variation's ladder is not judged).
-  if (problem.kind == TargetKind::Variation)
-    u.discretisationNote = "not measured: the study tables bar mu_s, not its relative variation";
-  else if (!bar.measured || !bar.verdict.bounded())
+  // Discretisation: the study's bar of the target's quantity (mu_s, or the variation's ladder).
+  const char* quantity = problem.kind == TargetKind::Variation ? "the variation" : "mu_s";
+  if (!bar.measured || !bar.verdict.bounded())
     u.discretisationNote = "not measured: " + (bar.why.empty() ? std::string("the ladder shows no convergence") : bar.why);
   else if (!slope)
-    u.discretisationNote = "+- " + formatNumber("%.3g", bar.verdict.uncertainty) + " on mu_s (no slope to map it: several parameters)";
+    u.discretisationNote = "+- " + formatNumber("%.3g", bar.verdict.uncertainty) + " on " + quantity +
+                           " (no slope to map it: several parameters)";
   else {
     discretisation = bar.verdict.uncertainty / std::fabs(result.slope);
     u.discretisation = {x - discretisation, x + discretisation};
-    u.discretisationNote = "+- " + formatNumber("%.3g", bar.verdict.uncertainty) + " on mu_s, " +
+    u.discretisationNote = "+- " + formatNumber("%.3g", bar.verdict.uncertainty) + " on " + quantity + ", " +
                            (fem ? "the FEM's" : "the spring blocks'") + " study bar";
   }
 

@@ -214,6 +214,9 @@ fem_model)
   run 5 1 "$work/r4.log" "${reuse_args[@]}" -design_target -0.06 -design_reuse "$work/table.tsv" -output "$work/r4.h5"
   grep -q "4 more taken from -design_reuse" "$work/r4.log" || { cat "$work/r4.log" >&2; fail "not 4 rows taken"; }
   "$python" "$checker" table_reused "$work/r4.h5" "$work/r3.h5" "$work/table.tsv" || fail "a design with table rows"
+  # A variation's discretisation is looked up as the ladder of the variation at the design's Delta.
+  grep -q "^    discretisation  not measured: no mu_s row of the study has this scene (grading_delta=-0.09" "$work/r4.log" ||
+    { cat "$work/r4.log" >&2; fail "the variation's study bar not looked up at the design"; }
   run 0 1 "$work/v.log" "${scene[@]}" -sbm_N 12 -design_target_type variation -design_target -0.06 -design_verify_fem \
     -fem_nx 16 -fem_ny 16 -fem_nz 2 -design_reuse "$work/table.tsv" -output "$work/v.h5"
   uniform16=$(awk -F'\t' '$2 == "16x16x2" && $6 == "-" {print $3}' "$work/table.tsv")

@@ -5,10 +5,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <stdexcept>
 #include <unistd.h>
+#include <vector>
 
 namespace {
 
@@ -57,6 +59,53 @@ TEST(StudyTable, WhatTheStudyDidNotRunIsNotMeasuredWithTheReason) {
   EXPECT_FALSE(studyBar(rows, "mu_s", parseSceneKey("friction_v_c=2e-4"), {100, 100, 10}).measured);
   EXPECT_FALSE(studyBar(rows, "mu_s", {}, {400, 400, 40}).measured) << "a mesh outside the ladder";
   EXPECT_FALSE(studyBar(rows, "mu_k", {}, {100, 100, 10}).measured) << "another observable";
+}
+
+// A variation's ladder: mu_s,h = 0.8 (1 + 0.3 h^2) graded and 1 + 0.1 h^2 without the grading, so
+// v_h = mu_s,h / mu_s0,h - 1 tends to -0.2 at second order. Its bar is the procedure's on the
+// ratios, and it holds the exact limit; a mesh the non-graded plate lacks is left out.
+TEST(StudyTable, AVariationIsJudgedOnTheLadderOfItsRatio) {
+  std::string table;
+  const auto row = [&](int n, double value, const std::string& scene) {
+    char line[160];
+    std::snprintf(line, sizeof line, "mu_s\t%dx%dx%d\t%.12f\t0\t0\t%s\n", n, n, n / 10, value, scene.c_str());
+    table += line;
+  };
+  const std::string graded = "grading_delta=0.2,grading_profile=linear,grading_property=friction";
+  for (const int n : {40, 80, 160, 320}) {
+    const double h = 10.0 / n;
+    row(n, 0.8 * (1 + 0.3 * h * h), graded);
+    if (n != 320) row(n, 1 + 0.1 * h * h, "-");
+  }
+  const auto rows = parseStudyTable(table, "test table");
+  const SceneKey scene = parseSceneKey(graded);
+  const StudyBar bar = variationBar(rows, "mu_s", scene, {}, {80, 80, 8});
+  ASSERT_TRUE(bar.measured) << bar.why;
+  ASSERT_EQ(bar.ladder.size(), 3u);  // 320 has no non-graded row
+  std::vector<StudyRow> ratios;
+  for (const StudyRow* r : bar.ladder) ratios.push_back(*r);
+  for (const StudyRow& r : ratios) {
+    const double h = 10.0 / r.mesh[0];
+    EXPECT_NEAR(r.value, 0.8 * (1 + 0.3 * h * h) / (1 + 0.1 * h * h) - 1, 1e-11);
+  }
+  EXPECT_EQ(bar.verdict.convergence, gradfric::verification::Convergence::Monotone);
+  EXPECT_NEAR(bar.verdict.value, ratios[1].value, 1e-15);
+  EXPECT_LE(std::fabs(bar.verdict.value - (-0.2)), bar.verdict.uncertainty);
+  // The same procedure as a mu_s ladder of those values: the bar is the ratio's, nothing added.
+  const StudyBar direct = studyBar(ratios, "mu_s", scene, {80, 80, 8});
+  EXPECT_EQ(direct.verdict.uncertainty, bar.verdict.uncertainty);
+  // A copy keeps its ladder (the derived rows are shared), and a stochastic row is refused.
+  const StudyBar copy = bar;
+  EXPECT_EQ(copy.ladder[0]->value, ratios[0].value);
+  auto noisy = rows;
+  noisy[0].stdError = 1e-3;
+  const StudyBar refused = variationBar(noisy, "mu_s", scene, {}, {80, 80, 8});
+  EXPECT_FALSE(refused.measured);
+  EXPECT_NE(refused.why.find("ensembles"), std::string::npos) << refused.why;
+  // Without the non-graded plate's rows: not measured, said so.
+  const StudyBar alone = variationBar(rows, "mu_s", scene, parseSceneKey("plate_E=2e7"), {80, 80, 8});
+  EXPECT_FALSE(alone.measured);
+  EXPECT_NE(alone.why.find("plate without the grading"), std::string::npos) << alone.why;
 }
 
 TEST(StudyTable, ARowThatDoesNotReadIsAnErrorNamingItsLine) {

@@ -9,6 +9,7 @@
 // PETSc-free.
 #include "gradfric/core/verification.hpp"
 
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -53,11 +54,22 @@ struct StudyBar {
   std::string why;                      // not measured: the reason
   std::vector<const StudyRow*> ladder;  // the rows of the run's scene and mesh shape
   verification::Verdict verdict;
+  // The rows a derived ladder points into (variationBar), shared by the bar's copies.
+  std::shared_ptr<const std::vector<StudyRow>> derivedRows;
 };
 
 // The bar of a run of `scene` on `mesh` for `observable` from the rows.
 StudyBar studyBar(const std::vector<StudyRow>& rows, const std::string& observable, const SceneKey& scene,
                   const std::vector<int>& mesh);
+
+// The bar of the relative variation phi / phi_0 - 1 of `scene` against `reference` (its plate
+// without the grading) on `mesh`: the ladder of that ratio on the meshes both scenes hold, judged
+// by the same procedure. Deterministic rows only: the ratio of two ensembles' means has no row's
+// standard error, so a stochastic row leaves it not measured, said so.
+StudyBar variationBar(const std::vector<StudyRow>& rows, const std::string& observable, const SceneKey& scene,
+                      const SceneKey& reference, const std::vector<int>& mesh);
+StudyBar variationBar(const std::string& table, const std::string& observable, const SceneKey& scene,
+                      const SceneKey& reference, const std::vector<int>& mesh);
 
 // For people, from the fields: "+- 0.77 % (monotone, observed order 1.69, Fs 1.25; ladder 50x50x5
 // 0.950239, ...)" or "not measured: <why>".

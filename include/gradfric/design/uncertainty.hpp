@@ -56,9 +56,10 @@ DesignUncertainty designUncertainty(const Problem& problem, const SearchResult& 
                                     const study::StudyBar& bar, const std::vector<Evaluation>& variants = {},
                                     const Evaluation* reference = nullptr);
 
-// The design model's study bar of mu_s at the design point x (sbm_study.tsv at the lattice N_b, or
-// fem_study.tsv at the -fem_* mesh; the scene's options with the design's grading amplitude). A
-// field parameter's design point is not looked up: not measured, said so.
+// The design model's study bar of the target's quantity at the design point x (sbm_study.tsv at the
+// lattice N_b, or fem_study.tsv at the -fem_* mesh; the scene's options with the design's grading
+// amplitude): of mu_s, or of a variation's ladder against the non-graded plate
+// (study::variationBar). A field parameter's design point is not looked up: not measured, said so.
 study::StudyBar designStudyBar(const Problem& problem, const RunParameters& record, const std::vector<double>& x);
 
 // The study-table scene of one run of the design's family with grading g, in the FEM (fem) or
