@@ -207,15 +207,26 @@ StudyBar studyBar(const std::vector<StudyRow>& rows, const std::string& observab
   return bar;
 }
 
-StudyBar studyBar(const std::string& table, const std::string& observable, const SceneKey& scene,
-                  const std::vector<int>& mesh) {
+namespace {
+
+// The bar `judge` gives from the rows of the table file `table`; a table that is not found gives
+// "not measured" naming where it was looked for.
+template <class Judge>
+StudyBar fromTable(const std::string& table, Judge&& judge) {
   try {
-    return studyBar(studyTable(table), observable, scene, mesh);
+    return judge(studyTable(table));
   } catch (const std::runtime_error& e) {
     StudyBar bar;
     bar.why = e.what();
     return bar;
   }
+}
+
+}  // namespace
+
+StudyBar studyBar(const std::string& table, const std::string& observable, const SceneKey& scene,
+                  const std::vector<int>& mesh) {
+  return fromTable(table, [&](const std::vector<StudyRow>& rows) { return studyBar(rows, observable, scene, mesh); });
 }
 
 StudyBar variationBar(const std::vector<StudyRow>& rows, const std::string& observable, const SceneKey& scene,
@@ -237,13 +248,12 @@ StudyBar variationBar(const std::vector<StudyRow>& rows, const std::string& obse
     v.value = r.value / base->value - 1.0;
     derived->push_back(v);
   }
-  if (derived->empty()) {
-    StudyBar bar = studyBar(rows, observable, scene, mesh);  // its reason: no rows, or another shape
-    bar.why = bar.ladder.empty() ? bar.why
+  if (derived->empty()) {  // the reason: the scene's own (no rows, another shape), or its reference's
+    const StudyBar own = studyBar(rows, observable, scene, mesh);
+    StudyBar bar;
+    bar.why = own.ladder.empty() ? own.why
                                  : "the study holds none of this scene's meshes for the plate without the grading (" +
                                        sceneText(reference) + ")";
-    bar.measured = bar.judged = false;
-    bar.ladder.clear();
     return bar;
   }
   StudyBar bar = studyBar(*derived, observable, scene, mesh);
@@ -253,13 +263,9 @@ StudyBar variationBar(const std::vector<StudyRow>& rows, const std::string& obse
 
 StudyBar variationBar(const std::string& table, const std::string& observable, const SceneKey& scene,
                       const SceneKey& reference, const std::vector<int>& mesh) {
-  try {
-    return variationBar(studyTable(table), observable, scene, reference, mesh);
-  } catch (const std::runtime_error& e) {
-    StudyBar bar;
-    bar.why = e.what();
-    return bar;
-  }
+  return fromTable(table, [&](const std::vector<StudyRow>& rows) {
+    return variationBar(rows, observable, scene, reference, mesh);
+  });
 }
 
 std::string ladderText(const StudyBar& bar) {

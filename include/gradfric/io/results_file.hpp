@@ -20,9 +20,9 @@
 
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <string>
 #include <utility>
-#include <limits>
 #include <vector>
 
 namespace gradfric::io {
